@@ -1,0 +1,196 @@
+//! The headless subcommands of formats.md §1. Exit codes: 0 success, 1 valid input that fails
+//! (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad arguments).
+
+use crate::source::Source;
+use clap::{Parser, Subcommand};
+use ladder_engine::compiler::{Code, Compiled, compile};
+use ladder_engine::{file, il};
+use std::ffi::OsString;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// Ladder editor, compiler and simulator for the PLC of GSK CNC controllers.
+#[derive(Parser, Debug)]
+#[command(name = "ladder-studio", version, about)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Option<Command>,
+}
+
+/// The subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Compile and list every error and warning; exits 1 when there are errors.
+    Check {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+    },
+    /// Write the instruction list of a project or IL file.
+    ExportIl {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// Output file (default: standard output).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Build a project whose ladder diagram is drawn from an instruction list.
+    ImportIl {
+        /// The instruction list.
+        il: PathBuf,
+        /// The project file to write.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+}
+
+/// Runs the command line; returns the exit code.
+pub fn run<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    let cli = match Cli::try_parse_from(args) {
+        Ok(cli) => cli,
+        Err(e) => {
+            let code = if e.use_stderr() { 2 } else { 0 };
+            let text = e.render().to_string();
+            let _ = if code == 0 {
+                write!(out, "{text}")
+            } else {
+                write!(err, "{text}")
+            };
+            return code;
+        }
+    };
+    let result = match cli.command {
+        None => {
+            let _ = writeln!(
+                err,
+                "ladder-studio: the graphical editor is not part of this build; use a subcommand (see --help)"
+            );
+            return 2;
+        }
+        Some(Command::Check { path }) => check(&path, out),
+        Some(Command::ExportIl { path, output }) => export_il(&path, output.as_deref(), out, err),
+        Some(Command::ImportIl { il, output }) => import_il(&il, &output, err),
+    };
+    match result {
+        Ok(code) => code,
+        Err(e) => {
+            let _ = writeln!(err, "ladder-studio: {e:#}");
+            2
+        }
+    }
+}
+
+fn print_diagnostics(path: &Path, compiled: &Compiled, w: &mut dyn Write) {
+    let shown = path.display().to_string();
+    for d in &compiled.diagnostics {
+        let _ = writeln!(w, "{}", d.render(&shown));
+    }
+}
+
+fn summary(compiled: &Compiled) -> String {
+    let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+    format!(
+        "{}, {}",
+        plural(compiled.errors(), "error"),
+        plural(compiled.warnings(), "warning")
+    )
+}
+
+fn check(path: &Path, out: &mut dyn Write) -> anyhow::Result<i32> {
+    let source = Source::read(path)?;
+    let compiled = source.compiled();
+    print_diagnostics(path, &compiled, out);
+    let _ = writeln!(out, "{}", summary(&compiled));
+    Ok(i32::from(compiled.errors() > 0))
+}
+
+/// Codes that leave a network without a valid instruction list.
+fn is_structural(code: Code) -> bool {
+    matches!(
+        code,
+        Code::L001NotConnected
+            | Code::L002OpenBranch
+            | Code::L003ShortCircuit
+            | Code::L004Bridge
+            | Code::L005WrongColumn
+            | Code::L006NoContact
+            | Code::L007NotStandalone
+            | Code::L010UnknownInstruction
+            | Code::L011OperandCount
+            | Code::L012Syntax
+            | Code::L013BlockStack
+            | Code::L014BranchStack
+            | Code::L015LoadAfterOutput
+            | Code::L016NoOutput
+            | Code::L017NotDrawable
+    )
+}
+
+fn export_il(
+    path: &Path,
+    output: Option<&Path>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let source = Source::read(path)?;
+    let compiled = match &source {
+        Source::Project(p) => compile(p),
+        Source::Il { imported, .. } => match &imported.project {
+            // Through the drawing, so the export is what the ladder holds.
+            Some(p) => compile(p),
+            None => imported.compiled.clone(),
+        },
+    };
+    if compiled.diagnostics.iter().any(|d| is_structural(d.code)) {
+        print_diagnostics(path, &compiled, err);
+        let _ = writeln!(err, "{}; no instruction list written", summary(&compiled));
+        return Ok(1);
+    }
+    // Other errors (an undefined symbol, an address out of range) do not stop the export:
+    // the list is what the ladder says, and the check explains what to fix.
+    print_diagnostics(path, &compiled, err);
+    let text = il::print(&compiled.program);
+    match output {
+        Some(o) => std::fs::write(o, text)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display()))?,
+        None => {
+            let _ = out.write_all(text.as_bytes());
+        }
+    }
+    Ok(0)
+}
+
+fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<i32> {
+    let source = Source::read(path)?;
+    let Source::Il { imported, .. } = source else {
+        anyhow::bail!(
+            "{} is a project file, not an instruction list; use export-il to get its IL",
+            path.display()
+        );
+    };
+    print_diagnostics(path, &imported.compiled, err);
+    let Some(project) = imported.project else {
+        let _ = writeln!(
+            err,
+            "{}; the instruction list cannot be drawn as a ladder, no project written",
+            summary(&imported.compiled)
+        );
+        return Ok(1);
+    };
+    file::save(&project, output)
+        .map_err(|e| anyhow::anyhow!("cannot save {}: {e}", output.display()))?;
+    let errors = imported.compiled.errors();
+    if errors > 0 {
+        let _ = writeln!(
+            err,
+            "{}; project written to {} with the errors to fix",
+            summary(&imported.compiled),
+            output.display()
+        );
+    }
+    Ok(i32::from(errors > 0))
+}

@@ -1,0 +1,153 @@
+//! The compiler: ladder → instruction list, with checks that point at the cell (or IL line)
+//! and say how to fix what they find.
+//!
+//! Phases: [`lower`] reads each network's grid as rung trees (structure checks), [`rung`]
+//! emits their instructions, [`check`] checks operands, labels, calls, stacks and step
+//! limits against the catalogue and the profile. The IL importer runs the other way through
+//! [`decompile`] and [`layout`].
+
+pub mod check;
+pub mod decompile;
+pub mod diag;
+pub mod layout;
+pub mod lower;
+pub mod rung;
+
+pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
+pub use rung::Instr;
+
+use crate::model::{BlockKind, Project};
+
+/// A compiled network: its texts and instructions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProgramNetwork {
+    /// Title.
+    pub title: String,
+    /// Comment.
+    pub comment: String,
+    /// Instructions in order.
+    pub instrs: Vec<Instr>,
+}
+
+/// A compiled block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ProgramBlock {
+    /// Which block.
+    pub kind: BlockKind,
+    /// Where its header is (IL line), for block-level diagnostics.
+    pub origin: Origin,
+    /// Its networks.
+    pub networks: Vec<ProgramNetwork>,
+}
+
+/// An instruction list: level 1, level 2, then subprograms.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Program {
+    /// The blocks.
+    pub blocks: Vec<ProgramBlock>,
+}
+
+impl Program {
+    /// Every instruction with its block and network index.
+    pub fn instrs(&self) -> impl Iterator<Item = (usize, usize, &Instr)> {
+        self.blocks.iter().enumerate().flat_map(|(b, block)| {
+            block
+                .networks
+                .iter()
+                .enumerate()
+                .flat_map(move |(n, net)| net.instrs.iter().map(move |i| (b, n, i)))
+        })
+    }
+}
+
+/// Steps per part of the program (§5: a basic instruction is 1 step, a function instruction
+/// 1 + its operands).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StepCounts {
+    /// Level 1 plus every subprogram it reaches (each once).
+    pub level1: u32,
+    /// Level 2 alone.
+    pub level2: u32,
+    /// All subprograms.
+    pub subprograms: u32,
+    /// The whole program.
+    pub total: u32,
+}
+
+/// What the compiler produced.
+#[derive(Clone, Debug)]
+pub struct Compiled {
+    /// The instruction list, symbols resolved to addresses.
+    pub program: Program,
+    /// Errors and warnings, in program order.
+    pub diagnostics: Vec<Diagnostic>,
+    /// Step counts.
+    pub steps: StepCounts,
+}
+
+impl Compiled {
+    /// Number of errors.
+    pub fn errors(&self) -> usize {
+        self.diagnostics
+            .iter()
+            .filter(|d| d.severity() == Severity::Error)
+            .count()
+    }
+
+    /// Number of warnings.
+    pub fn warnings(&self) -> usize {
+        self.diagnostics.len() - self.errors()
+    }
+}
+
+/// Emits a project's ladder as an instruction list, without checks beyond the structure.
+pub fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
+    let width = project.ladder.width;
+    let mut program = Program::default();
+    for (b, block) in project.ladder.blocks.iter().enumerate() {
+        let label = block.kind.label();
+        let mut networks = Vec::with_capacity(block.networks.len());
+        for (n, net) in block.networks.iter().enumerate() {
+            sink.at(b, &label, n);
+            let rungs = lower::lower_network(net, width, sink);
+            let mut instrs = Vec::new();
+            rung::emit(&rungs, &mut instrs);
+            networks.push(ProgramNetwork {
+                title: net.title.clone(),
+                comment: net.comment.clone(),
+                instrs,
+            });
+        }
+        program.blocks.push(ProgramBlock {
+            kind: block.kind.clone(),
+            origin: Origin::None,
+            networks,
+        });
+    }
+    program
+}
+
+/// Compiles a project's ladder: structure, operands, labels, calls, limits.
+pub fn compile(project: &Project) -> Compiled {
+    let mut sink = Sink::default();
+    let mut program = ladder_program(project, &mut sink);
+    let steps = check::check_program(&mut program, project, &mut sink);
+    finish(program, sink, steps)
+}
+
+/// Checks an already parsed program (from IL) against a project's symbols and profile.
+pub fn compile_program(mut program: Program, project: &Project, mut sink: Sink) -> Compiled {
+    let steps = check::check_program(&mut program, project, &mut sink);
+    finish(program, sink, steps)
+}
+
+fn finish(program: Program, sink: Sink, steps: StepCounts) -> Compiled {
+    let mut diagnostics = sink.diagnostics;
+    diagnostics.sort_by(|a, b| a.location.cmp(&b.location).then(a.code.cmp(&b.code)));
+    diagnostics.dedup();
+    Compiled {
+        program,
+        diagnostics,
+        steps,
+    }
+}

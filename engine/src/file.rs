@@ -1,0 +1,198 @@
+//! Project files (`.ldp`, formats.md §3): a header line with the schema version and a CRC-32
+//! of the body, then the project serialized as RON. This is the engine's only I/O.
+
+use crate::model::Project;
+use std::fs;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use thiserror::Error;
+
+/// The first word of every project file.
+pub const MAGIC: &str = "LADDER-STUDIO-PROJECT";
+/// The schema version this build writes.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// Why a project file could not be read or written.
+#[derive(Debug, Error)]
+pub enum FileError {
+    /// The file system refused.
+    #[error("{path}: {source}")]
+    Io {
+        /// The file.
+        path: PathBuf,
+        /// The cause.
+        source: std::io::Error,
+    },
+    /// Not a project file at all.
+    #[error(
+        "not a Ladder Studio project: the first line must start with `{MAGIC} v<version> crc32=<8 hex digits>`"
+    )]
+    Foreign,
+    /// The header line is malformed.
+    #[error("line 1: malformed header `{0}`: expected `{MAGIC} v<version> crc32=<8 hex digits>`")]
+    Header(String),
+    /// A version this build does not know.
+    #[error(
+        "line 1: schema version {found} is newer than this program reads (up to {SCHEMA_VERSION}); update Ladder Studio"
+    )]
+    Version {
+        /// The version in the file.
+        found: u32,
+    },
+    /// The checksum does not match: the file was changed or cut short.
+    #[error(
+        "checksum mismatch: the header says crc32={expected:08x} but the body's is {actual:08x}; the file was damaged or edited by hand (open it read-only to recover what is left)"
+    )]
+    Checksum {
+        /// From the header.
+        expected: u32,
+        /// Of the body.
+        actual: u32,
+    },
+    /// The body is not a valid project.
+    #[error("line {line}, column {column}: {message}")]
+    Body {
+        /// Line in the file (the header is line 1).
+        line: usize,
+        /// Column.
+        column: usize,
+        /// What the parser said.
+        message: String,
+    },
+    /// The file is not UTF-8 text.
+    #[error("the file is not UTF-8 text (byte {0})")]
+    Encoding(usize),
+}
+
+/// Whether `text` looks like a project file rather than an instruction list.
+pub fn is_project_text(text: &[u8]) -> bool {
+    text.starts_with(MAGIC.as_bytes())
+}
+
+/// Serializes a project to the file format.
+pub fn to_string(project: &Project) -> String {
+    // Rows are deep enough in the tree to be written on one line each.
+    let config = ron::ser::PrettyConfig::new()
+        .indentor(" ".to_string())
+        .depth_limit(7);
+    let body = ron::ser::to_string_pretty(project, config)
+        .expect("a project always serializes: it holds only plain data");
+    let crc = crc32fast::hash(body.as_bytes());
+    format!("{MAGIC} v{SCHEMA_VERSION} crc32={crc:08x}\n{body}\n")
+}
+
+/// Parses the file format, verifying header and checksum.
+pub fn from_bytes(bytes: &[u8]) -> Result<Project, FileError> {
+    if !is_project_text(bytes) {
+        return Err(FileError::Foreign);
+    }
+    let text = std::str::from_utf8(bytes).map_err(|e| FileError::Encoding(e.valid_up_to()))?;
+    let (header, body) = text
+        .split_once('\n')
+        .ok_or_else(|| FileError::Header(text.chars().take(80).collect()))?;
+    let header = header.trim_end_matches('\r');
+    let mut parts = header.split(' ');
+    let (Some(MAGIC), Some(version), Some(crc), None) =
+        (parts.next(), parts.next(), parts.next(), parts.next())
+    else {
+        return Err(FileError::Header(header.chars().take(80).collect()));
+    };
+    let version: u32 = version
+        .strip_prefix('v')
+        .and_then(|v| v.parse().ok())
+        .ok_or_else(|| FileError::Header(header.into()))?;
+    let expected = crc
+        .strip_prefix("crc32=")
+        .filter(|h| h.len() == 8)
+        .and_then(|h| u32::from_str_radix(h, 16).ok())
+        .ok_or_else(|| FileError::Header(header.into()))?;
+    if version > SCHEMA_VERSION || version == 0 {
+        return Err(FileError::Version { found: version });
+    }
+    let body = body.strip_suffix('\n').unwrap_or(body);
+    let actual = crc32fast::hash(body.as_bytes());
+    if actual != expected {
+        return Err(FileError::Checksum { expected, actual });
+    }
+    parse_body(body)
+}
+
+/// Parses a body without checking a checksum (the read-only recovery open).
+pub fn parse_body(body: &str) -> Result<Project, FileError> {
+    ron::from_str::<Project>(body).map_err(|e| FileError::Body {
+        line: e.span.start.line + 1,
+        column: e.span.start.col,
+        message: e.code.to_string(),
+    })
+}
+
+/// Reads and verifies a project file.
+pub fn load(path: &Path) -> Result<Project, FileError> {
+    let bytes = fs::read(path).map_err(|source| FileError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    from_bytes(&bytes)
+}
+
+/// Saves atomically: writes a temporary file in the same folder, flushes it to disk, keeps the
+/// previous file as `NAME.bak`, then renames the new one over the old.
+pub fn save(project: &Project, path: &Path) -> Result<(), FileError> {
+    let io = |source| FileError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let text = to_string(project);
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "project.ldp".into());
+    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let result = (|| {
+        let mut f = fs::File::create(&tmp)?;
+        f.write_all(text.as_bytes())?;
+        f.sync_all()?;
+        if path.exists() {
+            fs::copy(path, dir.join(format!("{name}.bak")))?;
+        }
+        fs::rename(&tmp, path)
+    })();
+    if result.is_err() {
+        let _ = fs::remove_file(&tmp);
+    }
+    result.map_err(io)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_saved_project_reads_back_and_a_changed_byte_is_refused() {
+        let p = crate::il::import("LD X1.0\nOUT Y1.0\n").project.unwrap();
+        let text = to_string(&p);
+        assert_eq!(from_bytes(text.as_bytes()).unwrap(), p);
+        let mut bytes = text.clone().into_bytes();
+        let pos = text.find("Y").unwrap();
+        bytes[pos] = b'G';
+        assert!(matches!(
+            from_bytes(&bytes),
+            Err(FileError::Checksum { .. })
+        ));
+        assert!(matches!(from_bytes(b"LD X1.0\n"), Err(FileError::Foreign)));
+        let future = text.replacen(" v1 ", " v9 ", 1);
+        assert!(matches!(
+            from_bytes(future.as_bytes()),
+            Err(FileError::Version { found: 9 })
+        ));
+        let cut = &text[..text.len() / 2];
+        assert!(matches!(
+            from_bytes(cut.as_bytes()),
+            Err(FileError::Checksum { .. })
+        ));
+    }
+}

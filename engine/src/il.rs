@@ -1,0 +1,432 @@
+//! Instruction-list text (isa.md §6): parsing with line-numbered errors, printing in the
+//! canonical form, and building a project whose ladder is drawn from the IL.
+
+use crate::catalog::{InstrClass, Op, OperandKind};
+use crate::compiler::decompile::decompile;
+use crate::compiler::layout::{layout, width_needed};
+use crate::compiler::{
+    Code, Compiled, Instr, Origin, Program, ProgramBlock, ProgramNetwork, Sink, compile_program,
+};
+use crate::model::{Block, BlockKind, DEFAULT_WIDTH, Ladder, MAX_WIDTH, Network, Operand, Project};
+use std::fmt::Write as _;
+
+/// Splits a line into tokens: words and `"quoted strings"`, up to a `;` comment.
+fn tokenize(line: &str) -> Result<Vec<(bool, String)>, String> {
+    let mut tokens = Vec::new();
+    let mut chars = line.chars().peekable();
+    while let Some(&c) = chars.peek() {
+        if c.is_whitespace() {
+            chars.next();
+        } else if c == ';' {
+            break;
+        } else if c == '"' {
+            chars.next();
+            let mut s = String::new();
+            loop {
+                match chars.next() {
+                    None => return Err("a quoted text is not closed: add the closing \"".into()),
+                    Some('"') => break,
+                    Some('\\') => match chars.next() {
+                        Some('n') => s.push('\n'),
+                        Some(other) => s.push(other),
+                        None => {
+                            return Err("a quoted text is not closed: add the closing \"".into());
+                        }
+                    },
+                    Some(other) => s.push(other),
+                }
+            }
+            tokens.push((true, s));
+        } else {
+            let mut s = String::new();
+            while let Some(&c) = chars.peek() {
+                if c.is_whitespace() || c == ';' || c == '"' {
+                    break;
+                }
+                s.push(c);
+                chars.next();
+            }
+            tokens.push((false, s));
+        }
+    }
+    Ok(tokens)
+}
+
+/// One parsed network before the split into networks is settled.
+struct RawNetwork {
+    title: String,
+    comment: Vec<String>,
+    explicit: bool,
+    instrs: Vec<Instr>,
+}
+
+/// Parses IL text into a program with line origins. Errors go to `sink`.
+pub fn parse(text: &str, sink: &mut Sink) -> Program {
+    let has_network_lines = text.lines().any(|l| {
+        tokenize(l)
+            .ok()
+            .and_then(|t| {
+                t.first()
+                    .map(|(q, w)| !q && w.eq_ignore_ascii_case("NETWORK"))
+            })
+            .unwrap_or(false)
+    });
+    let mut blocks: Vec<(BlockKind, Origin, Vec<RawNetwork>)> = vec![
+        (BlockKind::Level1, Origin::None, Vec::new()),
+        (BlockKind::Level2, Origin::None, Vec::new()),
+    ];
+    let mut current = 0usize;
+    // Whether comment lines may still join the current network's comment.
+    let mut in_header = false;
+    for (index, line) in text.lines().enumerate() {
+        let line_no = index as u32 + 1;
+        let origin = Origin::Line(line_no);
+        let tokens = match tokenize(line) {
+            Ok(t) => t,
+            Err(msg) => {
+                sink.report(origin, Code::L012Syntax, msg);
+                continue;
+            }
+        };
+        let Some((quoted, word)) = tokens.first() else {
+            let trimmed = line.trim_start();
+            if in_header && trimmed.starts_with(';') {
+                let body = trimmed[1..].strip_prefix(' ').unwrap_or(&trimmed[1..]);
+                if let Some(net) = blocks[current].2.last_mut() {
+                    net.comment.push(body.to_string());
+                }
+            } else if !trimmed.is_empty() {
+                in_header = false;
+            }
+            continue;
+        };
+        in_header = false;
+        if *quoted {
+            sink.report(
+                origin,
+                Code::L012Syntax,
+                "a line starts with an instruction or a directive, not a quoted text",
+            );
+            continue;
+        }
+        let upper = word.to_ascii_uppercase();
+        match upper.as_str() {
+            "END" => break,
+            "LEVEL1" | "LEVEL2" => {
+                current = if upper == "LEVEL1" { 0 } else { 1 };
+                blocks[current].1 = origin;
+                if tokens.len() > 1 {
+                    sink.report(
+                        origin,
+                        Code::L012Syntax,
+                        format!("{upper} takes nothing after it"),
+                    );
+                }
+            }
+            "SUB" | "SP" => {
+                let number = tokens.get(1).and_then(|(q, t)| {
+                    (!q).then(|| crate::address::Address::parse(t).ok())
+                        .flatten()
+                });
+                match number {
+                    Some(a) if a.area == crate::address::Area::P && a.bit.is_none() => {
+                        let name = tokens.get(2).map(|(_, t)| t.clone()).unwrap_or_default();
+                        blocks.push((
+                            BlockKind::Sub {
+                                number: a.number,
+                                name,
+                            },
+                            origin,
+                            Vec::new(),
+                        ));
+                        current = blocks.len() - 1;
+                    }
+                    _ => sink.report(
+                        origin,
+                        Code::L012Syntax,
+                        "SUB needs a subprogram number: `SUB P0001 \"NAME\"`",
+                    ),
+                }
+            }
+            "NETWORK" => {
+                let title = match tokens.get(1) {
+                    Some((true, t)) => t.clone(),
+                    Some((false, t)) => {
+                        sink.report(
+                            origin,
+                            Code::L012Syntax,
+                            format!("write the network title in quotes: NETWORK \"{t}\""),
+                        );
+                        t.clone()
+                    }
+                    None => String::new(),
+                };
+                blocks[current].2.push(RawNetwork {
+                    title,
+                    comment: Vec::new(),
+                    explicit: true,
+                    instrs: Vec::new(),
+                });
+                in_header = true;
+            }
+            _ => {
+                let Some(op) = Op::from_name(&upper) else {
+                    sink.report(
+                        origin,
+                        Code::L010UnknownInstruction,
+                        format!("unknown instruction `{word}`{}", suggestion(&upper)),
+                    );
+                    continue;
+                };
+                let mut operands = Vec::new();
+                let mut bad = false;
+                for (q, t) in &tokens[1..] {
+                    if *q {
+                        sink.report(
+                            origin,
+                            Code::L012Syntax,
+                            format!("`\"{t}\"`: operands are not quoted"),
+                        );
+                        bad = true;
+                        break;
+                    }
+                    match Operand::parse(t) {
+                        Ok(o) => operands.push(o),
+                        Err(e) => {
+                            sink.report(
+                                origin,
+                                Code::L012Syntax,
+                                format!("{} operand `{t}`: {e}", op.name()),
+                            );
+                            bad = true;
+                            break;
+                        }
+                    }
+                }
+                if bad {
+                    continue;
+                }
+                let instr = Instr {
+                    op,
+                    operands,
+                    origin,
+                };
+                let nets = &mut blocks[current].2;
+                if nets.is_empty()
+                    || (!has_network_lines
+                        && starts_network(nets.last().map(|n| &n.instrs[..]).unwrap_or(&[]), op))
+                {
+                    nets.push(RawNetwork {
+                        title: String::new(),
+                        comment: Vec::new(),
+                        explicit: false,
+                        instrs: Vec::new(),
+                    });
+                }
+                nets.last_mut()
+                    .expect("a network was just ensured")
+                    .instrs
+                    .push(instr);
+            }
+        }
+    }
+    let mut program = Program::default();
+    for (kind, origin, nets) in blocks {
+        program.blocks.push(ProgramBlock {
+            kind,
+            origin,
+            networks: nets
+                .into_iter()
+                .map(|n| {
+                    let _ = n.explicit;
+                    ProgramNetwork {
+                        title: n.title,
+                        comment: n.comment.join("\n"),
+                        instrs: n.instrs,
+                    }
+                })
+                .collect(),
+        });
+    }
+    program
+}
+
+/// Without NETWORK lines: a network starts at an LD/LDI after an output when no MPS is open;
+/// LBL and CALLU stand alone, and so does whatever follows them.
+fn starts_network(prev: &[Instr], op: Op) -> bool {
+    let Some(last) = prev.last() else {
+        return false;
+    };
+    if !last.op.spec().needs_act() || !op.spec().needs_act() {
+        return true;
+    }
+    let mps_open = prev.iter().fold(0i32, |d, i| match i.op {
+        Op::Mps => d + 1,
+        Op::Mpp => d - 1,
+        _ => d,
+    }) > 0;
+    matches!(op, Op::Ld | Op::Ldi)
+        && matches!(
+            last.op.spec().class,
+            InstrClass::Coil | InstrClass::Function
+        )
+        && !mps_open
+}
+
+fn suggestion(upper: &str) -> String {
+    // The closest mnemonic by edit distance, when it is close enough to be a typo.
+    fn distance(a: &str, b: &str) -> usize {
+        let b: Vec<char> = b.chars().collect();
+        let mut prev: Vec<usize> = (0..=b.len()).collect();
+        for (i, ca) in a.chars().enumerate() {
+            let mut cur = vec![i + 1];
+            for (j, cb) in b.iter().enumerate() {
+                cur.push(
+                    (prev[j] + usize::from(ca != *cb))
+                        .min(prev[j + 1] + 1)
+                        .min(cur[j] + 1),
+                );
+            }
+            prev = cur;
+        }
+        prev[b.len()]
+    }
+    crate::catalog::CATALOG
+        .iter()
+        .map(|s| (distance(upper, s.name), s.name))
+        .min()
+        .filter(|(d, _)| *d <= 2)
+        .map(|(_, n)| format!(": did you mean {n}?"))
+        .unwrap_or_else(|| {
+            ": see the instruction list in the manual (LD, AND, OUT, TMRB, …)".into()
+        })
+}
+
+fn escape(s: &str) -> String {
+    s.replace('\\', "\\\\")
+        .replace('"', "\\\"")
+        .replace('\n', "\\n")
+}
+
+/// Formats an operand as IL writes it: canonical addresses, decimal integers, 4-digit groups.
+pub fn operand_text(op: Op, index: usize, operand: &Operand) -> String {
+    match (op.spec().operand(index).map(|s| s.kind), operand) {
+        (Some(OperandKind::Digits { .. }), Operand::Int(v)) if (0..=9999).contains(v) => {
+            format!("{v:04}")
+        }
+        _ => operand.to_string(),
+    }
+}
+
+/// One instruction as an IL line (without newline).
+pub fn instr_text(op: Op, operands: &[Operand]) -> String {
+    let mut s = String::new();
+    if operands.is_empty() {
+        s.push_str(op.name());
+    } else {
+        let _ = write!(s, "{:<4}", op.name());
+        for (i, o) in operands.iter().enumerate() {
+            s.push(' ');
+            s.push_str(&operand_text(op, i, o));
+        }
+    }
+    s
+}
+
+/// Prints a program as canonical IL text.
+pub fn print(program: &Program) -> String {
+    let mut out = String::new();
+    for block in &program.blocks {
+        match &block.kind {
+            BlockKind::Level1 => out.push_str("LEVEL1\n"),
+            BlockKind::Level2 => out.push_str("LEVEL2\n"),
+            BlockKind::Sub { number, name } => {
+                let _ = write!(out, "SUB  P{number:04}");
+                if !name.is_empty() {
+                    let _ = write!(out, " \"{}\"", escape(name));
+                }
+                out.push('\n');
+            }
+        }
+        for net in &block.networks {
+            out.push_str("NETWORK");
+            if !net.title.is_empty() {
+                let _ = write!(out, " \"{}\"", escape(&net.title));
+            }
+            out.push('\n');
+            if !net.comment.is_empty() {
+                for line in net.comment.lines() {
+                    let _ = writeln!(out, "; {line}");
+                }
+            }
+            for i in &net.instrs {
+                out.push_str(&instr_text(i.op, &i.operands));
+                out.push('\n');
+            }
+        }
+    }
+    out.push_str("END\n");
+    out
+}
+
+/// The result of reading IL into a project.
+#[derive(Debug)]
+pub struct Imported {
+    /// The project, when the IL could be drawn as a ladder.
+    pub project: Option<Project>,
+    /// The IL checked as a program (diagnostics carry IL lines).
+    pub compiled: Compiled,
+}
+
+/// Parses, checks and draws IL: the project's ladder is rebuilt from the instructions.
+pub fn import(text: &str) -> Imported {
+    let mut sink = Sink::default();
+    let program = parse(text, &mut sink);
+    let mut blocks = Vec::new();
+    let mut drawable = sink.error_count() == 0;
+    let mut width = DEFAULT_WIDTH;
+    for (b, pb) in program.blocks.iter().enumerate() {
+        let label = pb.kind.label();
+        let mut nets = Vec::new();
+        for (n, pn) in pb.networks.iter().enumerate() {
+            sink.at(b, &label, n);
+            match decompile(&pn.instrs, &mut sink) {
+                Some(rungs) => {
+                    width = width.max(width_needed(&rungs));
+                    nets.push((pn, rungs));
+                }
+                None => drawable = false,
+            }
+        }
+        blocks.push((pb, nets));
+    }
+    let base = Project::default();
+    let compiled = compile_program(program.clone(), &base, sink);
+    if !drawable || width > MAX_WIDTH {
+        return Imported {
+            project: None,
+            compiled,
+        };
+    }
+    let mut ladder = Ladder::new(width);
+    ladder.blocks.clear();
+    let mut next_id = 1;
+    for (pb, nets) in blocks {
+        let mut block = Block::new(pb.kind.clone());
+        for (pn, rungs) in nets {
+            let mut network = Network::new(crate::model::NetworkId(next_id), width);
+            next_id += 1;
+            network.title = pn.title.clone();
+            network.comment = pn.comment.clone();
+            network.rows = layout(&rungs, width);
+            block.networks.push(network);
+        }
+        ladder.blocks.push(block);
+    }
+    // Subprograms in P order, as the ladder keeps them.
+    ladder.blocks[2..].sort_by_key(|b| b.kind.sub_number());
+    Imported {
+        project: Some(Project { ladder, ..base }),
+        compiled,
+    }
+}

@@ -1,0 +1,16 @@
+//! The Ladder Studio engine: addresses, the instruction catalogue, the ladder model, the
+//! compiler and instruction lists of the GSK PLC. It has no GUI dependency and does no I/O
+//! outside [`file`].
+
+pub mod address;
+pub mod catalog;
+pub mod compiler;
+pub mod file;
+pub mod generate;
+pub mod il;
+pub mod model;
+pub mod profile;
+
+pub use address::{Address, AddressError, Area};
+pub use catalog::{CATALOG, InstrSpec, Op};
+pub use profile::{Profile, ProfileId};

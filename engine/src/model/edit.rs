@@ -1,0 +1,579 @@
+//! Editing operations on the ladder, each returning its exact inverse for undo.
+//!
+//! The editor never changes the model directly: it builds an [`Edit`] (usually through one of
+//! the gesture helpers such as [`Ladder::parallel_contact`]) and applies it; the returned
+//! inverse goes on the undo stack. A gesture that touches several places is one
+//! [`Edit::Batch`], so one undo takes it back whole.
+
+use super::block::Block;
+use super::cell::Cell;
+use super::ladder::Ladder;
+use super::network::{Network, Row};
+use thiserror::Error;
+
+/// A position in the grid: block, network, row and column (or junction, for links).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct CellRef {
+    /// Block index.
+    pub block: usize,
+    /// Network index in the block.
+    pub network: usize,
+    /// Row index.
+    pub row: usize,
+    /// Column index (for links: the junction, the left edge of this column).
+    pub col: usize,
+}
+
+/// One reversible change of the ladder.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Edit {
+    /// Replace one cell.
+    SetCell {
+        /// Where.
+        at: CellRef,
+        /// The new content.
+        cell: Cell,
+    },
+    /// Set or clear the vertical link from `at.row` down at junction `at.col`.
+    SetLink {
+        /// Where.
+        at: CellRef,
+        /// Present or not.
+        on: bool,
+    },
+    /// Insert a row before `row`.
+    InsertRow {
+        /// Block index.
+        block: usize,
+        /// Network index.
+        network: usize,
+        /// Index the new row gets.
+        row: usize,
+        /// Its content.
+        content: Row,
+    },
+    /// Delete a row.
+    DeleteRow {
+        /// Block index.
+        block: usize,
+        /// Network index.
+        network: usize,
+        /// Row index.
+        row: usize,
+    },
+    /// Insert a network before `index`.
+    InsertNetwork {
+        /// Block index.
+        block: usize,
+        /// Index the new network gets.
+        index: usize,
+        /// The network.
+        network: Box<Network>,
+    },
+    /// Delete a network.
+    DeleteNetwork {
+        /// Block index.
+        block: usize,
+        /// Network index.
+        index: usize,
+    },
+    /// Change a network's title and comment.
+    SetNetworkText {
+        /// Block index.
+        block: usize,
+        /// Network index.
+        network: usize,
+        /// New title.
+        title: String,
+        /// New comment.
+        comment: String,
+    },
+    /// Insert a block (a subprogram) at `index`.
+    InsertBlock {
+        /// Index in the block list.
+        index: usize,
+        /// The block.
+        block: Box<Block>,
+    },
+    /// Delete a subprogram block.
+    DeleteBlock {
+        /// Index in the block list.
+        index: usize,
+    },
+    /// Several edits applied in order, undone in reverse order.
+    Batch(Vec<Edit>),
+}
+
+/// Why an edit was refused. Nothing changes when an edit is refused.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum EditError {
+    /// The position does not exist.
+    #[error("there is no {0} there")]
+    NoSuchPlace(&'static str),
+    /// A contact or wire in the output column, or a coil or box in a contact column.
+    #[error("{0}")]
+    WrongColumn(&'static str),
+    /// Level 1 and level 2 cannot be deleted or duplicated.
+    #[error("level 1 and level 2 always exist; only subprograms can be added or deleted")]
+    FixedBlock,
+    /// A network needs at least one row.
+    #[error("a network keeps at least one row; delete the network instead")]
+    LastRow,
+    /// F6 on the first row has nothing to be parallel with.
+    #[error("a parallel contact needs an element in the row above")]
+    NothingAbove,
+}
+
+impl Ladder {
+    fn network_mut(&mut self, block: usize, network: usize) -> Result<&mut Network, EditError> {
+        self.blocks
+            .get_mut(block)
+            .ok_or(EditError::NoSuchPlace("block"))?
+            .networks
+            .get_mut(network)
+            .ok_or(EditError::NoSuchPlace("network"))
+    }
+
+    /// Checks that `at` names an existing cell.
+    pub fn check_cell(&self, at: CellRef) -> Result<(), EditError> {
+        let n = self
+            .blocks
+            .get(at.block)
+            .ok_or(EditError::NoSuchPlace("block"))?
+            .networks
+            .get(at.network)
+            .ok_or(EditError::NoSuchPlace("network"))?;
+        let row = n.rows.get(at.row).ok_or(EditError::NoSuchPlace("row"))?;
+        if at.col >= row.cells.len() {
+            return Err(EditError::NoSuchPlace("column"));
+        }
+        Ok(())
+    }
+
+    /// Applies an edit and returns its inverse. A refused edit changes nothing (a batch is
+    /// rolled back to where it started).
+    pub fn apply(&mut self, edit: Edit) -> Result<Edit, EditError> {
+        match edit {
+            Edit::SetCell { at, cell } => {
+                self.check_cell(at)?;
+                let output_col = at.col == self.width;
+                if output_col && !cell.is_output_kind() {
+                    return Err(EditError::WrongColumn(
+                        "contacts and wires go left of the output column",
+                    ));
+                }
+                if !output_col && !cell.is_contact_kind() {
+                    return Err(EditError::WrongColumn(
+                        "coils and function boxes go in the output column at the right end",
+                    ));
+                }
+                let n = self.network_mut(at.block, at.network)?;
+                let old = std::mem::replace(&mut n.rows[at.row].cells[at.col], cell);
+                Ok(Edit::SetCell { at, cell: old })
+            }
+            Edit::SetLink { at, on } => {
+                self.check_cell(at)?;
+                let n = self.network_mut(at.block, at.network)?;
+                if at.col == 0 || at.row + 1 >= n.rows.len() {
+                    return Err(EditError::NoSuchPlace(
+                        "place for a vertical link (it joins a row to the next, right of the rail)",
+                    ));
+                }
+                let old = std::mem::replace(&mut n.rows[at.row].links[at.col], on);
+                Ok(Edit::SetLink { at, on: old })
+            }
+            Edit::InsertRow {
+                block,
+                network,
+                row,
+                content,
+            } => {
+                let width = self.width;
+                let n = self.network_mut(block, network)?;
+                if row > n.rows.len() {
+                    return Err(EditError::NoSuchPlace("row"));
+                }
+                if content.cells.len() != width + 1 || content.links.len() != width + 1 {
+                    return Err(EditError::NoSuchPlace("row of this width"));
+                }
+                n.rows.insert(row, content);
+                Ok(Edit::DeleteRow {
+                    block,
+                    network,
+                    row,
+                })
+            }
+            Edit::DeleteRow {
+                block,
+                network,
+                row,
+            } => {
+                let n = self.network_mut(block, network)?;
+                if row >= n.rows.len() {
+                    return Err(EditError::NoSuchPlace("row"));
+                }
+                if n.rows.len() == 1 {
+                    return Err(EditError::LastRow);
+                }
+                let content = n.rows.remove(row);
+                Ok(Edit::InsertRow {
+                    block,
+                    network,
+                    row,
+                    content,
+                })
+            }
+            Edit::InsertNetwork {
+                block,
+                index,
+                network,
+            } => {
+                let b = self
+                    .blocks
+                    .get_mut(block)
+                    .ok_or(EditError::NoSuchPlace("block"))?;
+                if index > b.networks.len() {
+                    return Err(EditError::NoSuchPlace("network"));
+                }
+                b.networks.insert(index, *network);
+                Ok(Edit::DeleteNetwork { block, index })
+            }
+            Edit::DeleteNetwork { block, index } => {
+                let b = self
+                    .blocks
+                    .get_mut(block)
+                    .ok_or(EditError::NoSuchPlace("block"))?;
+                if index >= b.networks.len() {
+                    return Err(EditError::NoSuchPlace("network"));
+                }
+                let network = Box::new(b.networks.remove(index));
+                Ok(Edit::InsertNetwork {
+                    block,
+                    index,
+                    network,
+                })
+            }
+            Edit::SetNetworkText {
+                block,
+                network,
+                title,
+                comment,
+            } => {
+                let n = self.network_mut(block, network)?;
+                let old_title = std::mem::replace(&mut n.title, title);
+                let old_comment = std::mem::replace(&mut n.comment, comment);
+                Ok(Edit::SetNetworkText {
+                    block,
+                    network,
+                    title: old_title,
+                    comment: old_comment,
+                })
+            }
+            Edit::InsertBlock { index, block } => {
+                if index < 2 || index > self.blocks.len() || block.kind.sub_number().is_none() {
+                    return Err(EditError::FixedBlock);
+                }
+                self.blocks.insert(index, *block);
+                Ok(Edit::DeleteBlock { index })
+            }
+            Edit::DeleteBlock { index } => {
+                if index < 2 || index >= self.blocks.len() {
+                    return Err(EditError::FixedBlock);
+                }
+                let block = Box::new(self.blocks.remove(index));
+                Ok(Edit::InsertBlock { index, block })
+            }
+            Edit::Batch(edits) => {
+                let mut inverses = Vec::with_capacity(edits.len());
+                for e in edits {
+                    match self.apply(e) {
+                        Ok(inv) => inverses.push(inv),
+                        Err(err) => {
+                            // Roll back what was applied so a refused batch changes nothing.
+                            for inv in inverses.into_iter().rev() {
+                                let _ = self.apply(inv);
+                            }
+                            return Err(err);
+                        }
+                    }
+                }
+                inverses.reverse();
+                Ok(Edit::Batch(inverses))
+            }
+        }
+    }
+
+    /// Places an element (or clears a cell with [`Cell::Empty`]).
+    pub fn place(&mut self, at: CellRef, cell: Cell) -> Result<Edit, EditError> {
+        self.apply(Edit::SetCell { at, cell })
+    }
+
+    /// Deletes the element at a cell, leaving the cell empty.
+    pub fn delete_element(&mut self, at: CellRef) -> Result<Edit, EditError> {
+        self.apply(Edit::SetCell {
+            at,
+            cell: Cell::Empty,
+        })
+    }
+
+    /// Draws (or deletes) the vertical link from `at.row` down, at the left edge of `at.col`.
+    pub fn set_link(&mut self, at: CellRef, on: bool) -> Result<Edit, EditError> {
+        self.apply(Edit::SetLink { at, on })
+    }
+
+    /// F6: places a contact at `at` and links its two ends up to the row above, so that it is
+    /// in parallel with what stands above it.
+    pub fn parallel_contact(&mut self, at: CellRef, contact: Cell) -> Result<Edit, EditError> {
+        if at.row == 0 {
+            return Err(EditError::NothingAbove);
+        }
+        let above = CellRef {
+            row: at.row - 1,
+            ..at
+        };
+        let mut edits = vec![Edit::SetCell { at, cell: contact }];
+        if at.col > 0 {
+            edits.push(Edit::SetLink {
+                at: above,
+                on: true,
+            });
+        }
+        edits.push(Edit::SetLink {
+            at: CellRef {
+                col: at.col + 1,
+                ..above
+            },
+            on: true,
+        });
+        self.apply(Edit::Batch(edits))
+    }
+
+    /// Inserts an empty row before `row` (Ctrl+T above, Ctrl+R below the cursor).
+    pub fn insert_row(
+        &mut self,
+        block: usize,
+        network: usize,
+        row: usize,
+    ) -> Result<Edit, EditError> {
+        let content = Row::empty(self.width);
+        self.apply(Edit::InsertRow {
+            block,
+            network,
+            row,
+            content,
+        })
+    }
+
+    /// Deletes a row. Links from the row above into it are dropped with it.
+    pub fn delete_row(
+        &mut self,
+        block: usize,
+        network: usize,
+        row: usize,
+    ) -> Result<Edit, EditError> {
+        let mut edits = Vec::new();
+        let n = self
+            .blocks
+            .get(block)
+            .and_then(|b| b.networks.get(network))
+            .ok_or(EditError::NoSuchPlace("network"))?;
+        let last = row + 1 == n.rows.len();
+        if last && row > 0 {
+            // The row above loses the links that led into the deleted last row.
+            for (j, on) in n.rows[row - 1].links.iter().enumerate() {
+                if *on {
+                    edits.push(Edit::SetLink {
+                        at: CellRef {
+                            block,
+                            network,
+                            row: row - 1,
+                            col: j,
+                        },
+                        on: false,
+                    });
+                }
+            }
+        }
+        edits.push(Edit::DeleteRow {
+            block,
+            network,
+            row,
+        });
+        self.apply(Edit::Batch(edits))
+    }
+
+    /// Inserts an empty network before `index` (Ctrl+U above, Ctrl+I below).
+    pub fn insert_network(&mut self, block: usize, index: usize) -> Result<Edit, EditError> {
+        let network = Box::new(self.new_network());
+        self.apply(Edit::InsertNetwork {
+            block,
+            index,
+            network,
+        })
+    }
+
+    /// Deletes a network.
+    pub fn delete_network(&mut self, block: usize, index: usize) -> Result<Edit, EditError> {
+        self.apply(Edit::DeleteNetwork { block, index })
+    }
+}
+
+/// Undo and redo stacks over a ladder.
+#[derive(Clone, Debug, Default)]
+pub struct History {
+    undo: Vec<Edit>,
+    redo: Vec<Edit>,
+    /// Most undo steps kept; older ones are dropped.
+    pub limit: usize,
+}
+
+impl History {
+    /// A history keeping `limit` undo steps.
+    pub fn new(limit: usize) -> History {
+        History {
+            undo: Vec::new(),
+            redo: Vec::new(),
+            limit,
+        }
+    }
+
+    /// Applies an edit, remembering how to undo it. Clears the redo stack.
+    pub fn apply(&mut self, ladder: &mut Ladder, edit: Edit) -> Result<(), EditError> {
+        let inverse = ladder.apply(edit)?;
+        self.record(inverse);
+        Ok(())
+    }
+
+    /// Remembers the inverse of an edit that was already applied.
+    pub fn record(&mut self, inverse: Edit) {
+        self.undo.push(inverse);
+        if self.undo.len() > self.limit {
+            self.undo.remove(0);
+        }
+        self.redo.clear();
+    }
+
+    /// Undoes the last edit; false when there is nothing to undo.
+    pub fn undo(&mut self, ladder: &mut Ladder) -> bool {
+        let Some(edit) = self.undo.pop() else {
+            return false;
+        };
+        match ladder.apply(edit) {
+            Ok(redo) => {
+                self.redo.push(redo);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Redoes the last undone edit; false when there is nothing to redo.
+    pub fn redo(&mut self, ladder: &mut Ladder) -> bool {
+        let Some(edit) = self.redo.pop() else {
+            return false;
+        };
+        match ladder.apply(edit) {
+            Ok(undo) => {
+                self.undo.push(undo);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Steps that can be undone.
+    pub fn undo_len(&self) -> usize {
+        self.undo.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::operand::Operand;
+
+    fn contact(a: &str) -> Cell {
+        Cell::Contact {
+            negated: false,
+            operand: Operand::parse(a).unwrap(),
+        }
+    }
+
+    #[test]
+    fn every_edit_undoes_exactly() {
+        let mut ladder = Ladder::new(4);
+        let empty = ladder.clone();
+        let mut h = History::new(100);
+        h.apply(&mut ladder, Edit::Batch(vec![])).unwrap();
+        let ins = ladder.insert_network(1, 0).unwrap();
+        h.record(ins);
+        let at = CellRef {
+            block: 1,
+            network: 0,
+            row: 0,
+            col: 0,
+        };
+        h.record(ladder.place(at, contact("X2.1")).unwrap());
+        h.record(ladder.insert_row(1, 0, 1).unwrap());
+        h.record(
+            ladder
+                .parallel_contact(CellRef { row: 1, ..at }, contact("Y3.7"))
+                .unwrap(),
+        );
+        h.record(
+            ladder
+                .place(
+                    CellRef { col: 4, ..at },
+                    Cell::Coil {
+                        negated: false,
+                        operand: Operand::parse("Y3.7").unwrap(),
+                    },
+                )
+                .unwrap(),
+        );
+        let full = ladder.clone();
+        assert!(ladder.blocks[1].networks[0].link(0, 1));
+        h.record(ladder.delete_row(1, 0, 1).unwrap());
+        assert!(
+            !ladder.blocks[1].networks[0].link(0, 1),
+            "links into a deleted row go"
+        );
+        assert!(h.undo(&mut ladder));
+        assert_eq!(ladder, full);
+        while h.undo(&mut ladder) {}
+        assert_eq!(ladder, empty);
+        while h.redo(&mut ladder) {}
+        assert_eq!(ladder.blocks[1].networks[0].rows.len(), 1);
+    }
+
+    #[test]
+    fn refused_edits_change_nothing() {
+        let mut ladder = Ladder::new(4);
+        ladder.insert_network(0, 0).unwrap();
+        let before = ladder.clone();
+        let at = CellRef {
+            block: 0,
+            network: 0,
+            row: 0,
+            col: 4,
+        };
+        assert!(matches!(
+            ladder.place(at, contact("X1.0")),
+            Err(EditError::WrongColumn(_))
+        ));
+        let batch = Edit::Batch(vec![
+            Edit::SetCell {
+                at: CellRef { col: 0, ..at },
+                cell: contact("X1.0"),
+            },
+            Edit::SetLink { at, on: true },
+        ]);
+        assert!(ladder.apply(batch).is_err());
+        assert_eq!(ladder, before);
+        assert_eq!(ladder.delete_row(0, 0, 0), Err(EditError::LastRow));
+        assert_eq!(
+            ladder.apply(Edit::DeleteBlock { index: 0 }),
+            Err(EditError::FixedBlock)
+        );
+    }
+}

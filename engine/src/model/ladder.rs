@@ -1,0 +1,86 @@
+//! The ladder: every block of a project and the network width they share.
+
+use super::block::{Block, BlockKind};
+use super::network::{Network, NetworkId};
+use serde::{Deserialize, Serialize};
+
+/// Contact columns per network by default: ten contacts and the output column fit a 1366-pixel
+/// laptop screen at 100 % zoom next to the project tree.
+pub const DEFAULT_WIDTH: usize = 10;
+/// The widest network a project may use.
+pub const MAX_WIDTH: usize = 64;
+
+/// The ladder program of a project.
+///
+/// Invariant: `blocks[0]` is level 1, `blocks[1]` level 2, and the rest are subprograms with
+/// distinct P numbers in ascending order.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Ladder {
+    /// Contact columns per network (the output column comes after them).
+    pub width: usize,
+    /// Level 1, level 2, then subprograms.
+    pub blocks: Vec<Block>,
+}
+
+impl Default for Ladder {
+    fn default() -> Self {
+        Ladder::new(DEFAULT_WIDTH)
+    }
+}
+
+impl Ladder {
+    /// An empty ladder with level 1 and level 2 and no subprograms.
+    pub fn new(width: usize) -> Ladder {
+        Ladder {
+            width: width.clamp(1, MAX_WIDTH),
+            blocks: vec![Block::new(BlockKind::Level1), Block::new(BlockKind::Level2)],
+        }
+    }
+
+    /// A network id no network of the ladder has.
+    ///
+    /// Derived from the ids in use rather than kept in a counter, so that undoing an insertion
+    /// restores the ladder exactly.
+    pub fn new_network_id(&self) -> NetworkId {
+        let max = self
+            .blocks
+            .iter()
+            .flat_map(|b| &b.networks)
+            .map(|n| n.id.0)
+            .max()
+            .unwrap_or(0);
+        NetworkId(max + 1)
+    }
+
+    /// A new empty network with a fresh id.
+    pub fn new_network(&self) -> Network {
+        let id = self.new_network_id();
+        Network::new(id, self.width)
+    }
+
+    /// The block index of subprogram `number`.
+    pub fn sub_index(&self, number: u16) -> Option<usize> {
+        self.blocks
+            .iter()
+            .position(|b| b.kind.sub_number() == Some(number))
+    }
+
+    /// Where a subprogram with `number` belongs to keep subprograms sorted.
+    pub fn sub_insert_index(&self, number: u16) -> usize {
+        2 + self.blocks[2..]
+            .iter()
+            .take_while(|b| b.kind.sub_number().is_some_and(|n| n < number))
+            .count()
+    }
+
+    /// Finds a network by id: (block index, network index).
+    pub fn find_network(&self, id: NetworkId) -> Option<(usize, usize)> {
+        self.blocks.iter().enumerate().find_map(|(b, block)| {
+            block
+                .networks
+                .iter()
+                .position(|n| n.id == id)
+                .map(|n| (b, n))
+        })
+    }
+}

@@ -1,0 +1,17 @@
+//! The ladder model: the project as plain data, and the edits that change it.
+
+pub mod block;
+pub mod cell;
+pub mod edit;
+pub mod ladder;
+pub mod network;
+pub mod operand;
+pub mod project;
+
+pub use block::{Block, BlockKind};
+pub use cell::Cell;
+pub use edit::{CellRef, Edit, EditError, History};
+pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH};
+pub use network::{Network, NetworkId, Row};
+pub use operand::{Operand, OperandError, is_symbol_name};
+pub use project::{Project, Symbol};
