@@ -1,1 +1,52 @@
-//! End-to-end tests live in `tests/`; this library is empty.
+//! Helpers shared by the end-to-end tests: running the command line in-process, and reading
+//! the IL corpus.
+
+use std::path::{Path, PathBuf};
+
+/// What a command-line run produced.
+#[derive(Debug)]
+pub struct Run {
+    /// Exit code.
+    pub code: i32,
+    /// Standard output.
+    pub stdout: String,
+    /// Standard error.
+    pub stderr: String,
+}
+
+/// Runs `ladder-studio ARGS` in-process.
+pub fn run(args: &[&str]) -> Run {
+    let mut out = Vec::new();
+    let mut err = Vec::new();
+    let mut full = vec!["ladder-studio"];
+    full.extend_from_slice(args);
+    let code = ladder_studio::cli::run(full, &mut out, &mut err);
+    Run {
+        code,
+        stdout: String::from_utf8(out).expect("UTF-8 output"),
+        stderr: String::from_utf8(err).expect("UTF-8 output"),
+    }
+}
+
+/// The folder of this crate (the workspace's `tests/`).
+pub fn here() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The `.il` files of a corpus folder, sorted.
+pub fn corpus(folder: &str) -> Vec<PathBuf> {
+    let dir = here().join("il").join(folder);
+    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.expect("a directory entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "il"))
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no IL files in {}", dir.display());
+    files
+}
+
+/// Reads a file to a string.
+pub fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}

@@ -56,8 +56,29 @@ fn tokenize(line: &str) -> Result<Vec<(bool, String)>, String> {
 struct RawNetwork {
     title: String,
     comment: Vec<String>,
-    explicit: bool,
     instrs: Vec<Instr>,
+    broken: bool,
+}
+
+impl RawNetwork {
+    fn new(title: String) -> RawNetwork {
+        RawNetwork {
+            title,
+            comment: Vec::new(),
+            instrs: Vec::new(),
+            broken: false,
+        }
+    }
+}
+
+/// Marks the network a bad line belongs to as broken, creating it when there is none yet.
+fn mark_broken(nets: &mut Vec<RawNetwork>) {
+    if nets.is_empty() {
+        nets.push(RawNetwork::new(String::new()));
+    }
+    if let Some(n) = nets.last_mut() {
+        n.broken = true;
+    }
 }
 
 /// Parses IL text into a program with line origins. Errors go to `sink`.
@@ -85,6 +106,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
             Ok(t) => t,
             Err(msg) => {
                 sink.report(origin, Code::L012Syntax, msg);
+                mark_broken(&mut blocks[current].2);
                 continue;
             }
         };
@@ -161,12 +183,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                     }
                     None => String::new(),
                 };
-                blocks[current].2.push(RawNetwork {
-                    title,
-                    comment: Vec::new(),
-                    explicit: true,
-                    instrs: Vec::new(),
-                });
+                blocks[current].2.push(RawNetwork::new(title));
                 in_header = true;
             }
             _ => {
@@ -176,6 +193,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                         Code::L010UnknownInstruction,
                         format!("unknown instruction `{word}`{}", suggestion(&upper)),
                     );
+                    mark_broken(&mut blocks[current].2);
                     continue;
                 };
                 let mut operands = Vec::new();
@@ -196,7 +214,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                             sink.report(
                                 origin,
                                 Code::L012Syntax,
-                                format!("{} operand `{t}`: {e}", op.name()),
+                                format!("{} operand: {e}", op.name()),
                             );
                             bad = true;
                             break;
@@ -204,6 +222,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                     }
                 }
                 if bad {
+                    mark_broken(&mut blocks[current].2);
                     continue;
                 }
                 let instr = Instr {
@@ -216,12 +235,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                     || (!has_network_lines
                         && starts_network(nets.last().map(|n| &n.instrs[..]).unwrap_or(&[]), op))
                 {
-                    nets.push(RawNetwork {
-                        title: String::new(),
-                        comment: Vec::new(),
-                        explicit: false,
-                        instrs: Vec::new(),
-                    });
+                    nets.push(RawNetwork::new(String::new()));
                 }
                 nets.last_mut()
                     .expect("a network was just ensured")
@@ -237,13 +251,11 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
             origin,
             networks: nets
                 .into_iter()
-                .map(|n| {
-                    let _ = n.explicit;
-                    ProgramNetwork {
-                        title: n.title,
-                        comment: n.comment.join("\n"),
-                        instrs: n.instrs,
-                    }
+                .map(|n| ProgramNetwork {
+                    title: n.title,
+                    comment: n.comment.join("\n"),
+                    instrs: n.instrs,
+                    broken: n.broken,
                 })
                 .collect(),
         });
@@ -390,6 +402,10 @@ pub fn import(text: &str) -> Imported {
         let mut nets = Vec::new();
         for (n, pn) in pb.networks.iter().enumerate() {
             sink.at(b, &label, n);
+            if pn.broken {
+                drawable = false;
+                continue;
+            }
             match decompile(&pn.instrs, &mut sink) {
                 Some(rungs) => {
                     width = width.max(width_needed(&rungs));

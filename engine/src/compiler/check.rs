@@ -55,7 +55,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                     Code::L038SubNumber,
                     format!("subprogram number P{number:04} is out of range (P{lo}–P{hi})"),
                 );
-            } else if subs.insert(number, b).is_some() {
+            } else if let std::collections::btree_map::Entry::Vacant(e) = subs.entry(number) {
+                // The first definition is the one calls reach.
+                e.insert(b);
+            } else {
                 sink.report(
                     block.origin,
                     Code::L038SubNumber,
@@ -111,8 +114,13 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                         }
                     }
                     Op::Tmrb | Op::Tmrc | Op::Ctrc => {
-                        let i = if instr.op == Op::Ctrc { 2 } else { 0 };
-                        if let Some(a) = instr.operands.get(i).and_then(Operand::address) {
+                        let (i, area) = if instr.op == Op::Ctrc {
+                            (2, Area::C)
+                        } else {
+                            (0, Area::T)
+                        };
+                        let number = instr.operands.get(i).and_then(Operand::address);
+                        if let Some(a) = number.filter(|a| a.area == area) {
                             if let Some(prev) = timers.get(&a) {
                                 sink.report(
                                     instr.origin,
@@ -370,12 +378,13 @@ fn check_operands(instr: &mut Instr, project: &Project, profile: &Profile, sink:
             .map(|v| fixed + v as usize),
         _ => Some(fixed),
     };
-    let names = spec
-        .operands
-        .iter()
-        .map(|o| o.name)
-        .collect::<Vec<_>>()
-        .join(" ");
+    let names = || {
+        spec.operands
+            .iter()
+            .map(|o| o.name)
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
     match expected {
         Some(n) if n != instr.operands.len() => {
             let extra = if instr.op == Op::Codb {
@@ -387,9 +396,10 @@ fn check_operands(instr: &mut Instr, project: &Project, profile: &Profile, sink:
                 instr.origin,
                 Code::L011OperandCount,
                 format!(
-                    "{} takes {n} operand{} ({names}{extra}), found {}",
+                    "{} takes {n} operand{} ({}{extra}), found {}",
                     spec.name,
                     if n == 1 { "" } else { "s" },
+                    names(),
                     instr.operands.len()
                 ),
             );
@@ -399,7 +409,7 @@ fn check_operands(instr: &mut Instr, project: &Project, profile: &Profile, sink:
             sink.report(
                 instr.origin,
                 Code::L011OperandCount,
-                format!("{} takes {names} and SIZE2 table entries", spec.name),
+                format!("{} takes {} and SIZE2 table entries", spec.name, names()),
             );
             return;
         }

@@ -149,6 +149,14 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             to_output[edges[i].from] = true;
         }
     }
+    // Nodes that a path with at least one contact reaches from the rail.
+    let mut behind_contact = vec![false; nodes];
+    for &i in &order {
+        let e = &edges[i];
+        if from_rail[e.from] && (behind_contact[e.from] || matches!(e.term, Term::Expr(_))) {
+            behind_contact[e.to] = true;
+        }
+    }
     let mut live = Vec::new();
     for e in edges {
         let origin = cell_origin(e.key.0 as usize, e.key.1 as usize);
@@ -182,11 +190,8 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
         if !o.op.spec().needs_act() {
             // LBL and CALLU stand alone: nothing but wires (or nothing) before them, and
             // nothing else on their rung.
-            let has_contacts = live
-                .iter()
-                .any(|e| e.to == n && !matches!(e.term, Term::Wire(_)))
-                || live.iter().any(|e| e.from == n)
-                || outputs_at[n] > 1;
+            let has_contacts =
+                behind_contact[n] || live.iter().any(|e| e.from == n) || outputs_at[n] > 1;
             if has_contacts {
                 sink.report(
                     o.origin,

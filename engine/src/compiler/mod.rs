@@ -27,6 +27,9 @@ pub struct ProgramNetwork {
     pub comment: String,
     /// Instructions in order.
     pub instrs: Vec<Instr>,
+    /// Whether a line of the network could not be parsed (its instructions are incomplete, so
+    /// structure checks would only repeat the syntax error).
+    pub broken: bool,
 }
 
 /// A compiled block.
@@ -116,6 +119,7 @@ pub fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
                 title: net.title.clone(),
                 comment: net.comment.clone(),
                 instrs,
+                broken: false,
             });
         }
         program.blocks.push(ProgramBlock {
@@ -143,7 +147,14 @@ pub fn compile_program(mut program: Program, project: &Project, mut sink: Sink) 
 
 fn finish(program: Program, sink: Sink, steps: StepCounts) -> Compiled {
     let mut diagnostics = sink.diagnostics;
-    diagnostics.sort_by(|a, b| a.location.cmp(&b.location).then(a.code.cmp(&b.code)));
+    // IL diagnostics read best in line order; ladder ones in block, network, cell order.
+    diagnostics.sort_by(|a, b| {
+        let key = |d: &Diagnostic| match d.location.origin {
+            Origin::Line(l) => (0, l, None),
+            _ => (1, 0, Some(d.location.clone())),
+        };
+        key(a).cmp(&key(b)).then(a.code.cmp(&b.code))
+    });
     diagnostics.dedup();
     Compiled {
         program,

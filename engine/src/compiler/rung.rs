@@ -131,12 +131,29 @@ fn emit_output(o: &Output, out: &mut Vec<Instr>) {
     out.push(Instr::new(o.op, o.operands.clone(), o.origin));
 }
 
+/// Whether `emit_and(e)` begins with LD/LDI (a parallel block first).
+fn and_starts_with_load(e: &Expr) -> bool {
+    match e {
+        Expr::Contact { .. } => false,
+        Expr::Or(_) => true,
+        Expr::And(terms) => and_starts_with_load(&terms[0]),
+    }
+}
+
 fn emit_node(node: &Node, out: &mut Vec<Instr>) {
-    let leading = node
+    let mut leading = node
         .items
         .iter()
         .take_while(|i| matches!(i, Item::Output(_)))
         .count();
+    // An LD right after an output starts a new rung in IL, so a lone branch that opens with a
+    // parallel block goes under MPS/MPP together with the outputs before it.
+    if let [Item::Branch(e, _)] = &node.items[leading..]
+        && leading > 0
+        && and_starts_with_load(e)
+    {
+        leading = 0;
+    }
     for item in &node.items[..leading] {
         if let Item::Output(o) = item {
             emit_output(o, out);
