@@ -150,3 +150,115 @@ fn the_sample_project_is_clean() {
             .collect::<String>()
     );
 }
+
+#[test]
+fn sim_counts_expectations_and_names_failing_lines() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("s.script");
+    std::fs::write(
+        &script,
+        "set X2.1 1\nscan\nexpect Y3.7 1\nexpect Y3.7 0   # wrong on purpose\nwatch Y3.7\nset X2.1 0\nset X2.2 1\nscan 2\nexpect Y3.7 0\nprint Y3\n",
+    )
+    .unwrap();
+    let trace = dir.path().join("t.csv");
+    let il = il_path("valid/self-holding.il");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        script.to_str().unwrap(),
+        "--trace",
+        trace.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 1, "{r:?}");
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines[0],
+        format!("{}:4: expect Y0003.7 = 0, got 1", script.display())
+    );
+    assert_eq!(lines[1], "Y0003 = 0");
+    assert_eq!(*lines.last().unwrap(), "2 passed, 1 failed");
+    assert_eq!(read(&trace), "tick,ms,Y0003.7\n2,16,0\n3,24,0\n");
+}
+
+#[test]
+fn a_script_error_stops_before_running_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("s.script");
+    std::fs::write(&script, "scan\n\nset R0000 256\n").unwrap();
+    let r = run(&[
+        "sim",
+        &il_path("valid/self-holding.il"),
+        "--script",
+        script.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 2);
+    assert!(r.stdout.is_empty());
+    assert!(
+        r.stderr
+            .starts_with(&format!("{}:3: 256 does not fit R0000", script.display())),
+        "{}",
+        r.stderr
+    );
+}
+
+#[test]
+fn sim_of_a_program_with_errors_exits_1() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("s.script");
+    std::fs::write(&script, "scan\n").unwrap();
+    let r = run(&[
+        "sim",
+        &il_path("invalid/operands.il"),
+        "--script",
+        script.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 1);
+    assert!(r.stderr.contains("the program cannot run"), "{}", r.stderr);
+}
+
+#[test]
+fn the_watchdog_names_the_loop_in_sim() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = dir.path().join("loop.il");
+    std::fs::write(
+        &il,
+        "LEVEL2\nNETWORK\nLBL L0001\nNETWORK\nLD X0000.0\nJMPB L0001\n",
+    )
+    .unwrap();
+    let script = dir.path().join("s.script");
+    std::fs::write(&script, "set X0.0 1\nscan 5\nexpect X0.0 1\n").unwrap();
+    let r = run(&[
+        "sim",
+        il.to_str().unwrap(),
+        "--script",
+        script.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    assert!(
+        r.stdout
+            .contains("PLC halted at LEVEL2 network 2: a JMPB loop ran past 200000 steps"),
+        "{}",
+        r.stdout
+    );
+}
+
+#[test]
+fn bench_prints_its_figures_last() {
+    let r = run(&["bench", &il_path("valid/functions.il"), "--scans", "50"]);
+    assert_eq!(r.code, 0, "{r:?}");
+    let last = r.stdout.lines().last().unwrap();
+    let keys: Vec<&str> = last
+        .split(' ')
+        .map(|kv| kv.split('=').next().unwrap())
+        .collect();
+    assert_eq!(
+        keys,
+        ["steps", "scans", "ns_per_scan", "ns_per_step"],
+        "{last}"
+    );
+    assert!(
+        last.starts_with("steps=") && last.contains(" scans=50 "),
+        "{last}"
+    );
+}

@@ -4,6 +4,8 @@
 use crate::source::Source;
 use clap::{Parser, Subcommand};
 use ladder_engine::compiler::{Code, Compiled, compile};
+use ladder_engine::sim::{self, Script};
+use ladder_engine::vm::Vm;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
 use std::io::Write;
@@ -33,6 +35,25 @@ pub enum Command {
         /// Output file (default: standard output).
         #[arg(short, long)]
         output: Option<PathBuf>,
+    },
+    /// Run the program on the simulated PLC under a stimulus script.
+    Sim {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// The stimulus script.
+        #[arg(long)]
+        script: PathBuf,
+        /// Write every watched address per tick to this CSV file.
+        #[arg(long)]
+        trace: Option<PathBuf>,
+    },
+    /// Time the scan.
+    Bench {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// Scans to time.
+        #[arg(long, default_value_t = 10_000)]
+        scans: u64,
     },
     /// Build a project whose ladder diagram is drawn from an instruction list.
     ImportIl {
@@ -74,6 +95,12 @@ where
         Some(Command::Check { path }) => check(&path, out),
         Some(Command::ExportIl { path, output }) => export_il(&path, output.as_deref(), out, err),
         Some(Command::ImportIl { il, output }) => import_il(&il, &output, err),
+        Some(Command::Sim {
+            path,
+            script,
+            trace,
+        }) => sim(&path, &script, trace.as_deref(), out, err),
+        Some(Command::Bench { path, scans }) => bench(&path, scans, out, err),
     };
     match result {
         Ok(code) => code,
@@ -193,4 +220,96 @@ fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<
         );
     }
     Ok(i32::from(errors > 0))
+}
+
+/// Builds a PLC for a PATH, or reports why the program cannot run (exit 1).
+fn plc(path: &Path, err: &mut dyn Write) -> anyhow::Result<Result<Vm, i32>> {
+    let source = Source::read(path)?;
+    let project = match source {
+        Source::Project(p) => p,
+        Source::Il { imported, .. } => match imported.project {
+            Some(p) => p,
+            None => {
+                print_diagnostics(path, &imported.compiled, err);
+                let _ = writeln!(
+                    err,
+                    "{}; the program cannot run",
+                    summary(&imported.compiled)
+                );
+                return Ok(Err(1));
+            }
+        },
+    };
+    let compiled = compile(&project);
+    if compiled.errors() > 0 {
+        print_diagnostics(path, &compiled, err);
+        let _ = writeln!(err, "{}; the program cannot run", summary(&compiled));
+        return Ok(Err(1));
+    }
+    Ok(Ok(Vm::new(&project).map_err(|e| anyhow::anyhow!("{e}"))?))
+}
+
+fn sim(
+    path: &Path,
+    script_path: &Path,
+    trace: Option<&Path>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let text = std::fs::read_to_string(script_path)
+        .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", script_path.display()))?;
+    let mut vm = match plc(path, err)? {
+        Ok(vm) => vm,
+        Err(code) => return Ok(code),
+    };
+    let name = script_path.display().to_string();
+    let script = match Script::parse(&text, vm.profile()) {
+        Ok(s) => s,
+        Err(e) => {
+            let _ = writeln!(err, "{name}:{}: {}", e.line, e.message);
+            return Ok(2);
+        }
+    };
+    let outcome = sim::run(&mut vm, &script, &name);
+    for line in &outcome.output {
+        let _ = writeln!(out, "{line}");
+    }
+    if let Some(t) = trace {
+        std::fs::write(t, &outcome.trace_csv)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", t.display()))?;
+    }
+    let _ = writeln!(out, "{} passed, {} failed", outcome.passed, outcome.failed);
+    Ok(i32::from(outcome.failed > 0))
+}
+
+fn bench(path: &Path, scans: u64, out: &mut dyn Write, err: &mut dyn Write) -> anyhow::Result<i32> {
+    let mut vm = match plc(path, err)? {
+        Ok(vm) => vm,
+        Err(code) => return Ok(code),
+    };
+    let scans = scans.max(1);
+    // Warm up caches and branch predictors before timing.
+    for _ in 0..scans.min(1000) {
+        vm.tick();
+    }
+    let before = vm.executed_steps();
+    let start = std::time::Instant::now();
+    for _ in 0..scans {
+        vm.tick();
+    }
+    let elapsed = start.elapsed().as_nanos() as f64;
+    if let Some(h) = vm.halt() {
+        let _ = writeln!(err, "the PLC halted during the benchmark: {h}");
+        return Ok(1);
+    }
+    let steps = (vm.executed_steps() - before) as f64 / scans as f64;
+    let ns_per_scan = elapsed / scans as f64;
+    let _ = writeln!(
+        out,
+        "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3}",
+        steps.round() as u64,
+        ns_per_scan,
+        ns_per_scan / steps.max(1.0)
+    );
+    Ok(0)
 }

@@ -10,6 +10,8 @@ pub mod generate;
 pub mod il;
 pub mod model;
 pub mod profile;
+pub mod sim;
+pub mod vm;
 
 pub use address::{Address, AddressError, Area};
 pub use catalog::{CATALOG, InstrSpec, Op};

@@ -1,8 +1,10 @@
 //! Seeded fuzz loops over the parsers: no input may panic them.
 
-use ladder_engine::address::Address;
+use ladder_engine::address::{Address, Area};
 use ladder_engine::compiler::compile;
 use ladder_engine::generate::SplitMix64;
+use ladder_engine::sim::Script;
+use ladder_engine::vm::Vm;
 use ladder_engine::{Profile, ProfileId, il};
 
 const ALPHABET: &[char] = &[
@@ -100,7 +102,62 @@ fn the_il_parser_survives_100_000_mutated_programs() {
             drawn += 1;
             let c = compile(&p);
             let _ = il::print(&c.program);
+            // Whatever compiles also runs: random operands through every instruction.
+            if c.errors() == 0 {
+                let mut vm = Vm::new(&p).expect("an error-free program runs");
+                for k in 0..3 {
+                    vm.write(Address::byte(Area::X, k), 1, rng.below(256) as i64);
+                    vm.write(Address::byte(Area::R, k), 1, rng.below(256) as i64);
+                    vm.tick();
+                }
+            }
         }
     }
     assert!(drawn > 5_000, "many snippets should still draw ({drawn})");
+}
+
+#[test]
+fn the_script_parser_survives_100_000_mutated_scripts() {
+    let base = [
+        "set X0002.1 1",
+        "set R0010:2 -300",
+        "setf D0004 1.5",
+        "force Y0.1 1",
+        "unforce Y0.1",
+        "scan",
+        "scan 14",
+        "run 250ms",
+        "run 2s",
+        "expect T0000 96",
+        "expect R0020:4 -1",
+        "expectf D0004 1.5 0.01",
+        "print R0010:2",
+        "watch Y0003.7",
+        "division 2",
+        "power-cycle",
+        "# comment",
+        "; comment",
+        "",
+    ];
+    let profile = Profile::get(ProfileId::Gsk988ta);
+    let mut rng = SplitMix64::new(3);
+    let mut ok = 0;
+    for _ in 0..100_000 {
+        let n = 1 + rng.below(6) as usize;
+        let mut text = String::new();
+        for _ in 0..n {
+            let line = base[rng.below(base.len() as u64) as usize];
+            let line = if rng.chance(50) {
+                mutate(line, &mut rng)
+            } else {
+                line.to_string()
+            };
+            text.push_str(&line);
+            text.push('\n');
+        }
+        if Script::parse(&text, profile).is_ok() {
+            ok += 1;
+        }
+    }
+    assert!(ok > 10_000, "many scripts should still parse ({ok})");
 }

@@ -1,0 +1,78 @@
+//! Scan benchmarks: `cargo bench -p ladder-engine --bench scan`.
+//!
+//! Prints the figures of the scan-engine targets: hot ns/step of a 5000-step bit-logic
+//! program, the median of scans paced 8 ms apart, a 5000-step mixed program, the cost of
+//! monitoring 50 networks, and one hour of machine time of a 500-step program.
+
+use ladder_engine::generate::{Mix, program_il};
+use ladder_engine::il;
+use ladder_engine::vm::Vm;
+use std::time::{Duration, Instant};
+
+fn vm(steps: u32, mix: Mix) -> Vm {
+    let project = il::import(&program_il(steps, mix, 1))
+        .project
+        .expect("generated programs draw");
+    Vm::new(&project).expect("generated programs compile")
+}
+
+/// Nanoseconds per scan and per executed step over `scans` back-to-back scans.
+fn hot(vm: &mut Vm, scans: u64) -> (f64, f64) {
+    for _ in 0..1000 {
+        vm.tick();
+    }
+    let before = vm.executed_steps();
+    let t = Instant::now();
+    for _ in 0..scans {
+        vm.tick();
+    }
+    let ns = t.elapsed().as_nanos() as f64;
+    let steps = (vm.executed_steps() - before) as f64;
+    (ns / scans as f64, ns / steps)
+}
+
+fn main() {
+    let mut bits = vm(5000, Mix::BitLogic);
+    let (scan_ns, step_ns) = hot(&mut bits, 20_000);
+    println!("bit-logic 5000 steps, hot: ns_per_scan={scan_ns:.0} ns_per_step={step_ns:.3}");
+
+    let mut paced = Vec::new();
+    for _ in 0..200 {
+        std::thread::sleep(Duration::from_millis(8));
+        let t = Instant::now();
+        bits.tick();
+        paced.push(t.elapsed().as_nanos() as f64);
+    }
+    paced.sort_by(f64::total_cmp);
+    println!(
+        "bit-logic 5000 steps, paced 8 ms apart: median_ns_per_scan={:.0} median_ns_per_step={:.3}",
+        paced[paced.len() / 2],
+        paced[paced.len() / 2] / 5000.0
+    );
+
+    let mut mixed = vm(5000, Mix::Mixed);
+    let (scan_ns, step_ns) = hot(&mut mixed, 20_000);
+    println!("mixed 5000 steps, hot: ns_per_scan={scan_ns:.0} ns_per_step={step_ns:.3}");
+
+    let (_, off) = hot(&mut mixed, 20_000);
+    let networks = mixed.code().networks.len();
+    for n in (0..networks).step_by((networks / 50).max(1)).take(50) {
+        mixed.watch(n, true);
+    }
+    let (_, on) = hot(&mut mixed, 20_000);
+    println!(
+        "monitoring 50 networks: ns_per_step off={off:.3} on={on:.3} cost={:+.1}%",
+        (on / off - 1.0) * 100.0
+    );
+
+    let mut small = vm(500, Mix::Mixed);
+    let t = Instant::now();
+    for _ in 0..450_000 {
+        small.tick();
+    }
+    println!(
+        "one hour of machine time (450000 ticks) of a {}-step program: {:.3} s",
+        small.executed_steps() / 450_000,
+        t.elapsed().as_secs_f64()
+    );
+}

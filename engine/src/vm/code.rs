@@ -1,0 +1,458 @@
+//! The executable form: one `u32` word per instruction (opcode in the low byte, a bit index,
+//! jump target or table index above it), plus a table of resolved function-instruction
+//! arguments. Built once from a compiled program; the scan loop only reads it.
+
+use super::memory::{Layout, Loc};
+use crate::address::{Address, Area};
+use crate::catalog::{InstrClass, Op, OperandKind};
+use crate::compiler::{Instr, Program};
+use crate::model::{BlockKind, Operand};
+use thiserror::Error;
+
+/// VM opcodes. Contacts and coils carry a bit index (byte offset × 8 + bit).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+#[allow(missing_docs)] // One per basic instruction; see the catalogue.
+pub enum VmOp {
+    /// LD at the start of a rung: no block to push.
+    LdStart,
+    /// LDI at the start of a rung.
+    LdiStart,
+    Ld,
+    Ldi,
+    And,
+    Ani,
+    Or,
+    Ori,
+    Orb,
+    Anb,
+    Out,
+    Outn,
+    Mps,
+    Mrd,
+    Mpp,
+    // Everything above is a basic bit instruction; each inverted form is its plain form + 1.
+    Set,
+    Rst,
+    /// Jump to the word index in the argument when ACT = 1.
+    Jmpb,
+    Lbl,
+    /// Call the code at the word index in the argument when ACT = 1.
+    Call,
+    Callu,
+    /// Start of a network: the argument indexes [`Code::networks`].
+    Net,
+    /// A function instruction: the argument indexes [`Code::fns`].
+    Fn,
+    /// End of a block or subprogram.
+    Ret,
+}
+
+const OPS: [VmOp; 24] = [
+    VmOp::LdStart,
+    VmOp::LdiStart,
+    VmOp::Ld,
+    VmOp::Ldi,
+    VmOp::And,
+    VmOp::Ani,
+    VmOp::Or,
+    VmOp::Ori,
+    VmOp::Orb,
+    VmOp::Anb,
+    VmOp::Out,
+    VmOp::Outn,
+    VmOp::Mps,
+    VmOp::Mrd,
+    VmOp::Mpp,
+    VmOp::Set,
+    VmOp::Rst,
+    VmOp::Jmpb,
+    VmOp::Lbl,
+    VmOp::Call,
+    VmOp::Callu,
+    VmOp::Net,
+    VmOp::Fn,
+    VmOp::Ret,
+];
+
+/// Words with an opcode below this are basic bit instructions (the loop's fast path).
+pub const LOGIC_OPS: u32 = VmOp::Set as u32;
+
+impl VmOp {
+    /// Decodes the low byte of a word.
+    #[inline(always)]
+    pub fn decode(word: u32) -> VmOp {
+        OPS.get((word & 0xFF) as usize)
+            .copied()
+            .unwrap_or(VmOp::Ret)
+    }
+}
+
+/// Packs an opcode and its argument.
+pub fn word(op: VmOp, arg: u32) -> u32 {
+    debug_assert!(arg < 1 << 24);
+    op as u32 | arg << 8
+}
+
+/// A resolved operand of a function instruction.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub enum Arg {
+    /// No operand.
+    #[default]
+    None,
+    /// An integer constant.
+    Int(i32),
+    /// A real constant.
+    Real(f32),
+    /// A byte or word location.
+    Loc(Loc),
+    /// A bit: byte offset × 8 + bit.
+    Bit(u32),
+}
+
+/// Most operands a function instruction has (AXCTL, XMOV: 8).
+pub const MAX_ARGS: usize = 8;
+
+/// One function instruction instance.
+#[derive(Clone, Debug)]
+pub struct FnCall {
+    /// Which instruction.
+    pub op: Op,
+    /// Its operands in IL order.
+    pub args: [Arg; MAX_ARGS],
+    /// CODB's table: a range of [`Code::consts`].
+    pub table: (u32, u32),
+    /// Index of its per-instance state (edge, timer and window memories).
+    pub state: u32,
+    /// Steps it costs.
+    pub cost: u32,
+    /// Which network it is in (index into [`Code::networks`]).
+    pub network: u32,
+}
+
+/// Where a network's code is, for monitoring and for naming the place of a halt.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NetworkInfo {
+    /// Block index in the ladder.
+    pub block: usize,
+    /// Network index in the block.
+    pub network: usize,
+    /// Block label.
+    pub label: String,
+    /// First word of the network.
+    pub start: u32,
+    /// One past its last word.
+    pub end: u32,
+}
+
+/// The executable program.
+#[derive(Clone, Debug)]
+pub struct Code {
+    /// Instruction words.
+    pub words: Vec<u32>,
+    /// Function-instruction instances.
+    pub fns: Vec<FnCall>,
+    /// CODB tables.
+    pub consts: Vec<i32>,
+    /// Networks in code order (a subprogram called from both levels appears twice).
+    pub networks: Vec<NetworkInfo>,
+    /// Entry of level 1.
+    pub level1: u32,
+    /// Entry of level 2.
+    pub level2: u32,
+    /// Level 2's static step count (S of the slice quota).
+    pub level2_steps: u32,
+    /// Number of per-instance states.
+    pub states: u32,
+    /// For each word, the source instruction it came from (block, network, index in the
+    /// network's instruction list), or none for markers.
+    pub source: Vec<Option<(u16, u32, u32)>>,
+}
+
+/// Why a program cannot be run.
+#[derive(Clone, Debug, Error, PartialEq, Eq)]
+pub enum LowerError {
+    /// The program still has compile errors.
+    #[error("the program has {0} compile error(s); run check and fix them first")]
+    CompileErrors(usize),
+    /// An operand the compiler should have resolved.
+    #[error("{0}")]
+    Unresolved(String),
+}
+
+struct Lowerer<'a> {
+    program: &'a Program,
+    layout: &'a Layout,
+    code: Code,
+    /// Entry word of each block for each level context, once lowered.
+    entries: Vec<[Option<u32>; 2]>,
+    /// Jumps to patch: (word index, block, label number, context).
+    jumps: Vec<(usize, usize, u16)>,
+    /// Calls to patch: (word index, target block, context).
+    calls: Vec<(usize, usize, usize)>,
+    /// Label word per (block, context): label number → word.
+    labels: Vec<(usize, usize, u16, u32)>,
+}
+
+fn bit_index(loc: Loc, a: Address) -> u32 {
+    loc.off * 8 + u32::from(a.bit.unwrap_or(0))
+}
+
+impl Lowerer<'_> {
+    fn arg(&self, op: Op, i: usize, o: &Operand, latched: bool) -> Result<Arg, LowerError> {
+        let spec = op.spec().operand(i);
+        Ok(match o {
+            Operand::Int(v) => {
+                if spec.is_some_and(|s| s.kind == OperandKind::RealOrD) {
+                    Arg::Real(*v as f32)
+                } else {
+                    Arg::Int(*v as i32)
+                }
+            }
+            Operand::Real(v) => Arg::Real(*v),
+            Operand::Addr(a) => match a.area {
+                Area::L | Area::P => Arg::Int(i32::from(a.number)),
+                _ => {
+                    let loc = self.layout.loc(*a, latched);
+                    if a.bit.is_some() {
+                        Arg::Bit(bit_index(loc, *a))
+                    } else {
+                        Arg::Loc(loc)
+                    }
+                }
+            },
+            Operand::Symbol(s) => {
+                return Err(LowerError::Unresolved(format!(
+                    "symbol `{s}` is not resolved"
+                )));
+            }
+        })
+    }
+
+    fn bit(&self, o: Option<&Operand>, latched: bool) -> Result<u32, LowerError> {
+        match o {
+            Some(Operand::Addr(a)) if a.bit.is_some() => {
+                Ok(bit_index(self.layout.loc(*a, latched), *a))
+            }
+            other => Err(LowerError::Unresolved(format!(
+                "expected a bit address, found {other:?}"
+            ))),
+        }
+    }
+
+    /// Lowers block `b` in context `ctx` (0: level 1, 1: level 2) if not yet done.
+    fn block(&mut self, b: usize, ctx: usize) -> Result<u32, LowerError> {
+        if let Some(entry) = self.entries[b][ctx] {
+            return Ok(entry);
+        }
+        let latched = ctx == 1;
+        let entry = self.code.words.len() as u32;
+        self.entries[b][ctx] = Some(entry);
+        let block = &self.program.blocks[b];
+        let mut pending_subs = Vec::new();
+        for (n, net) in block.networks.iter().enumerate() {
+            let net_index = self.code.networks.len() as u32;
+            self.code.networks.push(NetworkInfo {
+                block: b,
+                network: n,
+                label: block.kind.label(),
+                start: self.code.words.len() as u32,
+                end: 0,
+            });
+            self.push(word(VmOp::Net, net_index), None);
+            let mut mps_depth = 0i32;
+            let mut rung_start = true;
+            for (k, instr) in net.instrs.iter().enumerate() {
+                let src = Some((b as u16, n as u32, k as u32));
+                self.instr(
+                    instr,
+                    latched,
+                    b,
+                    ctx,
+                    net_index,
+                    &mut rung_start,
+                    &mut mps_depth,
+                    src,
+                    &mut pending_subs,
+                )?;
+            }
+            let end = self.code.words.len() as u32;
+            self.code.networks[net_index as usize].end = end;
+        }
+        self.push(word(VmOp::Ret, 0), None);
+        for target in pending_subs {
+            self.block(target, ctx)?;
+        }
+        Ok(entry)
+    }
+
+    fn push(&mut self, w: u32, src: Option<(u16, u32, u32)>) {
+        self.code.words.push(w);
+        self.code.source.push(src);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn instr(
+        &mut self,
+        instr: &Instr,
+        latched: bool,
+        block: usize,
+        ctx: usize,
+        net_index: u32,
+        rung_start: &mut bool,
+        mps_depth: &mut i32,
+        src: Option<(u16, u32, u32)>,
+        pending_subs: &mut Vec<usize>,
+    ) -> Result<(), LowerError> {
+        let first = instr.operands.first();
+        let op = instr.op;
+        let at = self.code.words.len();
+        let w = match op {
+            Op::Ld | Op::Ldi => {
+                let b = self.bit(first, latched)?;
+                let vm = match (op, *rung_start) {
+                    (Op::Ld, true) => VmOp::LdStart,
+                    (Op::Ldi, true) => VmOp::LdiStart,
+                    (Op::Ld, false) => VmOp::Ld,
+                    _ => VmOp::Ldi,
+                };
+                word(vm, b)
+            }
+            Op::And => word(VmOp::And, self.bit(first, latched)?),
+            Op::Ani => word(VmOp::Ani, self.bit(first, latched)?),
+            Op::Or => word(VmOp::Or, self.bit(first, latched)?),
+            Op::Ori => word(VmOp::Ori, self.bit(first, latched)?),
+            Op::Orb => word(VmOp::Orb, 0),
+            Op::Anb => word(VmOp::Anb, 0),
+            Op::Mps => word(VmOp::Mps, 0),
+            Op::Mrd => word(VmOp::Mrd, 0),
+            Op::Mpp => word(VmOp::Mpp, 0),
+            Op::Out => word(VmOp::Out, self.bit(first, false)?),
+            Op::Outn => word(VmOp::Outn, self.bit(first, false)?),
+            Op::Set => word(VmOp::Set, self.bit(first, false)?),
+            Op::Rst => word(VmOp::Rst, self.bit(first, false)?),
+            Op::Lbl => {
+                if let Some(Operand::Addr(a)) = first {
+                    self.labels.push((block, ctx, a.number, at as u32));
+                }
+                word(VmOp::Lbl, 0)
+            }
+            Op::Jmpb => {
+                if let Some(Operand::Addr(a)) = first {
+                    self.jumps.push((at, block * 2 + ctx, a.number));
+                }
+                word(VmOp::Jmpb, 0)
+            }
+            Op::Call | Op::Callu => {
+                let Some(Operand::Addr(a)) = first else {
+                    return Err(LowerError::Unresolved("CALL without a subprogram".into()));
+                };
+                let target = self
+                    .program
+                    .blocks
+                    .iter()
+                    .position(
+                        |bl| matches!(bl.kind, BlockKind::Sub { number, .. } if number == a.number),
+                    )
+                    .ok_or_else(|| LowerError::Unresolved(format!("no subprogram {a}")))?;
+                self.calls.push((at, target, ctx));
+                pending_subs.push(target);
+                word(
+                    if op == Op::Call {
+                        VmOp::Call
+                    } else {
+                        VmOp::Callu
+                    },
+                    0,
+                )
+            }
+            _ => {
+                let mut call = FnCall {
+                    op,
+                    args: [Arg::None; MAX_ARGS],
+                    table: (0, 0),
+                    state: self.code.states,
+                    cost: op.spec().steps(instr.operands.len()),
+                    network: net_index,
+                };
+                self.code.states += 1;
+                let fixed = op.spec().operands.len();
+                for (i, o) in instr.operands.iter().enumerate().take(fixed.min(MAX_ARGS)) {
+                    call.args[i] = self.arg(op, i, o, latched)?;
+                }
+                if op == Op::Codb {
+                    let start = self.code.consts.len() as u32;
+                    for o in &instr.operands[fixed..] {
+                        if let Operand::Int(v) = o {
+                            self.code.consts.push(*v as i32);
+                        }
+                    }
+                    call.table = (start, self.code.consts.len() as u32);
+                }
+                let index = self.code.fns.len() as u32;
+                self.code.fns.push(call);
+                word(VmOp::Fn, index)
+            }
+        };
+        self.push(w, src);
+        match op.spec().class {
+            InstrClass::Coil | InstrClass::Function => *rung_start = *mps_depth == 0,
+            _ => {
+                *rung_start = false;
+                match op {
+                    Op::Mps => *mps_depth += 1,
+                    Op::Mpp => *mps_depth -= 1,
+                    _ => {}
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Lowers a compiled, error-free program to executable code.
+pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
+    let mut l = Lowerer {
+        program,
+        layout,
+        code: Code {
+            words: Vec::new(),
+            fns: Vec::new(),
+            consts: Vec::new(),
+            networks: Vec::new(),
+            level1: 0,
+            level2: 0,
+            level2_steps: 0,
+            states: 0,
+            source: Vec::new(),
+        },
+        entries: vec![[None, None]; program.blocks.len()],
+        jumps: Vec::new(),
+        calls: Vec::new(),
+        labels: Vec::new(),
+    };
+    l.code.level1 = l.block(0, 0)?;
+    l.code.level2 = l.block(1, 1)?;
+    for (at, key, number) in std::mem::take(&mut l.jumps) {
+        let (block, ctx) = (key / 2, key % 2);
+        let target = l
+            .labels
+            .iter()
+            .find(|(b, c, n, _)| *b == block && *c == ctx && *n == number)
+            .map(|t| t.3)
+            .ok_or_else(|| LowerError::Unresolved(format!("no label L{number:04} in the block")))?;
+        l.code.words[at] = word(VmOp::Jmpb, target);
+    }
+    for (at, target, ctx) in std::mem::take(&mut l.calls) {
+        let entry = l.entries[target][ctx].expect("every called block was lowered");
+        let op = VmOp::decode(l.code.words[at]);
+        l.code.words[at] = word(op, entry);
+    }
+    l.code.level2_steps = program.blocks[1]
+        .networks
+        .iter()
+        .flat_map(|n| &n.instrs)
+        .map(|i| i.op.spec().steps(i.operands.len()))
+        .sum();
+    Ok(l.code)
+}

@@ -1,0 +1,410 @@
+//! The interpreter loop. Logic state lives in locals: the accumulator as 0/1, and the block
+//! and branch stacks as bit stacks in two `u64` (their depth limits, 32 and 16, fit), so
+//! pushing and popping is a shift. The loop is instantiated twice: without tracing (the
+//! normal case, no extra work) and with tracing for watched networks; a `Net` word switches.
+
+use super::code::{Arg, VmOp};
+
+// Opcodes of the basic bit instructions as match patterns. Each inverted form is the plain
+// form + 1, so `op & 1` is the inversion (see the order of `VmOp`).
+const OP_LD_START: u32 = VmOp::LdStart as u32;
+const OP_LDI_START: u32 = VmOp::LdiStart as u32;
+const OP_LD: u32 = VmOp::Ld as u32;
+const OP_LDI: u32 = VmOp::Ldi as u32;
+const OP_AND: u32 = VmOp::And as u32;
+const OP_ANI: u32 = VmOp::Ani as u32;
+const OP_OR: u32 = VmOp::Or as u32;
+const OP_ORI: u32 = VmOp::Ori as u32;
+const OP_ORB: u32 = VmOp::Orb as u32;
+const OP_ANB: u32 = VmOp::Anb as u32;
+const OP_MPS: u32 = VmOp::Mps as u32;
+const OP_MRD: u32 = VmOp::Mrd as u32;
+const OP_MPP: u32 = VmOp::Mpp as u32;
+const OP_OUT: u32 = VmOp::Out as u32;
+const OP_OUTN: u32 = VmOp::Outn as u32;
+const OP_NET: u32 = VmOp::Net as u32;
+use super::functions::{self, Ctx};
+use super::{Frame, Halt, Vm, WATCHDOG_STEPS};
+
+use crate::address::Area;
+
+/// Which level is running.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Level {
+    One,
+    Two,
+}
+
+enum Exit {
+    /// The level's code ended.
+    Done,
+    /// Level 2 reached its quota; resume at this word next tick.
+    Suspend(u32),
+    /// Continue at this word in the other tracing mode.
+    Switch(u32),
+    /// The watchdog stopped the PLC at this word.
+    Watchdog(u32),
+}
+
+#[inline(always)]
+fn read_bit(mem: &[u8], arg: u32) -> u32 {
+    u32::from(mem[(arg >> 3) as usize] >> (arg & 7)) & 1
+}
+
+#[inline(always)]
+fn write_bit(mem: &mut [u8], arg: u32, v: u32) {
+    let byte = &mut mem[(arg >> 3) as usize];
+    let sh = arg & 7;
+    *byte = (*byte & !(1 << sh)) | ((v as u8) << sh);
+}
+
+impl Vm {
+    /// Runs a level from word `pc`. Returns where level 2 stopped for this tick (`None` when
+    /// it reached its end), or why the PLC halted.
+    pub(super) fn run(&mut self, pc: u32, level: Level, quota: u64) -> Result<Option<u32>, Halt> {
+        let mut pc = pc;
+        let mut tracing = false;
+        let mut steps = 0u64;
+        let result = loop {
+            let exit = if tracing {
+                self.exec::<true>(pc, level, quota, &mut steps)
+            } else {
+                self.exec::<false>(pc, level, quota, &mut steps)
+            };
+            match exit {
+                Exit::Switch(p) => {
+                    pc = p;
+                    tracing = !tracing;
+                }
+                Exit::Done => break Ok(None),
+                Exit::Suspend(p) => break Ok(Some(p)),
+                Exit::Watchdog(at) => break Err(self.halt_at(at, level)),
+            }
+        };
+        if level == Level::Two {
+            self.level2.cycle_steps += steps;
+        }
+        self.executed += steps;
+        self.frames.clear();
+        result
+    }
+
+    fn halt_at(&self, pc: u32, level: Level) -> Halt {
+        let net = self
+            .code
+            .networks
+            .iter()
+            .find(|n| n.start <= pc && pc < n.end.max(n.start + 1));
+        let (block, network) =
+            net.map_or(("?".to_string(), 0), |n| (n.label.clone(), n.network + 1));
+        Halt {
+            block,
+            network,
+            message: format!(
+                "a JMPB loop ran past {WATCHDOG_STEPS} steps in {}; the PLC is stopped until power-cycle",
+                if level == Level::One {
+                    "one level-1 scan"
+                } else {
+                    "one level-2 cycle"
+                }
+            ),
+        }
+    }
+
+    fn exec<const TRACE: bool>(
+        &mut self,
+        pc: u32,
+        level: Level,
+        quota: u64,
+        steps_out: &mut u64,
+    ) -> Exit {
+        let budget = if level == Level::One {
+            WATCHDOG_STEPS
+        } else {
+            WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
+        };
+        let now = self.now_ms();
+        let g_base = self.layout.area_range(Area::G).start as u32;
+        let d_range = self.layout.area_range(Area::D);
+        let forcing = !self.forced_bytes.is_empty();
+        let watching = self.watch_count > 0;
+        let mut r = Regs {
+            pc,
+            acc: 0,
+            blocks: 0,
+            branches: 0,
+            steps: *steps_out,
+        };
+        // Level 1 never stops at a network; level 2 stops when its quota is reached.
+        let quota = if level == Level::One { u64::MAX } else { quota };
+        loop {
+            let at = hot::<TRACE>(
+                &self.code.words,
+                &mut self.mem,
+                &mut self.trace,
+                &mut r,
+                quota,
+                watching,
+                forcing,
+            );
+            let w = self.code.words[at as usize];
+            let arg = w >> 8;
+            r.pc = at + 1;
+            match VmOp::decode(w) {
+                VmOp::Net => {
+                    if level == Level::Two && self.frames.is_empty() && r.steps >= quota {
+                        *steps_out = r.steps;
+                        return Exit::Suspend(at);
+                    }
+                    if (TRACE || watching) && self.watched[arg as usize] != TRACE {
+                        *steps_out = r.steps;
+                        return Exit::Switch(at);
+                    }
+                }
+                VmOp::Out | VmOp::Outn => {
+                    // Only while forcing: the write is followed by the forces.
+                    if TRACE {
+                        self.trace[at as usize] = r.acc as u8;
+                    }
+                    let v = r.acc ^ u32::from(w & 0xFF == VmOp::Outn as u32);
+                    write_bit(&mut self.mem, arg, v);
+                    self.apply_forces();
+                    r.steps += 1;
+                }
+                VmOp::Set | VmOp::Rst => {
+                    if TRACE {
+                        self.trace[at as usize] = r.acc as u8;
+                    }
+                    if r.acc != 0 {
+                        write_bit(&mut self.mem, arg, u32::from(w & 0xFF == VmOp::Set as u32));
+                        self.apply_forces();
+                    }
+                    r.steps += 2;
+                }
+                VmOp::Lbl => r.steps += 2,
+                VmOp::Jmpb => {
+                    if TRACE {
+                        self.trace[at as usize] = r.acc as u8;
+                    }
+                    r.steps += 2;
+                    if r.acc != 0 {
+                        if arg < r.pc && r.steps > budget {
+                            *steps_out = r.steps;
+                            return Exit::Watchdog(at);
+                        }
+                        r.pc = arg;
+                    }
+                }
+                VmOp::Call | VmOp::Callu => {
+                    let unconditional = w & 0xFF == VmOp::Callu as u32;
+                    if TRACE {
+                        self.trace[at as usize] = r.acc as u8;
+                    }
+                    r.steps += 2;
+                    if r.acc != 0 || unconditional {
+                        self.frames.push(Frame {
+                            ret: r.pc,
+                            acc: r.acc,
+                            blocks: r.blocks,
+                            branches: r.branches,
+                        });
+                        r.pc = arg;
+                    }
+                }
+                VmOp::Fn => {
+                    let Vm {
+                        code,
+                        mem,
+                        states,
+                        cnc,
+                        window,
+                        trace,
+                        ..
+                    } = self;
+                    let f = &code.fns[arg as usize];
+                    if TRACE {
+                        trace[at as usize] = r.acc as u8;
+                    }
+                    r.steps += u64::from(f.cost);
+                    let mut cx = Ctx {
+                        mem,
+                        consts: &code.consts,
+                        now,
+                        cnc: cnc.as_mut(),
+                        window,
+                        g_base,
+                        d_range: d_range.clone(),
+                    };
+                    functions::exec(f, r.acc != 0, &mut states[f.state as usize], &mut cx);
+                    if forcing {
+                        self.apply_forces();
+                    }
+                }
+                VmOp::Ret => match self.frames.pop() {
+                    None => {
+                        *steps_out = r.steps;
+                        return Exit::Done;
+                    }
+                    Some(fr) => {
+                        r.pc = fr.ret;
+                        r.acc = fr.acc;
+                        r.blocks = fr.blocks;
+                        r.branches = fr.branches;
+                    }
+                },
+                _ => unreachable!("the hot loop runs every other basic word"),
+            }
+        }
+    }
+}
+
+/// The logic registers.
+struct Regs {
+    pc: u32,
+    acc: u32,
+    blocks: u64,
+    branches: u64,
+    steps: u64,
+}
+
+/// Runs basic bit words (and passes network markers) until a word that needs the rest of
+/// the machine; returns its index. Kept small so its few values stay in registers.
+#[inline(never)]
+fn hot<const TRACE: bool>(
+    words: &[u32],
+    mem: &mut [u8],
+    trace: &mut [u8],
+    r: &mut Regs,
+    quota: u64,
+    watching: bool,
+    forcing: bool,
+) -> u32 {
+    let mut pc = r.pc;
+    let mut acc = r.acc;
+    let mut blocks = r.blocks;
+    let mut branches = r.branches;
+    let mut steps = r.steps;
+    let stop = loop {
+        let at = pc;
+        let w = words[pc as usize];
+        let arg = w >> 8;
+        let index = (arg >> 3) as usize;
+        let shift = arg & 7;
+        pc += 1;
+        let op = w & 0xFF;
+        match op {
+            OP_LD_START | OP_LDI_START => {
+                let raw = u32::from(mem[index] >> shift) & 1;
+                if TRACE {
+                    trace[at as usize] = raw as u8;
+                }
+                acc = raw ^ (op & 1);
+                blocks = 0;
+                branches = 0;
+            }
+            OP_LD | OP_LDI => {
+                let raw = u32::from(mem[index] >> shift) & 1;
+                if TRACE {
+                    trace[at as usize] = raw as u8;
+                }
+                blocks = blocks << 1 | u64::from(acc);
+                acc = raw ^ (op & 1);
+            }
+            OP_AND | OP_ANI => {
+                let raw = u32::from(mem[index] >> shift) & 1;
+                if TRACE {
+                    trace[at as usize] = raw as u8;
+                }
+                acc &= raw ^ (op & 1);
+            }
+            OP_OR | OP_ORI => {
+                let raw = u32::from(mem[index] >> shift) & 1;
+                if TRACE {
+                    trace[at as usize] = raw as u8;
+                }
+                acc |= raw ^ (op & 1);
+            }
+            OP_ORB => {
+                acc |= (blocks & 1) as u32;
+                blocks >>= 1;
+            }
+            OP_ANB => {
+                acc &= (blocks & 1) as u32;
+                blocks >>= 1;
+            }
+            OP_MPS => branches = branches << 1 | u64::from(acc),
+            OP_MRD => acc = (branches & 1) as u32,
+            OP_MPP => {
+                acc = (branches & 1) as u32;
+                branches >>= 1;
+            }
+            OP_OUT | OP_OUTN => {
+                if forcing {
+                    break at;
+                }
+                if TRACE {
+                    trace[at as usize] = acc as u8;
+                }
+                let byte = &mut mem[index];
+                *byte = (*byte & !(1 << shift)) | (((acc ^ (op & 1)) as u8) << shift);
+            }
+            OP_NET => {
+                if steps >= quota || watching || TRACE {
+                    break at;
+                }
+                continue;
+            }
+            _ => break at,
+        }
+        steps += 1;
+    };
+    r.pc = pc;
+    r.acc = acc;
+    r.blocks = blocks;
+    r.branches = branches;
+    r.steps = steps;
+    stop
+}
+
+/// Reads a signed operand of `bytes` (a constant is taken modulo its width).
+#[inline]
+pub(super) fn int(mem: &[u8], a: Arg, bytes: u32) -> i32 {
+    match a {
+        Arg::Int(c) => super::memory::sign_extend(c as u32, bytes),
+        Arg::Loc(l) => super::memory::read(mem, l, bytes),
+        Arg::Real(r) => r as i32,
+        Arg::Bit(b) => read_bit(mem, b) as i32,
+        Arg::None => 0,
+    }
+}
+
+/// Reads an unsigned operand (a constant as written).
+#[inline]
+pub(super) fn uint(mem: &[u8], a: Arg, bytes: u32) -> u32 {
+    match a {
+        Arg::Int(c) => c as u32,
+        Arg::Loc(l) => super::memory::read_unsigned(mem, l, bytes),
+        Arg::Real(r) => r as u32,
+        Arg::Bit(b) => read_bit(mem, b),
+        Arg::None => 0,
+    }
+}
+
+/// Reads a bit operand.
+#[inline]
+pub(super) fn bit(mem: &[u8], a: Arg) -> bool {
+    match a {
+        Arg::Bit(b) => read_bit(mem, b) == 1,
+        _ => false,
+    }
+}
+
+/// Writes a bit operand (a byte operand receives 0 or 1, as WINDR's ERR may be).
+#[inline]
+pub(super) fn set_bit(mem: &mut [u8], a: Arg, v: bool) {
+    match a {
+        Arg::Bit(b) => write_bit(mem, b, u32::from(v)),
+        Arg::Loc(l) => super::memory::write(mem, l, if l.wide { 4 } else { 1 }, i32::from(v)),
+        _ => {}
+    }
+}

@@ -1,0 +1,397 @@
+//! The scan engine: runs a compiled program the way the GSK PLC does (isa.md §3–§5).
+//!
+//! [`code`] lowers the compiled program once to compact words with addresses resolved;
+//! [`exec`] runs them (no allocation, hashing or string work in the loop); [`functions`]
+//! holds the function instructions' semantics; [`memory`] the image and its width rules;
+//! [`cnc`] the interface to the CNC.
+
+pub mod cnc;
+pub mod code;
+mod exec;
+mod functions;
+pub mod memory;
+pub mod monitor;
+
+use crate::address::{Address, Area};
+use crate::compiler::{Program, compile};
+use crate::model::Project;
+use crate::profile::Profile;
+use cnc::{Cnc, NoCnc};
+use code::{Code, LowerError, lower};
+use memory::{Layout, Loc};
+use std::fmt;
+
+/// Virtual milliseconds per tick.
+pub const TICK_MS: u64 = 8;
+/// Executed steps after which a level is stopped (per tick for level 1, per cycle for level 2).
+pub const WATCHDOG_STEPS: u64 = 200_000;
+
+/// Per-instance memory of an instruction: edges, timers, window phases.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct InstState {
+    /// ACT at the previous execution.
+    pub prev_act: bool,
+    /// Virtual time of the previous execution.
+    pub last_ms: u64,
+    /// Instruction-specific phase (WINDR low-speed, AXCTL command in progress).
+    pub phase: u8,
+}
+
+/// Why the PLC stopped.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Halt {
+    /// Block label where it happened.
+    pub block: String,
+    /// Network (1-based).
+    pub network: usize,
+    /// What happened.
+    pub message: String,
+}
+
+impl fmt::Display for Halt {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} network {}: {}",
+            self.block, self.network, self.message
+        )
+    }
+}
+
+/// Level 2's progress through its cycle.
+#[derive(Clone, Copy, Debug, Default)]
+struct Level2 {
+    /// Where the next slice resumes; `None` at the start of a cycle.
+    resume: Option<u32>,
+    /// Steps executed in this cycle so far.
+    cycle_steps: u64,
+    /// Division n in force for this cycle.
+    division: u32,
+}
+
+/// A saved caller: where to return and its logic state.
+#[derive(Clone, Copy, Debug, Default)]
+struct Frame {
+    ret: u32,
+    acc: u32,
+    blocks: u64,
+    branches: u64,
+}
+
+/// A running PLC.
+pub struct Vm {
+    code: Code,
+    layout: Layout,
+    mem: Vec<u8>,
+    states: Vec<InstState>,
+    frames: Vec<Frame>,
+    /// Scratch for WINDR blocks (sized once).
+    window: Vec<i32>,
+    force_mask: Vec<u8>,
+    force_value: Vec<u8>,
+    forced_bytes: Vec<u32>,
+    ticks: u64,
+    executed: u64,
+    division: u32,
+    level2: Level2,
+    halt: Option<Halt>,
+    cnc: Box<dyn Cnc>,
+    watched: Vec<bool>,
+    watch_count: usize,
+    /// Per word of code: the value a contact read or the power an output received, for
+    /// watched networks (0/1), written only while tracing.
+    trace: Vec<u8>,
+    profile: &'static Profile,
+}
+
+/// Why a [`Vm`] could not be built.
+pub type BuildError = LowerError;
+
+impl Vm {
+    /// Compiles a project and builds a PLC running it.
+    pub fn new(project: &Project) -> Result<Vm, BuildError> {
+        let compiled = compile(project);
+        if compiled.errors() > 0 {
+            return Err(LowerError::CompileErrors(compiled.errors()));
+        }
+        let mut vm = Vm::from_program(&compiled.program, project.profile())?;
+        vm.division = project.level2_division.max(1);
+        Ok(vm)
+    }
+
+    /// Builds a PLC running an already compiled, error-free program.
+    pub fn from_program(program: &Program, profile: &'static Profile) -> Result<Vm, BuildError> {
+        let layout = Layout::new(profile);
+        let code = lower(program, &layout)?;
+        let size = layout.size as usize;
+        let d = layout.area_range(Area::D);
+        Ok(Vm {
+            states: vec![InstState::default(); code.states as usize],
+            frames: Vec::with_capacity(program.blocks.len() + 1),
+            window: vec![0; d.len() / 4],
+            watched: vec![false; code.networks.len()],
+            trace: vec![0; code.words.len()],
+            watch_count: 0,
+            mem: vec![0; size],
+            force_mask: vec![0; size],
+            force_value: vec![0; size],
+            forced_bytes: Vec::new(),
+            ticks: 0,
+            executed: 0,
+            division: 1,
+            level2: Level2::default(),
+            halt: None,
+            cnc: Box::new(NoCnc),
+            code,
+            layout,
+            profile,
+        })
+    }
+
+    /// Attaches a CNC.
+    pub fn set_cnc(&mut self, cnc: Box<dyn Cnc>) {
+        self.cnc = cnc;
+    }
+
+    /// The attached CNC.
+    pub fn cnc_mut(&mut self) -> &mut dyn Cnc {
+        self.cnc.as_mut()
+    }
+
+    /// The executable code.
+    pub fn code(&self) -> &Code {
+        &self.code
+    }
+
+    /// Ticks run since start.
+    pub fn ticks(&self) -> u64 {
+        self.ticks
+    }
+
+    /// Steps executed since start (jumped-over instructions not counted, called ones counted).
+    pub fn executed_steps(&self) -> u64 {
+        self.executed
+    }
+
+    /// Virtual time in ms.
+    pub fn now_ms(&self) -> u64 {
+        self.ticks * TICK_MS
+    }
+
+    /// Why the PLC is stopped, if it is.
+    pub fn halt(&self) -> Option<&Halt> {
+        self.halt.as_ref()
+    }
+
+    /// Sets the level-2 division count; it takes effect at the next level-2 cycle.
+    pub fn set_division(&mut self, n: u32) {
+        self.division = n.max(1);
+    }
+
+    /// Power off and on: R, A, Y, G and every edge and timer memory are cleared; K, D, T, C,
+    /// DT and DC keep their values; level 2 starts a new cycle; a halted PLC runs again.
+    /// Forces stay.
+    pub fn power_cycle(&mut self) {
+        for area in [Area::R, Area::A, Area::Y, Area::G] {
+            let r = self.layout.area_range(area);
+            self.mem[r].fill(0);
+        }
+        self.states
+            .iter_mut()
+            .for_each(|s| *s = InstState::default());
+        self.level2 = Level2::default();
+        self.halt = None;
+        self.apply_forces();
+    }
+
+    /// Runs one 8 ms tick: level 1 whole, then the next slice of level 2, then the exchange
+    /// with the CNC. A halted PLC does nothing.
+    pub fn tick(&mut self) {
+        if self.halt.is_some() {
+            self.ticks += 1;
+            return;
+        }
+        let g = self.layout.area_range(Area::G);
+        let f = self.layout.area_range(Area::F);
+        {
+            // F lies before G in the image (layout order X Y F G …), so one split reaches both.
+            let now = self.now_ms();
+            let (f_part, g_part) = self.mem.split_at_mut(g.start);
+            self.cnc.exchange(now, &g_part[..g.len()], &mut f_part[f]);
+        }
+        self.apply_forces();
+        self.run_level1();
+        if self.halt.is_none() {
+            self.run_level2_slice();
+        }
+        self.ticks += 1;
+    }
+
+    fn run_level1(&mut self) {
+        let start = self.code.level1;
+        if let Err(h) = self.run(start, exec::Level::One, u64::MAX) {
+            self.halt = Some(h);
+        }
+    }
+
+    fn run_level2_slice(&mut self) {
+        let l2 = &mut self.level2;
+        let pc = match l2.resume {
+            Some(pc) => pc,
+            None => {
+                l2.division = self.division;
+                l2.cycle_steps = 0;
+                // Start of a level-2 cycle: latch X and F for level 2.
+                let x = self.layout.area_range(Area::X);
+                let f = self.layout.area_range(Area::F);
+                let xl = self.layout.x_latch as usize;
+                let fl = self.layout.f_latch as usize;
+                self.mem.copy_within(x.clone(), xl);
+                self.mem.copy_within(f.clone(), fl);
+                self.code.level2
+            }
+        };
+        // With n = 1 the whole of level 2 runs every tick (isa.md §5), however many steps its
+        // calls and loops execute; only a division above 1 slices it.
+        let quota = match self.level2.division {
+            0 | 1 => u64::MAX,
+            n => u64::from(self.code.level2_steps).div_ceil(u64::from(n)),
+        };
+        match self.run(pc, exec::Level::Two, quota.max(1)) {
+            Ok(resume) => self.level2.resume = resume,
+            Err(h) => self.halt = Some(h),
+        }
+    }
+
+    /// Reads `bytes` (1, 2, 4) at an address as a signed value (isa.md §1 width rule).
+    pub fn read(&self, a: Address, bytes: u32) -> i64 {
+        if let Some(bit) = a.bit {
+            return i64::from(self.read_bit(Address {
+                bit: Some(bit),
+                ..a
+            }));
+        }
+        i64::from(memory::read(&self.mem, self.layout.loc(a, false), bytes))
+    }
+
+    /// Reads a bit.
+    pub fn read_bit(&self, a: Address) -> bool {
+        let loc = self.layout.loc(a, false);
+        self.mem
+            .get(loc.off as usize)
+            .is_some_and(|b| b >> a.bit.unwrap_or(0) & 1 == 1)
+    }
+
+    /// Reads a real from a 4-byte address.
+    pub fn read_real(&self, a: Address) -> f32 {
+        memory::read_real(&self.mem, self.layout.loc(a, false))
+    }
+
+    /// Writes `bytes` of `value` at an address (a bit address takes 0 or 1). Forced bits keep
+    /// their forced value.
+    pub fn write(&mut self, a: Address, bytes: u32, value: i64) {
+        let loc = self.layout.loc(a, false);
+        match a.bit {
+            Some(bit) => {
+                if let Some(b) = self.mem.get_mut(loc.off as usize) {
+                    *b = (*b & !(1 << bit)) | (u8::from(value != 0) << bit);
+                }
+            }
+            None => memory::write(&mut self.mem, loc, bytes, value as i32),
+        }
+        self.apply_forces();
+    }
+
+    /// Writes a real into a 4-byte address.
+    pub fn write_real(&mut self, a: Address, value: f32) {
+        memory::write_real(&mut self.mem, self.layout.loc(a, false), value);
+        self.apply_forces();
+    }
+
+    /// Holds a bit (or every bit of an address) at `value` until [`Vm::unforce`], whatever
+    /// the program or a later write does.
+    pub fn force(&mut self, a: Address, value: i64) {
+        let loc = self.layout.loc(a, false);
+        let bytes = if loc.wide { 4 } else { 1 };
+        let image = if loc.wide {
+            (value as i32).to_le_bytes()
+        } else {
+            [value as u8, 0, 0, 0]
+        };
+        for (k, byte) in image.iter().enumerate().take(bytes) {
+            let off = loc.off as usize + k;
+            let (mask, val) = match a.bit {
+                Some(bit) => (1u8 << bit, u8::from(value != 0) << bit),
+                None => (0xFF, *byte),
+            };
+            self.force_mask[off] |= mask;
+            self.force_value[off] = (self.force_value[off] & !mask) | val;
+            if !self.forced_bytes.contains(&(off as u32)) {
+                self.forced_bytes.push(off as u32);
+            }
+        }
+        self.apply_forces();
+    }
+
+    /// Releases a force; the last forced value stays until something writes it.
+    pub fn unforce(&mut self, a: Address) {
+        let loc = self.layout.loc(a, false);
+        let bytes = if loc.wide { 4 } else { 1 };
+        for k in 0..bytes {
+            let off = loc.off as usize + k;
+            let mask = a.bit.map_or(0xFF, |b| 1u8 << b);
+            self.force_mask[off] &= !mask;
+        }
+        let mask = &self.force_mask;
+        self.forced_bytes.retain(|o| mask[*o as usize] != 0);
+    }
+
+    pub(super) fn apply_forces(&mut self) {
+        for &off in &self.forced_bytes {
+            let o = off as usize;
+            self.mem[o] =
+                (self.mem[o] & !self.force_mask[o]) | (self.force_value[o] & self.force_mask[o]);
+        }
+    }
+
+    /// Turns the recording of a network's values on or off (networks as in
+    /// [`Code::networks`]). Recording costs nothing for networks nobody watches.
+    pub fn watch(&mut self, network: usize, on: bool) {
+        if let Some(w) = self.watched.get_mut(network)
+            && *w != on
+        {
+            *w = on;
+            if on {
+                self.watch_count += 1;
+            } else {
+                self.watch_count -= 1;
+            }
+        }
+    }
+
+    /// Whether a code network is being recorded.
+    pub fn is_watched(&self, network: usize) -> bool {
+        self.watched.get(network).copied().unwrap_or(false)
+    }
+
+    /// What the last execution of each word recorded (contacts: the bit read; outputs: their
+    /// ACT), valid for watched networks.
+    pub fn trace(&self) -> &[u8] {
+        &self.trace
+    }
+
+    /// The value of a location, for monitors: `bytes` at `loc`.
+    pub fn read_loc(&self, loc: Loc, bytes: u32) -> i32 {
+        memory::read(&self.mem, loc, bytes)
+    }
+
+    /// The memory layout.
+    pub fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The target profile.
+    pub fn profile(&self) -> &'static Profile {
+        self.profile
+    }
+}

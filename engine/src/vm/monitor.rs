@@ -1,0 +1,149 @@
+//! Online monitoring: what each element of a network showed in the last scan.
+//!
+//! The VM records, for watched networks only, the bit each contact read and the ACT each
+//! output received ([`Vm::watch`], [`Vm::trace`]). This module maps those records back to the
+//! network's cells and computes the power flowing into and out of every cell over the grid,
+//! the way the rung was evaluated; function boxes also get their operands' current values.
+
+use super::Vm;
+use crate::compiler::{Origin, Program};
+use crate::model::{Cell, Network, Operand};
+
+/// What one cell shows.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CellView {
+    /// Power at the cell's left edge.
+    pub power_in: bool,
+    /// Power at its right edge (through a closed contact or a wire).
+    pub power_out: bool,
+    /// For contacts: whether the contact was closed (NO with the bit 1, NC with the bit 0).
+    pub closed: Option<bool>,
+    /// For boxes: each operand's value (`None` for constants and labels).
+    pub values: Vec<Option<i64>>,
+}
+
+/// What a whole network shows: one [`CellView`] per cell, row by row.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NetworkView {
+    /// Rows of cells.
+    pub cells: Vec<Vec<CellView>>,
+}
+
+/// The code network (see [`super::code::Code::networks`]) of a ladder network.
+pub fn code_network(vm: &Vm, block: usize, network: usize) -> Option<usize> {
+    vm.code()
+        .networks
+        .iter()
+        .position(|n| n.block == block && n.network == network)
+}
+
+/// The view of ladder network `network` of block `block`, from the last scan. Call
+/// [`Vm::watch`] for it first; an unwatched network shows its contacts from memory.
+pub fn network_view(
+    vm: &Vm,
+    program: &Program,
+    block: usize,
+    network: usize,
+    grid: &Network,
+    width: usize,
+) -> NetworkView {
+    let rows = grid.rows.len();
+    let mut view = NetworkView {
+        cells: vec![vec![CellView::default(); width + 1]; rows],
+    };
+    // Contact bits and output ACTs recorded by the VM, by cell.
+    let mut recorded: Vec<Vec<Option<bool>>> = vec![vec![None; width + 1]; rows];
+    if let (Some(code_net), Some(net)) = (
+        code_network(vm, block, network),
+        program
+            .blocks
+            .get(block)
+            .and_then(|b| b.networks.get(network)),
+    ) {
+        let info = &vm.code().networks[code_net];
+        if vm.is_watched(code_net) {
+            for word in info.start..info.end {
+                let Some((_, _, k)) = vm.code().source[word as usize] else {
+                    continue;
+                };
+                if let Some(Origin::Cell { row, col }) =
+                    net.instrs.get(k as usize).map(|i| i.origin)
+                    && let Some(slot) = recorded
+                        .get_mut(row as usize)
+                        .and_then(|r| r.get_mut(col as usize))
+                {
+                    *slot = Some(vm.trace()[word as usize] == 1);
+                }
+            }
+        }
+    }
+    // Contacts: closed or open, from the record or else from memory.
+    for (r, row) in grid.rows.iter().enumerate() {
+        for (c, cell) in row.cells.iter().enumerate().take(width) {
+            if let Cell::Contact { negated, operand } = cell {
+                let bit = recorded[r][c].or_else(|| match operand {
+                    Operand::Addr(a) if a.bit.is_some() => Some(vm.read_bit(*a)),
+                    _ => None,
+                });
+                view.cells[r][c].closed = bit.map(|b| b != *negated);
+            }
+        }
+    }
+    // Power flow, left to right: a junction's nodes (joined by vertical links) are powered
+    // when any cell ending there passes power; the rail is always powered.
+    let mut power_at = vec![vec![false; width + 1]; rows];
+    for row in power_at.iter_mut() {
+        row[0] = true;
+    }
+    for j in 1..=width {
+        let c = j - 1;
+        for (r, powered) in power_at.iter_mut().enumerate() {
+            let passes = match &grid.rows[r].cells[c] {
+                Cell::Wire => true,
+                Cell::Contact { .. } => view.cells[r][c].closed.unwrap_or(false),
+                _ => false,
+            };
+            powered[j] = powered[c] && passes;
+        }
+        // Spread along vertical links (both directions) until nothing changes.
+        let mut changed = true;
+        while changed {
+            changed = false;
+            for r in 0..rows.saturating_sub(1) {
+                if grid.link(r, j) && power_at[r][j] != power_at[r + 1][j] {
+                    power_at[r][j] = true;
+                    power_at[r + 1][j] = true;
+                    changed = true;
+                }
+            }
+        }
+    }
+    for r in 0..rows {
+        for c in 0..=width {
+            let cell = &grid.rows[r].cells[c];
+            let v = &mut view.cells[r][c];
+            v.power_in = power_at[r][c] && *cell != Cell::Empty;
+            v.power_out = if c < width {
+                power_at[r][c + 1] && v.power_in
+            } else {
+                false
+            };
+            if c == width {
+                // Outputs show the ACT they received in the scan, when recorded.
+                v.power_in = recorded[r][c].unwrap_or(v.power_in);
+                if let Cell::Box { operands, .. } = cell {
+                    v.values = operands
+                        .iter()
+                        .map(|o| match o {
+                            Operand::Addr(a) if a.area.element_bytes() > 0 => {
+                                Some(vm.read(*a, u32::from(a.area.element_bytes()).max(1)))
+                            }
+                            _ => None,
+                        })
+                        .collect();
+                }
+            }
+        }
+    }
+    view
+}
