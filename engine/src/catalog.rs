@@ -63,6 +63,60 @@ const CODB_OUT: AreaSet = AreaSet::of(&[
     Area::Dc,
 ]);
 const D_ONLY: AreaSet = AreaSet::of(&[Area::D]);
+/// Relay and data areas without timers, counters and presets (CODB IN, PARI IN, MOVE IN).
+const RELAYS_AND_D: AreaSet = AreaSet::of(&[
+    Area::X,
+    Area::Y,
+    Area::F,
+    Area::G,
+    Area::R,
+    Area::A,
+    Area::K,
+    Area::D,
+]);
+/// MOVE OUT (§1.4.25: R A K Y G D).
+const MOVE_OUT: AreaSet = AreaSet::of(&[Area::Y, Area::G, Area::R, Area::A, Area::K, Area::D]);
+/// ROTB IN_W/IN_D, DSCHB IN1/INL/DS (§1.4.16, §1.4.39: no T or C).
+const NO_TC_READ: AreaSet = AreaSet::of(&[
+    Area::X,
+    Area::Y,
+    Area::F,
+    Area::G,
+    Area::R,
+    Area::A,
+    Area::K,
+    Area::D,
+    Area::Dc,
+    Area::Dt,
+]);
+/// ROTB OUTE, DSCHB DI (§1.4.16, §1.4.39: no T or C).
+const NO_TC_WRITE: AreaSet = AreaSet::of(&[
+    Area::Y,
+    Area::G,
+    Area::R,
+    Area::A,
+    Area::K,
+    Area::D,
+    Area::Dc,
+    Area::Dt,
+]);
+/// ZCP inputs (§1.4.42: no DC or DT).
+const NO_PRESETS_READ: AreaSet = AreaSet::of(&[
+    Area::X,
+    Area::Y,
+    Area::F,
+    Area::G,
+    Area::R,
+    Area::A,
+    Area::K,
+    Area::D,
+    Area::C,
+    Area::T,
+]);
+/// RST of the real-number instructions (§1.4.19, §1.4.33, §1.4.43–46: X Y R K).
+const REAL_RST: AreaSet = AreaSet::of(&[Area::X, Area::Y, Area::R, Area::K]);
+/// ERR of the real-number instructions (Y R K).
+const REAL_ERR: AreaSet = AreaSet::of(&[Area::Y, Area::R, Area::K]);
 const DT_ONLY: AreaSet = AreaSet::of(&[Area::Dt]);
 const DC_ONLY: AreaSet = AreaSet::of(&[Area::Dc]);
 const T_ONLY: AreaSet = AreaSet::of(&[Area::T]);
@@ -348,6 +402,12 @@ const fn spec(
     }
 }
 
+/// The same operand with the manual's own list of areas.
+const fn only(mut s: OperandSpec, areas: AreaSet) -> OperandSpec {
+    s.areas = areas;
+    s
+}
+
 const fn with_range(mut s: OperandSpec, min: i64, max: i64) -> OperandSpec {
     s.min = min;
     s.max = max;
@@ -540,9 +600,14 @@ const fn err(zh: &'static str, en: &'static str) -> OperandSpec {
 }
 
 const SIZE_STD: OperandSpec = size("数据长度：1、2 或 4 字节", "Data size: 1, 2 or 4 bytes");
-const RST_ERR: OperandSpec = rst(
-    "复位：为 1 时清除 ERR，不执行运算",
-    "Reset: 1 clears ERR and skips the operation",
+// The real-number instructions' RST and ERR take only X Y R K and Y R K (§1.4.19, §1.4.33,
+// §1.4.43–46), unlike the integer ones.
+const RST_ERR: OperandSpec = only(
+    rst(
+        "复位：为 1 时清除 ERR，不执行运算",
+        "Reset: 1 clears ERR and skips the operation",
+    ),
+    REAL_RST,
 );
 const RST_OUT: OperandSpec = rst("复位：为 1 时 OUT、ERR 清 0", "Reset: 1 clears OUT and ERR");
 const ERR_STD: OperandSpec = err(
@@ -553,6 +618,9 @@ const ERR_LATCHED: OperandSpec = err(
     "错误输出：出错时置 1，保持到 RST",
     "Error output: set on error, kept until RST",
 );
+const REAL_ERR_LATCHED: OperandSpec = only(ERR_LATCHED, REAL_ERR);
+const REAL_ERR_STD: OperandSpec = only(ERR_STD, REAL_ERR);
+const REAL_RST_OUT: OperandSpec = only(RST_OUT, REAL_RST);
 
 /// CODB's table entries: constants of SIZE1 width.
 pub static CODB_TABLE_ENTRY: OperandSpec = spec(
@@ -605,7 +673,7 @@ const ARITH_R: &[OperandSpec] = &[
     ),
     RST_ERR,
     real_out("实数结果（D 地址）", "Real result (D address)"),
-    ERR_STD,
+    REAL_ERR_STD,
 ];
 const MUL_DIV_B: &[OperandSpec] = &[
     unsigned_in(
@@ -643,9 +711,9 @@ const MUL_DIV_R: &[OperandSpec] = &[
         "第二个实数：常数或 D 地址",
         "Second real: constant or D address",
     ),
-    RST_OUT,
+    REAL_RST_OUT,
     real_out("实数结果（D 地址）", "Real result (D address)"),
-    ERR_LATCHED,
+    REAL_ERR_LATCHED,
 ];
 const WORD_LOGIC: &[OperandSpec] = &[
     SIZE_STD,
@@ -726,7 +794,7 @@ const TRIG: &[OperandSpec] = &[
     ),
     real_out("实数结果（D 地址）", "Real result (D address)"),
     RST_ERR,
-    ERR_LATCHED,
+    REAL_ERR_LATCHED,
 ];
 const ONE_BIT_OUT: &[OperandSpec] = &[bit_out(
     "OUT",
@@ -837,7 +905,7 @@ catalog! {
     Codb "CODB" Function DataTransfer [
         size("SIZE1：输出数据长度 1、2 或 4 字节", "SIZE1: output size 1, 2 or 4 bytes"),
         konst("SIZE2", 1, 256, "转换表数据个数 1–256", "Number of table entries, 1–256"),
-        spec("IN", OperandKind::Byte, BYTES_READ, Width::Bytes(1), Access::Read, "表内序号地址（1 字节，无符号）", "Table index address (1 byte, unsigned)"),
+        spec("IN", OperandKind::Byte, RELAYS_AND_D, Width::Bytes(1), Access::Read, "表内序号地址（1 字节，无符号）", "Table index address (1 byte, unsigned)"),
         byte_out("OUT", CODB_OUT, Width::SizeOf(0), "输出地址", "Output address"),
     ] list? "二进制代码转换：OUT := 表[IN]" "Code conversion: OUT := table[IN]";
     Jmpb "JMPB" Function LabelJump [spec("L", OperandKind::Label, L_ONLY, Width::None, Access::Read, "跳转目标标号", "Target label")] list?
@@ -852,15 +920,15 @@ catalog! {
         digits("FMT", 1, "格式 abcd：d=编号从 1 起，c=就近旋转，b=目标前一位置，a=输出步数", "Format abcd: d = numbered from 1, c = shortest path, b = position before target, a = output steps"),
         unsigned_in("CNT", Width::SizeOf(2), CONST_MAX, "转子分度数：常数或地址", "Number of positions: constant or address"),
         SIZE_STD,
-        unsigned_in("IN_W", Width::SizeOf(2), CONST_MAX, "当前位置地址", "Current position address").with_const(false),
-        unsigned_in("IN_D", Width::SizeOf(2), CONST_MAX, "目标位置地址", "Target position address").with_const(false),
-        byte_out("OUTE", BYTES_WRITE, Width::SizeOf(2), "位置或步数输出地址", "Position or step count output"),
+        only(unsigned_in("IN_W", Width::SizeOf(2), CONST_MAX, "当前位置地址", "Current position address").with_const(false), NO_TC_READ),
+        only(unsigned_in("IN_D", Width::SizeOf(2), CONST_MAX, "目标位置地址", "Target position address").with_const(false), NO_TC_READ),
+        byte_out("OUTE", NO_TC_WRITE, Width::SizeOf(2), "位置或步数输出地址", "Position or step count output"),
         bit_out("OUTO", BITS_WRITE, "旋转方向：0 正转，1 反转", "Direction: 0 forward, 1 reverse"),
     ] list? "二进制旋转控制：计算刀架等转子的旋转方向和步数" "Rotation control: direction and steps of a turret";
     Pari "PARI" Function Logic [
         digits("OE", 1, "0000 偶校验，0001 奇校验", "0000 even, 0001 odd parity"),
         rst("复位：为 1 时 OUT := 0", "Reset: 1 makes OUT := 0"),
-        byte_in("IN", Width::Bytes(1), "校验数据（1 字节）", "Data to check (1 byte)"),
+        only(byte_in("IN", Width::Bytes(1), "校验数据（1 字节）", "Data to check (1 byte)"), RELAYS_AND_D),
         bit_out("OUT", BITS_WRITE, "校验出错输出", "Parity-error output"),
     ] list? "奇偶校验" "Parity check";
     Addb "ADDB" Function IntegerMath [ARITH_B] shared? "二进制加法：OUT := IN1 + IN2" "Binary add: OUT := IN1 + IN2";
@@ -875,8 +943,8 @@ catalog! {
     Move "MOVE" Function DataTransfer [
         digits("H", 1, "高 4 位屏蔽（二进制）", "High 4 mask bits (binary)"),
         digits("L", 1, "低 4 位屏蔽（二进制）", "Low 4 mask bits (binary)"),
-        byte_in("IN", Width::Bytes(1), "源字节地址", "Source byte address"),
-        byte_out("OUT", BYTES_WRITE, Width::Bytes(1), "目标字节地址", "Destination byte address"),
+        only(byte_in("IN", Width::Bytes(1), "源字节地址", "Source byte address"), RELAYS_AND_D),
+        byte_out("OUT", MOVE_OUT, Width::Bytes(1), "目标字节地址", "Destination byte address"),
     ] list? "逻辑乘：OUT := IN ∧ 屏蔽" "Logical product: OUT := IN ∧ mask";
     Wand "WAND" Function Logic [WORD_LOGIC] shared? "二进制字节与" "Bitwise and";
     Wor "WOR" Function Logic [WORD_LOGIC] shared? "二进制字节或" "Bitwise or";
@@ -910,17 +978,17 @@ catalog! {
         digits("FMT", 9, "格式 0nnx：nn 个数，x 元素宽度 1/2/4", "Format 0nnx: nn elements of x bytes (1/2/4)"),
         unsigned_in("DL", Width::Bytes(2), 16384, "表长度：常数或地址", "Table length: constant or address"),
         spec("DS", OperandKind::Byte, BYTES_READ, Width::Table, Access::WriteWhen { operand: 0, value: 1 }, "数据表首地址", "First address of the table"),
-        spec("DD", OperandKind::Byte, BYTES_READ, Width::Table, Access::WriteWhen { operand: 0, value: 0 }, "输入/输出数据地址", "Data address read or written"),
-        byte_in("DI", Width::Table, "索引地址（从 0 开始）", "Index address (from 0)"),
+        spec("DD", OperandKind::Byte, BYTES_WRITE, Width::Table, Access::WriteWhen { operand: 0, value: 0 }, "输入/输出数据地址", "Data address read or written"),
+        only(byte_in("DI", Width::Table, "索引地址（从 0 开始）", "Index address (from 0)"), BYTES_WRITE),
         rst("复位：为 1 时 ERR := 0，不传送", "Reset: 1 makes ERR := 0 and moves nothing"),
         err("错误输出：索引超出表长", "Error output: an index past the table"),
     ] list? "二进制索引数据传送" "Indexed table move";
     Dschb "DSCHB" Function DataTransfer [
         SIZE_STD,
-        byte_in("IN1", Width::Table, "数据表首地址", "First address of the table"),
-        unsigned_in("INL", Width::Bytes(2), 65535, "表中数据个数：常数或地址", "Number of entries: constant or address"),
-        signed_in("DS", Width::SizeOf(0), "检索数据：常数或地址", "Value to search for: constant or address"),
-        byte_out("DI", BYTES_WRITE, Width::SizeOf(0), "检索结果（序号）地址", "Result (index) address"),
+        only(byte_in("IN1", Width::Table, "数据表首地址", "First address of the table"), NO_TC_READ),
+        only(unsigned_in("INL", Width::Bytes(2), 65535, "表中数据个数：常数或地址", "Number of entries: constant or address"), NO_TC_READ),
+        only(signed_in("DS", Width::SizeOf(0), "检索数据：常数或地址", "Value to search for: constant or address"), NO_TC_READ),
+        byte_out("DI", NO_TC_WRITE, Width::SizeOf(0), "检索结果（序号）地址", "Result (index) address"),
         err("错误输出：未找到时为 1", "Error output: 1 when not found"),
     ] list? "数据检索：在表中查找数据" "Search a table for a value";
     Psgnl "PSGNL" Function Cnc [
@@ -938,9 +1006,9 @@ catalog! {
     ] list? "位置信号输出 2：机床坐标是否在区域内" "Position signal 2: is the machine coordinate inside the zone";
     Zcp "ZCP" Function Compare [
         SIZE_STD,
-        signed_in("IN1", Width::SizeOf(0), "区域下限", "Lower bound"),
-        signed_in("IN2", Width::SizeOf(0), "区域上限", "Upper bound"),
-        signed_in("IN3", Width::SizeOf(0), "比较数据", "Value to compare"),
+        only(signed_in("IN1", Width::SizeOf(0), "区域下限", "Lower bound"), NO_PRESETS_READ),
+        only(signed_in("IN2", Width::SizeOf(0), "区域上限", "Upper bound"), NO_PRESETS_READ),
+        only(signed_in("IN3", Width::SizeOf(0), "比较数据", "Value to compare"), NO_PRESETS_READ),
         bits3_out(RELAYS_WRITE, "结果：OUT=低于下限，OUT+1=区域内，OUT+2=高于上限", "Result: OUT = below, OUT+1 = inside, OUT+2 = above"),
     ] list? "区域比较" "Zone compare";
     Sin "SIN" Function RealMath [TRIG] shared? "正弦" "Sine";
@@ -950,19 +1018,19 @@ catalog! {
         real_in("IN", "输入：实数常数或 D 地址", "Input: real constant or D address"),
         real_out("实数结果（D 地址）", "Real result (D address)"),
         RST_ERR,
-        ERR_LATCHED,
+        REAL_ERR_LATCHED,
     ] list? "求平方根" "Square root";
     Dtr "DTR" Function RealMath [
         spec("IN", OperandKind::ConstOrByte, D_ONLY, Width::Bytes(4), Access::Read, "整数：常数或 D 地址", "Integer: constant or D address"),
         real_out("实数结果（D 地址）", "Real result (D address)"),
         RST_ERR,
-        ERR_LATCHED,
+        REAL_ERR_LATCHED,
     ] list? "整数转换为实数" "Integer to real";
     Round "ROUND" Function RealMath [
         real_in("IN", "实数：常数或 D 地址", "Real: constant or D address"),
         real_out("整数结果（D 地址）", "Integer result (D address)"),
         RST_ERR,
-        ERR_LATCHED,
+        REAL_ERR_LATCHED,
     ] list? "实数四舍五入转换为整数" "Round a real to an integer";
 }
 

@@ -9,29 +9,43 @@ use crate::compiler::{Instr, Program};
 use crate::model::{BlockKind, Operand};
 use thiserror::Error;
 
+/// Flag bits of a contact opcode (opcodes 0–31): the opcode *is* its flags, so the loop runs
+/// every contact form with one straight-line body: `v = bit ^ INVERT`, then
+/// `acc = (acc & (v | OR)) | (v & LOAD_OR)`, pushing the old accumulator when PUSH and
+/// emptying the stacks when START.
+pub const C_INVERT: u32 = 1;
+/// The contact is in parallel (OR, ORI).
+pub const C_OR: u32 = 2;
+/// The contact's value passes on its own (LD) or in parallel (OR).
+pub const C_LOAD_OR: u32 = 4;
+/// The old accumulator is pushed on the block stack (LD inside a rung).
+pub const C_PUSH: u32 = 8;
+/// Start of a rung: both stacks are emptied.
+pub const C_START: u32 = 16;
+
 /// VM opcodes. Contacts and coils carry a bit index (byte offset × 8 + bit).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[repr(u8)]
 #[allow(missing_docs)] // One per basic instruction; see the catalogue.
 pub enum VmOp {
+    And = 0,
+    Ani = C_INVERT as u8,
+    Or = (C_OR | C_LOAD_OR) as u8,
+    Ori = (C_OR | C_LOAD_OR | C_INVERT) as u8,
+    Ld = (C_LOAD_OR | C_PUSH) as u8,
+    Ldi = (C_LOAD_OR | C_PUSH | C_INVERT) as u8,
     /// LD at the start of a rung: no block to push.
-    LdStart,
+    LdStart = (C_LOAD_OR | C_START) as u8,
     /// LDI at the start of a rung.
-    LdiStart,
-    Ld,
-    Ldi,
-    And,
-    Ani,
-    Or,
-    Ori,
-    Orb,
+    LdiStart = (C_LOAD_OR | C_START | C_INVERT) as u8,
+    // Opcodes 0–31 are contacts; the rest follow.
+    Orb = 32,
     Anb,
     Out,
     Outn,
     Mps,
     Mrd,
     Mpp,
-    // Everything above is a basic bit instruction; each inverted form is its plain form + 1.
     Set,
     Rst,
     /// Jump to the word index in the argument when ACT = 1.
@@ -49,14 +63,14 @@ pub enum VmOp {
 }
 
 const OPS: [VmOp; 24] = [
-    VmOp::LdStart,
-    VmOp::LdiStart,
-    VmOp::Ld,
-    VmOp::Ldi,
     VmOp::And,
     VmOp::Ani,
     VmOp::Or,
     VmOp::Ori,
+    VmOp::Ld,
+    VmOp::Ldi,
+    VmOp::LdStart,
+    VmOp::LdiStart,
     VmOp::Orb,
     VmOp::Anb,
     VmOp::Out,
@@ -75,16 +89,22 @@ const OPS: [VmOp; 24] = [
     VmOp::Ret,
 ];
 
-/// Words with an opcode below this are basic bit instructions (the loop's fast path).
-pub const LOGIC_OPS: u32 = VmOp::Set as u32;
+/// Opcode byte → opcode (unknown bytes decode as `Ret`; lowering never writes them).
+static DECODE: [VmOp; 256] = {
+    let mut table = [VmOp::Ret; 256];
+    let mut i = 0;
+    while i < OPS.len() {
+        table[OPS[i] as usize] = OPS[i];
+        i += 1;
+    }
+    table
+};
 
 impl VmOp {
     /// Decodes the low byte of a word.
     #[inline(always)]
     pub fn decode(word: u32) -> VmOp {
-        OPS.get((word & 0xFF) as usize)
-            .copied()
-            .unwrap_or(VmOp::Ret)
+        DECODE[(word & 0xFF) as usize]
     }
 }
 

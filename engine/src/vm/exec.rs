@@ -3,18 +3,9 @@
 //! pushing and popping is a shift. The loop is instantiated twice: without tracing (the
 //! normal case, no extra work) and with tracing for watched networks; a `Net` word switches.
 
-use super::code::{Arg, VmOp};
+use super::code::{Arg, C_INVERT, VmOp};
 
-// Opcodes of the basic bit instructions as match patterns. Each inverted form is the plain
-// form + 1, so `op & 1` is the inversion (see the order of `VmOp`).
-const OP_LD_START: u32 = VmOp::LdStart as u32;
-const OP_LDI_START: u32 = VmOp::LdiStart as u32;
-const OP_LD: u32 = VmOp::Ld as u32;
-const OP_LDI: u32 = VmOp::Ldi as u32;
-const OP_AND: u32 = VmOp::And as u32;
-const OP_ANI: u32 = VmOp::Ani as u32;
-const OP_OR: u32 = VmOp::Or as u32;
-const OP_ORI: u32 = VmOp::Ori as u32;
+// Opcodes of the other basic bit instructions as match patterns.
 const OP_ORB: u32 = VmOp::Orb as u32;
 const OP_ANB: u32 = VmOp::Anb as u32;
 const OP_MPS: u32 = VmOp::Mps as u32;
@@ -293,36 +284,18 @@ fn hot<const TRACE: bool>(
         pc += 1;
         let op = w & 0xFF;
         match op {
-            OP_LD_START | OP_LDI_START => {
+            0..=31 => {
+                // Every contact form: the opcode's bits are its flags (see `code::C_*`).
                 let raw = u32::from(mem[index] >> shift) & 1;
                 if TRACE {
                     trace[at as usize] = raw as u8;
                 }
-                acc = raw ^ (op & 1);
-                blocks = 0;
-                branches = 0;
-            }
-            OP_LD | OP_LDI => {
-                let raw = u32::from(mem[index] >> shift) & 1;
-                if TRACE {
-                    trace[at as usize] = raw as u8;
-                }
-                blocks = blocks << 1 | u64::from(acc);
-                acc = raw ^ (op & 1);
-            }
-            OP_AND | OP_ANI => {
-                let raw = u32::from(mem[index] >> shift) & 1;
-                if TRACE {
-                    trace[at as usize] = raw as u8;
-                }
-                acc &= raw ^ (op & 1);
-            }
-            OP_OR | OP_ORI => {
-                let raw = u32::from(mem[index] >> shift) & 1;
-                if TRACE {
-                    trace[at as usize] = raw as u8;
-                }
-                acc |= raw ^ (op & 1);
+                let v = raw ^ (op & C_INVERT);
+                let push = u64::from(op >> 3 & 1);
+                let keep = u64::from(op >> 4 & 1).wrapping_sub(1);
+                blocks = (blocks << push | u64::from(acc) & push) & keep;
+                branches &= keep;
+                acc = (acc & (v | (op >> 1 & 1))) | (v & (op >> 2 & 1));
             }
             OP_ORB => {
                 acc |= (blocks & 1) as u32;
