@@ -262,3 +262,97 @@ fn bench_prints_its_figures_last() {
         "{last}"
     );
 }
+
+#[test]
+fn xref_prints_the_index_and_both_usage_tables() {
+    let il = il_path("valid/branches.il");
+    let r = run(&["xref", &il]);
+    assert_eq!(r.code, 0, "{r:?}");
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert!(lines[0].starts_with("ADDRESS"));
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("Y0000.0   W   LEVEL2  1:1:11")),
+        "{}",
+        r.stdout
+    );
+    let r = run(&["xref", &il, "--bits"]);
+    assert!(
+        r.stdout.lines().any(|l| l == "Y0000_   . . X X X X X X"),
+        "{}",
+        r.stdout
+    );
+    let r = run(&["xref", &il_path("valid/functions.il"), "--bytes"]);
+    assert!(
+        r.stdout.lines().any(|l| l == "T000_   X X . . . . . . . ."),
+        "{}",
+        r.stdout
+    );
+    let r = run(&["xref", &il, "--bits", "--bytes"]);
+    assert_eq!(r.code, 2, "one table at a time");
+}
+
+#[test]
+fn comments_export_and_import_all_or_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let ldp = dir.path().join("p.ldp");
+    assert_eq!(
+        run(&[
+            "import-il",
+            &il_path("valid/self-holding.il"),
+            "-o",
+            ldp.to_str().unwrap()
+        ])
+        .code,
+        0
+    );
+    let csv = dir.path().join("c.csv");
+    std::fs::write(
+        &csv,
+        "kind,table,key,symbol,zh,en\nsymbol,,X0002.1,START,启动,start\nnetwork,LEVEL2,1,start/stop,自保持,self-holding\nmessage,,A0000.1,1001,换刀超时,tool change timeout\n",
+    )
+    .unwrap();
+    let r = run(&[
+        "import-comments",
+        ldp.to_str().unwrap(),
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    let r = run(&["export-comments", ldp.to_str().unwrap()]);
+    assert_eq!(
+        r.stdout,
+        "kind,table,key,symbol,zh,en\nsymbol,符号表1,X0002.1,START,启动,start\nnetwork,LEVEL1,1,E-stop,,\nnetwork,LEVEL2,1,start/stop,自保持,self-holding\nmessage,,A0000.1,1001,换刀超时,tool change timeout\n"
+    );
+    let r = run(&["export-comments", ldp.to_str().unwrap(), "--lang", "en"]);
+    assert!(
+        r.stdout
+            .starts_with("kind,table,key,symbol,en\nsymbol,符号表1,X0002.1,START,start\n"),
+        "{}",
+        r.stdout
+    );
+    // One bad row: nothing changes, and every bad row is listed with its line.
+    let before = read(&ldp);
+    std::fs::write(
+        &csv,
+        "kind,table,key,symbol,zh,en\nsymbol,,X0002.2,STOP,停止,stop\nmessage,,A0000.2,99,x,x\nsymbol,,X0002.3,9LIVES,,\n",
+    )
+    .unwrap();
+    let r = run(&[
+        "import-comments",
+        ldp.to_str().unwrap(),
+        csv.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 1);
+    assert!(
+        r.stderr.contains(":3: alarm number `99` is not 1000–9999"),
+        "{}",
+        r.stderr
+    );
+    assert!(
+        r.stderr.contains(":4: `9LIVES` is not a valid symbol name"),
+        "{}",
+        r.stderr
+    );
+    assert_eq!(read(&ldp), before, "nothing changed");
+}

@@ -36,6 +36,41 @@ pub enum Command {
         #[arg(short, long)]
         output: Option<PathBuf>,
     },
+    /// Write symbols, addresses and comments as CSV, a column per language.
+    ExportComments {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// Only this language's column (zh or en).
+        #[arg(long)]
+        lang: Option<String>,
+        /// Output file (default: standard output).
+        #[arg(short, long)]
+        output: Option<PathBuf>,
+    },
+    /// Read comments from CSV into a project: every row applies, or none does.
+    ImportComments {
+        /// The project to change.
+        project: PathBuf,
+        /// The CSV file.
+        csv: PathBuf,
+        /// Only this language's column (zh or en).
+        #[arg(long)]
+        lang: Option<String>,
+    },
+    /// Print the reference index, the bit-usage table or the byte-usage table.
+    Xref {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// The reference index (the default).
+        #[arg(long, group = "table")]
+        index: bool,
+        /// The bit-usage table.
+        #[arg(long, group = "table")]
+        bits: bool,
+        /// The byte-usage table.
+        #[arg(long, group = "table")]
+        bytes: bool,
+    },
     /// Run the program on the simulated PLC under a stimulus script.
     Sim {
         /// A project (.ldp) or an instruction list (.il).
@@ -101,6 +136,15 @@ where
             trace,
         }) => sim(&path, &script, trace.as_deref(), out, err),
         Some(Command::Bench { path, scans }) => bench(&path, scans, out, err),
+        Some(Command::ExportComments { path, lang, output }) => {
+            export_comments(&path, lang.as_deref(), output.as_deref(), out)
+        }
+        Some(Command::ImportComments { project, csv, lang }) => {
+            import_comments(&project, &csv, lang.as_deref(), out, err)
+        }
+        Some(Command::Xref {
+            path, bits, bytes, ..
+        }) => xref(&path, bits, bytes, out, err),
     };
     match result {
         Ok(code) => code,
@@ -311,5 +355,118 @@ fn bench(path: &Path, scans: u64, out: &mut dyn Write, err: &mut dyn Write) -> a
         ns_per_scan,
         ns_per_scan / steps.max(1.0)
     );
+    Ok(0)
+}
+
+/// The project a PATH holds (an IL file drawn as a ladder), or the exit code when it has none.
+fn project_of(
+    path: &Path,
+    err: &mut dyn Write,
+) -> anyhow::Result<Result<ladder_engine::model::Project, i32>> {
+    Ok(match Source::read(path)? {
+        Source::Project(p) => Ok(p),
+        Source::Il { imported, .. } => match imported.project {
+            Some(p) => Ok(p),
+            None => {
+                print_diagnostics(path, &imported.compiled, err);
+                let _ = writeln!(
+                    err,
+                    "{}; the instruction list cannot be drawn",
+                    summary(&imported.compiled)
+                );
+                Err(1)
+            }
+        },
+    })
+}
+
+fn check_lang(lang: Option<&str>) -> anyhow::Result<()> {
+    match lang {
+        None | Some("zh") | Some("en") => Ok(()),
+        Some(other) => anyhow::bail!("--lang is zh or en, not `{other}`"),
+    }
+}
+
+fn export_comments(
+    path: &Path,
+    lang: Option<&str>,
+    output: Option<&Path>,
+    out: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    check_lang(lang)?;
+    let mut sink = Vec::new();
+    let project = match project_of(path, &mut sink)? {
+        Ok(p) => p,
+        Err(code) => {
+            let _ = out.flush();
+            eprint!("{}", String::from_utf8_lossy(&sink));
+            return Ok(code);
+        }
+    };
+    let text = ladder_engine::comments::export(&project, lang);
+    match output {
+        Some(o) => std::fs::write(o, text)
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display()))?,
+        None => {
+            let _ = out.write_all(text.as_bytes());
+        }
+    }
+    Ok(0)
+}
+
+fn import_comments(
+    project_path: &Path,
+    csv_path: &Path,
+    lang: Option<&str>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    check_lang(lang)?;
+    let mut project = file::load(project_path)
+        .map_err(|e| anyhow::anyhow!("{} cannot be opened: {e}", project_path.display()))?;
+    let text = std::fs::read_to_string(csv_path)
+        .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", csv_path.display()))?;
+    match ladder_engine::comments::import(&mut project, &text, lang) {
+        Ok(n) => {
+            file::save(&project, project_path)
+                .map_err(|e| anyhow::anyhow!("cannot save {}: {e}", project_path.display()))?;
+            let _ = writeln!(out, "{n} rows applied to {}", project_path.display());
+            Ok(0)
+        }
+        Err(ladder_engine::comments::CommentsError::Rejected(rows)) => {
+            for (line, message) in &rows {
+                let _ = writeln!(err, "{}:{line}: {message}", csv_path.display());
+            }
+            let _ = writeln!(
+                err,
+                "{} row(s) rejected; the project was not changed",
+                rows.len()
+            );
+            Ok(1)
+        }
+        Err(e) => anyhow::bail!("{}: {e}", csv_path.display()),
+    }
+}
+
+fn xref(
+    path: &Path,
+    bits: bool,
+    bytes: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let project = match project_of(path, err)? {
+        Ok(p) => p,
+        Err(code) => return Ok(code),
+    };
+    let x = ladder_engine::xref::build(&project);
+    let text = if bits {
+        ladder_engine::xref::bits_text(&x)
+    } else if bytes {
+        ladder_engine::xref::bytes_text(&x)
+    } else {
+        ladder_engine::xref::index_text(&project, &x)
+    };
+    let _ = out.write_all(text.as_bytes());
     Ok(0)
 }

@@ -10,7 +10,10 @@ use thiserror::Error;
 /// The first word of every project file.
 pub const MAGIC: &str = "LADDER-STUDIO-PROJECT";
 /// The schema version this build writes.
-pub const SCHEMA_VERSION: u32 = 1;
+///
+/// History: v1 had one symbol list and no other tables; v2 has the symbol tables, data-setting
+/// tables, message, diagnosis, permission and M-code tables and the version information.
+pub const SCHEMA_VERSION: u32 = 2;
 
 /// Why a project file could not be read or written.
 #[derive(Debug, Error)]
@@ -106,24 +109,121 @@ pub fn from_bytes(bytes: &[u8]) -> Result<Project, FileError> {
         .filter(|h| h.len() == 8)
         .and_then(|h| u32::from_str_radix(h, 16).ok())
         .ok_or_else(|| FileError::Header(header.into()))?;
+    // Only the exact spelling this program writes is accepted, so that no byte of the header
+    // can change without the file being refused (`v01`, `CRC32=`, upper-case hex).
+    if header != format!("{MAGIC} v{version} crc32={expected:08x}") {
+        return Err(FileError::Header(header.chars().take(80).collect()));
+    }
     if version > SCHEMA_VERSION || version == 0 {
         return Err(FileError::Version { found: version });
     }
-    let body = body.strip_suffix('\n').unwrap_or(body);
+    let Some(body) = body.strip_suffix('\n') else {
+        return Err(FileError::Checksum {
+            expected,
+            actual: crc32fast::hash(body.as_bytes()),
+        });
+    };
     let actual = crc32fast::hash(body.as_bytes());
     if actual != expected {
         return Err(FileError::Checksum { expected, actual });
     }
-    parse_body(body)
+    parse_versioned(body, version)
+}
+
+fn body_error(e: ron::error::SpannedError) -> FileError {
+    // The body starts on line 2 of the file.
+    FileError::Body {
+        line: e.span.start.line + 1,
+        column: e.span.start.col,
+        message: e.code.to_string(),
+    }
+}
+
+/// Parses a body of a given schema version, migrating older ones.
+fn parse_versioned(body: &str, version: u32) -> Result<Project, FileError> {
+    match version {
+        1 => ron::from_str::<v1::Project>(body)
+            .map(v1::migrate)
+            .map_err(body_error),
+        _ => ron::from_str::<Project>(body).map_err(body_error),
+    }
 }
 
 /// Parses a body without checking a checksum (the read-only recovery open).
 pub fn parse_body(body: &str) -> Result<Project, FileError> {
-    ron::from_str::<Project>(body).map_err(|e| FileError::Body {
-        line: e.span.start.line + 1,
-        column: e.span.start.col,
-        message: e.code.to_string(),
-    })
+    ron::from_str::<Project>(body).map_err(body_error)
+}
+
+/// Opens a damaged file as far as it can be read, for a read-only look: the checksum is not
+/// verified, and an unknown version is read as the current one. The caller must not save
+/// over the original with it.
+pub fn recover(bytes: &[u8]) -> Result<Project, FileError> {
+    if !is_project_text(bytes) {
+        return Err(FileError::Foreign);
+    }
+    let text = String::from_utf8_lossy(bytes);
+    let (header, body) = text.split_once('\n').unwrap_or((&text, ""));
+    let version = header
+        .split(' ')
+        .nth(1)
+        .and_then(|v| v.strip_prefix('v'))
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(SCHEMA_VERSION);
+    let body = body.strip_suffix('\n').unwrap_or(body);
+    parse_versioned(body, version.min(SCHEMA_VERSION))
+}
+
+/// Schema version 1 and its migration.
+mod v1 {
+    use crate::address::Address;
+    use crate::model::{Comments, Ladder, SymbolTable, tables};
+    use crate::profile::ProfileId;
+    use serde::Deserialize;
+
+    #[derive(Deserialize)]
+    pub struct Symbol {
+        name: String,
+        address: Address,
+        #[serde(default)]
+        comment: String,
+    }
+
+    #[derive(Deserialize)]
+    pub struct Project {
+        profile: ProfileId,
+        level2_division: u32,
+        ladder: Ladder,
+        #[serde(default)]
+        symbols: Vec<Symbol>,
+    }
+
+    /// v1 → v2: the one symbol list becomes the first symbol table, its comments Chinese.
+    pub fn migrate(old: Project) -> crate::model::Project {
+        let rows = old
+            .symbols
+            .into_iter()
+            .map(|s| tables::Symbol {
+                name: s.name,
+                address: s.address,
+                comments: if s.comment.is_empty() {
+                    Comments::new()
+                } else {
+                    Comments::from([("zh".to_string(), s.comment)])
+                },
+            })
+            .collect();
+        let mut p = crate::model::Project {
+            profile: old.profile,
+            level2_division: old.level2_division,
+            ladder: old.ladder,
+            ..Default::default()
+        };
+        p.symbol_tables = vec![SymbolTable {
+            name: "符号表1".into(),
+            rows,
+        }];
+        p
+    }
 }
 
 /// Reads and verifies a project file.
@@ -135,9 +235,32 @@ pub fn load(path: &Path) -> Result<Project, FileError> {
     from_bytes(&bytes)
 }
 
+/// Where a save can be interrupted, for the crash tests.
+#[doc(hidden)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interrupt {
+    /// Run to the end.
+    Never,
+    /// Stop after writing half of the temporary file.
+    MidWrite,
+    /// Stop after the temporary file is complete, before the backup and the rename.
+    BeforeRename,
+}
+
 /// Saves atomically: writes a temporary file in the same folder, flushes it to disk, keeps the
-/// previous file as `NAME.bak`, then renames the new one over the old.
+/// previous file as `NAME.ldp.bak`, then renames the new one over the old. A crash at any
+/// point leaves the old file or the new one, never a mix.
 pub fn save(project: &Project, path: &Path) -> Result<(), FileError> {
+    save_interruptible(project, path, Interrupt::Never)
+}
+
+/// [`save`], stopping where `interrupt` says as if the process had been killed there.
+#[doc(hidden)]
+pub fn save_interruptible(
+    project: &Project,
+    path: &Path,
+    interrupt: Interrupt,
+) -> Result<(), FileError> {
     let io = |source| FileError::Io {
         path: path.to_path_buf(),
         source,
@@ -154,14 +277,22 @@ pub fn save(project: &Project, path: &Path) -> Result<(), FileError> {
     let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
     let result = (|| {
         let mut f = fs::File::create(&tmp)?;
+        if interrupt == Interrupt::MidWrite {
+            f.write_all(&text.as_bytes()[..text.len() / 2])?;
+            return Err(std::io::Error::other("interrupted"));
+        }
         f.write_all(text.as_bytes())?;
         f.sync_all()?;
+        if interrupt == Interrupt::BeforeRename {
+            return Err(std::io::Error::other("interrupted"));
+        }
         if path.exists() {
             fs::copy(path, dir.join(format!("{name}.bak")))?;
         }
         fs::rename(&tmp, path)
     })();
-    if result.is_err() {
+    // A real crash leaves the temporary file behind; the simulated one does too.
+    if result.is_err() && interrupt == Interrupt::Never {
         let _ = fs::remove_file(&tmp);
     }
     result.map_err(io)
@@ -184,7 +315,7 @@ mod tests {
             Err(FileError::Checksum { .. })
         ));
         assert!(matches!(from_bytes(b"LD X1.0\n"), Err(FileError::Foreign)));
-        let future = text.replacen(" v1 ", " v9 ", 1);
+        let future = text.replacen(" v2 ", " v9 ", 1);
         assert!(matches!(
             from_bytes(future.as_bytes()),
             Err(FileError::Version { found: 9 })

@@ -4,6 +4,7 @@
 
 pub mod address;
 pub mod catalog;
+pub mod comments;
 pub mod compiler;
 pub mod file;
 pub mod generate;
@@ -12,6 +13,7 @@ pub mod model;
 pub mod profile;
 pub mod sim;
 pub mod vm;
+pub mod xref;
 
 pub use address::{Address, AddressError, Area};
 pub use catalog::{CATALOG, InstrSpec, Op};

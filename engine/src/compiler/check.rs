@@ -9,7 +9,7 @@ use crate::catalog::{
     Access, CONST_MAX, InstrClass, Op, OperandKind, OperandSpec, Width, check_digit_group,
     xmov_format,
 };
-use crate::model::{BlockKind, Operand, Project};
+use crate::model::{BlockKind, Operand, Project, SymbolIndex};
 use crate::profile::Profile;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -40,6 +40,7 @@ fn place_text(program: &Program, p: Place) -> String {
 /// Checks a whole program and resolves its symbols in place. Returns the step counts.
 pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) -> StepCounts {
     let profile = project.profile();
+    let symbols = project.symbol_index();
     let mut labels: BTreeMap<u16, Place> = BTreeMap::new();
     let mut coils: HashMap<Address, Place> = HashMap::new();
     let mut timers: HashMap<Address, Place> = HashMap::new();
@@ -76,7 +77,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
             sink.at(b, &label, n);
             for k in 0..program.blocks[b].networks[n].instrs.len() {
                 let instr = &mut program.blocks[b].networks[n].instrs[k];
-                check_operands(instr, project, profile, sink);
+                check_operands(instr, &symbols, profile, sink);
                 let instr = &program.blocks[b].networks[n].instrs[k];
                 let here = (b, n, instr.origin);
                 let first_addr = instr.operands.first().and_then(Operand::address);
@@ -369,7 +370,7 @@ fn covered(a: Address, bytes: u32, count: u32) -> u32 {
     }
 }
 
-fn check_operands(instr: &mut Instr, project: &Project, profile: &Profile, sink: &mut Sink) {
+fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, sink: &mut Sink) {
     let spec = instr.op.spec();
     let fixed = spec.operands.len();
     let expected = match instr.op {
@@ -418,7 +419,7 @@ fn check_operands(instr: &mut Instr, project: &Project, profile: &Profile, sink:
     // Resolve symbols first so the checks below see addresses.
     for operand in instr.operands.iter_mut() {
         if let Operand::Symbol(name) = operand {
-            match project.resolve_symbol(name) {
+            match symbols.get(name) {
                 Some(a) => *operand = Operand::Addr(a),
                 None => {
                     sink.report(

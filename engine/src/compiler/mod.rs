@@ -12,6 +12,7 @@ pub mod diag;
 pub mod layout;
 pub mod lower;
 pub mod rung;
+pub mod tables;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
 pub use rung::Instr;
@@ -136,6 +137,7 @@ pub fn compile(project: &Project) -> Compiled {
     let mut sink = Sink::default();
     let mut program = ladder_program(project, &mut sink);
     let steps = check::check_program(&mut program, project, &mut sink);
+    tables::check_tables(project, &mut sink);
     finish(program, sink, steps)
 }
 

@@ -7,6 +7,7 @@ pub mod ladder;
 pub mod network;
 pub mod operand;
 pub mod project;
+pub mod tables;
 
 pub use block::{Block, BlockKind};
 pub use cell::Cell;
@@ -14,4 +15,8 @@ pub use edit::{CellRef, Edit, EditError, History};
 pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH};
 pub use network::{Network, NetworkId, Row};
 pub use operand::{Operand, OperandError, is_symbol_name};
-pub use project::{Project, Symbol};
+pub use project::{Project, SymbolIndex};
+pub use tables::{
+    AddressRow, Comments, DataRow, DataTables, MCodeRow, Message, MessageTable, PasswordHash,
+    RealRow, Symbol, SymbolTable, VersionInfo,
+};

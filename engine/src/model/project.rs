@@ -1,23 +1,15 @@
-//! The project: target profile, ladder, symbols and scan settings.
+//! The project: target profile, ladder, and every table of manual §3.4.
 
 use super::ladder::Ladder;
+use super::tables::{
+    AddressRow, BLOCK_SYMBOLS, DataTables, MCodeRow, MessageTable, Symbol, SymbolTable, VersionInfo,
+};
 use crate::address::Address;
 use crate::profile::{Profile, ProfileId};
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 
-/// One row of a symbol table: an address with an optional name and a comment.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Symbol {
-    /// The symbol's name; empty for an address that carries only a comment.
-    pub name: String,
-    /// The address it stands for.
-    pub address: Address,
-    /// Comment.
-    #[serde(default)]
-    pub comment: String,
-}
-
-/// A whole project.
+/// A whole project: what a `.ldp` file holds.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Project {
     /// The target controller.
@@ -26,9 +18,27 @@ pub struct Project {
     pub level2_division: u32,
     /// The ladder program.
     pub ladder: Ladder,
-    /// The symbol table.
+    /// User symbol tables. The block-symbol table is derived from the subprograms.
     #[serde(default)]
-    pub symbols: Vec<Symbol>,
+    pub symbol_tables: Vec<SymbolTable>,
+    /// K page and D, D_FLOAT, DT, DC tables.
+    #[serde(default)]
+    pub data: DataTables,
+    /// The display-message (PLC alarm) table.
+    #[serde(default)]
+    pub messages: MessageTable,
+    /// The diagnosis table.
+    #[serde(default)]
+    pub diagnosis: Vec<AddressRow>,
+    /// The permission table.
+    #[serde(default)]
+    pub permissions: Vec<AddressRow>,
+    /// The M-code comment table.
+    #[serde(default)]
+    pub m_codes: Vec<MCodeRow>,
+    /// Version information.
+    #[serde(default)]
+    pub version: VersionInfo,
 }
 
 impl Default for Project {
@@ -37,8 +47,30 @@ impl Default for Project {
             profile: ProfileId::default(),
             level2_division: 1,
             ladder: Ladder::default(),
-            symbols: Vec::new(),
+            symbol_tables: vec![SymbolTable {
+                name: "符号表1".into(),
+                rows: Vec::new(),
+            }],
+            data: DataTables::default(),
+            messages: MessageTable::default(),
+            diagnosis: Vec::new(),
+            permissions: Vec::new(),
+            m_codes: Vec::new(),
+            version: VersionInfo::default(),
         }
+    }
+}
+
+/// Symbol names to addresses, built once for a compile or a cross-reference.
+#[derive(Clone, Debug, Default)]
+pub struct SymbolIndex {
+    by_name: HashMap<String, Address>,
+}
+
+impl SymbolIndex {
+    /// The address a name stands for.
+    pub fn get(&self, name: &str) -> Option<Address> {
+        self.by_name.get(name).copied()
     }
 }
 
@@ -48,18 +80,60 @@ impl Project {
         Profile::get(self.profile)
     }
 
+    /// Every user symbol row, table by table.
+    pub fn symbols(&self) -> impl Iterator<Item = &Symbol> {
+        self.symbol_tables.iter().flat_map(|t| &t.rows)
+    }
+
+    /// The block-symbol table: each subprogram's name as a symbol of its P number.
+    pub fn block_symbols(&self) -> SymbolTable {
+        SymbolTable {
+            name: BLOCK_SYMBOLS.into(),
+            rows: self
+                .ladder
+                .blocks
+                .iter()
+                .filter_map(|b| match &b.kind {
+                    super::BlockKind::Sub { number, name } if !name.is_empty() => Some(Symbol {
+                        name: name.clone(),
+                        address: Address::byte(crate::address::Area::P, *number),
+                        comments: Default::default(),
+                    }),
+                    _ => None,
+                })
+                .collect(),
+        }
+    }
+
+    /// Names to addresses: user symbols (the first definition of a name wins) and the
+    /// block symbols.
+    pub fn symbol_index(&self) -> SymbolIndex {
+        let mut by_name = HashMap::new();
+        for s in self.symbols().chain(self.block_symbols().rows.iter()) {
+            if !s.name.is_empty() {
+                by_name.entry(s.name.clone()).or_insert(s.address);
+            }
+        }
+        SymbolIndex { by_name }
+    }
+
     /// The address a symbol name stands for.
     pub fn resolve_symbol(&self, name: &str) -> Option<Address> {
-        self.symbols
-            .iter()
+        self.symbols()
             .find(|s| !s.name.is_empty() && s.name == name)
             .map(|s| s.address)
+            .or_else(|| {
+                self.block_symbols()
+                    .rows
+                    .into_iter()
+                    .find(|s| s.name == name)
+                    .map(|s| s.address)
+            })
     }
 
     /// The symbol name of an address, if it has one.
     pub fn symbol_of(&self, address: Address) -> Option<&str> {
-        self.symbols
-            .iter()
+        self.symbols()
             .find(|s| s.address == address && !s.name.is_empty())
             .map(|s| s.name.as_str())
     }

@@ -116,6 +116,7 @@ impl Vm {
         }
         let mut vm = Vm::from_program(&compiled.program, project.profile())?;
         vm.division = project.level2_division.max(1);
+        vm.load_data_tables(project);
         Ok(vm)
     }
 
@@ -146,6 +147,30 @@ impl Vm {
             layout,
             profile,
         })
+    }
+
+    /// Power-on values of the retained areas from the project's data-setting tables: the K
+    /// page, D, DT and DC rows, and reals from D_FLOAT.
+    pub fn load_data_tables(&mut self, project: &Project) {
+        let profile = self.profile;
+        let k = self.layout.area_range(Area::K);
+        for (i, byte) in project.data.k.iter().enumerate().take(k.len()) {
+            self.mem[k.start + i] = *byte;
+        }
+        let data = &project.data;
+        for row in data.d.iter().chain(&data.dt).chain(&data.dc) {
+            if row.address.check_range(profile).is_ok() && row.address.bit.is_none() {
+                let loc = self.layout.loc(row.address, false);
+                memory::write(&mut self.mem, loc, 4, row.value as i32);
+            }
+        }
+        for row in &data.d_float {
+            if row.address.area == Area::D && row.address.check_range(profile).is_ok() {
+                let loc = self.layout.loc(row.address, false);
+                memory::write_real(&mut self.mem, loc, row.value);
+            }
+        }
+        self.apply_forces();
     }
 
     /// Attaches a CNC.

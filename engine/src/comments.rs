@@ -1,0 +1,369 @@
+//! Comments as CSV (formats.md §1 `export-comments` / `import-comments`): symbols, network
+//! comments, messages and the other tables' comments, one column per language.
+//!
+//! Columns: `kind,table,key,symbol,<lang>…`. `kind` is `symbol` (table: the symbol table),
+//! `network` (table: LEVEL1/LEVEL2/P0001, key: network number, symbol: its title), `message`
+//! (key: the A bit, symbol: the alarm number), `data` (table: D/DT/DC/D_FLOAT), `diagnosis`,
+//! `permission` or `mcode` (key: the M code). Import changes nothing unless every row applies.
+
+use crate::address::Address;
+use crate::model::tables::{Comments, MessageTable, Symbol, SymbolTable};
+use crate::model::{Operand, Project, is_symbol_name};
+use thiserror::Error;
+
+/// The languages exported when none is chosen.
+pub const LANGUAGES: [&str; 2] = ["zh", "en"];
+
+/// Why a comments file could not be imported.
+#[derive(Debug, Error)]
+pub enum CommentsError {
+    /// The CSV itself is malformed.
+    #[error("line {line}: {message}")]
+    Csv {
+        /// Line.
+        line: u64,
+        /// What the CSV reader said.
+        message: String,
+    },
+    /// Some rows cannot be applied; nothing was changed.
+    #[error("{} row(s) rejected, nothing changed:\n{}", .0.len(), .0.iter().map(|(l, m)| format!("line {l}: {m}")).collect::<Vec<_>>().join("\n"))]
+    Rejected(Vec<(u64, String)>),
+}
+
+fn lang_columns(lang: Option<&str>) -> Vec<String> {
+    match lang {
+        Some(l) => vec![l.to_string()],
+        None => LANGUAGES.iter().map(|s| s.to_string()).collect(),
+    }
+}
+
+/// Writes a project's comments as CSV (all languages, or one).
+pub fn export(project: &Project, lang: Option<&str>) -> String {
+    let langs = lang_columns(lang);
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut header = vec![
+        "kind".to_string(),
+        "table".into(),
+        "key".into(),
+        "symbol".into(),
+    ];
+    header.extend(langs.iter().cloned());
+    let _ = w.write_record(&header);
+    let mut row = |kind: &str, table: &str, key: String, symbol: &str, comments: &Comments| {
+        let mut r = vec![kind.to_string(), table.to_string(), key, symbol.to_string()];
+        r.extend(
+            langs
+                .iter()
+                .map(|l| comments.get(l).cloned().unwrap_or_default()),
+        );
+        let _ = w.write_record(&r);
+    };
+    for t in &project.symbol_tables {
+        for s in &t.rows {
+            row(
+                "symbol",
+                &t.name,
+                s.address.to_string(),
+                &s.name,
+                &s.comments,
+            );
+        }
+    }
+    for b in &project.ladder.blocks {
+        for (n, net) in b.networks.iter().enumerate() {
+            if !net.title.is_empty() || !net.comments.is_empty() {
+                row(
+                    "network",
+                    &b.kind.label(),
+                    (n + 1).to_string(),
+                    &net.title,
+                    &net.comments,
+                );
+            }
+        }
+    }
+    for (k, m) in project.messages.rows.iter().enumerate() {
+        if m.number.is_some() || !m.texts.is_empty() {
+            let number = m.number.map(|n| n.to_string()).unwrap_or_default();
+            row(
+                "message",
+                "",
+                MessageTable::address(k).to_string(),
+                &number,
+                &m.texts,
+            );
+        }
+    }
+    let d = &project.data;
+    for (table, rows) in [("D", &d.d), ("DT", &d.dt), ("DC", &d.dc)] {
+        for r in rows {
+            row("data", table, r.address.to_string(), &r.symbol, &r.comments);
+        }
+    }
+    for r in &d.d_float {
+        row(
+            "data",
+            "D_FLOAT",
+            r.address.to_string(),
+            &r.symbol,
+            &r.comments,
+        );
+    }
+    for r in &project.diagnosis {
+        row("diagnosis", "", r.address.to_string(), "", &r.comments);
+    }
+    for r in &project.permissions {
+        row("permission", "", r.address.to_string(), "", &r.comments);
+    }
+    for r in &project.m_codes {
+        row("mcode", "", format!("M{:02}", r.code), "", &r.comments);
+    }
+    String::from_utf8(w.into_inner().unwrap_or_default()).unwrap_or_default()
+}
+
+fn set_langs(target: &mut Comments, langs: &[(String, String)]) {
+    for (l, text) in langs {
+        if text.is_empty() {
+            target.remove(l);
+        } else {
+            target.insert(l.clone(), text.clone());
+        }
+    }
+}
+
+/// Applies a comments CSV to a project: all rows or none. `lang` limits the import to one
+/// language column.
+pub fn import(
+    project: &mut Project,
+    csv_text: &str,
+    lang: Option<&str>,
+) -> Result<usize, CommentsError> {
+    let mut reader = csv::ReaderBuilder::new()
+        .flexible(false)
+        .from_reader(csv_text.as_bytes());
+    let headers = reader
+        .headers()
+        .map_err(|e| CommentsError::Csv {
+            line: 1,
+            message: e.to_string(),
+        })?
+        .clone();
+    let col = |name: &str| headers.iter().position(|h| h.trim() == name);
+    let (Some(kind_c), Some(table_c), Some(key_c), Some(symbol_c)) =
+        (col("kind"), col("table"), col("key"), col("symbol"))
+    else {
+        return Err(CommentsError::Csv {
+            line: 1,
+            message: "the header must name the columns kind,table,key,symbol and one per language"
+                .into(),
+        });
+    };
+    let lang_cols: Vec<(String, usize)> = headers
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| ![kind_c, table_c, key_c, symbol_c].contains(i))
+        .map(|(i, h)| (h.trim().to_string(), i))
+        .filter(|(h, _)| lang.is_none_or(|l| l == h))
+        .collect();
+    let mut work = project.clone();
+    let mut rejected = Vec::new();
+    let mut applied = 0;
+    for record in reader.records() {
+        let record = record.map_err(|e| CommentsError::Csv {
+            line: e.position().map_or(0, |p| p.line()),
+            message: e.to_string(),
+        })?;
+        let line = record.position().map_or(0, |p| p.line());
+        let get = |i: usize| record.get(i).unwrap_or("").trim().to_string();
+        let langs: Vec<(String, String)> = lang_cols
+            .iter()
+            .map(|(l, i)| (l.clone(), get(*i)))
+            .collect();
+        match apply_row(
+            &mut work,
+            &get(kind_c),
+            &get(table_c),
+            &get(key_c),
+            &get(symbol_c),
+            &langs,
+        ) {
+            Ok(()) => applied += 1,
+            Err(m) => rejected.push((line, m)),
+        }
+    }
+    // Symbols must still be unique and well formed after all rows.
+    let mut seen = std::collections::HashSet::new();
+    for s in work.symbols() {
+        if !s.name.is_empty() && !seen.insert(s.name.clone()) {
+            rejected.push((0, format!("symbol `{}` would be defined twice", s.name)));
+        }
+    }
+    if !rejected.is_empty() {
+        return Err(CommentsError::Rejected(rejected));
+    }
+    *project = work;
+    Ok(applied)
+}
+
+fn address(key: &str) -> Result<Address, String> {
+    Address::parse(key).map_err(|e| e.to_string())
+}
+
+fn apply_row(
+    p: &mut Project,
+    kind: &str,
+    table: &str,
+    key: &str,
+    symbol: &str,
+    langs: &[(String, String)],
+) -> Result<(), String> {
+    let profile = p.profile();
+    match kind {
+        "symbol" => {
+            let a = Address::parse_in(key, profile).map_err(|e| e.to_string())?;
+            if !symbol.is_empty()
+                && (!is_symbol_name(symbol)
+                    || matches!(Operand::parse(symbol), Ok(Operand::Addr(_))))
+            {
+                return Err(format!("`{symbol}` is not a valid symbol name"));
+            }
+            let name = if table.is_empty() {
+                "符号表1"
+            } else {
+                table
+            };
+            if name == crate::model::tables::BLOCK_SYMBOLS {
+                return Err("the block-symbol table is derived from the subprograms; rename the subprogram instead".into());
+            }
+            let t = match p.symbol_tables.iter().position(|t| t.name == name) {
+                Some(i) => i,
+                None => {
+                    p.symbol_tables.push(SymbolTable {
+                        name: name.to_string(),
+                        rows: Vec::new(),
+                    });
+                    p.symbol_tables.len() - 1
+                }
+            };
+            let rows = &mut p.symbol_tables[t].rows;
+            let row = match rows.iter().position(|s| s.address == a) {
+                Some(i) => &mut rows[i],
+                None => {
+                    rows.push(Symbol {
+                        name: String::new(),
+                        address: a,
+                        comments: Comments::new(),
+                    });
+                    rows.last_mut().expect("just pushed")
+                }
+            };
+            row.name = symbol.to_string();
+            set_langs(&mut row.comments, langs);
+            Ok(())
+        }
+        "network" => {
+            let block = p
+                .ladder
+                .blocks
+                .iter_mut()
+                .find(|b| b.kind.label() == table)
+                .ok_or_else(|| format!("there is no block `{table}` (LEVEL1, LEVEL2 or P0001…)"))?;
+            let n: usize = key
+                .parse()
+                .map_err(|_| format!("`{key}` is not a network number"))?;
+            let net = n
+                .checked_sub(1)
+                .and_then(|i| block.networks.get_mut(i))
+                .ok_or_else(|| format!("{table} has no network {n}"))?;
+            net.title = symbol.to_string();
+            set_langs(&mut net.comments, langs);
+            Ok(())
+        }
+        "message" => {
+            let a = address(key)?;
+            let k = MessageTable::row_of(a)
+                .ok_or_else(|| format!("{a} is not a message row (an A bit)"))?;
+            let number = if symbol.is_empty() {
+                None
+            } else {
+                Some(
+                    symbol
+                        .parse::<u16>()
+                        .ok()
+                        .filter(|n| (1000..=9999).contains(n))
+                        .ok_or_else(|| format!("alarm number `{symbol}` is not 1000–9999"))?,
+                )
+            };
+            let m = p
+                .messages
+                .rows
+                .get_mut(k)
+                .ok_or_else(|| format!("{a} is not a message row"))?;
+            m.number = number;
+            set_langs(&mut m.texts, langs);
+            Ok(())
+        }
+        "data" => {
+            let a = address(key)?;
+            let d = &mut p.data;
+            let (sym, comments) = match table {
+                "D_FLOAT" => d
+                    .d_float
+                    .iter_mut()
+                    .find(|r| r.address == a)
+                    .map(|r| (&mut r.symbol, &mut r.comments)),
+                "D" | "DT" | "DC" => {
+                    let rows = match table {
+                        "D" => &mut d.d,
+                        "DT" => &mut d.dt,
+                        _ => &mut d.dc,
+                    };
+                    rows.iter_mut()
+                        .find(|r| r.address == a)
+                        .map(|r| (&mut r.symbol, &mut r.comments))
+                }
+                _ => {
+                    return Err(format!(
+                        "`{table}` is not a data table (D, D_FLOAT, DT, DC)"
+                    ));
+                }
+            }
+            .ok_or_else(|| {
+                format!("the {table} table has no row {a}; add the row in the table first")
+            })?;
+            *sym = symbol.to_string();
+            set_langs(comments, langs);
+            Ok(())
+        }
+        "diagnosis" | "permission" => {
+            let a = address(key)?;
+            let rows = if kind == "diagnosis" {
+                &mut p.diagnosis
+            } else {
+                &mut p.permissions
+            };
+            let row = rows
+                .iter_mut()
+                .find(|r| r.address == a)
+                .ok_or_else(|| format!("the {kind} table has no row {a}"))?;
+            set_langs(&mut row.comments, langs);
+            Ok(())
+        }
+        "mcode" => {
+            let code: u32 = key
+                .trim_start_matches(['M', 'm'])
+                .parse()
+                .map_err(|_| format!("`{key}` is not an M code"))?;
+            let row = p
+                .m_codes
+                .iter_mut()
+                .find(|r| r.code == code)
+                .ok_or_else(|| format!("the M-code table has no M{code:02}"))?;
+            set_langs(&mut row.comments, langs);
+            Ok(())
+        }
+        other => Err(format!(
+            "unknown kind `{other}` (symbol, network, message, data, diagnosis, permission, mcode)"
+        )),
+    }
+}
