@@ -965,7 +965,7 @@ catalog! {
         spec("ERR", OperandKind::BitOrByte, BYTES_WRITE, Width::Bytes(1), Access::Write, "完成输出：处理结束时为 1", "Completion output: 1 when processing has ended"),
     ] list? "读写 CNC 窗口数据" "CNC window read/write";
     Axctl "AXCTL" Function Cnc [
-        unsigned_in("GRP", Width::Bytes(1), 4, "控制组 1–4（A–D）", "Control group 1–4 (A–D)"),
+        with_range(unsigned_in("GRP", Width::Bytes(1), 4, "控制组 1–4（A–D）", "Control group 1–4 (A–D)"), 1, 4),
         unsigned_in("CMD", Width::Bytes(1), 255, "控制指令（见轴控指令表）", "Command (see the axis-command table)"),
         signed_in("DT1", Width::Bytes(2), "数据 1：速度", "Data 1: speed"),
         signed_in("DT2", Width::Bytes(4), "数据 2：距离、位置、时间或代码", "Data 2: distance, position, time or code"),

@@ -67,6 +67,15 @@ pub enum FileError {
     Encoding(usize),
 }
 
+/// The "ladder checksum" of the version-information dialog (§3.4.7): the CRC-32 of the saved
+/// body, as the header of the saved file records it.
+pub fn ladder_checksum(saved: &[u8]) -> Option<u32> {
+    let header = saved.split(|b| *b == b'\n').next()?;
+    let header = std::str::from_utf8(header).ok()?;
+    let hex = header.rsplit_once("crc32=")?.1;
+    u32::from_str_radix(hex, 16).ok()
+}
+
 /// Whether `text` looks like a project file rather than an instruction list.
 pub fn is_project_text(text: &[u8]) -> bool {
     text.starts_with(MAGIC.as_bytes())

@@ -287,3 +287,14 @@ fn table_checks_report_bad_symbols_and_messages() {
     );
     assert!(has("alarm number 999 is outside 1000–9999"), "{codes:#?}");
 }
+
+#[test]
+fn the_ladder_checksum_is_the_crc_of_the_saved_body() {
+    let text = file::to_string(&full_project());
+    let body = text.split_once('\n').unwrap().1.strip_suffix('\n').unwrap();
+    assert_eq!(
+        file::ladder_checksum(text.as_bytes()),
+        Some(crc32fast::hash(body.as_bytes()))
+    );
+    assert_eq!(file::ladder_checksum(b"LD X1.0\n"), None);
+}

@@ -165,6 +165,11 @@ fn axctl_writes_the_group_signals_and_reports_fin() {
     }));
     vm.write(a("X0.0"), 1, 1);
     vm.tick();
+    assert!(
+        !vm.read_bit(a("R1.0")),
+        "the CNC sees the command only after this scan"
+    );
+    vm.tick();
     assert!(vm.read_bit(a("R1.0")) && !vm.read_bit(a("R1.1")));
 }
 
@@ -254,4 +259,101 @@ fn forces_hold_against_the_program_and_survive_power_cycle() {
     assert!(vm.read_bit(a("Y0.0")), "unforce leaves the last value");
     vm.tick();
     assert!(!vm.read_bit(a("Y0.0")));
+}
+
+/// Shares a CNC double between the test and the VM.
+struct Shared(std::rc::Rc<std::cell::RefCell<FakeCnc>>);
+
+impl ladder_engine::vm::cnc::Cnc for Shared {
+    fn window_is_low_speed(&self, f: i32) -> bool {
+        self.0.borrow().window_is_low_speed(f)
+    }
+    fn window(&mut self, block: &mut [i32]) {
+        self.0.borrow_mut().window(block)
+    }
+    fn machine_position(&self, axis: u32) -> Option<i64> {
+        self.0.borrow().machine_position(axis)
+    }
+    fn axis_status(&self, group: u8) -> AxisStatus {
+        self.0.borrow().axis_status(group)
+    }
+    fn exchange(&mut self, now: u64, g: &[u8], f: &mut [u8]) {
+        self.0.borrow_mut().exchange(now, g, f)
+    }
+}
+
+#[test]
+fn a_low_speed_window_uses_the_block_latched_at_its_first_scan() {
+    use ladder_engine::vm::cnc::Cnc;
+    let p = project("LEVEL2\nNETWORK\nLD X0000.0\nWINDR D0000 R0001.0\n");
+    let cnc = std::rc::Rc::new(std::cell::RefCell::new(FakeCnc {
+        low_speed: vec![14],
+        ..FakeCnc::default()
+    }));
+    let mut vm = Vm::new(&p).unwrap();
+    vm.set_cnc(Box::new(Shared(cnc.clone())));
+    vm.write(a("D0"), 4, 14);
+    vm.write(a("D6"), 4, 111);
+    vm.write(a("X0.0"), 1, 1);
+    vm.tick();
+    vm.write(a("D6"), 4, 222);
+    vm.tick();
+    assert_eq!(
+        cnc.borrow().last_block[6],
+        111,
+        "the latched block, not the changed one"
+    );
+    assert_eq!(
+        vm.read(a("D6"), 4),
+        222,
+        "the user's later value is not overwritten"
+    );
+    assert!(cnc.borrow().window_is_low_speed(14));
+}
+
+#[test]
+fn g_signals_reach_the_cnc_at_the_end_of_the_tick_that_wrote_them() {
+    let p = project("LEVEL2\nNETWORK\nLD X0000.0\nOUT G0008.4\n");
+    let cnc = std::rc::Rc::new(std::cell::RefCell::new(FakeCnc::default()));
+    let mut vm = Vm::new(&p).unwrap();
+    vm.set_cnc(Box::new(Shared(cnc.clone())));
+    vm.write(a("X0.0"), 1, 1);
+    vm.tick();
+    assert_eq!(cnc.borrow().last_g[8] & 0x10, 0x10);
+}
+
+#[test]
+fn a_subprogram_called_from_both_levels_has_one_memory_per_instruction() {
+    let p = project(
+        "LEVEL1\nNETWORK\nCALLU P0001\nLEVEL2\nNETWORK\nCALLU P0001\nSUB P0001 \"COUNT\"\nNETWORK\nLD R0000.0\nCTRC 0000 R0000.1 C0001 100 R0001.0\n",
+    );
+    let mut vm = Vm::new(&p).unwrap();
+    vm.write(a("R0.0"), 1, 1);
+    vm.tick();
+    assert_eq!(
+        vm.read(a("C1"), 4),
+        1,
+        "one rising edge counts once, whichever level runs it"
+    );
+    vm.tick();
+    assert_eq!(vm.read(a("C1"), 4), 1);
+}
+
+#[test]
+fn constants_are_read_at_their_width_and_counters_stay_non_negative() {
+    let p = project(
+        "LEVEL2\nNETWORK\nLD X0000.0\nWSHR 1 1 -1 R0010\nWSHR 2 1 -1 D0001\nCTRC 0001 R0000.1 C0001 DC0001 R0001.0\n",
+    );
+    let mut vm = Vm::new(&p).unwrap();
+    vm.write(a("DC1"), 4, -5);
+    vm.write(a("R0.1"), 1, 1);
+    vm.write(a("X0.0"), 1, 1);
+    vm.tick();
+    assert_eq!(
+        vm.read(a("R10"), 1) & 0xFF,
+        127,
+        "-1 as one byte is 0xFF; shifted right: 0x7F"
+    );
+    assert_eq!(vm.read(a("D1"), 4), 32767);
+    assert_eq!(vm.read(a("C1"), 4), 0, "a negative preset loads 0");
 }

@@ -66,6 +66,8 @@ pub struct FakeCnc {
     pub window_data: Vec<i32>,
     /// How many times WINDR reached the CNC.
     pub window_calls: u32,
+    /// The first eight slots of the last block WINDR handed over.
+    pub last_block: Vec<i32>,
     /// The G signals after the last tick.
     pub last_g: Vec<u8>,
 }
@@ -76,6 +78,7 @@ impl Cnc for FakeCnc {
     }
     fn window(&mut self, block: &mut [i32]) {
         self.window_calls += 1;
+        self.last_block = block.iter().take(8).copied().collect();
         if block.len() < 6 + self.window_data.len() {
             if block.len() > 2 {
                 block[1] = 2;

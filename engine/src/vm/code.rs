@@ -212,6 +212,9 @@ struct Lowerer<'a> {
     calls: Vec<(usize, usize, usize)>,
     /// Label word per (block, context): label number → word.
     labels: Vec<(usize, usize, u16, u32)>,
+    /// The memory slot of each function instruction in the program text: a subprogram lowered
+    /// for both levels shares it (isa.md §5: memories belong to the instruction).
+    states: std::collections::HashMap<(u16, u32, u32), u32>,
 }
 
 fn bit_index(loc: Loc, a: Address) -> u32 {
@@ -387,15 +390,19 @@ impl Lowerer<'_> {
                 )
             }
             _ => {
+                let next = self.code.states;
+                let state = *self.states.entry(src.unwrap_or_default()).or_insert(next);
+                if state == next {
+                    self.code.states += 1;
+                }
                 let mut call = FnCall {
                     op,
                     args: [Arg::None; MAX_ARGS],
                     table: (0, 0),
-                    state: self.code.states,
+                    state,
                     cost: op.spec().steps(instr.operands.len()),
                     network: net_index,
                 };
-                self.code.states += 1;
                 let fixed = op.spec().operands.len();
                 for (i, o) in instr.operands.iter().enumerate().take(fixed.min(MAX_ARGS)) {
                     call.args[i] = self.arg(op, i, o, latched)?;
@@ -450,6 +457,7 @@ pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
         jumps: Vec::new(),
         calls: Vec::new(),
         labels: Vec::new(),
+        states: Default::default(),
     };
     l.code.level1 = l.block(0, 0)?;
     l.code.level2 = l.block(1, 1)?;

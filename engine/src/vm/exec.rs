@@ -15,7 +15,7 @@ const OP_OUT: u32 = VmOp::Out as u32;
 const OP_OUTN: u32 = VmOp::Outn as u32;
 const OP_NET: u32 = VmOp::Net as u32;
 use super::functions::{self, Ctx};
-use super::{Frame, Halt, Vm, WATCHDOG_STEPS};
+use super::{Frame, Halt, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
 
 use crate::address::Area;
 
@@ -129,9 +129,12 @@ impl Vm {
         // Level 1 never stops at a network; level 2 stops when its quota is reached.
         let quota = if level == Level::One { u64::MAX } else { quota };
         loop {
+            let image: &mut [u8; IMAGE_BYTES] = (&mut self.mem[..])
+                .try_into()
+                .expect("the image is IMAGE_BYTES long");
             let at = hot::<TRACE>(
                 &self.code.words,
-                &mut self.mem,
+                image,
                 &mut self.trace,
                 &mut r,
                 quota,
@@ -209,6 +212,7 @@ impl Vm {
                         states,
                         cnc,
                         window,
+                        latches,
                         trace,
                         ..
                     } = self;
@@ -223,6 +227,7 @@ impl Vm {
                         now,
                         cnc: cnc.as_mut(),
                         window,
+                        latch: &mut latches[f.state as usize],
                         g_base,
                         d_range: d_range.clone(),
                     };
@@ -263,7 +268,7 @@ struct Regs {
 #[inline(never)]
 fn hot<const TRACE: bool>(
     words: &[u32],
-    mem: &mut [u8],
+    mem: &mut [u8; IMAGE_BYTES],
     trace: &mut [u8],
     r: &mut Regs,
     quota: u64,
@@ -279,7 +284,9 @@ fn hot<const TRACE: bool>(
         let at = pc;
         let w = words[pc as usize];
         let arg = w >> 8;
-        let index = (arg >> 3) as usize;
+        // Masking keeps the index inside the fixed-size image, so no bounds check is needed;
+        // lowering only ever writes indices inside the layout.
+        let index = (arg >> 3) as usize & (IMAGE_BYTES - 1);
         let shift = arg & 7;
         pc += 1;
         let op = w & 0xFF;

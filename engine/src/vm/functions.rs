@@ -23,6 +23,8 @@ pub(super) struct Ctx<'a> {
     pub now: u64,
     pub cnc: &'a mut dyn Cnc,
     pub window: &'a mut [i32],
+    /// This instance's latched WINDR block.
+    pub latch: &'a mut [i32],
     pub g_base: u32,
     pub d_range: Range<usize>,
 }
@@ -163,7 +165,8 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             };
             let down = fmt % 10 == 1;
             let initial = (fmt / 10) % 10;
-            let n = int(mem, a[3], 4);
+            // C holds 0…2147483647 (isa.md §1): a negative preset counts as 0.
+            let n = int(mem, a[3], 4).max(0);
             let start = if down { n } else { initial };
             if bit(mem, a[1]) {
                 memory::write(mem, c, 4, start);
@@ -321,7 +324,10 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             if act {
                 let n = size(a[0]);
                 let by = uint(mem, a[1], 1);
-                let v = uint(mem, a[2], n);
+                // IN is a signed read (a constant is taken modulo its width); the shift works
+                // on its bits.
+                let v =
+                    int(mem, a[2], n) as u32 & if n == 4 { u32::MAX } else { (1 << (8 * n)) - 1 };
                 let r = if by >= 8 * n {
                     0
                 } else if f.op == Op::Wshl {
@@ -604,51 +610,48 @@ fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         return;
     }
     let function = memory::read(cx.mem, head, 4);
-    let low_speed = cx.cnc.window_is_low_speed(function);
-    let run = if low_speed {
-        // Two scans: the first latches, the second executes; then ERR stays 1 until ACT
-        // drops (windr.md §1.3). The block must be held constant meanwhile, so it is read
-        // at the second scan.
-        match st.phase {
-            0 => {
-                st.phase = 1;
-                set_bit(cx.mem, a[1], false);
-                false
-            }
-            1 => {
-                st.phase = 2;
-                true
-            }
-            _ => false,
-        }
-    } else {
-        true
+    let slot = |k: usize| Loc {
+        off: head.off + 4 * k as u32,
+        ..head
     };
-    if run {
+    if !cx.cnc.window_is_low_speed(function) {
+        // High speed: executed on the current block every scan with ACT = 1.
         let block = &mut cx.window[..slots];
-        for (k, slot) in block.iter_mut().enumerate() {
-            *slot = memory::read(
-                cx.mem,
-                Loc {
-                    off: head.off + 4 * k as u32,
-                    ..head
-                },
-                4,
-            );
+        for (k, v) in block.iter_mut().enumerate() {
+            *v = memory::read(cx.mem, slot(k), 4);
         }
         cx.cnc.window(block);
-        for (k, slot) in block.iter().enumerate() {
-            memory::write(
-                cx.mem,
-                Loc {
-                    off: head.off + 4 * k as u32,
-                    ..head
-                },
-                4,
-                *slot,
-            );
+        for (k, v) in block.iter().enumerate() {
+            memory::write(cx.mem, slot(k), 4, *v);
         }
         set_bit(cx.mem, a[1], true);
+        st.prev_act = true;
+        return;
+    }
+    // Low speed (windr.md §1.3): the block is latched at the first scan, the write is applied
+    // from the latched block at the second, then ERR stays 1 until ACT drops.
+    let n = slots.min(cx.latch.len());
+    match st.phase {
+        0 => {
+            let latch = &mut cx.latch[..n];
+            for (k, v) in latch.iter_mut().enumerate() {
+                *v = memory::read(cx.mem, slot(k), 4);
+            }
+            st.phase = 1;
+            set_bit(cx.mem, a[1], false);
+        }
+        1 => {
+            let latch = &mut cx.latch[..n];
+            cx.cnc.window(latch);
+            // A write answers with its end code and data length only.
+            for k in 1..3 {
+                let v = latch.get(k).copied().unwrap_or(0);
+                memory::write(cx.mem, slot(k), 4, v);
+            }
+            st.phase = 2;
+            set_bit(cx.mem, a[1], true);
+        }
+        _ => {}
     }
     st.prev_act = true;
 }
@@ -676,8 +679,11 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         return;
     }
     if act {
-        if !st.prev_act {
+        let issuing = !st.prev_act;
+        if issuing {
             // A new command: CMD to EC0–EC6, DT1 to EIF0–15, DT2 to EID0–31, EBUF inverted.
+            // ESBK from an earlier abandoned command is withdrawn (DECISION: §4.5 only says
+            // when it is set; left at 1 it would stop every later command).
             let cmd = uint(mem, a[1], 1) as u8 & 0x7F;
             if let Some(x) = mem.get_mut((base + 1) as usize) {
                 *x = (*x & 0x80) | cmd;
@@ -691,7 +697,13 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
             set_g_bit(mem, 0, 3, false);
             st.phase = 1;
         }
-        let status = cx.cnc.axis_status(group as u8);
+        // The CNC sees the new command only at the end of this tick, so on the issuing scan
+        // the status it reports is the previous command's: it cannot have ended yet.
+        let status = if issuing {
+            Default::default()
+        } else {
+            cx.cnc.axis_status(group as u8)
+        };
         if status.ended {
             st.phase = 0;
         }

@@ -21,6 +21,10 @@ use code::{Code, LowerError, lower};
 use memory::{Layout, Loc};
 use std::fmt;
 
+/// Bytes of the memory image: a fixed power of two, so the hot loop's masked byte index needs
+/// no bounds check. Every profile's layout fits (the GSK988TA uses about 10.6 KiB).
+pub const IMAGE_BYTES: usize = 16 * 1024;
+
 /// Virtual milliseconds per tick.
 pub const TICK_MS: u64 = 8;
 /// Executed steps after which a level is stopped (per tick for level 1, per cycle for level 2).
@@ -87,6 +91,9 @@ pub struct Vm {
     frames: Vec<Frame>,
     /// Scratch for WINDR blocks (sized once).
     window: Vec<i32>,
+    /// Per instance state: the block a low-speed WINDR latched at its first scan (allocated
+    /// once for each WINDR; empty for other instructions).
+    latches: Vec<Vec<i32>>,
     force_mask: Vec<u8>,
     force_value: Vec<u8>,
     forced_bytes: Vec<u32>,
@@ -123,10 +130,22 @@ impl Vm {
     /// Builds a PLC running an already compiled, error-free program.
     pub fn from_program(program: &Program, profile: &'static Profile) -> Result<Vm, BuildError> {
         let layout = Layout::new(profile);
+        assert!(
+            layout.size as usize <= IMAGE_BYTES,
+            "the {} memory image does not fit {IMAGE_BYTES} bytes",
+            profile.name
+        );
         let code = lower(program, &layout)?;
-        let size = layout.size as usize;
+        let size = IMAGE_BYTES;
         let d = layout.area_range(Area::D);
+        let mut latches = vec![Vec::new(); code.states as usize];
+        for f in &code.fns {
+            if f.op == crate::catalog::Op::Windr {
+                latches[f.state as usize] = vec![0; d.len() / 4];
+            }
+        }
         Ok(Vm {
+            latches,
             states: vec![InstState::default(); code.states as usize],
             frames: Vec::with_capacity(program.blocks.len() + 1),
             window: vec![0; d.len() / 4],
@@ -232,24 +251,23 @@ impl Vm {
     /// Runs one 8 ms tick: level 1 whole, then the next slice of level 2, then the exchange
     /// with the CNC. A halted PLC does nothing.
     pub fn tick(&mut self) {
-        if self.halt.is_some() {
-            self.ticks += 1;
-            return;
-        }
-        let g = self.layout.area_range(Area::G);
-        let f = self.layout.area_range(Area::F);
-        {
-            // F lies before G in the image (layout order X Y F G …), so one split reaches both.
-            let now = self.now_ms();
-            let (f_part, g_part) = self.mem.split_at_mut(g.start);
-            self.cnc.exchange(now, &g_part[..g.len()], &mut f_part[f]);
-        }
-        self.apply_forces();
-        self.run_level1();
         if self.halt.is_none() {
-            self.run_level2_slice();
+            self.apply_forces();
+            self.run_level1();
+            if self.halt.is_none() {
+                self.run_level2_slice();
+            }
         }
         self.ticks += 1;
+        // Y and G go out at the end of the tick; the CNC answers in F, which the next tick
+        // samples. A halted PLC's outputs stay as they were, and the CNC keeps running.
+        let g = self.layout.area_range(Area::G);
+        let f = self.layout.area_range(Area::F);
+        let now = self.now_ms();
+        // F lies before G in the image (layout order X Y F G …), so one split reaches both.
+        let (f_part, g_part) = self.mem.split_at_mut(g.start);
+        self.cnc.exchange(now, &g_part[..g.len()], &mut f_part[f]);
+        self.apply_forces();
     }
 
     fn run_level1(&mut self) {
