@@ -137,7 +137,7 @@ where
         }) => sim(&path, &script, trace.as_deref(), out, err),
         Some(Command::Bench { path, scans }) => bench(&path, scans, out, err),
         Some(Command::ExportComments { path, lang, output }) => {
-            export_comments(&path, lang.as_deref(), output.as_deref(), out)
+            export_comments(&path, lang.as_deref(), output.as_deref(), out, err)
         }
         Some(Command::ImportComments { project, csv, lang }) => {
             import_comments(&project, &csv, lang.as_deref(), out, err)
@@ -225,14 +225,20 @@ fn export_il(
     // the list is what the ladder says, and the check explains what to fix.
     print_diagnostics(path, &compiled, err);
     let text = il::print(&compiled.program);
+    write_output(output, &text, out)?;
+    Ok(0)
+}
+
+/// Writes `text` to the `-o` file, or to standard output without one.
+fn write_output(output: Option<&Path>, text: &str, out: &mut dyn Write) -> anyhow::Result<()> {
     match output {
         Some(o) => std::fs::write(o, text)
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display()))?,
+            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display())),
         None => {
             let _ = out.write_all(text.as_bytes());
+            Ok(())
         }
     }
-    Ok(0)
 }
 
 fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<i32> {
@@ -392,25 +398,15 @@ fn export_comments(
     lang: Option<&str>,
     output: Option<&Path>,
     out: &mut dyn Write,
+    err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     check_lang(lang)?;
-    let mut sink = Vec::new();
-    let project = match project_of(path, &mut sink)? {
+    let project = match project_of(path, err)? {
         Ok(p) => p,
-        Err(code) => {
-            let _ = out.flush();
-            eprint!("{}", String::from_utf8_lossy(&sink));
-            return Ok(code);
-        }
+        Err(code) => return Ok(code),
     };
     let text = ladder_engine::comments::export(&project, lang);
-    match output {
-        Some(o) => std::fs::write(o, text)
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display()))?,
-        None => {
-            let _ = out.write_all(text.as_bytes());
-        }
-    }
+    write_output(output, &text, out)?;
     Ok(0)
 }
 
