@@ -137,9 +137,12 @@ impl Vm {
                 image,
                 &mut self.trace,
                 &mut r,
-                quota,
-                watching,
-                forcing,
+                &Stops {
+                    quota,
+                    watching,
+                    watched: &self.watched,
+                    forcing,
+                },
             );
             let w = self.code.words[at as usize];
             let arg = w >> 8;
@@ -254,6 +257,19 @@ impl Vm {
     }
 }
 
+/// What the hot loop needs to know besides code, memory and registers.
+#[derive(Clone, Copy)]
+struct Stops<'a> {
+    /// Level 2's quota for this slice (`u64::MAX`: never stop at a network).
+    quota: u64,
+    /// Whether any network is watched.
+    watching: bool,
+    /// Which networks are.
+    watched: &'a [bool],
+    /// Whether forces are active (coil writes then go through the outer loop).
+    forcing: bool,
+}
+
 /// The logic registers.
 struct Regs {
     pc: u32,
@@ -271,10 +287,14 @@ fn hot<const TRACE: bool>(
     mem: &mut [u8; IMAGE_BYTES],
     trace: &mut [u8],
     r: &mut Regs,
-    quota: u64,
-    watching: bool,
-    forcing: bool,
+    stops: &Stops<'_>,
 ) -> u32 {
+    let Stops {
+        quota,
+        watching,
+        watched,
+        forcing,
+    } = *stops;
     let mut pc = r.pc;
     let mut acc = r.acc;
     let mut blocks = r.blocks;
@@ -329,7 +349,8 @@ fn hot<const TRACE: bool>(
                 *byte = (*byte & !(1 << shift)) | (((acc ^ (op & 1)) as u8) << shift);
             }
             OP_NET => {
-                if steps >= quota || watching || TRACE {
+                // Leave only to suspend level 2, or where recording starts or stops.
+                if steps >= quota || ((TRACE || watching) && watched[arg as usize] != TRACE) {
                     break at;
                 }
                 continue;
