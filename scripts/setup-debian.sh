@@ -1,11 +1,18 @@
 #!/usr/bin/env bash
 # Installs the system packages Ladder Studio needs on a fresh Debian machine (run as root, or
 # it uses sudo). Rust itself comes from rustup (https://rustup.rs), version 1.95 or newer.
+#   scripts/setup-debian.sh          build tools and the libraries the editor's window needs
+#   scripts/setup-debian.sh --build  build tools only (enough for the tests, which need no display)
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 # A C compiler and pkg-config for crates that build C code.
 PACKAGES="build-essential pkg-config"
+if [ "${1:-}" != "--build" ]; then
+  # The window: OpenGL/Vulkan through Mesa (software rendering works too), X11 and Wayland
+  # input, and fontconfig.
+  PACKAGES="$PACKAGES libgl1-mesa-dri libegl1 libxkbcommon-x11-0 libxcursor1 libxrandr2 libxi6 libx11-xcb1 libwayland-client0 fontconfig"
+fi
 missing=""
 for p in $PACKAGES; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

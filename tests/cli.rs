@@ -104,6 +104,12 @@ fn unusable_input_exits_2_with_a_message() {
     );
     let r = run(&["frobnicate"]);
     assert_eq!(r.code, 2);
+    assert!(
+        r.stderr
+            .contains("no project file or subcommand `frobnicate`"),
+        "{}",
+        r.stderr
+    );
     let r = run(&["--help"]);
     assert_eq!(r.code, 0);
     for sub in ["check", "export-il", "import-il"] {

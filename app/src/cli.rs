@@ -14,7 +14,10 @@ use std::path::{Path, PathBuf};
 /// Ladder editor, compiler and simulator for the PLC of GSK CNC controllers.
 #[derive(Parser, Debug)]
 #[command(name = "ladder-studio", version, about)]
+#[command(args_conflicts_with_subcommands = true)]
 pub struct Cli {
+    /// A project to open in the editor (without a subcommand).
+    pub project: Option<PathBuf>,
     /// What to do.
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -121,11 +124,28 @@ where
     };
     let result = match cli.command {
         None => {
-            let _ = writeln!(
-                err,
-                "ladder-studio: the graphical editor is not part of this build; use a subcommand (see --help)"
-            );
-            return 2;
+            if let Some(p) = &cli.project
+                && !p.exists()
+            {
+                let _ = writeln!(
+                    err,
+                    "ladder-studio: no project file or subcommand `{}` (see --help)",
+                    p.display()
+                );
+                return 2;
+            }
+            // winit aborts without a display; say so instead.
+            let display = ["DISPLAY", "WAYLAND_DISPLAY"]
+                .iter()
+                .any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
+            if !display {
+                let _ = writeln!(
+                    err,
+                    "ladder-studio: the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)"
+                );
+                return 2;
+            }
+            crate::gui::run(cli.project).map(|()| 0)
         }
         Some(Command::Check { path }) => check(&path, out),
         Some(Command::ExportIl { path, output }) => export_il(&path, output.as_deref(), out, err),

@@ -1,6 +1,7 @@
-//! Ladder Studio: the command-line subcommands (and, later, the editor). All code lives in
+//! Ladder Studio: the desktop editor and the command-line subcommands. All code lives in
 //! this library so that tests drive it without a process or a window; `main.rs` only passes
 //! the arguments in.
 
 pub mod cli;
+pub mod gui;
 pub mod source;

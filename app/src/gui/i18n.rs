@@ -1,0 +1,122 @@
+//! The user interface's two languages. Every text the UI shows is a [`Msg`]; `text` gives it
+//! in Chinese or English, so a missing translation is a compile error, not a blank label.
+
+use serde::{Deserialize, Serialize};
+
+/// A UI language.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Lang {
+    /// 中文.
+    #[default]
+    Zh,
+    /// English.
+    En,
+}
+
+impl Lang {
+    /// The language a user of this system most likely reads: Chinese when the locale says so.
+    pub fn from_locale(locale: Option<&str>) -> Lang {
+        match locale {
+            Some(l) if l.to_ascii_lowercase().starts_with("zh") => Lang::Zh,
+            Some(_) => Lang::En,
+            None => Lang::Zh,
+        }
+    }
+
+    /// The code used for per-language comments (`zh`, `en`).
+    pub fn code(self) -> &'static str {
+        match self {
+            Lang::Zh => "zh",
+            Lang::En => "en",
+        }
+    }
+}
+
+macro_rules! messages {
+    ($($name:ident => $zh:literal, $en:literal;)*) => {
+        /// Every text of the user interface.
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[allow(missing_docs)] // The variant names say what the text is.
+        pub enum Msg { $($name,)* }
+
+        impl Msg {
+            /// Every message, for the translation test.
+            pub const ALL: &'static [Msg] = &[$(Msg::$name,)*];
+
+            /// The text in a language.
+            pub fn text(self, lang: Lang) -> &'static str {
+                match (self, lang) {
+                    $((Msg::$name, Lang::Zh) => $zh, (Msg::$name, Lang::En) => $en,)*
+                }
+            }
+        }
+    };
+}
+
+messages! {
+    File => "文件", "File";
+    Edit => "编辑", "Edit";
+    View => "查看", "View";
+    Plc => "PLC", "PLC";
+    Tools => "工具", "Tools";
+    Help => "帮助", "Help";
+    Open => "打开…", "Open…";
+    Save => "保存", "Save";
+    Exit => "退出", "Exit";
+    Recent => "最近打开的文件", "Recent files";
+    Compile => "编译", "Compile";
+    Language => "语言", "Language";
+    Chinese => "中文", "中文 (Chinese)";
+    English => "English (英文)", "English";
+    ZoomIn => "放大", "Zoom in";
+    ZoomOut => "缩小", "Zoom out";
+    DisplayAddress => "地址显示", "Show addresses";
+    DisplaySymbol => "符号显示", "Show symbols";
+    DisplayBoth => "地址：符号显示", "Show address: symbol";
+    ShowComments => "显示网络注释", "Show network comments";
+    About => "关于 Ladder Studio", "About Ladder Studio";
+    Project => "工程", "Project";
+    Ladder => "梯形图", "Ladder";
+    Level1 => "一级程序", "Level 1";
+    Level2 => "二级程序", "Level 2";
+    Subprograms => "子程序", "Subprograms";
+    SymbolTables => "符号表", "Symbol tables";
+    DataTables => "数据设置表", "Data-setting tables";
+    Messages => "显示信息表", "Display messages";
+    Reference => "引用索引表", "Cross-reference";
+    RefIndex => "索引", "Index";
+    RefBits => "位使用", "Bit usage";
+    RefBytes => "字节使用", "Byte usage";
+    Diagnosis => "诊断信息表", "Diagnosis";
+    Permissions => "权限表", "Permissions";
+    MCodes => "M 代码注释表", "M-code comments";
+    VersionInfo => "梯形图版本信息", "Version information";
+    Output => "信息输出", "Output";
+    Network => "网络", "Network";
+    Steps => "步数", "Steps";
+    StepsUnit => "步", "steps";
+    NoProject => "没有打开的工程", "No project open";
+    Modified => "已修改", "modified";
+    Untitled => "未命名", "untitled";
+    Errors => "错误", "errors";
+    Warnings => "警告", "warnings";
+    OpenFailed => "无法打开", "Cannot open";
+    CompileClean => "编译完成，没有错误", "Compiled without errors";
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_message_has_both_languages_and_they_differ_where_they_should() {
+        for m in Msg::ALL {
+            assert!(
+                !m.text(Lang::Zh).is_empty() && !m.text(Lang::En).is_empty(),
+                "{m:?}"
+            );
+        }
+        assert_eq!(Lang::from_locale(Some("zh_CN.UTF-8")), Lang::Zh);
+        assert_eq!(Lang::from_locale(Some("en_US.UTF-8")), Lang::En);
+    }
+}

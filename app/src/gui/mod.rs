@@ -1,0 +1,358 @@
+//! The desktop editor (eframe/egui). All UI code is in this library so tests drive it without
+//! a window; `main.rs` only starts it.
+
+pub mod document;
+pub mod fonts;
+pub mod i18n;
+pub mod ladder_view;
+pub mod settings;
+pub mod tree;
+
+use document::Document;
+use i18n::{Lang, Msg};
+use ladder_engine::compiler::{Origin, Severity};
+use settings::{DisplayMode, Settings};
+use std::path::{Path, PathBuf};
+use tree::View;
+
+/// One line of the output window; diagnostics remember where to jump.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputLine {
+    /// The text.
+    pub text: String,
+    /// An error (shown red).
+    pub error: bool,
+    /// (block, network) to show on a double-click.
+    pub target: Option<(usize, usize)>,
+}
+
+/// The application: persisted settings, the open document and the UI state around it.
+pub struct LadderApp {
+    /// Persisted settings.
+    pub settings: Settings,
+    /// The open project.
+    pub doc: Option<Document>,
+    /// What the main area shows.
+    pub view: View,
+    /// The output window.
+    pub output: Vec<OutputLine>,
+    /// A network to scroll into view at the next frame.
+    pub jump_to: Option<usize>,
+}
+
+impl LadderApp {
+    /// Starts on `path`, else the last project, else the bundled sample (formats.md §1).
+    pub fn new(settings: Settings, path: Option<&Path>) -> LadderApp {
+        let mut app = LadderApp {
+            settings,
+            doc: None,
+            view: View::Block(1),
+            output: Vec::new(),
+            jump_to: None,
+        };
+        let start = path
+            .map(Path::to_path_buf)
+            .or_else(|| app.settings.recent.first().cloned());
+        match start {
+            Some(p) if app.open(&p) => {}
+            _ => app.doc = Some(Document::sample()),
+        }
+        app
+    }
+
+    /// The creator eframe calls: fonts, then settings from storage.
+    pub fn from_creation(cc: &eframe::CreationContext<'_>, path: Option<PathBuf>) -> LadderApp {
+        fonts::install(&cc.egui_ctx);
+        let settings = cc
+            .storage
+            .and_then(|s| eframe::get_value(s, eframe::APP_KEY))
+            .unwrap_or_default();
+        LadderApp::new(settings, path.as_deref())
+    }
+
+    fn t(&self, m: Msg) -> &'static str {
+        m.text(self.settings.lang)
+    }
+
+    /// Opens a project file; on failure the message goes to the output window.
+    pub fn open(&mut self, path: &Path) -> bool {
+        match Document::open(path) {
+            Ok(doc) => {
+                self.doc = Some(doc);
+                self.settings.remember(path.to_path_buf());
+                self.view = View::Block(1);
+                true
+            }
+            Err(e) => {
+                self.output.push(OutputLine {
+                    text: format!("{} {}: {e}", self.t(Msg::OpenFailed), path.display()),
+                    error: true,
+                    target: None,
+                });
+                false
+            }
+        }
+    }
+
+    /// F9: compiles into the output window.
+    pub fn compile(&mut self) {
+        let Some(doc) = self.doc.as_mut() else { return };
+        let name = doc
+            .name()
+            .unwrap_or_else(|| Msg::Untitled.text(self.settings.lang).to_string());
+        let compiled = doc.compile();
+        let mut lines: Vec<OutputLine> = compiled
+            .diagnostics
+            .iter()
+            .map(|d| OutputLine {
+                text: d.render(&name),
+                error: d.severity() == Severity::Error,
+                target: matches!(d.location.origin, Origin::Cell { .. })
+                    .then_some((d.location.block, d.location.network)),
+            })
+            .collect();
+        let lang = self.settings.lang;
+        let summary = if compiled.errors() + compiled.warnings() == 0 {
+            format!(
+                "{} ({} {})",
+                Msg::CompileClean.text(lang),
+                compiled.steps.total,
+                Msg::StepsUnit.text(lang)
+            )
+        } else {
+            format!(
+                "{} {}, {} {}",
+                compiled.errors(),
+                Msg::Errors.text(lang),
+                compiled.warnings(),
+                Msg::Warnings.text(lang)
+            )
+        };
+        lines.push(OutputLine {
+            text: summary,
+            error: compiled.errors() > 0,
+            target: None,
+        });
+        self.output = lines;
+    }
+
+    /// Shows a diagnostic's network.
+    pub fn jump(&mut self, block: usize, network: usize) {
+        self.view = View::Block(block);
+        self.jump_to = Some(network);
+    }
+
+    fn menu_ui(&mut self, ui: &mut egui::Ui) {
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button(self.t(Msg::File), |ui| {
+                let recent = self.settings.recent.clone();
+                if !recent.is_empty() {
+                    ui.label(self.t(Msg::Recent));
+                    for p in recent {
+                        if ui.button(p.display().to_string()).clicked() {
+                            self.open(&p);
+                            ui.close();
+                        }
+                    }
+                    ui.separator();
+                }
+                if ui.button(self.t(Msg::Save)).clicked() {
+                    if let Some(doc) = self.doc.as_mut()
+                        && let Err(e) = doc.save()
+                    {
+                        self.output.push(OutputLine {
+                            text: e.to_string(),
+                            error: true,
+                            target: None,
+                        });
+                    }
+                    ui.close();
+                }
+                if ui.button(self.t(Msg::Exit)).clicked() {
+                    ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+                }
+            });
+            ui.menu_button(self.t(Msg::View), |ui| {
+                ui.label(self.t(Msg::Language));
+                if ui.button(Msg::Chinese.text(self.settings.lang)).clicked() {
+                    self.settings.lang = Lang::Zh;
+                    ui.close();
+                }
+                if ui.button(Msg::English.text(self.settings.lang)).clicked() {
+                    self.settings.lang = Lang::En;
+                    ui.close();
+                }
+                ui.separator();
+                for (mode, msg) in [
+                    (DisplayMode::Address, Msg::DisplayAddress),
+                    (DisplayMode::Symbol, Msg::DisplaySymbol),
+                    (DisplayMode::Both, Msg::DisplayBoth),
+                ] {
+                    if ui
+                        .selectable_label(self.settings.display == mode, self.t(msg))
+                        .clicked()
+                    {
+                        self.settings.display = mode;
+                    }
+                }
+                let mut comments = self.settings.show_comments;
+                if ui
+                    .checkbox(&mut comments, self.t(Msg::ShowComments))
+                    .changed()
+                {
+                    self.settings.show_comments = comments;
+                }
+                if ui.button(self.t(Msg::ZoomIn)).clicked() {
+                    self.settings.step_zoom(true);
+                }
+                if ui.button(self.t(Msg::ZoomOut)).clicked() {
+                    self.settings.step_zoom(false);
+                }
+            });
+            ui.menu_button(self.t(Msg::Plc), |ui| {
+                if ui
+                    .button(format!("{}    F9", self.t(Msg::Compile)))
+                    .clicked()
+                {
+                    self.compile();
+                    ui.close();
+                }
+            });
+        });
+    }
+
+    fn main_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_ref() else {
+            ui.label(Msg::NoProject.text(lang));
+            return;
+        };
+        let project = &doc.project;
+        match self.view {
+            View::Block(b) => ladder_view::block_ui(
+                ui,
+                project,
+                b,
+                self.settings.zoom,
+                self.settings.display,
+                self.settings.show_comments,
+                &mut self.jump_to,
+            ),
+            View::RefIndex | View::RefBits | View::RefBytes => {
+                let x = ladder_engine::xref::build(project);
+                let text = match self.view {
+                    View::RefIndex => ladder_engine::xref::index_text(project, &x),
+                    View::RefBits => ladder_engine::xref::bits_text(&x),
+                    _ => ladder_engine::xref::bytes_text(&x),
+                };
+                egui::ScrollArea::both().show(ui, |ui| ui.monospace(text));
+            }
+            View::Symbols(t) => {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    if let Some(table) = project.symbol_tables.get(t) {
+                        for s in &table.rows {
+                            let comment = s.comments.get(lang.code()).cloned().unwrap_or_default();
+                            ui.monospace(format!(
+                                "{:<10} {:<20} {comment}",
+                                s.address.to_string(),
+                                s.name
+                            ));
+                        }
+                    }
+                });
+            }
+            _ => {
+                let text = ladder_engine::comments::export(project, Some(lang.code()));
+                egui::ScrollArea::both().show(ui, |ui| ui.monospace(text));
+            }
+        }
+    }
+
+    fn output_ui(&mut self, ui: &mut egui::Ui) {
+        ui.label(self.t(Msg::Output));
+        let mut jump = None;
+        egui::ScrollArea::vertical()
+            .max_height(120.0)
+            .show(ui, |ui| {
+                for line in &self.output {
+                    let color = if line.error {
+                        egui::Color32::from_rgb(0xc0, 0x10, 0x10)
+                    } else {
+                        ui.visuals().text_color()
+                    };
+                    let r = ui.add(
+                        egui::Label::new(egui::RichText::new(&line.text).color(color))
+                            .sense(egui::Sense::click()),
+                    );
+                    if r.double_clicked() || r.clicked() {
+                        jump = line.target;
+                    }
+                }
+            });
+        if let Some((b, n)) = jump {
+            self.jump(b, n);
+        }
+    }
+
+    fn status_ui(&self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let Some(doc) = &self.doc else { return };
+        let name = doc
+            .name()
+            .unwrap_or_else(|| Msg::Untitled.text(lang).into());
+        let steps = doc.compiled.as_ref().map(|c| c.steps.total);
+        ui.horizontal(|ui| {
+            ui.label(name);
+            if doc.dirty {
+                ui.label(Msg::Modified.text(lang));
+            }
+            if let Some(s) = steps {
+                ui.label(format!("{}: {s}", Msg::Steps.text(lang)));
+            }
+            ui.label(format!("{}%", self.settings.zoom));
+        });
+    }
+}
+
+impl eframe::App for LadderApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        if ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::F9)) {
+            self.compile();
+        }
+        egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        egui::Panel::bottom("output")
+            .resizable(true)
+            .show(ui, |ui| self.output_ui(ui));
+        egui::Panel::left("tree").resizable(true).show(ui, |ui| {
+            let lang = self.settings.lang;
+            ui.heading(Msg::Project.text(lang));
+            if let Some(doc) = &self.doc {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    tree::tree_ui(ui, &doc.project, lang, &mut self.view)
+                });
+            }
+        });
+        egui::CentralPanel::default().show(ui, |ui| self.main_ui(ui));
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, eframe::APP_KEY, &self.settings);
+    }
+}
+
+/// Opens the editor window (blocks until it closes).
+pub fn run(path: Option<PathBuf>) -> anyhow::Result<()> {
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_title("Ladder Studio")
+            .with_inner_size([1280.0, 800.0]),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "Ladder Studio",
+        options,
+        Box::new(move |cc| Ok(Box::new(LadderApp::from_creation(cc, path)))),
+    )
+    .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+}
