@@ -102,6 +102,8 @@ messages! {
     Warnings => "警告", "warnings";
     OpenFailed => "无法打开", "Cannot open";
     CompileClean => "编译完成，没有错误", "Compiled without errors";
+    Operand => "参数", "Operand";
+    SaveNeedsName => "工程还没有文件名：请先另存为", "The project has no file name yet: use Save As";
 }
 
 #[cfg(test)]

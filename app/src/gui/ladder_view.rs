@@ -261,19 +261,58 @@ pub struct Placed {
     pub height: f32,
 }
 
+/// How a block is shown.
+#[derive(Clone, Copy, Debug)]
+pub struct ViewOptions {
+    /// Zoom in percent.
+    pub zoom: u16,
+    /// Operand display.
+    pub mode: DisplayMode,
+    /// Network comments shown.
+    pub comments: bool,
+    /// The cursor's (network, row, column) in this block.
+    pub cursor: Option<(usize, usize, usize)>,
+}
+
+/// Which cell a point in network `n` (drawn at `origin`) falls on.
+fn cell_at(
+    project: &Project,
+    net: &Network,
+    origin: Pos2,
+    p: Pos2,
+    m: &Metrics,
+    comments: bool,
+) -> Option<(usize, usize)> {
+    let mut y = origin.y + m.header;
+    if comments && !net.comment.is_empty() {
+        y += m.header;
+    }
+    let col = ((p.x - origin.x - 8.0) / m.cell).floor();
+    if col < 0.0 {
+        return None;
+    }
+    let col = (col as usize).min(project.ladder.width);
+    for (r, row) in net.rows.iter().enumerate() {
+        let h = m.row_height(&row.cells);
+        if p.y >= y && p.y < y + h {
+            return Some((r, col));
+        }
+        y += h;
+    }
+    None
+}
+
 /// Draws block `block` of the project, scrolled; `jump_to` scrolls a network into view once.
+/// Returns the (network, row, column) of a cell the user clicked.
 pub fn block_ui(
     ui: &mut egui::Ui,
     project: &Project,
     block: usize,
-    zoom: u16,
-    mode: DisplayMode,
-    comments: bool,
+    opts: &ViewOptions,
     jump_to: &mut Option<usize>,
-) {
-    let Some(b) = project.ladder.blocks.get(block) else {
-        return;
-    };
+) -> Option<(usize, usize, usize)> {
+    let b = project.ladder.blocks.get(block)?;
+    let (zoom, mode, comments) = (opts.zoom, opts.mode, opts.comments);
     let m = Metrics::at(zoom);
     // Offsets of every network: plain arithmetic over the model, no layout or text.
     let mut placed = Vec::with_capacity(b.networks.len());
@@ -291,7 +330,20 @@ pub fn block_ui(
     egui::ScrollArea::both()
         .auto_shrink([false, false])
         .show_viewport(ui, |ui, viewport| {
-            let (rect, _response) = ui.allocate_exact_size(total, Sense::click());
+            let (rect, response) = ui.allocate_exact_size(total, Sense::click());
+            let mut clicked = None;
+            if let Some(p) = response
+                .interact_pointer_pos()
+                .filter(|_| response.clicked())
+            {
+                let y = p.y - rect.min.y;
+                let i = placed.partition_point(|q| q.top + q.height <= y);
+                if let Some(q) = placed.get(i) {
+                    let origin = rect.min + vec2(0.0, q.top);
+                    clicked = cell_at(project, &b.networks[i], origin, p, &m, comments)
+                        .map(|(r, c)| (i, r, c));
+                }
+            }
             let painter = ui.painter_at(rect);
             // Black on white, like a printed ladder, whatever the UI theme.
             painter.rect_filled(
@@ -313,11 +365,56 @@ pub fn block_ui(
                 }
                 let origin = rect.min + vec2(0.0, p.top);
                 network_ui(&painter, project, &b.networks[i], i, origin, &style);
+                if let Some((cn, cr, cc)) = opts.cursor
+                    && cn == i
+                {
+                    cursor_ui(
+                        &painter,
+                        &b.networks[i],
+                        origin,
+                        cr,
+                        cc,
+                        project.ladder.width,
+                        &style,
+                    );
+                }
                 let sep = origin.y + p.height - 2.0;
                 painter.line_segment(
                     [pos2(rect.left(), sep), pos2(rect.right(), sep)],
                     Stroke::new(0.5, Color32::from_gray(200)),
                 );
             }
-        });
+            clicked
+        })
+        .inner
+}
+
+/// Outlines the cursor's cell.
+fn cursor_ui(
+    painter: &egui::Painter,
+    net: &Network,
+    origin: Pos2,
+    row: usize,
+    col: usize,
+    width: usize,
+    style: &Style,
+) {
+    let m = &style.m;
+    let mut y = origin.y + m.header;
+    if style.comments && !net.comment.is_empty() {
+        y += m.header;
+    }
+    for r in net.rows.iter().take(row) {
+        y += m.row_height(&r.cells);
+    }
+    let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
+    let x = origin.x + 8.0 + col as f32 * m.cell;
+    let w = if col >= width { m.output } else { m.cell };
+    let rect = Rect::from_min_size(pos2(x, y), vec2(w, h));
+    painter.rect_stroke(
+        rect,
+        2.0,
+        Stroke::new(2.0, Color32::from_rgb(0x20, 0x60, 0xff)),
+        StrokeKind::Inside,
+    );
 }

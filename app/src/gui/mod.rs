@@ -2,6 +2,7 @@
 //! a window; `main.rs` only starts it.
 
 pub mod document;
+pub mod editing;
 pub mod fonts;
 pub mod i18n;
 pub mod ladder_view;
@@ -38,6 +39,10 @@ pub struct LadderApp {
     pub output: Vec<OutputLine>,
     /// A network to scroll into view at the next frame.
     pub jump_to: Option<usize>,
+    /// The cell cursor.
+    pub cursor: editing::Cursor,
+    /// The open operand prompt (F1, F2, F3, F6).
+    pub prompt: Option<editing::Prompt>,
 }
 
 impl LadderApp {
@@ -49,6 +54,13 @@ impl LadderApp {
             view: View::Block(1),
             output: Vec::new(),
             jump_to: None,
+            cursor: editing::Cursor {
+                block: 1,
+                network: 0,
+                row: 0,
+                col: 0,
+            },
+            prompt: None,
         };
         let start = path
             .map(Path::to_path_buf)
@@ -229,15 +241,33 @@ impl LadderApp {
         };
         let project = &doc.project;
         match self.view {
-            View::Block(b) => ladder_view::block_ui(
-                ui,
-                project,
-                b,
-                self.settings.zoom,
-                self.settings.display,
-                self.settings.show_comments,
-                &mut self.jump_to,
-            ),
+            View::Block(b) => {
+                let cursor = (self.cursor.block == b).then_some((
+                    self.cursor.network,
+                    self.cursor.row,
+                    self.cursor.col,
+                ));
+                let clicked = ladder_view::block_ui(
+                    ui,
+                    project,
+                    b,
+                    &ladder_view::ViewOptions {
+                        zoom: self.settings.zoom,
+                        mode: self.settings.display,
+                        comments: self.settings.show_comments,
+                        cursor,
+                    },
+                    &mut self.jump_to,
+                );
+                if let Some((network, row, col)) = clicked {
+                    self.cursor = editing::Cursor {
+                        block: b,
+                        network,
+                        row,
+                        col,
+                    };
+                }
+            }
             View::RefIndex | View::RefBits | View::RefBytes => {
                 let x = ladder_engine::xref::build(project);
                 let text = match self.view {
@@ -319,7 +349,11 @@ impl eframe::App for LadderApp {
         if ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::F9)) {
             self.compile();
         }
+        self.keys(&ui.ctx().clone());
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        if self.prompt.is_some() {
+            egui::Panel::top("prompt").show(ui, |ui| self.prompt_ui(ui));
+        }
         egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         egui::Panel::bottom("output")
             .resizable(true)

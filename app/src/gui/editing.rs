@@ -1,0 +1,401 @@
+//! Editing with the keyboard and the mouse (manual §3.2.2 keys): every change goes through
+//! the engine's edit operations and the document's history, so undo is exact.
+
+use super::i18n::Msg;
+use super::tree::View;
+use super::{LadderApp, OutputLine};
+use egui::{Key, Modifiers};
+use ladder_engine::Op;
+use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Operand};
+
+/// What the operand prompt will place.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlaceKind {
+    /// F1 (NC with Shift).
+    Contact {
+        /// Normally closed.
+        negated: bool,
+    },
+    /// F2 (OUTN with Shift).
+    Coil {
+        /// Inverted.
+        negated: bool,
+    },
+    /// F6: a contact in parallel with the row above.
+    Parallel {
+        /// Normally closed.
+        negated: bool,
+    },
+    /// F3: a function instruction, written as in IL (`TMRB T0000 DT0004 R0300.0`).
+    Function,
+}
+
+/// The open operand prompt.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prompt {
+    /// What Enter places.
+    pub kind: PlaceKind,
+    /// What the user typed.
+    pub text: String,
+    /// Why the last Enter was refused.
+    pub error: Option<String>,
+}
+
+/// The cell cursor (UI state, never saved).
+pub type Cursor = CellRef;
+
+impl LadderApp {
+    fn block(&self) -> Option<usize> {
+        match self.view {
+            View::Block(b) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// Applies an edit through the history; a refusal goes to the output window.
+    pub fn edit(&mut self, f: impl FnOnce(&mut Ladder) -> Result<Edit, EditError>) -> bool {
+        let Some(doc) = self.doc.as_mut() else {
+            return false;
+        };
+        match f(&mut doc.project.ladder) {
+            Ok(inverse) => {
+                doc.history.record(inverse);
+                doc.dirty = true;
+                doc.compiled = None;
+                true
+            }
+            Err(e) => {
+                self.output.push(OutputLine {
+                    text: e.to_string(),
+                    error: true,
+                    target: None,
+                });
+                false
+            }
+        }
+    }
+
+    fn width(&self) -> usize {
+        self.doc.as_ref().map_or(0, |d| d.project.ladder.width)
+    }
+
+    fn rows_of(&self, block: usize, network: usize) -> usize {
+        self.doc
+            .as_ref()
+            .and_then(|d| d.project.ladder.blocks.get(block))
+            .and_then(|b| b.networks.get(network))
+            .map_or(0, |n| n.rows.len())
+    }
+
+    fn networks_of(&self, block: usize) -> usize {
+        self.doc
+            .as_ref()
+            .and_then(|d| d.project.ladder.blocks.get(block))
+            .map_or(0, |b| b.networks.len())
+    }
+
+    /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
+    fn ensure_network(&mut self) -> Option<Cursor> {
+        let block = self.block()?;
+        if self.networks_of(block) == 0 {
+            self.edit(|l| l.insert_network(block, 0));
+        }
+        let mut c = self.cursor;
+        c.block = block;
+        c.network = c.network.min(self.networks_of(block).saturating_sub(1));
+        c.row = c.row.min(self.rows_of(block, c.network).saturating_sub(1));
+        c.col = c.col.min(self.width());
+        self.cursor = c;
+        Some(c)
+    }
+
+    fn wires_to_output(ladder: &Ladder, at: Cursor) -> Vec<Edit> {
+        // A coil or box is joined to what stands left of it by wire, as GSKLadder draws it.
+        let row = &ladder.blocks[at.block].networks[at.network].rows[at.row];
+        let last = (0..ladder.width)
+            .rev()
+            .find(|c| row.cells[*c] != Cell::Empty);
+        let from = last.map_or(ladder.width, |c| c + 1);
+        (from..ladder.width)
+            .map(|col| Edit::SetCell {
+                at: Cursor { col, ..at },
+                cell: Cell::Wire,
+            })
+            .collect()
+    }
+
+    /// Places what the prompt describes at the cursor.
+    pub fn place(&mut self, kind: PlaceKind, text: &str) -> Result<(), String> {
+        let Some(at) = self.ensure_network() else {
+            return Err(Msg::NoProject.text(self.settings.lang).into());
+        };
+        let width = self.width();
+        let operand = |t: &str| Operand::parse(t).map_err(|e| e.to_string());
+        match kind {
+            PlaceKind::Contact { negated } | PlaceKind::Parallel { negated } => {
+                let cell = Cell::Contact {
+                    negated,
+                    operand: operand(text)?,
+                };
+                let at = Cursor {
+                    col: at.col.min(width - 1),
+                    ..at
+                };
+                let ok = if matches!(kind, PlaceKind::Parallel { .. }) {
+                    self.edit(|l| l.parallel_contact(at, cell))
+                } else {
+                    self.edit(|l| l.place(at, cell))
+                };
+                if ok {
+                    self.cursor = Cursor {
+                        col: at.col + 1,
+                        ..at
+                    };
+                }
+            }
+            PlaceKind::Coil { .. } | PlaceKind::Function => {
+                let cell = match kind {
+                    PlaceKind::Coil { negated } => Cell::Coil {
+                        negated,
+                        operand: operand(text)?,
+                    },
+                    _ => {
+                        let mut words = text.split_whitespace();
+                        let name = words.next().unwrap_or("");
+                        let op = Op::from_name(name)
+                            .filter(|op| {
+                                op.spec().class == ladder_engine::catalog::InstrClass::Function
+                            })
+                            .ok_or_else(|| format!("`{name}` is not a function instruction"))?;
+                        let operands = words.map(operand).collect::<Result<Vec<_>, _>>()?;
+                        Cell::Box { op, operands }
+                    }
+                };
+                let at = Cursor { col: width, ..at };
+                let ok = self.edit(|l| {
+                    let mut edits = LadderApp::wires_to_output(l, at);
+                    edits.push(Edit::SetCell { at, cell });
+                    l.apply(Edit::Batch(edits))
+                });
+                if ok {
+                    self.cursor = at;
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn move_cursor(&mut self, dr: i32, dc: i32) {
+        let Some(block) = self.block() else { return };
+        let mut c = self.cursor;
+        c.block = block;
+        let width = self.width() as i32;
+        c.col = (c.col as i32 + dc).clamp(0, width) as usize;
+        let rows = self.rows_of(block, c.network) as i32;
+        let row = c.row as i32 + dr;
+        if row < 0 && c.network > 0 {
+            c.network -= 1;
+            c.row = self.rows_of(block, c.network).saturating_sub(1);
+        } else if row >= rows && c.network + 1 < self.networks_of(block) {
+            c.network += 1;
+            c.row = 0;
+        } else {
+            c.row = row.clamp(0, (rows - 1).max(0)) as usize;
+        }
+        self.cursor = c;
+        self.jump_to = Some(c.network);
+    }
+
+    /// The editing keys, when no text field has the keyboard.
+    pub fn keys(&mut self, ctx: &egui::Context) {
+        if self.prompt.is_some() || ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        let key = |m: Modifiers, k: Key| ctx.input_mut(|i| i.consume_key(m, k));
+        let open = |kind| {
+            Some(Prompt {
+                kind,
+                text: String::new(),
+                error: None,
+            })
+        };
+        // The most specific combination first: Shift+F1 before F1.
+        if key(Modifiers::SHIFT, Key::F1) {
+            self.prompt = open(PlaceKind::Contact { negated: true });
+        } else if key(Modifiers::NONE, Key::F1) {
+            self.prompt = open(PlaceKind::Contact { negated: false });
+        } else if key(Modifiers::SHIFT, Key::F2) {
+            self.prompt = open(PlaceKind::Coil { negated: true });
+        } else if key(Modifiers::NONE, Key::F2) {
+            self.prompt = open(PlaceKind::Coil { negated: false });
+        } else if key(Modifiers::NONE, Key::F3) {
+            self.prompt = open(PlaceKind::Function);
+        } else if key(Modifiers::SHIFT, Key::F6) {
+            self.prompt = open(PlaceKind::Parallel { negated: true });
+        } else if key(Modifiers::NONE, Key::F6) {
+            self.prompt = open(PlaceKind::Parallel { negated: false });
+        } else if key(Modifiers::NONE, Key::F4) {
+            if let Some(at) = self.ensure_network() {
+                let at = Cursor {
+                    col: at.col.min(self.width() - 1),
+                    ..at
+                };
+                if self.edit(|l| l.place(at, Cell::Wire)) {
+                    self.cursor = Cursor {
+                        col: at.col + 1,
+                        ..at
+                    };
+                }
+            }
+        } else if key(Modifiers::NONE, Key::F5) {
+            if let Some(at) = self.ensure_network() {
+                let on = !self.doc.as_ref().is_some_and(|d| {
+                    d.project.ladder.blocks[at.block].networks[at.network].link(at.row, at.col)
+                });
+                let rows = self.rows_of(at.block, at.network);
+                self.edit(|l| {
+                    let mut edits = Vec::new();
+                    if at.row + 1 >= rows {
+                        edits.push(Edit::InsertRow {
+                            block: at.block,
+                            network: at.network,
+                            row: at.row + 1,
+                            content: ladder_engine::model::Row::empty(l.width),
+                        });
+                    }
+                    edits.push(Edit::SetLink { at, on });
+                    l.apply(Edit::Batch(edits))
+                });
+            }
+        } else if key(Modifiers::NONE, Key::Delete) {
+            if let Some(at) = self.ensure_network() {
+                self.edit(|l| l.delete_element(at));
+            }
+        } else if key(Modifiers::COMMAND, Key::T) {
+            self.insert_row(false);
+        } else if key(Modifiers::COMMAND, Key::R) {
+            self.insert_row(true);
+        } else if key(Modifiers::COMMAND, Key::U) {
+            self.insert_network(false);
+        } else if key(Modifiers::COMMAND, Key::I) {
+            self.insert_network(true);
+        } else if key(Modifiers::COMMAND, Key::Z) {
+            self.undo();
+        } else if key(Modifiers::COMMAND, Key::Y) {
+            self.redo();
+        } else if key(Modifiers::COMMAND, Key::S) {
+            self.save();
+        } else if key(Modifiers::NONE, Key::ArrowLeft) {
+            self.move_cursor(0, -1);
+        } else if key(Modifiers::NONE, Key::ArrowRight) {
+            self.move_cursor(0, 1);
+        } else if key(Modifiers::NONE, Key::ArrowUp) {
+            self.move_cursor(-1, 0);
+        } else if key(Modifiers::NONE, Key::ArrowDown) {
+            self.move_cursor(1, 0);
+        }
+    }
+
+    /// Ctrl+T (above) and Ctrl+R (below the cursor): a new empty row; the cursor goes to it.
+    pub fn insert_row(&mut self, below: bool) {
+        if let Some(at) = self.ensure_network() {
+            let row = at.row + usize::from(below);
+            if self.edit(|l| l.insert_row(at.block, at.network, row)) {
+                self.cursor = Cursor { row, ..at };
+            }
+        }
+    }
+
+    /// Ctrl+U (above) and Ctrl+I (below the cursor's network): a new empty network.
+    pub fn insert_network(&mut self, below: bool) {
+        let Some(block) = self.block() else { return };
+        let n = self.networks_of(block);
+        let index = if n == 0 {
+            0
+        } else {
+            (self.cursor.network + usize::from(below)).min(n)
+        };
+        if self.edit(|l| l.insert_network(block, index)) {
+            self.cursor = Cursor {
+                block,
+                network: index,
+                row: 0,
+                col: 0,
+            };
+            self.jump_to = Some(index);
+        }
+    }
+
+    /// Ctrl+Z.
+    pub fn undo(&mut self) {
+        if let Some(doc) = self.doc.as_mut()
+            && doc.history.undo(&mut doc.project.ladder)
+        {
+            doc.dirty = true;
+            doc.compiled = None;
+        }
+    }
+
+    /// Ctrl+Y.
+    pub fn redo(&mut self) {
+        if let Some(doc) = self.doc.as_mut()
+            && doc.history.redo(&mut doc.project.ladder)
+        {
+            doc.dirty = true;
+            doc.compiled = None;
+        }
+    }
+
+    /// Ctrl+S: saves to the project's file.
+    pub fn save(&mut self) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_mut() else { return };
+        let result = if doc.path.is_none() {
+            Err(Msg::SaveNeedsName.text(lang).to_string())
+        } else {
+            doc.save().map_err(|e| e.to_string())
+        };
+        if let Err(e) = result {
+            self.output.push(OutputLine {
+                text: e,
+                error: true,
+                target: None,
+            });
+        }
+    }
+
+    /// The operand prompt: a text field; Enter places, Escape cancels.
+    pub fn prompt_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(mut prompt) = self.prompt.take() else {
+            return;
+        };
+        let lang = self.settings.lang;
+        let mut close = false;
+        ui.horizontal(|ui| {
+            let label = ui.label(Msg::Operand.text(lang));
+            let r = ui
+                .add(
+                    egui::TextEdit::singleline(&mut prompt.text)
+                        .hint_text("X0002.1")
+                        .desired_width(280.0),
+                )
+                .labelled_by(label.id);
+            r.request_focus();
+            if let Some(e) = &prompt.error {
+                ui.colored_label(egui::Color32::from_rgb(0xc0, 0x10, 0x10), e);
+            }
+            if ui.input(|i| i.key_pressed(Key::Escape)) {
+                close = true;
+            } else if ui.input(|i| i.key_pressed(Key::Enter)) {
+                let text = prompt.text.trim().to_string();
+                match self.place(prompt.kind, &text) {
+                    Ok(()) => close = true,
+                    Err(e) => prompt.error = Some(e),
+                }
+            }
+        });
+        if !close {
+            self.prompt = Some(prompt);
+        }
+    }
+}
