@@ -186,3 +186,38 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     }
     assert_eq!(h.state().doc.as_ref().unwrap().project.ladder, drawn);
 }
+
+#[test]
+fn find_and_replace_an_address() {
+    use egui::{Key, Modifiers};
+    let dir = tempfile_dir();
+    let path = dir.join("find.ldp");
+    let p = ladder_engine::il::import(
+        "LEVEL2\nNETWORK\nLD X0002.1\nOR Y0003.7\nANI X0002.2\nOUT Y0003.7\nNETWORK\nLD Y0003.7\nOUT Y0004.0\n",
+    )
+    .project
+    .unwrap();
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::F);
+    enter_operand(&mut h, "y3.7");
+    let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    assert_eq!(out.last().unwrap(), "3 found", "{out:?}");
+    h.get_by_label_contains("LEVEL2 N0002 1:1").click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(1));
+    // Replace: the coil may take Y4.1; X1.0 would be refused where it is written.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::H);
+    enter_operand(&mut h, "Y3.7 X1.0");
+    assert_eq!(
+        h.state().output.last().unwrap().text,
+        "2 replaced, 1 skipped where the result would be invalid"
+    );
+    let project = &h.state().doc.as_ref().unwrap().project;
+    let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
+    assert!(
+        il.contains("OR   X0001.0") && il.contains("OUT  Y0003.7") && il.contains("LD   X0001.0"),
+        "{il}"
+    );
+}

@@ -7,6 +7,7 @@ pub mod catalog;
 pub mod comments;
 pub mod compiler;
 pub mod file;
+pub mod find;
 pub mod generate;
 pub mod il;
 pub mod model;

@@ -6,6 +6,7 @@ use super::tree::View;
 use super::{LadderApp, OutputLine};
 use egui::{Key, Modifiers};
 use ladder_engine::Op;
+use ladder_engine::find::{self, Query};
 use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Operand};
 
 /// What the operand prompt will place.
@@ -28,6 +29,10 @@ pub enum PlaceKind {
     },
     /// F3: a function instruction, written as in IL (`TMRB T0000 DT0004 R0300.0`).
     Function,
+    /// Ctrl+F: an address (any spelling), symbol, constant or instruction to find.
+    Find,
+    /// Ctrl+H: `FROM TO`, replaced only where the result is valid.
+    Replace,
 }
 
 /// The open operand prompt.
@@ -124,8 +129,86 @@ impl LadderApp {
             .collect()
     }
 
+    /// Ctrl+F: every match goes to the output window; a click shows it.
+    pub fn find(&mut self, text: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let query = Query::parse(text)
+            .ok_or_else(|| format!("`{text}`: {}", Msg::NothingToFind.text(lang)))?;
+        let Some(doc) = self.doc.as_ref() else {
+            return Ok(());
+        };
+        let project = &doc.project;
+        let hits = find::find(project, &query);
+        let mut lines: Vec<OutputLine> = hits
+            .iter()
+            .map(|at| {
+                let r = ladder_engine::xref::Reference {
+                    address: ladder_engine::Address::byte(ladder_engine::Area::R, 0),
+                    block: at.block,
+                    network: at.network,
+                    row: at.row,
+                    col: at.col,
+                    usage: ladder_engine::xref::Use::Read,
+                };
+                OutputLine {
+                    text: format!(
+                        "{} N{:04} {}:{}  {}",
+                        project.ladder.blocks[at.block].kind.label(),
+                        at.network + 1,
+                        at.row + 1,
+                        at.col + 1,
+                        ladder_engine::xref::context(project, &r)
+                    ),
+                    error: false,
+                    target: Some((at.block, at.network)),
+                }
+            })
+            .collect();
+        lines.push(OutputLine {
+            text: format!("{} {}", hits.len(), Msg::Found.text(lang)),
+            error: false,
+            target: None,
+        });
+        self.output = lines;
+        Ok(())
+    }
+
+    /// Ctrl+H: `FROM TO`.
+    pub fn replace(&mut self, text: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let mut words = text.split_whitespace();
+        let (Some(from), Some(to), None) = (words.next(), words.next(), words.next()) else {
+            return Err(Msg::ReplaceUsage.text(lang).into());
+        };
+        let query = Query::parse(from)
+            .ok_or_else(|| format!("`{from}`: {}", Msg::NothingToFind.text(lang)))?;
+        let to = Operand::parse(to).map_err(|e| e.to_string())?;
+        let Some(doc) = self.doc.as_ref() else {
+            return Ok(());
+        };
+        let (edit, done, skipped) = find::replace(&doc.project, &query, &to);
+        if done > 0 {
+            self.edit(|l| l.apply(edit));
+        }
+        self.output.push(OutputLine {
+            text: format!(
+                "{done} {}, {skipped} {}",
+                Msg::Replaced.text(lang),
+                Msg::SkippedInvalid.text(lang)
+            ),
+            error: false,
+            target: None,
+        });
+        Ok(())
+    }
+
     /// Places what the prompt describes at the cursor.
     pub fn place(&mut self, kind: PlaceKind, text: &str) -> Result<(), String> {
+        match kind {
+            PlaceKind::Find => return self.find(text),
+            PlaceKind::Replace => return self.replace(text),
+            _ => {}
+        }
         let Some(at) = self.ensure_network() else {
             return Err(Msg::NoProject.text(self.settings.lang).into());
         };
@@ -153,6 +236,7 @@ impl LadderApp {
                     };
                 }
             }
+            PlaceKind::Find | PlaceKind::Replace => {}
             PlaceKind::Coil { .. } | PlaceKind::Function => {
                 let cell = match kind {
                     PlaceKind::Coil { negated } => Cell::Coil {
@@ -279,6 +363,10 @@ impl LadderApp {
             self.insert_network(false);
         } else if key(Modifiers::COMMAND, Key::I) {
             self.insert_network(true);
+        } else if key(Modifiers::COMMAND, Key::F) {
+            self.prompt = open(PlaceKind::Find);
+        } else if key(Modifiers::COMMAND, Key::H) {
+            self.prompt = open(PlaceKind::Replace);
         } else if key(Modifiers::COMMAND, Key::Z) {
             self.undo();
         } else if key(Modifiers::COMMAND, Key::Y) {

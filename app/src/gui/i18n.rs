@@ -103,6 +103,11 @@ messages! {
     OpenFailed => "无法打开", "Cannot open";
     CompileClean => "编译完成，没有错误", "Compiled without errors";
     Operand => "参数", "Operand";
+    Found => "处找到", "found";
+    Replaced => "处已替换", "replaced";
+    SkippedInvalid => "处因结果无效未替换", "skipped where the result would be invalid";
+    NothingToFind => "不是地址、符号、常数或指令", "is not an address, symbol, constant or instruction";
+    ReplaceUsage => "替换：输入“原地址 新地址”，例如 R10.0 R11.0", "Replace: type `FROM TO`, e.g. R10.0 R11.0";
     SaveNeedsName => "工程还没有文件名：请先另存为", "The project has no file name yet: use Save As";
 }
 

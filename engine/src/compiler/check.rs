@@ -461,6 +461,20 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
     }
 }
 
+/// Whether operand `i` of an instruction is acceptable as written (kind, area, range), for
+/// editors that must not produce an invalid operand (replace).
+pub fn operand_ok(op: Op, operands: &[Operand], i: usize, profile: &Profile) -> bool {
+    let instr = Instr {
+        op,
+        operands: operands.to_vec(),
+        origin: Origin::None,
+    };
+    match op.spec().operand(i) {
+        Some(spec) => check_operand(&instr, i, spec, profile).is_ok(),
+        None => false,
+    }
+}
+
 fn check_operand(
     instr: &Instr,
     i: usize,
