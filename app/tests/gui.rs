@@ -221,3 +221,74 @@ fn find_and_replace_an_address() {
         "{il}"
     );
 }
+
+/// A left click at a screen position.
+fn click_at(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+}
+
+/// Clicks the ladder cell (network, row, column) where the view drew it.
+fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
+    let p = h
+        .state()
+        .geometry
+        .cell_center(network, row, col)
+        .expect("the cell is on screen");
+    click_at(h, p);
+    let c = h.state().cursor;
+    assert_eq!(
+        (c.network, c.row, c.col),
+        (network, row, col),
+        "the click moved the cursor"
+    );
+}
+
+#[test]
+fn the_self_holding_circuit_drawn_with_the_mouse_exports_the_manual_il() {
+    let dir = tempfile_dir();
+    let path = dir.join("mouse.ldp");
+    ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
+    let mut h = harness(Some(path.clone()), Lang::En);
+    h.run();
+    h.get_by_label("Insert network").click();
+    h.run();
+    click_cell(&mut h, 0, 0, 0);
+    h.get_by_label("NO contact").click();
+    enter_operand(&mut h, "X2.1");
+    click_cell(&mut h, 0, 0, 1);
+    h.get_by_label("NC contact").click();
+    enter_operand(&mut h, "X2.2");
+    h.get_by_label("Coil").click();
+    enter_operand(&mut h, "Y3.7");
+    h.get_by_label("Insert row").click();
+    h.run();
+    click_cell(&mut h, 0, 1, 0);
+    h.get_by_label("Parallel contact").click();
+    enter_operand(&mut h, "Y3.7");
+    h.get_by_label("File").click();
+    h.run();
+    h.get_by_label_contains("Save").click();
+    h.run();
+    let reopened = ladder_engine::file::load(&path).unwrap();
+    let il = ladder_engine::il::print(&ladder_engine::compiler::compile(&reopened).program);
+    let body: Vec<String> = il
+        .lines()
+        .filter(|l| !matches!(*l, "LEVEL1" | "LEVEL2" | "NETWORK" | "END"))
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect();
+    assert_eq!(
+        body,
+        ["LD X0002.1", "OR Y0003.7", "ANI X0002.2", "OUT Y0003.7"],
+        "{il}"
+    );
+}

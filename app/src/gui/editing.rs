@@ -319,38 +319,9 @@ impl LadderApp {
         } else if key(Modifiers::NONE, Key::F6) {
             self.prompt = open(PlaceKind::Parallel { negated: false });
         } else if key(Modifiers::NONE, Key::F4) {
-            if let Some(at) = self.ensure_network() {
-                let at = Cursor {
-                    col: at.col.min(self.width() - 1),
-                    ..at
-                };
-                if self.edit(|l| l.place(at, Cell::Wire)) {
-                    self.cursor = Cursor {
-                        col: at.col + 1,
-                        ..at
-                    };
-                }
-            }
+            self.wire();
         } else if key(Modifiers::NONE, Key::F5) {
-            if let Some(at) = self.ensure_network() {
-                let on = !self.doc.as_ref().is_some_and(|d| {
-                    d.project.ladder.blocks[at.block].networks[at.network].link(at.row, at.col)
-                });
-                let rows = self.rows_of(at.block, at.network);
-                self.edit(|l| {
-                    let mut edits = Vec::new();
-                    if at.row + 1 >= rows {
-                        edits.push(Edit::InsertRow {
-                            block: at.block,
-                            network: at.network,
-                            row: at.row + 1,
-                            content: ladder_engine::model::Row::empty(l.width),
-                        });
-                    }
-                    edits.push(Edit::SetLink { at, on });
-                    l.apply(Edit::Batch(edits))
-                });
-            }
+            self.link();
         } else if key(Modifiers::NONE, Key::Delete) {
             if let Some(at) = self.ensure_network() {
                 self.edit(|l| l.delete_element(at));
@@ -382,6 +353,97 @@ impl LadderApp {
         } else if key(Modifiers::NONE, Key::ArrowDown) {
             self.move_cursor(1, 0);
         }
+    }
+
+    /// The ladder edit toolbar: each button does what its key does, at the cursor.
+    pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let open = |kind| {
+            Some(Prompt {
+                kind,
+                text: String::new(),
+                error: None,
+            })
+        };
+        ui.horizontal(|ui| {
+            let tools = [
+                (Msg::ToolContact, "─┤ ├─  F1"),
+                (Msg::ToolContactNc, "─┤/├─"),
+                (Msg::ToolCoil, "─( )─  F2"),
+                (Msg::ToolCoilN, "─(/)─"),
+                (Msg::ToolFunction, "[ ]  F3"),
+                (Msg::ToolWire, "──  F4"),
+                (Msg::ToolLink, "│  F5"),
+                (Msg::ToolParallel, "┤├  F6"),
+                (Msg::ToolDelete, "Del"),
+                (Msg::ToolRowBelow, "Ctrl+R"),
+                (Msg::ToolNetworkBelow, "Ctrl+I"),
+            ];
+            for (msg, keys) in tools {
+                let button = ui.button(msg.text(lang)).on_hover_text(keys);
+                if !button.clicked() {
+                    continue;
+                }
+                match msg {
+                    Msg::ToolContact => self.prompt = open(PlaceKind::Contact { negated: false }),
+                    Msg::ToolContactNc => self.prompt = open(PlaceKind::Contact { negated: true }),
+                    Msg::ToolCoil => self.prompt = open(PlaceKind::Coil { negated: false }),
+                    Msg::ToolCoilN => self.prompt = open(PlaceKind::Coil { negated: true }),
+                    Msg::ToolFunction => self.prompt = open(PlaceKind::Function),
+                    Msg::ToolParallel => self.prompt = open(PlaceKind::Parallel { negated: false }),
+                    Msg::ToolWire => self.wire(),
+                    Msg::ToolLink => self.link(),
+                    Msg::ToolDelete => {
+                        if let Some(at) = self.ensure_network() {
+                            self.edit(|l| l.delete_element(at));
+                        }
+                    }
+                    Msg::ToolRowBelow => self.insert_row(true),
+                    _ => self.insert_network(true),
+                }
+            }
+        });
+    }
+
+    /// F4: a wire at the cursor.
+    pub fn wire(&mut self) {
+        if let Some(at) = self.ensure_network() {
+            let at = Cursor {
+                col: at.col.min(self.width() - 1),
+                ..at
+            };
+            if self.edit(|l| l.place(at, Cell::Wire)) {
+                self.cursor = Cursor {
+                    col: at.col + 1,
+                    ..at
+                };
+            }
+        }
+    }
+
+    /// F5: the vertical link at the left of the cursor, added or removed (a row is added below
+    /// when there is none).
+    pub fn link(&mut self) {
+        let Some(at) = self.ensure_network() else {
+            return;
+        };
+        let on = !self.doc.as_ref().is_some_and(|d| {
+            d.project.ladder.blocks[at.block].networks[at.network].link(at.row, at.col)
+        });
+        let rows = self.rows_of(at.block, at.network);
+        self.edit(|l| {
+            let mut edits = Vec::new();
+            if at.row + 1 >= rows {
+                edits.push(Edit::InsertRow {
+                    block: at.block,
+                    network: at.network,
+                    row: at.row + 1,
+                    content: ladder_engine::model::Row::empty(l.width),
+                });
+            }
+            edits.push(Edit::SetLink { at, on });
+            l.apply(Edit::Batch(edits))
+        });
     }
 
     /// Ctrl+T (above) and Ctrl+R (below the cursor): a new empty row; the cursor goes to it.

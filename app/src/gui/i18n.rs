@@ -104,6 +104,17 @@ messages! {
     CompileClean => "编译完成，没有错误", "Compiled without errors";
     Operand => "参数", "Operand";
     Found => "处找到", "found";
+    ToolContact => "常开触点", "NO contact";
+    ToolContactNc => "常闭触点", "NC contact";
+    ToolCoil => "线圈", "Coil";
+    ToolCoilN => "取反线圈", "Inverted coil";
+    ToolFunction => "功能指令", "Function";
+    ToolWire => "横线", "Wire";
+    ToolLink => "竖线", "Vertical link";
+    ToolParallel => "并联触点", "Parallel contact";
+    ToolDelete => "删除", "Delete";
+    ToolRowBelow => "插入行", "Insert row";
+    ToolNetworkBelow => "插入网络", "Insert network";
     Replaced => "处已替换", "replaced";
     SkippedInvalid => "处因结果无效未替换", "skipped where the result would be invalid";
     NothingToFind => "不是地址、符号、常数或指令", "is not an address, symbol, constant or instruction";

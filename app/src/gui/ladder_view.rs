@@ -261,6 +261,38 @@ pub struct Placed {
     pub height: f32,
 }
 
+/// Where the last frame drew the block: enough to turn a cell into a screen position (for
+/// tests and tooltips). UI state, never saved.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Geometry {
+    /// Screen position of the content's top-left corner.
+    pub origin: Pos2,
+    /// Top of each network, relative to the content.
+    pub tops: Vec<f32>,
+    /// Top of each row of each network, relative to its network's top.
+    pub rows: Vec<Vec<f32>>,
+    /// Width of a contact column and of the output column.
+    pub cell: f32,
+    /// Width of the output column.
+    pub output: f32,
+    /// Contact columns.
+    pub width: usize,
+}
+
+impl Geometry {
+    /// The screen centre of a cell.
+    pub fn cell_center(&self, network: usize, row: usize, col: usize) -> Option<Pos2> {
+        let top = self.origin.y + self.tops.get(network)? + self.rows.get(network)?.get(row)?;
+        let x = self.origin.x + 8.0 + col as f32 * self.cell;
+        let w = if col >= self.width {
+            self.output
+        } else {
+            self.cell
+        };
+        Some(pos2(x + w * 0.5, top + 12.0))
+    }
+}
+
 /// How a block is shown.
 #[derive(Clone, Copy, Debug)]
 pub struct ViewOptions {
@@ -310,6 +342,7 @@ pub fn block_ui(
     block: usize,
     opts: &ViewOptions,
     jump_to: &mut Option<usize>,
+    geometry: &mut Geometry,
 ) -> Option<(usize, usize, usize)> {
     let b = project.ladder.blocks.get(block)?;
     let (zoom, mode, comments) = (opts.zoom, opts.mode, opts.comments);
@@ -331,6 +364,31 @@ pub fn block_ui(
         .auto_shrink([false, false])
         .show_viewport(ui, |ui, viewport| {
             let (rect, response) = ui.allocate_exact_size(total, Sense::click());
+            geometry.origin = rect.min;
+            geometry.cell = m.cell;
+            geometry.output = m.output;
+            geometry.width = project.ladder.width;
+            geometry.tops = placed.iter().map(|p| p.top).collect();
+            geometry.rows = b
+                .networks
+                .iter()
+                .map(|n| {
+                    let mut y = m.header
+                        + if comments && !n.comment.is_empty() {
+                            m.header
+                        } else {
+                            0.0
+                        };
+                    n.rows
+                        .iter()
+                        .map(|r| {
+                            let top = y;
+                            y += m.row_height(&r.cells);
+                            top
+                        })
+                        .collect()
+                })
+                .collect();
             let mut clicked = None;
             if let Some(p) = response
                 .interact_pointer_pos()

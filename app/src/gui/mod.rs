@@ -43,6 +43,8 @@ pub struct LadderApp {
     pub cursor: editing::Cursor,
     /// The open operand prompt (F1, F2, F3, F6).
     pub prompt: Option<editing::Prompt>,
+    /// Where the ladder view was drawn last frame.
+    pub geometry: ladder_view::Geometry,
 }
 
 impl LadderApp {
@@ -61,6 +63,7 @@ impl LadderApp {
                 col: 0,
             },
             prompt: None,
+            geometry: ladder_view::Geometry::default(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -258,6 +261,7 @@ impl LadderApp {
                         cursor,
                     },
                     &mut self.jump_to,
+                    &mut self.geometry,
                 );
                 if let Some((network, row, col)) = clicked {
                     self.cursor = editing::Cursor {
@@ -351,6 +355,7 @@ impl eframe::App for LadderApp {
         }
         self.keys(&ui.ctx().clone());
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
         if self.prompt.is_some() {
             egui::Panel::top("prompt").show(ui, |ui| self.prompt_ui(ui));
         }
