@@ -306,6 +306,23 @@ pub struct ViewOptions {
     pub cursor: Option<(usize, usize, usize)>,
 }
 
+/// The top of each row of a network, relative to the network's top (after its header and,
+/// when shown, its comment line).
+fn row_tops(net: &Network, m: &Metrics, comments: bool) -> Vec<f32> {
+    let mut y = m.header;
+    if comments && !net.comment.is_empty() {
+        y += m.header;
+    }
+    net.rows
+        .iter()
+        .map(|r| {
+            let top = y;
+            y += m.row_height(&r.cells);
+            top
+        })
+        .collect()
+}
+
 /// Which cell a point in network `n` (drawn at `origin`) falls on.
 fn cell_at(
     project: &Project,
@@ -315,23 +332,18 @@ fn cell_at(
     m: &Metrics,
     comments: bool,
 ) -> Option<(usize, usize)> {
-    let mut y = origin.y + m.header;
-    if comments && !net.comment.is_empty() {
-        y += m.header;
-    }
     let col = ((p.x - origin.x - 8.0) / m.cell).floor();
     if col < 0.0 {
         return None;
     }
     let col = (col as usize).min(project.ladder.width);
-    for (r, row) in net.rows.iter().enumerate() {
-        let h = m.row_height(&row.cells);
-        if p.y >= y && p.y < y + h {
-            return Some((r, col));
-        }
-        y += h;
-    }
-    None
+    let tops = row_tops(net, m, comments);
+    (0..net.rows.len())
+        .find(|r| {
+            let top = origin.y + tops[*r];
+            p.y >= top && p.y < top + m.row_height(&net.rows[*r].cells)
+        })
+        .map(|r| (r, col))
 }
 
 /// Draws block `block` of the project, scrolled; `jump_to` scrolls a network into view once.
@@ -372,22 +384,7 @@ pub fn block_ui(
             geometry.rows = b
                 .networks
                 .iter()
-                .map(|n| {
-                    let mut y = m.header
-                        + if comments && !n.comment.is_empty() {
-                            m.header
-                        } else {
-                            0.0
-                        };
-                    n.rows
-                        .iter()
-                        .map(|r| {
-                            let top = y;
-                            y += m.row_height(&r.cells);
-                            top
-                        })
-                        .collect()
-                })
+                .map(|n| row_tops(n, &m, comments))
                 .collect();
             let mut clicked = None;
             if let Some(p) = response
@@ -458,13 +455,11 @@ fn cursor_ui(
     style: &Style,
 ) {
     let m = &style.m;
-    let mut y = origin.y + m.header;
-    if style.comments && !net.comment.is_empty() {
-        y += m.header;
-    }
-    for r in net.rows.iter().take(row) {
-        y += m.row_height(&r.cells);
-    }
+    let y = origin.y
+        + row_tops(net, m, style.comments)
+            .get(row)
+            .copied()
+            .unwrap_or(m.header);
     let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
     let x = origin.x + 8.0 + col as f32 * m.cell;
     let w = if col >= width { m.output } else { m.cell };
