@@ -286,3 +286,25 @@ fn the_self_holding_circuit_drawn_with_the_mouse_exports_the_manual_il() {
         ["LD X0002.1", "OR Y0003.7", "ANI X0002.2", "OUT Y0003.7"]
     );
 }
+
+#[test]
+fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
+    use egui::{Key, Modifiers};
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "30 2");
+    let c = h.state().cursor;
+    assert_eq!((c.block, c.network, c.row, c.col), (1, 29, 1, 0));
+    assert!(h.state().prompt.is_none());
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "9999");
+    let prompt = h.state().prompt.clone().expect("the prompt stays open");
+    assert!(
+        prompt.error.unwrap().starts_with("No such network: 1–"),
+        "an error names the range"
+    );
+    h.key_press(Key::Escape);
+    h.run();
+    assert!(h.state().prompt.is_none());
+}

@@ -33,6 +33,8 @@ pub enum PlaceKind {
     Find,
     /// Ctrl+H: `FROM TO`, replaced only where the result is valid.
     Replace,
+    /// Ctrl+G: `NETWORK [ROW]` of the current block (1-based).
+    GoTo,
 }
 
 /// The open operand prompt.
@@ -173,6 +175,41 @@ impl LadderApp {
         Ok(())
     }
 
+    /// Ctrl+G: moves the cursor to `NETWORK [ROW]` of the shown block and scrolls to it.
+    pub fn go_to(&mut self, text: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let block = self
+            .block()
+            .ok_or_else(|| Msg::GoToUsage.text(lang).to_string())?;
+        let numbers: Vec<usize> = text
+            .split(|c: char| c.is_whitespace() || c == ':' || c == ',')
+            .filter(|w| !w.is_empty())
+            .map(|w| w.trim_start_matches(['N', 'n']).parse::<usize>())
+            .collect::<Result<_, _>>()
+            .map_err(|_| Msg::GoToUsage.text(lang).to_string())?;
+        let (network, row) = match numbers[..] {
+            [n] => (n, 1),
+            [n, r] => (n, r),
+            _ => return Err(Msg::GoToUsage.text(lang).into()),
+        };
+        let networks = self.networks_of(block);
+        if network == 0 || network > networks {
+            return Err(format!("{}: 1–{networks}", Msg::NoSuchNetwork.text(lang)));
+        }
+        let rows = self.rows_of(block, network - 1);
+        if row == 0 || row > rows {
+            return Err(format!("{}: 1–{rows}", Msg::NoSuchRow.text(lang)));
+        }
+        self.cursor = Cursor {
+            block,
+            network: network - 1,
+            row: row - 1,
+            col: 0,
+        };
+        self.jump_to = Some(network - 1);
+        Ok(())
+    }
+
     /// Ctrl+H: `FROM TO`.
     pub fn replace(&mut self, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
@@ -207,6 +244,7 @@ impl LadderApp {
         match kind {
             PlaceKind::Find => return self.find(text),
             PlaceKind::Replace => return self.replace(text),
+            PlaceKind::GoTo => return self.go_to(text),
             _ => {}
         }
         let Some(at) = self.ensure_network() else {
@@ -236,7 +274,7 @@ impl LadderApp {
                     };
                 }
             }
-            PlaceKind::Find | PlaceKind::Replace => {}
+            PlaceKind::Find | PlaceKind::Replace | PlaceKind::GoTo => {}
             PlaceKind::Coil { .. } | PlaceKind::Function => {
                 let cell = match kind {
                     PlaceKind::Coil { negated } => Cell::Coil {
@@ -338,6 +376,8 @@ impl LadderApp {
             self.prompt = open(PlaceKind::Find);
         } else if key(Modifiers::COMMAND, Key::H) {
             self.prompt = open(PlaceKind::Replace);
+        } else if key(Modifiers::COMMAND, Key::G) {
+            self.prompt = open(PlaceKind::GoTo);
         } else if key(Modifiers::COMMAND, Key::Z) {
             self.undo();
         } else if key(Modifiers::COMMAND, Key::Y) {

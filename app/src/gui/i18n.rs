@@ -104,6 +104,9 @@ messages! {
     CompileClean => "编译完成，没有错误", "Compiled without errors";
     Operand => "参数", "Operand";
     Found => "处找到", "found";
+    GoToUsage => "转到：输入“网络号 [行号]”，例如 12 3", "Go to: type `NETWORK [ROW]`, e.g. 12 3";
+    NoSuchNetwork => "没有这个网络", "No such network";
+    NoSuchRow => "这个网络没有这一行", "No such row in this network";
     ToolContact => "常开触点", "NO contact";
     ToolContactNc => "常闭触点", "NC contact";
     ToolCoil => "线圈", "Coil";
