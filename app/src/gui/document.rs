@@ -20,6 +20,8 @@ pub struct Document {
     pub dirty: bool,
     /// The last compile, if any.
     pub compiled: Option<Compiled>,
+    /// Counts changes, so views can cache what they derive from the project.
+    pub generation: u64,
 }
 
 impl Document {
@@ -31,7 +33,15 @@ impl Document {
             history: History::new(200),
             dirty: false,
             compiled: None,
+            generation: 0,
         }
+    }
+
+    /// Notes a change of the project: unsaved, not compiled, derived views stale.
+    pub fn changed(&mut self) {
+        self.dirty = true;
+        self.compiled = None;
+        self.generation += 1;
     }
 
     /// Opens a project file.

@@ -7,7 +7,7 @@ use super::{LadderApp, OutputLine};
 use egui::{Key, Modifiers};
 use ladder_engine::Op;
 use ladder_engine::find::{self, Query};
-use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Operand};
+use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Operand, TableEdit};
 
 /// What the operand prompt will place.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -67,8 +67,7 @@ impl LadderApp {
         match f(&mut doc.project.ladder) {
             Ok(inverse) => {
                 doc.history.record(inverse);
-                doc.dirty = true;
-                doc.compiled = None;
+                doc.changed();
                 true
             }
             Err(e) => {
@@ -102,7 +101,7 @@ impl LadderApp {
     }
 
     /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
-    fn ensure_network(&mut self) -> Option<Cursor> {
+    pub fn ensure_network(&mut self) -> Option<Cursor> {
         let block = self.block()?;
         if self.networks_of(block) == 0 {
             self.edit(|l| l.insert_network(block, 0));
@@ -116,7 +115,9 @@ impl LadderApp {
         Some(c)
     }
 
-    fn wires_to_output(ladder: &Ladder, at: Cursor) -> Vec<Edit> {
+    /// The wires that join a new coil or box at `at` (output column) to the last element
+    /// left of it.
+    pub fn wires_to_output(ladder: &Ladder, at: Cursor) -> Vec<Edit> {
         // A coil or box is joined to what stands left of it by wire, as GSKLadder draws it.
         let row = &ladder.blocks[at.block].networks[at.network].rows[at.row];
         let last = (0..ladder.width)
@@ -330,7 +331,10 @@ impl LadderApp {
 
     /// The editing keys, when no text field has the keyboard.
     pub fn keys(&mut self, ctx: &egui::Context) {
-        if self.prompt.is_some() || ctx.egui_wants_keyboard_input() {
+        if self.prompt.is_some()
+            || self.function_dialog.is_some()
+            || ctx.egui_wants_keyboard_input()
+        {
             return;
         }
         let key = |m: Modifiers, k: Key| ctx.input_mut(|i| i.consume_key(m, k));
@@ -351,7 +355,7 @@ impl LadderApp {
         } else if key(Modifiers::NONE, Key::F2) {
             self.prompt = open(PlaceKind::Coil { negated: false });
         } else if key(Modifiers::NONE, Key::F3) {
-            self.prompt = open(PlaceKind::Function);
+            self.open_function_dialog();
         } else if key(Modifiers::SHIFT, Key::F6) {
             self.prompt = open(PlaceKind::Parallel { negated: true });
         } else if key(Modifiers::NONE, Key::F6) {
@@ -429,7 +433,7 @@ impl LadderApp {
                     Msg::ToolContactNc => self.prompt = open(PlaceKind::Contact { negated: true }),
                     Msg::ToolCoil => self.prompt = open(PlaceKind::Coil { negated: false }),
                     Msg::ToolCoilN => self.prompt = open(PlaceKind::Coil { negated: true }),
-                    Msg::ToolFunction => self.prompt = open(PlaceKind::Function),
+                    Msg::ToolFunction => self.open_function_dialog(),
                     Msg::ToolParallel => self.prompt = open(PlaceKind::Parallel { negated: false }),
                     Msg::ToolWire => self.wire(),
                     Msg::ToolLink => self.link(),
@@ -516,23 +520,30 @@ impl LadderApp {
         }
     }
 
+    /// Replaces a table through the history (table editors call this for every change).
+    pub fn edit_table(&mut self, edit: TableEdit) {
+        if let Some(doc) = self.doc.as_mut() {
+            let inverse = doc.project.apply_table(edit);
+            doc.history.record(inverse);
+            doc.changed();
+        }
+    }
+
     /// Ctrl+Z.
     pub fn undo(&mut self) {
         if let Some(doc) = self.doc.as_mut()
-            && doc.history.undo(&mut doc.project.ladder)
+            && doc.history.undo(&mut doc.project)
         {
-            doc.dirty = true;
-            doc.compiled = None;
+            doc.changed();
         }
     }
 
     /// Ctrl+Y.
     pub fn redo(&mut self) {
         if let Some(doc) = self.doc.as_mut()
-            && doc.history.redo(&mut doc.project.ladder)
+            && doc.history.redo(&mut doc.project)
         {
-            doc.dirty = true;
-            doc.compiled = None;
+            doc.changed();
         }
     }
 

@@ -123,6 +123,9 @@ messages! {
     NothingToFind => "不是地址、符号、常数或指令", "is not an address, symbol, constant or instruction";
     ReplaceUsage => "替换：输入“原地址 新地址”，例如 R10.0 R11.0", "Replace: type `FROM TO`, e.g. R10.0 R11.0";
     SaveNeedsName => "工程还没有文件名：请先另存为", "The project has no file name yet: use Save As";
+    // Files and menus.
+    // Table editors.
+    // Function-instruction dialog.
 }
 
 #[cfg(test)]

@@ -4,9 +4,11 @@
 pub mod document;
 pub mod editing;
 pub mod fonts;
+pub mod function_dialog;
 pub mod i18n;
 pub mod ladder_view;
 pub mod settings;
+pub mod tables;
 pub mod tree;
 
 use document::Document;
@@ -45,6 +47,10 @@ pub struct LadderApp {
     pub prompt: Option<editing::Prompt>,
     /// Where the ladder view was drawn last frame.
     pub geometry: ladder_view::Geometry,
+    /// The table editors' UI state (selected row, text being typed, caches).
+    pub tables: tables::TableState,
+    /// The open function-instruction dialog (F3, or a double-click on a box).
+    pub function_dialog: Option<function_dialog::FunctionDialog>,
 }
 
 impl LadderApp {
@@ -64,6 +70,8 @@ impl LadderApp {
             },
             prompt: None,
             geometry: ladder_view::Geometry::default(),
+            tables: tables::TableState::default(),
+            function_dialog: None,
         };
         let start = path
             .map(Path::to_path_buf)
@@ -281,24 +289,7 @@ impl LadderApp {
                 };
                 egui::ScrollArea::both().show(ui, |ui| ui.monospace(text));
             }
-            View::Symbols(t) => {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    if let Some(table) = project.symbol_tables.get(t) {
-                        for s in &table.rows {
-                            let comment = s.comments.get(lang.code()).cloned().unwrap_or_default();
-                            ui.monospace(format!(
-                                "{:<10} {:<20} {comment}",
-                                s.address.to_string(),
-                                s.name
-                            ));
-                        }
-                    }
-                });
-            }
-            _ => {
-                let text = ladder_engine::comments::export(project, Some(lang.code()));
-                egui::ScrollArea::both().show(ui, |ui| ui.monospace(text));
-            }
+            _ => self.tables_ui(ui),
         }
     }
 
@@ -373,6 +364,9 @@ impl eframe::App for LadderApp {
             }
         });
         egui::CentralPanel::default().show(ui, |ui| self.main_ui(ui));
+        if self.function_dialog.is_some() {
+            self.function_dialog_ui(&ui.ctx().clone());
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

@@ -5,7 +5,7 @@
 //! inverse goes on the undo stack. A gesture that touches several places is one
 //! [`Edit::Batch`], so one undo takes it back whole.
 
-use super::block::Block;
+use super::block::{Block, BlockKind};
 use super::cell::Cell;
 use super::ladder::Ladder;
 use super::network::{Network, Row};
@@ -99,6 +99,15 @@ pub enum Edit {
     DeleteBlock {
         /// Index in the block list.
         index: usize,
+    },
+    /// Change a block's header: a subprogram's number and name, any block's info text.
+    SetBlockHeader {
+        /// Index in the block list.
+        index: usize,
+        /// The new kind (level 1 and level 2 keep theirs).
+        kind: BlockKind,
+        /// The new block information.
+        info: String,
     },
     /// Several edits applied in order, undone in reverse order.
     Batch(Vec<Edit>),
@@ -283,6 +292,24 @@ impl Ladder {
                 let block = Box::new(self.blocks.remove(index));
                 Ok(Edit::InsertBlock { index, block })
             }
+            Edit::SetBlockHeader { index, kind, info } => {
+                let b = self
+                    .blocks
+                    .get_mut(index)
+                    .ok_or(EditError::NoSuchPlace("block"))?;
+                if b.kind.sub_number().is_none() != kind.sub_number().is_none()
+                    || (b.kind.sub_number().is_none() && b.kind != kind)
+                {
+                    return Err(EditError::FixedBlock);
+                }
+                let old_kind = std::mem::replace(&mut b.kind, kind);
+                let old_info = std::mem::replace(&mut b.info, info);
+                Ok(Edit::SetBlockHeader {
+                    index,
+                    kind: old_kind,
+                    info: old_info,
+                })
+            }
             Edit::Batch(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for e in edits {
@@ -418,79 +445,12 @@ impl Ladder {
     }
 }
 
-/// Undo and redo stacks over a ladder.
-#[derive(Clone, Debug, Default)]
-pub struct History {
-    undo: Vec<Edit>,
-    redo: Vec<Edit>,
-    /// Most undo steps kept; older ones are dropped.
-    pub limit: usize,
-}
-
-impl History {
-    /// A history keeping `limit` undo steps.
-    pub fn new(limit: usize) -> History {
-        History {
-            undo: Vec::new(),
-            redo: Vec::new(),
-            limit,
-        }
-    }
-
-    /// Applies an edit, remembering how to undo it. Clears the redo stack.
-    pub fn apply(&mut self, ladder: &mut Ladder, edit: Edit) -> Result<(), EditError> {
-        let inverse = ladder.apply(edit)?;
-        self.record(inverse);
-        Ok(())
-    }
-
-    /// Remembers the inverse of an edit that was already applied.
-    pub fn record(&mut self, inverse: Edit) {
-        self.undo.push(inverse);
-        if self.undo.len() > self.limit {
-            self.undo.remove(0);
-        }
-        self.redo.clear();
-    }
-
-    /// Undoes the last edit; false when there is nothing to undo.
-    pub fn undo(&mut self, ladder: &mut Ladder) -> bool {
-        let Some(edit) = self.undo.pop() else {
-            return false;
-        };
-        match ladder.apply(edit) {
-            Ok(redo) => {
-                self.redo.push(redo);
-                true
-            }
-            Err(_) => false,
-        }
-    }
-
-    /// Redoes the last undone edit; false when there is nothing to redo.
-    pub fn redo(&mut self, ladder: &mut Ladder) -> bool {
-        let Some(edit) = self.redo.pop() else {
-            return false;
-        };
-        match ladder.apply(edit) {
-            Ok(undo) => {
-                self.undo.push(undo);
-                true
-            }
-            Err(_) => false,
-        }
-    }
-
-    /// Steps that can be undone.
-    pub fn undo_len(&self) -> usize {
-        self.undo.len()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::model::change::History;
     use crate::model::operand::Operand;
+    use crate::model::project::Project;
 
     fn contact(a: &str) -> Cell {
         Cell::Contact {
@@ -501,10 +461,14 @@ mod tests {
 
     #[test]
     fn every_edit_undoes_exactly() {
-        let mut ladder = Ladder::new(4);
-        let empty = ladder.clone();
+        let mut project = Project {
+            ladder: Ladder::new(4),
+            ..Project::default()
+        };
+        let empty = project.clone();
         let mut h = History::new(100);
-        h.apply(&mut ladder, Edit::Batch(vec![])).unwrap();
+        h.apply(&mut project, Edit::Batch(vec![])).unwrap();
+        let ladder = &mut project.ladder;
         let ins = ladder.insert_network(1, 0).unwrap();
         h.record(ins);
         let at = CellRef {
@@ -531,19 +495,20 @@ mod tests {
                 )
                 .unwrap(),
         );
-        let full = ladder.clone();
+        let full = project.clone();
+        let ladder = &project.ladder;
         assert!(ladder.blocks[1].networks[0].link(0, 1));
-        h.record(ladder.delete_row(1, 0, 1).unwrap());
+        h.record(project.ladder.delete_row(1, 0, 1).unwrap());
         assert!(
-            !ladder.blocks[1].networks[0].link(0, 1),
+            !project.ladder.blocks[1].networks[0].link(0, 1),
             "links into a deleted row go"
         );
-        assert!(h.undo(&mut ladder));
-        assert_eq!(ladder, full);
-        while h.undo(&mut ladder) {}
-        assert_eq!(ladder, empty);
-        while h.redo(&mut ladder) {}
-        assert_eq!(ladder.blocks[1].networks[0].rows.len(), 1);
+        assert!(h.undo(&mut project));
+        assert_eq!(project, full);
+        while h.undo(&mut project) {}
+        assert_eq!(project, empty);
+        while h.redo(&mut project) {}
+        assert_eq!(project.ladder.blocks[1].networks[0].rows.len(), 1);
     }
 
     #[test]

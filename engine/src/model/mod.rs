@@ -2,6 +2,7 @@
 
 pub mod block;
 pub mod cell;
+pub mod change;
 pub mod edit;
 pub mod ladder;
 pub mod network;
@@ -11,7 +12,8 @@ pub mod tables;
 
 pub use block::{Block, BlockKind};
 pub use cell::Cell;
-pub use edit::{CellRef, Edit, EditError, History};
+pub use change::{Change, History, TableEdit};
+pub use edit::{CellRef, Edit, EditError};
 pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH};
 pub use network::{Network, NetworkId, Row};
 pub use operand::{Operand, OperandError, is_symbol_name};

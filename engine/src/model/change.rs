@@ -1,0 +1,197 @@
+//! Undoable changes of a whole project: ladder edits and table edits, and the undo history.
+//!
+//! Tables are small next to the ladder and are edited a row or a field at a time, so a table
+//! edit replaces the whole table and its inverse is the table as it was: exact by
+//! construction, whatever the table's own rules did to the entered value.
+
+use super::edit::{Edit, EditError};
+use super::project::Project;
+use super::tables::{AddressRow, DataTables, MCodeRow, MessageTable, SymbolTable, VersionInfo};
+
+/// A table replaced whole.
+#[derive(Clone, Debug, PartialEq)]
+pub enum TableEdit {
+    /// The user symbol tables.
+    Symbols(Vec<SymbolTable>),
+    /// The K page and the D, D_FLOAT, DT and DC tables.
+    Data(Box<DataTables>),
+    /// The display-message table.
+    Messages(Box<MessageTable>),
+    /// The diagnosis table.
+    Diagnosis(Vec<AddressRow>),
+    /// The permission table.
+    Permissions(Vec<AddressRow>),
+    /// The M-code comments.
+    MCodes(Vec<MCodeRow>),
+    /// The version information.
+    Version(Box<VersionInfo>),
+}
+
+/// One undoable change of a project.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Change {
+    /// A ladder edit.
+    Ladder(Edit),
+    /// A table edit.
+    Table(TableEdit),
+}
+
+impl From<Edit> for Change {
+    fn from(e: Edit) -> Change {
+        Change::Ladder(e)
+    }
+}
+
+impl From<TableEdit> for Change {
+    fn from(e: TableEdit) -> Change {
+        Change::Table(e)
+    }
+}
+
+impl Project {
+    /// Replaces a table and returns the edit that puts the old one back.
+    pub fn apply_table(&mut self, edit: TableEdit) -> TableEdit {
+        use std::mem::replace;
+        match edit {
+            TableEdit::Symbols(t) => TableEdit::Symbols(replace(&mut self.symbol_tables, t)),
+            TableEdit::Data(t) => TableEdit::Data(Box::new(replace(&mut self.data, *t))),
+            TableEdit::Messages(t) => {
+                TableEdit::Messages(Box::new(replace(&mut self.messages, *t)))
+            }
+            TableEdit::Diagnosis(t) => TableEdit::Diagnosis(replace(&mut self.diagnosis, t)),
+            TableEdit::Permissions(t) => {
+                TableEdit::Permissions(replace(&mut self.permissions, t))
+            }
+            TableEdit::MCodes(t) => TableEdit::MCodes(replace(&mut self.m_codes, t)),
+            TableEdit::Version(t) => TableEdit::Version(Box::new(replace(&mut self.version, *t))),
+        }
+    }
+
+    /// Applies a change and returns its inverse; a refused ladder edit changes nothing.
+    pub fn apply_change(&mut self, change: Change) -> Result<Change, EditError> {
+        match change {
+            Change::Ladder(e) => self.ladder.apply(e).map(Change::Ladder),
+            Change::Table(t) => Ok(Change::Table(self.apply_table(t))),
+        }
+    }
+}
+
+/// Undo and redo stacks over a project.
+#[derive(Clone, Debug, Default)]
+pub struct History {
+    undo: Vec<Change>,
+    redo: Vec<Change>,
+    /// Most undo steps kept; older ones are dropped.
+    pub limit: usize,
+}
+
+impl History {
+    /// A history keeping `limit` undo steps.
+    pub fn new(limit: usize) -> History {
+        History {
+            undo: Vec::new(),
+            redo: Vec::new(),
+            limit,
+        }
+    }
+
+    /// Applies a change, remembering how to undo it. Clears the redo stack.
+    pub fn apply(&mut self, project: &mut Project, change: impl Into<Change>) -> Result<(), EditError> {
+        let inverse = project.apply_change(change.into())?;
+        self.record(inverse);
+        Ok(())
+    }
+
+    /// Remembers the inverse of a change that was already applied.
+    pub fn record(&mut self, inverse: impl Into<Change>) {
+        self.undo.push(inverse.into());
+        if self.undo.len() > self.limit {
+            self.undo.remove(0);
+        }
+        self.redo.clear();
+    }
+
+    /// Undoes the last change; false when there is nothing to undo.
+    pub fn undo(&mut self, project: &mut Project) -> bool {
+        let Some(change) = self.undo.pop() else {
+            return false;
+        };
+        match project.apply_change(change) {
+            Ok(redo) => {
+                self.redo.push(redo);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Redoes the last undone change; false when there is nothing to redo.
+    pub fn redo(&mut self, project: &mut Project) -> bool {
+        let Some(change) = self.redo.pop() else {
+            return false;
+        };
+        match project.apply_change(change) {
+            Ok(undo) => {
+                self.undo.push(undo);
+                true
+            }
+            Err(_) => false,
+        }
+    }
+
+    /// Steps that can be undone.
+    pub fn undo_len(&self) -> usize {
+        self.undo.len()
+    }
+
+    /// Steps that can be redone.
+    pub fn redo_len(&self) -> usize {
+        self.redo.len()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::address::Address;
+    use crate::model::tables::DataRow;
+
+    #[test]
+    fn table_and_ladder_changes_undo_and_redo_in_order() {
+        let mut p = Project::default();
+        let empty = p.clone();
+        let mut h = History::new(100);
+        let inv = p.ladder.insert_network(1, 0).unwrap();
+        h.record(inv);
+        let mut data = p.data.clone();
+        let mut row = DataRow::new(Address::parse("D0010").unwrap(), 0);
+        row.set_max(Some(100));
+        row.set_value(500);
+        data.d.push(row);
+        h.apply(&mut p, TableEdit::Data(Box::new(data))).unwrap();
+        assert_eq!(p.data.d[0].value, 100, "the table's clamp applied");
+        let full = p.clone();
+        assert!(h.undo(&mut p));
+        assert!(p.data.d.is_empty());
+        assert_eq!(p.ladder.blocks[1].networks.len(), 1);
+        assert!(h.undo(&mut p));
+        assert_eq!(p, empty);
+        assert!(!h.undo(&mut p));
+        while h.redo(&mut p) {}
+        assert_eq!(p, full);
+    }
+
+    #[test]
+    fn the_history_keeps_its_limit() {
+        let mut p = Project::default();
+        let mut h = History::new(3);
+        for i in 0..5 {
+            let mut v = p.version.clone();
+            v.set("me", &format!("1.{i}"), "");
+            h.apply(&mut p, TableEdit::Version(Box::new(v))).unwrap();
+        }
+        assert_eq!(h.undo_len(), 3);
+        while h.undo(&mut p) {}
+        assert_eq!(p.version.version, "1.1", "only the last three steps come back");
+    }
+}
