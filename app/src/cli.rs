@@ -200,7 +200,7 @@ fn check(path: &Path, out: &mut dyn Write) -> anyhow::Result<i32> {
 }
 
 /// Codes that leave a network without a valid instruction list.
-fn is_structural(code: Code) -> bool {
+pub(crate) fn is_structural(code: Code) -> bool {
     matches!(
         code,
         Code::L001NotConnected

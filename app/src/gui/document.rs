@@ -20,6 +20,10 @@ pub struct Document {
     pub dirty: bool,
     /// The last compile, if any.
     pub compiled: Option<Compiled>,
+    /// Opened from a damaged file: looked at, never saved over the original.
+    pub read_only: bool,
+    /// The damaged file a read-only document was recovered from.
+    pub recovered_from: Option<PathBuf>,
     /// Counts changes, so views can cache what they derive from the project.
     pub generation: u64,
 }
@@ -34,6 +38,8 @@ impl Document {
             dirty: false,
             compiled: None,
             generation: 0,
+            read_only: false,
+            recovered_from: None,
         }
     }
 

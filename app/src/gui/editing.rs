@@ -64,6 +64,15 @@ impl LadderApp {
         let Some(doc) = self.doc.as_mut() else {
             return false;
         };
+        if doc.read_only {
+            let text = Msg::ReadOnly.text(self.settings.lang).to_string();
+            self.output.push(OutputLine {
+                text,
+                error: true,
+                target: None,
+            });
+            return false;
+        }
         match f(&mut doc.project.ladder) {
             Ok(inverse) => {
                 doc.history.record(inverse);
@@ -333,6 +342,7 @@ impl LadderApp {
     pub fn keys(&mut self, ctx: &egui::Context) {
         if self.prompt.is_some()
             || self.function_dialog.is_some()
+            || self.question.is_some()
             || ctx.egui_wants_keyboard_input()
         {
             return;
@@ -388,6 +398,10 @@ impl LadderApp {
             self.redo();
         } else if key(Modifiers::COMMAND, Key::S) {
             self.save();
+        } else if key(Modifiers::COMMAND, Key::N) {
+            self.request(super::files::Action::New);
+        } else if key(Modifiers::COMMAND, Key::O) {
+            self.request(super::files::Action::OpenDialog);
         } else if key(Modifiers::NONE, Key::ArrowLeft) {
             self.move_cursor(0, -1);
         } else if key(Modifiers::NONE, Key::ArrowRight) {
@@ -522,7 +536,7 @@ impl LadderApp {
 
     /// Replaces a table through the history (table editors call this for every change).
     pub fn edit_table(&mut self, edit: TableEdit) {
-        if let Some(doc) = self.doc.as_mut() {
+        if let Some(doc) = self.doc.as_mut().filter(|d| !d.read_only) {
             let inverse = doc.project.apply_table(edit);
             doc.history.record(inverse);
             doc.changed();
@@ -544,24 +558,6 @@ impl LadderApp {
             && doc.history.redo(&mut doc.project)
         {
             doc.changed();
-        }
-    }
-
-    /// Ctrl+S: saves to the project's file.
-    pub fn save(&mut self) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_mut() else { return };
-        let result = if doc.path.is_none() {
-            Err(Msg::SaveNeedsName.text(lang).to_string())
-        } else {
-            doc.save().map_err(|e| e.to_string())
-        };
-        if let Err(e) = result {
-            self.output.push(OutputLine {
-                text: e,
-                error: true,
-                target: None,
-            });
         }
     }
 

@@ -124,8 +124,67 @@ messages! {
     ReplaceUsage => "替换：输入“原地址 新地址”，例如 R10.0 R11.0", "Replace: type `FROM TO`, e.g. R10.0 R11.0";
     SaveNeedsName => "工程还没有文件名：请先另存为", "The project has no file name yet: use Save As";
     // Files and menus.
+    New => "新建", "New";
+    SaveAs => "另存为…", "Save As…";
+    Close => "关闭", "Close";
+    ExportIl => "导出指令表…", "Export instruction list…";
+    ExportComments => "导出注释…", "Export comments…";
+    ImportComments => "导入注释…", "Import comments…";
+    OpenedReadOnly => "已只读打开损坏文件中可读的部分（只能另存为）", "Opened what could be read of the damaged file, read-only (use Save As)";
+    CannotRecover => "无法恢复", "Cannot recover";
+    ReadOnlySaveAs => "只读工程：请另存为新文件", "Read-only project: save it under a new name";
+    NotOverDamaged => "不能覆盖损坏的原文件：请选择另一个文件名", "The damaged original is not overwritten: choose another name";
+    IlNotWritten => "有网络无法生成指令表：请先修正编译错误，指令表未写出", "A network has no valid instruction list: fix the compile errors; nothing written";
+    Written => "已写出", "Written:";
+    ReadOnly => "只读工程，不能修改", "The project is read-only";
+    RowsApplied => "行注释已导入", "comment rows applied";
+    AutosaveFailed => "自动保存恢复副本失败", "Autosave of the recovery copy failed";
+    Restored => "已从恢复副本恢复工程（尚未保存）", "Project restored from its recovery copy (not saved yet)";
+    UnsavedTitle => "未保存的修改", "Unsaved changes";
+    SaveChangesTo => "是否保存对以下工程的修改", "Save the changes to";
+    DontSave => "不保存", "Don't save";
+    Cancel => "取消", "Cancel";
+    DamagedTitle => "文件已损坏", "Damaged file";
+    OpenReadOnlyQuestion => "是否只读打开其中可读的部分？", "Open what can be read of it, read-only?";
+    OpenReadOnly => "只读打开", "Open read-only";
+    RestoreTitle => "恢复工程", "Recover project";
+    RestoreQuestion => "上次编辑没有正常结束，找到了自动保存的恢复副本：", "The last session did not end normally. An autosaved recovery copy was found:";
+    MinutesAgo => "分钟前", "minutes ago";
+    Restore => "恢复", "Restore";
+    Discard => "丢弃", "Discard";
     // Table editors.
     // Function-instruction dialog.
+    FnTitle => "功能指令", "Function instruction";
+    FnEditTitle => "修改功能指令", "Change function instruction";
+    FnLine => "指令行", "Instruction line";
+    FnSearch => "搜索", "Search";
+    FnCategory => "分类", "Category";
+    FnAll => "所有功能指令", "All";
+    FnNoMatch => "没有匹配的功能指令", "No function instruction matches";
+    FnChoose => "请选择一个功能指令", "Choose a function instruction";
+    FnParameter => "参数", "Parameter";
+    FnValue => "值", "Value";
+    FnNote => "注释", "Description";
+    FnMissing => "未填写", "missing";
+    FnNotAllowed => "此处不允许", "not allowed here";
+    FnAllowedAreas => "允许的地址区", "allowed areas";
+    FnAllowedConsts => "允许的常数", "allowed constants";
+    FnRealConsts => "实数常数", "real constants";
+    FnNoConsts => "不接受常数", "no constants";
+    FnWantsBit => "需要位地址，例如 R0010.0", "needs a bit address such as R0010.0";
+    FnWantsByte => "需要不带位号的地址，例如 R0010", "needs an address without a bit, such as R0010";
+    FnReadOnly => "X、F 是输入信号，程序不能写", "X and F are inputs: the program cannot write them";
+    FnOutOfRange => "超出本机型的地址范围", "beyond the address range of this controller";
+    FnUndefinedSymbol => "符号未定义：请在符号表中定义或直接写地址", "undefined symbol: define it in the symbol table or write the address";
+    FnNotFunction => "不是功能指令", "is not a function instruction";
+    FnTooMany => "参数过多", "too many operands";
+    FnTable => "转换表", "Conversion table";
+    FnEntries => "项", "entries";
+    FnAddEntry => "添加表项", "Add entry";
+    FnRemoveEntry => "删除表项", "Remove entry";
+    FnIl => "指令表", "IL";
+    FnOk => "确定", "OK";
+    FnCancel => "取消", "Cancel";
 }
 
 #[cfg(test)]

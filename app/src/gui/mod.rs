@@ -3,6 +3,7 @@
 
 pub mod document;
 pub mod editing;
+pub mod files;
 pub mod fonts;
 pub mod function_dialog;
 pub mod i18n;
@@ -17,6 +18,9 @@ use ladder_engine::compiler::{Origin, Severity};
 use settings::{DisplayMode, Settings};
 use std::path::{Path, PathBuf};
 use tree::View;
+
+/// The application's name for eframe (window title, storage folder).
+pub const APP_ID: &str = "Ladder Studio";
 
 /// One line of the output window; diagnostics remember where to jump.
 #[derive(Clone, Debug, PartialEq)]
@@ -51,6 +55,20 @@ pub struct LadderApp {
     pub tables: tables::TableState,
     /// The open function-instruction dialog (F3, or a double-click on a box).
     pub function_dialog: Option<function_dialog::FunctionDialog>,
+    /// File dialogs (native, or scripted in tests).
+    pub dialogs: Box<dyn files::FileDialogs>,
+    /// The question the editor waits on (unsaved changes, damaged file, restore).
+    pub question: Option<files::Question>,
+    /// What to do once the pending Save or Save As succeeds.
+    pub after_save: Option<files::Action>,
+    /// The user agreed to quit.
+    pub exit_confirmed: bool,
+    /// Where recovery copies are autosaved; `None` turns autosave off.
+    pub recovery_dir: Option<PathBuf>,
+    /// When the recovery copy was last written.
+    pub last_autosave: Option<std::time::Instant>,
+    /// The egui context, for starting dialogs outside a frame's closures.
+    pub ctx: Option<egui::Context>,
 }
 
 impl LadderApp {
@@ -72,6 +90,13 @@ impl LadderApp {
             geometry: ladder_view::Geometry::default(),
             tables: tables::TableState::default(),
             function_dialog: None,
+            dialogs: Box::new(files::NativeDialogs::default()),
+            question: None,
+            after_save: None,
+            exit_confirmed: false,
+            recovery_dir: None,
+            last_autosave: None,
+            ctx: None,
         };
         let start = path
             .map(Path::to_path_buf)
@@ -90,31 +115,18 @@ impl LadderApp {
             .storage
             .and_then(|s| eframe::get_value(s, eframe::APP_KEY))
             .unwrap_or_default();
-        LadderApp::new(settings, path.as_deref())
+        let mut app = LadderApp::new(settings, path.as_deref());
+        app.ctx = Some(cc.egui_ctx.clone());
+        // Only a real run (with eframe's storage) autosaves into the user's data folder.
+        if cc.storage.is_some() {
+            app.recovery_dir = eframe::storage_dir(APP_ID).map(|d| d.join("recovery"));
+            app.offer_restore();
+        }
+        app
     }
 
     fn t(&self, m: Msg) -> &'static str {
         m.text(self.settings.lang)
-    }
-
-    /// Opens a project file; on failure the message goes to the output window.
-    pub fn open(&mut self, path: &Path) -> bool {
-        match Document::open(path) {
-            Ok(doc) => {
-                self.doc = Some(doc);
-                self.settings.remember(path.to_path_buf());
-                self.view = View::Block(1);
-                true
-            }
-            Err(e) => {
-                self.output.push(OutputLine {
-                    text: format!("{} {}: {e}", self.t(Msg::OpenFailed), path.display()),
-                    error: true,
-                    target: None,
-                });
-                false
-            }
-        }
     }
 
     /// F9: compiles into the output window.
@@ -167,34 +179,7 @@ impl LadderApp {
 
     fn menu_ui(&mut self, ui: &mut egui::Ui) {
         egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button(self.t(Msg::File), |ui| {
-                let recent = self.settings.recent.clone();
-                if !recent.is_empty() {
-                    ui.label(self.t(Msg::Recent));
-                    for p in recent {
-                        if ui.button(p.display().to_string()).clicked() {
-                            self.open(&p);
-                            ui.close();
-                        }
-                    }
-                    ui.separator();
-                }
-                if ui.button(self.t(Msg::Save)).clicked() {
-                    if let Some(doc) = self.doc.as_mut()
-                        && let Err(e) = doc.save()
-                    {
-                        self.output.push(OutputLine {
-                            text: e.to_string(),
-                            error: true,
-                            target: None,
-                        });
-                    }
-                    ui.close();
-                }
-                if ui.button(self.t(Msg::Exit)).clicked() {
-                    ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
-                }
-            });
+            ui.menu_button(self.t(Msg::File), |ui| self.file_menu_ui(ui));
             ui.menu_button(self.t(Msg::View), |ui| {
                 ui.label(self.t(Msg::Language));
                 if ui.button(Msg::Chinese.text(self.settings.lang)).clicked() {
@@ -341,6 +326,15 @@ impl LadderApp {
 
 impl eframe::App for LadderApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        let ctx = ui.ctx().clone();
+        self.ctx = Some(ctx.clone());
+        self.poll_dialogs();
+        self.dropped_files(&ctx);
+        self.close_requested(&ctx);
+        self.autosave_tick();
+        if self.question.is_some() {
+            self.question_ui(&ctx);
+        }
         if ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::F9)) {
             self.compile();
         }
@@ -383,7 +377,7 @@ pub fn run(path: Option<PathBuf>) -> anyhow::Result<()> {
         ..Default::default()
     };
     eframe::run_native(
-        "Ladder Studio",
+        APP_ID,
         options,
         Box::new(move |cc| Ok(Box::new(LadderApp::from_creation(cc, path)))),
     )

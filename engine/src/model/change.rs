@@ -34,6 +34,11 @@ pub enum Change {
     Ladder(Edit),
     /// A table edit.
     Table(TableEdit),
+    /// Several changes as one undo step, undone in reverse order.
+    Batch(Vec<Change>),
+    /// The whole project replaced (a comments import, which touches tables and network
+    /// texts at once).
+    Whole(Box<Project>),
 }
 
 impl From<Edit> for Change {
@@ -59,9 +64,7 @@ impl Project {
                 TableEdit::Messages(Box::new(replace(&mut self.messages, *t)))
             }
             TableEdit::Diagnosis(t) => TableEdit::Diagnosis(replace(&mut self.diagnosis, t)),
-            TableEdit::Permissions(t) => {
-                TableEdit::Permissions(replace(&mut self.permissions, t))
-            }
+            TableEdit::Permissions(t) => TableEdit::Permissions(replace(&mut self.permissions, t)),
             TableEdit::MCodes(t) => TableEdit::MCodes(replace(&mut self.m_codes, t)),
             TableEdit::Version(t) => TableEdit::Version(Box::new(replace(&mut self.version, *t))),
         }
@@ -72,6 +75,24 @@ impl Project {
         match change {
             Change::Ladder(e) => self.ladder.apply(e).map(Change::Ladder),
             Change::Table(t) => Ok(Change::Table(self.apply_table(t))),
+            Change::Whole(p) => Ok(Change::Whole(Box::new(std::mem::replace(self, *p)))),
+            Change::Batch(changes) => {
+                let mut inverses = Vec::with_capacity(changes.len());
+                for c in changes {
+                    match self.apply_change(c) {
+                        Ok(inv) => inverses.push(inv),
+                        Err(err) => {
+                            // Roll back so a refused batch changes nothing.
+                            for inv in inverses.into_iter().rev() {
+                                let _ = self.apply_change(inv);
+                            }
+                            return Err(err);
+                        }
+                    }
+                }
+                inverses.reverse();
+                Ok(Change::Batch(inverses))
+            }
         }
     }
 }
@@ -96,7 +117,11 @@ impl History {
     }
 
     /// Applies a change, remembering how to undo it. Clears the redo stack.
-    pub fn apply(&mut self, project: &mut Project, change: impl Into<Change>) -> Result<(), EditError> {
+    pub fn apply(
+        &mut self,
+        project: &mut Project,
+        change: impl Into<Change>,
+    ) -> Result<(), EditError> {
         let inverse = project.apply_change(change.into())?;
         self.record(inverse);
         Ok(())
@@ -192,6 +217,9 @@ mod tests {
         }
         assert_eq!(h.undo_len(), 3);
         while h.undo(&mut p) {}
-        assert_eq!(p.version.version, "1.1", "only the last three steps come back");
+        assert_eq!(
+            p.version.version, "1.1",
+            "only the last three steps come back"
+        );
     }
 }

@@ -1,0 +1,802 @@
+//! Files: new, open, save, save as, close and exit with the unsaved-changes prompt; native
+//! dialogs behind a small trait (tests script the answers, and never open one); export of the
+//! instruction list, export and import of comments; the read-only recovery open of a damaged
+//! file; and the autosaved recovery copy offered back after a crash.
+
+use super::document::Document;
+use super::i18n::Msg;
+use super::tree::View;
+use super::{LadderApp, OutputLine};
+use ladder_engine::file::{self, FileError};
+use ladder_engine::model::{Change, Project};
+use std::collections::VecDeque;
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+use std::time::{Duration, Instant, SystemTime};
+
+/// What a file dialog is asked for; the answer is handled by the same kind.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DialogKind {
+    /// Pick a project to open.
+    OpenProject,
+    /// Pick where to save the project.
+    SaveProjectAs,
+    /// Pick where to write the instruction list.
+    ExportIl,
+    /// Pick where to write the comments CSV.
+    ExportComments,
+    /// Pick a comments CSV to import.
+    ImportComments,
+}
+
+impl DialogKind {
+    fn saves(self) -> bool {
+        matches!(
+            self,
+            DialogKind::SaveProjectAs | DialogKind::ExportIl | DialogKind::ExportComments
+        )
+    }
+
+    fn filter(self) -> (&'static str, &'static [&'static str]) {
+        match self {
+            DialogKind::OpenProject | DialogKind::SaveProjectAs => ("Ladder project", &["ldp"]),
+            DialogKind::ExportIl => ("Instruction list", &["il", "txt"]),
+            DialogKind::ExportComments | DialogKind::ImportComments => ("CSV", &["csv"]),
+        }
+    }
+}
+
+/// File dialogs: started from the UI, answered later so the UI never blocks.
+pub trait FileDialogs {
+    /// Starts a dialog (at most one at a time); `suggested` is the file name or path offered.
+    fn start(&mut self, ctx: &egui::Context, kind: DialogKind, suggested: Option<PathBuf>);
+    /// The answer of the dialog started last, once there is one: `None` inside means cancelled.
+    fn poll(&mut self) -> Option<(DialogKind, Option<PathBuf>)>;
+    /// Whether a dialog is open.
+    fn busy(&self) -> bool;
+}
+
+/// The system's dialogs (rfd: the xdg portal, else zenity), each on its own thread.
+#[derive(Default)]
+pub struct NativeDialogs {
+    answer: Option<mpsc::Receiver<(DialogKind, Option<PathBuf>)>>,
+}
+
+impl FileDialogs for NativeDialogs {
+    fn start(&mut self, ctx: &egui::Context, kind: DialogKind, suggested: Option<PathBuf>) {
+        if self.answer.is_some() {
+            return;
+        }
+        let (tx, rx) = mpsc::channel();
+        self.answer = Some(rx);
+        let ctx = ctx.clone();
+        // rfd blocks until the user answers: a thread keeps the editor drawing meanwhile.
+        std::thread::spawn(move || {
+            let (name, exts) = kind.filter();
+            let mut d = rfd::FileDialog::new().add_filter(name, exts);
+            if let Some(s) = &suggested {
+                if let Some(dir) = s.parent().filter(|d| d.is_dir()) {
+                    d = d.set_directory(dir);
+                }
+                if let Some(f) = s.file_name() {
+                    d = d.set_file_name(f.to_string_lossy());
+                }
+            }
+            let path = if kind.saves() {
+                d.save_file()
+            } else {
+                d.pick_file()
+            };
+            let _ = tx.send((kind, path));
+            ctx.request_repaint();
+        });
+    }
+
+    fn poll(&mut self) -> Option<(DialogKind, Option<PathBuf>)> {
+        let answer = self.answer.as_ref()?.try_recv();
+        match answer {
+            Ok(a) => {
+                self.answer = None;
+                Some(a)
+            }
+            Err(mpsc::TryRecvError::Empty) => None,
+            Err(mpsc::TryRecvError::Disconnected) => {
+                self.answer = None;
+                None
+            }
+        }
+    }
+
+    fn busy(&self) -> bool {
+        self.answer.is_some()
+    }
+}
+
+/// Dialogs that answer from a list, for tests and scripted runs.
+#[derive(Debug, Default)]
+pub struct ScriptedDialogs {
+    /// The answers, in order; an empty list answers "cancelled".
+    pub answers: VecDeque<Option<PathBuf>>,
+    /// Every dialog asked for, in order.
+    pub asked: Vec<DialogKind>,
+    pending: Option<DialogKind>,
+}
+
+impl ScriptedDialogs {
+    /// Dialogs that will answer `answers` in turn.
+    pub fn new(answers: impl IntoIterator<Item = Option<PathBuf>>) -> ScriptedDialogs {
+        ScriptedDialogs {
+            answers: answers.into_iter().collect(),
+            ..Default::default()
+        }
+    }
+}
+
+impl FileDialogs for ScriptedDialogs {
+    fn start(&mut self, _ctx: &egui::Context, kind: DialogKind, _suggested: Option<PathBuf>) {
+        self.asked.push(kind);
+        self.pending = Some(kind);
+    }
+
+    fn poll(&mut self) -> Option<(DialogKind, Option<PathBuf>)> {
+        let kind = self.pending.take()?;
+        Some((kind, self.answers.pop_front().flatten()))
+    }
+
+    fn busy(&self) -> bool {
+        self.pending.is_some()
+    }
+}
+
+/// Something that closes the current project, and so first asks about unsaved changes.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Action {
+    /// A new, empty project.
+    New,
+    /// Pick a project in a dialog, then open it.
+    OpenDialog,
+    /// Open this file.
+    Open(PathBuf),
+    /// Close the project.
+    Close,
+    /// Quit the editor.
+    Exit,
+}
+
+/// A question the editor is waiting on.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Question {
+    /// The project has unsaved changes: save them before `then`?
+    Unsaved {
+        /// What happens after the answer.
+        then: Action,
+    },
+    /// The file is damaged: open what can be read, read-only?
+    Damaged {
+        /// The file.
+        path: PathBuf,
+        /// Why it could not be opened.
+        error: String,
+    },
+    /// A recovery copy was left by a session that did not end: restore it?
+    Restore(RecoveryCopy),
+}
+
+/// An autosaved recovery copy on disk.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RecoveryCopy {
+    /// The copy.
+    pub copy: PathBuf,
+    /// The project's own file, if it had one.
+    pub original: Option<PathBuf>,
+    /// When the copy was written.
+    pub saved: Option<SystemTime>,
+}
+
+/// Minutes between autosaves of the recovery copy.
+pub const AUTOSAVE_MINUTES: u64 = 3;
+
+/// The recovery copy's file for a project file (or an untitled project): the same name in the
+/// recovery folder, with a hash of the full path so two `main.ldp` in different folders differ.
+pub fn recovery_path(dir: &Path, original: Option<&Path>) -> PathBuf {
+    match original {
+        None => dir.join("untitled.ldp"),
+        Some(p) => {
+            // FNV-1a: stable across runs and builds, unlike std's hasher.
+            let mut h: u32 = 0x811c_9dc5;
+            for b in p.to_string_lossy().bytes() {
+                h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+            }
+            let stem = p
+                .file_stem()
+                .map_or("project".into(), |s| s.to_string_lossy());
+            dir.join(format!("{stem}-{h:08x}.ldp"))
+        }
+    }
+}
+
+/// The recovery copies left in `dir`, newest first.
+pub fn recovery_copies(dir: &Path) -> Vec<RecoveryCopy> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut copies: Vec<RecoveryCopy> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|x| x == "ldp"))
+        .map(|copy| {
+            let original = std::fs::read_to_string(copy.with_extension("origin"))
+                .ok()
+                .map(|s| PathBuf::from(s.trim_end_matches('\n')))
+                .filter(|p| !p.as_os_str().is_empty());
+            let saved = std::fs::metadata(&copy).and_then(|m| m.modified()).ok();
+            RecoveryCopy {
+                copy,
+                original,
+                saved,
+            }
+        })
+        .collect();
+    copies.sort_by_key(|c| std::cmp::Reverse(c.saved));
+    copies
+}
+
+/// Removes a recovery copy and what goes with it.
+fn remove_copy(copy: &Path) {
+    for ext in ["ldp", "origin", "ldp.bak"] {
+        let _ = std::fs::remove_file(copy.with_extension(ext));
+    }
+}
+
+/// Writes `text` to `path` through a temporary file in the same folder and a rename, so a
+/// crash leaves the old file or the new one.
+fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
+    use std::io::Write;
+    let name = path
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy());
+    let tmp = path.with_file_name(format!(".{name}.tmp"));
+    let mut f = std::fs::File::create(&tmp)?;
+    f.write_all(text.as_bytes())?;
+    f.sync_all()?;
+    std::fs::rename(&tmp, path)
+}
+
+impl LadderApp {
+    fn say(&mut self, text: String, error: bool) {
+        self.output.push(OutputLine {
+            text,
+            error,
+            target: None,
+        });
+    }
+
+    /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
+    /// question.
+    pub fn request(&mut self, action: Action) {
+        if self.doc.as_ref().is_some_and(|d| d.dirty) {
+            self.question = Some(Question::Unsaved { then: action });
+        } else {
+            self.perform(action);
+        }
+    }
+
+    /// Does `action` now, whatever is unsaved.
+    pub fn perform(&mut self, action: Action) {
+        match action {
+            Action::OpenDialog => {
+                self.start_dialog(DialogKind::OpenProject);
+                return;
+            }
+            Action::Open(path) => {
+                self.open(&path);
+                return;
+            }
+            Action::Exit => {
+                self.exit_confirmed = true;
+                self.drop_recovery_copy();
+                if let Some(ctx) = &self.ctx {
+                    ctx.send_viewport_cmd(egui::ViewportCommand::Close);
+                }
+                return;
+            }
+            Action::New | Action::Close => {}
+        }
+        self.drop_recovery_copy();
+        self.doc = (action == Action::New).then(|| Document::new(Project::default(), None));
+        self.reset_view();
+    }
+
+    /// Back to level 2 at its first cell, with nothing pending from the old project.
+    pub fn reset_view(&mut self) {
+        self.view = View::Block(1);
+        self.cursor = super::editing::Cursor {
+            block: 1,
+            network: 0,
+            row: 0,
+            col: 0,
+        };
+        self.prompt = None;
+        self.function_dialog = None;
+        self.jump_to = None;
+        self.tables = Default::default();
+    }
+
+    fn start_dialog(&mut self, kind: DialogKind) {
+        let doc = self.doc.as_ref();
+        let stem = doc
+            .and_then(|d| d.path.as_ref().or(d.recovered_from.as_ref()))
+            .and_then(|p| p.file_stem())
+            .map_or("project".to_string(), |s| s.to_string_lossy().into_owned());
+        let ext = match kind {
+            DialogKind::OpenProject | DialogKind::ImportComments => None,
+            DialogKind::SaveProjectAs => Some("ldp"),
+            DialogKind::ExportIl => Some("il"),
+            DialogKind::ExportComments => Some("csv"),
+        };
+        let dir = doc.and_then(|d| d.path.as_ref()).and_then(|p| p.parent());
+        let suggested = ext.map(|e| {
+            let name = format!("{stem}.{e}");
+            dir.map_or(PathBuf::from(&name), |d| d.join(&name))
+        });
+        if let Some(ctx) = self.ctx.clone() {
+            self.dialogs.start(&ctx, kind, suggested);
+        }
+    }
+
+    /// Handles a dialog's answer.
+    pub fn poll_dialogs(&mut self) {
+        let Some((kind, answer)) = self.dialogs.poll() else {
+            return;
+        };
+        let Some(path) = answer else {
+            // Cancelled: a Save As asked for by the unsaved-changes question cancels its action.
+            self.after_save = None;
+            return;
+        };
+        match kind {
+            DialogKind::OpenProject => {
+                self.open(&path);
+            }
+            DialogKind::SaveProjectAs => self.save_as(&path),
+            DialogKind::ExportIl => self.export_il(&path),
+            DialogKind::ExportComments => self.export_comments(&path),
+            DialogKind::ImportComments => self.import_comments(&path),
+        }
+    }
+
+    /// Opens a project file. A damaged one (bad checksum, header or body) is offered read-only.
+    pub fn open(&mut self, path: &Path) -> bool {
+        match Document::open(path) {
+            Ok(doc) => {
+                self.drop_recovery_copy();
+                self.doc = Some(doc);
+                self.settings.remember(path.to_path_buf());
+                self.reset_view();
+                true
+            }
+            Err(e) => {
+                let lang = self.settings.lang;
+                self.say(
+                    format!("{} {}: {e}", Msg::OpenFailed.text(lang), path.display()),
+                    true,
+                );
+                if !matches!(e, FileError::Io { .. }) {
+                    self.question = Some(Question::Damaged {
+                        path: path.to_path_buf(),
+                        error: e.to_string(),
+                    });
+                }
+                false
+            }
+        }
+    }
+
+    /// Opens what can be read of a damaged file, read-only: it can be looked at, compiled and
+    /// saved under another name, never over the original.
+    pub fn open_recovered(&mut self, path: &Path) -> bool {
+        let lang = self.settings.lang;
+        let result = std::fs::read(path)
+            .map_err(|e| e.to_string())
+            .and_then(|b| file::recover(&b).map_err(|e| e.to_string()));
+        match result {
+            Ok(project) => {
+                let mut doc = Document::new(project, None);
+                doc.read_only = true;
+                doc.recovered_from = Some(path.to_path_buf());
+                self.drop_recovery_copy();
+                self.doc = Some(doc);
+                self.reset_view();
+                self.say(
+                    format!("{}: {}", Msg::OpenedReadOnly.text(lang), path.display()),
+                    false,
+                );
+                true
+            }
+            Err(e) => {
+                self.say(
+                    format!("{} {}: {e}", Msg::CannotRecover.text(lang), path.display()),
+                    true,
+                );
+                false
+            }
+        }
+    }
+
+    /// Ctrl+S: saves to the project's file; an untitled project asks where (Save As).
+    pub fn save(&mut self) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_mut() else { return };
+        if doc.read_only || doc.path.is_none() {
+            if doc.read_only {
+                self.say(Msg::ReadOnlySaveAs.text(lang).into(), false);
+            }
+            self.start_dialog(DialogKind::SaveProjectAs);
+            return;
+        }
+        match doc.save() {
+            Ok(()) => {
+                self.drop_recovery_copy();
+                if let Some(then) = self.after_save.take() {
+                    self.perform(then);
+                }
+            }
+            Err(e) => {
+                self.after_save = None;
+                self.say(e.to_string(), true);
+            }
+        }
+    }
+
+    /// Saves under a new name; the project then lives there.
+    pub fn save_as(&mut self, path: &Path) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_mut() else { return };
+        if doc.recovered_from.as_deref() == Some(path) {
+            self.after_save = None;
+            self.say(Msg::NotOverDamaged.text(lang).into(), true);
+            return;
+        }
+        let old_copy = self
+            .recovery_dir
+            .as_ref()
+            .map(|d| recovery_path(d, doc.path.as_deref()));
+        match file::save(&doc.project, path) {
+            Ok(()) => {
+                doc.path = Some(path.to_path_buf());
+                doc.dirty = false;
+                doc.read_only = false;
+                doc.recovered_from = None;
+                if let Some(c) = old_copy {
+                    remove_copy(&c);
+                }
+                self.settings.remember(path.to_path_buf());
+                if let Some(then) = self.after_save.take() {
+                    self.perform(then);
+                }
+            }
+            Err(e) => {
+                self.after_save = None;
+                self.say(e.to_string(), true);
+            }
+        }
+    }
+
+    /// Writes the compiled instruction list (as `export-il` does: refused while a network has
+    /// no valid list, other errors are reported and the list written).
+    pub fn export_il(&mut self, path: &Path) {
+        self.compile();
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_ref() else { return };
+        let Some(compiled) = doc.compiled.as_ref() else {
+            return;
+        };
+        if compiled
+            .diagnostics
+            .iter()
+            .any(|d| crate::cli::is_structural(d.code))
+        {
+            self.say(Msg::IlNotWritten.text(lang).into(), true);
+            return;
+        }
+        let text = ladder_engine::il::print(&compiled.program);
+        match write_atomic(path, &text) {
+            Ok(()) => self.say(
+                format!("{} {}", Msg::Written.text(lang), path.display()),
+                false,
+            ),
+            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+        }
+    }
+
+    /// Writes every comment, all languages, as CSV.
+    pub fn export_comments(&mut self, path: &Path) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_ref() else { return };
+        let text = ladder_engine::comments::export(&doc.project, None);
+        match write_atomic(path, &text) {
+            Ok(()) => self.say(
+                format!("{} {}", Msg::Written.text(lang), path.display()),
+                false,
+            ),
+            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+        }
+    }
+
+    /// Applies a comments CSV: all rows or none, one undo step.
+    pub fn import_comments(&mut self, path: &Path) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_mut() else { return };
+        if doc.read_only {
+            self.say(Msg::ReadOnly.text(lang).into(), true);
+            return;
+        }
+        let text = match std::fs::read_to_string(path) {
+            Ok(t) => t,
+            Err(e) => {
+                self.say(format!("{}: {e}", path.display()), true);
+                return;
+            }
+        };
+        let mut project = doc.project.clone();
+        match ladder_engine::comments::import(&mut project, &text, None) {
+            Ok(n) => {
+                let inverse = doc
+                    .project
+                    .apply_change(Change::Whole(Box::new(project)))
+                    .expect("replacing the whole project cannot be refused");
+                doc.history.record(inverse);
+                doc.changed();
+                self.say(format!("{n} {}", Msg::RowsApplied.text(lang)), false);
+            }
+            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+        }
+    }
+
+    /// Writes the recovery copy of an unsaved project now.
+    pub fn autosave_now(&mut self) {
+        self.last_autosave = Some(Instant::now());
+        let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), self.doc.as_ref()) else {
+            return;
+        };
+        if !doc.dirty || doc.read_only {
+            return;
+        }
+        let copy = recovery_path(dir, doc.path.as_deref());
+        let written = std::fs::create_dir_all(dir)
+            .map_err(|e| e.to_string())
+            .and_then(|()| file::save(&doc.project, &copy).map_err(|e| e.to_string()))
+            .and_then(|()| {
+                let origin = doc
+                    .path
+                    .as_ref()
+                    .map_or(String::new(), |p| p.to_string_lossy().into_owned());
+                write_atomic(&copy.with_extension("origin"), &origin).map_err(|e| e.to_string())
+            });
+        if let Err(e) = written {
+            let lang = self.settings.lang;
+            self.say(format!("{}: {e}", Msg::AutosaveFailed.text(lang)), true);
+        }
+    }
+
+    /// Autosaves when the interval has passed.
+    pub fn autosave_tick(&mut self) {
+        let due = self
+            .last_autosave
+            .is_none_or(|t| t.elapsed() >= Duration::from_secs(AUTOSAVE_MINUTES * 60));
+        if self.last_autosave.is_none() {
+            // The clock starts with the session: the first copy a full interval later.
+            self.last_autosave = Some(Instant::now());
+        } else if due {
+            self.autosave_now();
+        }
+    }
+
+    /// The current project's recovery copy is no longer needed (saved, closed, replaced).
+    pub fn drop_recovery_copy(&mut self) {
+        if let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), self.doc.as_ref()) {
+            remove_copy(&recovery_path(dir, doc.path.as_deref()));
+        }
+    }
+
+    /// At start: a recovery copy left by a session that did not end is offered back.
+    pub fn offer_restore(&mut self) {
+        let Some(dir) = self.recovery_dir.as_ref() else {
+            return;
+        };
+        if let Some(copy) = recovery_copies(dir).into_iter().next() {
+            self.question = Some(Question::Restore(copy));
+        }
+    }
+
+    /// Restores a recovery copy: the project as it was, unsaved, under its own file name.
+    pub fn restore(&mut self, copy: &RecoveryCopy) {
+        let lang = self.settings.lang;
+        match file::load(&copy.copy) {
+            Ok(project) => {
+                let mut doc = Document::new(project, copy.original.clone());
+                doc.dirty = true;
+                self.doc = Some(doc);
+                self.reset_view();
+                self.say(Msg::Restored.text(lang).into(), false);
+            }
+            Err(e) => {
+                remove_copy(&copy.copy);
+                self.say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
+            }
+        }
+    }
+
+    /// The open question, as a modal window.
+    pub fn question_ui(&mut self, ctx: &egui::Context) {
+        let Some(q) = self.question.clone() else {
+            return;
+        };
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let mut answer: Option<usize> = None;
+        let (title, text, buttons): (&str, String, Vec<Msg>) = match &q {
+            Question::Unsaved { .. } => {
+                let name = self
+                    .doc
+                    .as_ref()
+                    .and_then(Document::name)
+                    .unwrap_or_else(|| t(Msg::Untitled).into());
+                (
+                    t(Msg::UnsavedTitle),
+                    format!("{} “{name}”?", t(Msg::SaveChangesTo)),
+                    vec![Msg::Save, Msg::DontSave, Msg::Cancel],
+                )
+            }
+            Question::Damaged { path, error } => (
+                t(Msg::DamagedTitle),
+                format!(
+                    "{}\n{error}\n\n{}",
+                    path.display(),
+                    t(Msg::OpenReadOnlyQuestion)
+                ),
+                vec![Msg::OpenReadOnly, Msg::Cancel],
+            ),
+            Question::Restore(copy) => {
+                let name = copy
+                    .original
+                    .as_ref()
+                    .map_or(t(Msg::Untitled).to_string(), |p| p.display().to_string());
+                let age = copy
+                    .saved
+                    .and_then(|s| s.elapsed().ok())
+                    .map_or(String::new(), |d| {
+                        format!(" ({} {})", d.as_secs() / 60, t(Msg::MinutesAgo))
+                    });
+                (
+                    t(Msg::RestoreTitle),
+                    format!("{}\n{name}{age}", t(Msg::RestoreQuestion)),
+                    vec![Msg::Restore, Msg::Discard],
+                )
+            }
+        };
+        egui::Modal::new(egui::Id::unique("question")).show(ctx, |ui| {
+            ui.heading(title);
+            ui.label(&text);
+            ui.separator();
+            ui.horizontal(|ui| {
+                for (i, b) in buttons.iter().enumerate() {
+                    if ui.button(t(*b)).clicked() {
+                        answer = Some(i);
+                    }
+                }
+            });
+            if ui.input(|i| i.key_pressed(egui::Key::Escape)) {
+                answer = Some(buttons.len() - 1);
+            }
+        });
+        let Some(answer) = answer else { return };
+        self.question = None;
+        match (q, answer) {
+            (Question::Unsaved { then }, 0) => {
+                self.after_save = Some(then);
+                self.save();
+            }
+            (Question::Unsaved { then }, 1) => self.perform(then),
+            (Question::Damaged { path, .. }, 0) => {
+                self.open_recovered(&path);
+            }
+            (Question::Restore(copy), 0) => self.restore(&copy),
+            (Question::Restore(copy), _) => remove_copy(&copy.copy),
+            _ => {}
+        }
+    }
+
+    /// File menu entries.
+    pub fn file_menu_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let item = |ui: &mut egui::Ui, m: Msg, keys: &str| {
+            let b = egui::Button::new(t(m));
+            let b = if keys.is_empty() {
+                b
+            } else {
+                b.shortcut_text(keys)
+            };
+            ui.add(b).clicked()
+        };
+        if item(ui, Msg::New, "Ctrl+N") {
+            self.request(Action::New);
+            ui.close();
+        }
+        if item(ui, Msg::Open, "Ctrl+O") {
+            self.request(Action::OpenDialog);
+            ui.close();
+        }
+        let has_doc = self.doc.is_some();
+        ui.add_enabled_ui(has_doc, |ui| {
+            if item(ui, Msg::Save, "Ctrl+S") {
+                self.save();
+                ui.close();
+            }
+            if item(ui, Msg::SaveAs, "") {
+                self.start_dialog(DialogKind::SaveProjectAs);
+                ui.close();
+            }
+            if item(ui, Msg::Close, "") {
+                self.request(Action::Close);
+                ui.close();
+            }
+            ui.separator();
+            if item(ui, Msg::ExportIl, "") {
+                self.start_dialog(DialogKind::ExportIl);
+                ui.close();
+            }
+            if item(ui, Msg::ExportComments, "") {
+                self.start_dialog(DialogKind::ExportComments);
+                ui.close();
+            }
+            if item(ui, Msg::ImportComments, "") {
+                self.start_dialog(DialogKind::ImportComments);
+                ui.close();
+            }
+        });
+        let recent = self.settings.recent.clone();
+        if !recent.is_empty() {
+            ui.separator();
+            for (i, p) in recent.into_iter().enumerate() {
+                if ui.button(format!("{} {}", i + 1, p.display())).clicked() {
+                    self.request(Action::Open(p));
+                    ui.close();
+                }
+            }
+        }
+        ui.separator();
+        if item(ui, Msg::Exit, "Alt+F4") {
+            self.request(Action::Exit);
+            ui.close();
+        }
+    }
+
+    /// Files dropped on the window are opened (the first project among them).
+    pub fn dropped_files(&mut self, ctx: &egui::Context) {
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_path_buf())
+                .filter(|p| !p.as_os_str().is_empty())
+                .collect()
+        });
+        if let Some(p) = dropped.into_iter().next() {
+            self.request(Action::Open(p));
+        }
+    }
+
+    /// The window's close button: asks about unsaved changes first.
+    pub fn close_requested(&mut self, ctx: &egui::Context) {
+        if !self.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
+            if self.doc.as_ref().is_some_and(|d| d.dirty) {
+                ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
+                self.question = Some(Question::Unsaved { then: Action::Exit });
+            } else {
+                self.drop_recovery_copy();
+            }
+        }
+    }
+}
