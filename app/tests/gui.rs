@@ -8,8 +8,10 @@ use ladder_studio::gui::tree::View;
 use std::path::PathBuf;
 
 fn harness(path: Option<PathBuf>, lang: Lang) -> Harness<'static, LadderApp> {
+    // Frames 1/60 s apart, as on a screen: two clicks a few frames apart are a double-click.
     Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
+        .with_step_dt(1.0 / 60.0)
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, path);
             app.settings.lang = lang;
@@ -386,7 +388,7 @@ fn closing_the_window_with_unsaved_changes_saves_them_first_when_asked() {
     h.run();
     assert!(!h.state().exit_confirmed, "the window stays while asking");
     h.get_by_label_contains("Save the changes to");
-    h.get_by_label("Save").click();
+    h.get_by_label("Save changes").click();
     h.run();
     assert!(h.state().exit_confirmed, "saved, then closed");
     let saved = ladder_engine::file::load(&path).unwrap();
@@ -546,4 +548,390 @@ fn export_il_and_comments_from_the_file_menu() {
     let csv = std::fs::read_to_string(&csv_path).unwrap();
     assert_eq!(csv, ladder_engine::comments::export(&project, None));
     assert!(csv.lines().count() > 10);
+}
+
+/// A project saved in a fresh file, opened in the editor (English).
+fn editor_on(il: &str, name: &str) -> (Harness<'static, LadderApp>, PathBuf) {
+    let dir = tempfile_dir();
+    let path = dir.join(name);
+    let p = ladder_engine::il::import(il).project.unwrap();
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path.clone()), Lang::En);
+    h.run();
+    (h, path)
+}
+
+/// The instructions the editor's project compiles to (directives kept, spaces folded).
+fn il_now(h: &Harness<'static, LadderApp>) -> Vec<String> {
+    let project = &h.state().doc.as_ref().unwrap().project;
+    ladder_engine::il::print(&ladder_engine::compiler::compile(project).program)
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect()
+}
+
+fn pointer(h: &mut Harness<'static, LadderApp>, p: egui::Pos2, button: egui::PointerButton) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+}
+
+fn cell_pos(h: &Harness<'static, LadderApp>, network: usize, row: usize, col: usize) -> egui::Pos2 {
+    h.state()
+        .geometry
+        .cell_center(network, row, col)
+        .expect("the cell is on screen")
+}
+
+/// Drags from one cell to another with the primary button.
+fn drag(h: &mut Harness<'static, LadderApp>, from: egui::Pos2, to: egui::Pos2) {
+    h.hover_at(from);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.step();
+    for i in 1..=6 {
+        let t = i as f32 / 6.0;
+        h.event(egui::Event::PointerMoved(from + (to - from) * t));
+        h.step();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+}
+
+const TWO_NETWORKS: &str =
+    "LEVEL2\nNETWORK\nLD X0002.1\nOUT Y0003.7\nNETWORK\nLD X0002.2\nOUT Y0003.6\n";
+
+#[test]
+fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(TWO_NETWORKS, "clip.ldp");
+    let header = cell_pos(&h, 0, 0, 3) - egui::vec2(0.0, 24.0);
+    pointer(&mut h, header, egui::PointerButton::Primary);
+    assert!(
+        matches!(
+            h.state().selection,
+            Some((
+                1,
+                ladder_studio::gui::selection::Selection::Networks { networks: (0, 0) }
+            ))
+        ),
+        "{:?}",
+        h.state().selection
+    );
+    h.get_by_label_contains("selected 1 Network");
+    h.key_press_modifiers(Modifiers::COMMAND, Key::C);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::V);
+    h.run();
+    assert_eq!(
+        il_now(&h),
+        [
+            "LEVEL1",
+            "LEVEL2",
+            "NETWORK",
+            "LD X0002.1",
+            "OUT Y0003.7",
+            "NETWORK",
+            "LD X0002.1",
+            "OUT Y0003.7",
+            "NETWORK",
+            "LD X0002.2",
+            "OUT Y0003.6",
+            "END"
+        ]
+    );
+    let ids: Vec<u64> = h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+        .networks
+        .iter()
+        .map(|n| n.id.0)
+        .collect();
+    assert!(ids[0] != ids[1], "the copy is a new network: {ids:?}");
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(il_now(&h).len(), 9, "one undo takes the paste back");
+    // Cut the second network: it goes, and comes back with Ctrl+V below the first.
+    let header2 = cell_pos(&h, 1, 0, 3) - egui::vec2(0.0, 24.0);
+    pointer(&mut h, header2, egui::PointerButton::Primary);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::X);
+    h.run();
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+            .networks
+            .len(),
+        1
+    );
+}
+
+#[test]
+fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(
+        "LEVEL2\nNETWORK\nLD X0002.1\nAND X0002.2\nOUT Y0003.7\n",
+        "cells.ldp",
+    );
+    let p = cell_pos(&h, 0, 0, 0);
+    pointer(&mut h, p, egui::PointerButton::Primary);
+    h.key_press_modifiers(Modifiers::SHIFT, Key::ArrowRight);
+    h.run();
+    assert!(matches!(
+        h.state().selection,
+        Some((
+            1,
+            ladder_studio::gui::selection::Selection::Cells {
+                network: 0,
+                rows: (0, 0),
+                cols: (0, 1)
+            }
+        ))
+    ));
+    h.key_press_modifiers(Modifiers::COMMAND, Key::X);
+    h.run();
+    let row0 = |h: &Harness<'static, LadderApp>| {
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].rows[0]
+            .cells
+            .clone()
+    };
+    assert_eq!(row0(&h)[0], ladder_engine::model::Cell::Empty);
+    assert_eq!(row0(&h)[1], ladder_engine::model::Cell::Empty);
+    h.key_press_modifiers(Modifiers::COMMAND, Key::V);
+    h.run();
+    assert_eq!(
+        il_now(&h)[3..6],
+        ["LD X0002.1", "AND X0002.2", "OUT Y0003.7"],
+        "pasted back where they were"
+    );
+    // Ctrl+E copies the row; Ctrl+V puts it below as a new row.
+    h.key_press_modifiers(Modifiers::COMMAND, Key::E);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::V);
+    h.run();
+    let rows = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0]
+        .rows
+        .clone();
+    assert_eq!(rows.len(), 2);
+    assert_eq!(rows[0], rows[1]);
+}
+
+#[test]
+fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
+    let (mut h, _) = editor_on("LEVEL2\nNETWORK\nLD X0002.1\nOUT Y0003.7\n", "pen.ldp");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::R); // a second row
+    h.run();
+    h.get_by_label("Draw lines").click();
+    h.run();
+    assert!(h.state().pen);
+    // A contact in the second row, first column, then a wire and a link to join it.
+    let c = cell_pos(&h, 0, 1, 0);
+    pointer(&mut h, c, egui::PointerButton::Primary);
+    h.key_press(egui::Key::F1);
+    enter_operand(&mut h, "X2.2");
+    let (a, z) = (cell_pos(&h, 0, 1, 1), cell_pos(&h, 0, 1, 3));
+    drag(&mut h, a, z);
+    let net = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].clone();
+    for col in 1..=3 {
+        assert_eq!(
+            net.rows[1].cells[col],
+            ladder_engine::model::Cell::Wire,
+            "col {col}"
+        );
+    }
+    let (a, z) = (cell_pos(&h, 0, 0, 4), cell_pos(&h, 0, 1, 4));
+    drag(&mut h, a, z);
+    let net = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].clone();
+    assert!(net.link(0, 4), "a link at the left edge of column 5");
+    assert_eq!(
+        il_now(&h)[3..7],
+        ["LD X0002.1", "OR X0002.2", "OUT Y0003.7", "END"],
+        "the drawn branch is a parallel contact"
+    );
+}
+
+#[test]
+fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
+    let (mut h, _) = editor_on(TWO_NETWORKS, "menu.ldp");
+    let p = cell_pos(&h, 1, 0, 0);
+    pointer(&mut h, p, egui::PointerButton::Secondary);
+    assert_eq!(
+        h.state().cursor.network,
+        1,
+        "the right click moved the cursor"
+    );
+    h.get_by_label_contains("Insert network above").click();
+    h.run();
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+            .networks
+            .len(),
+        3
+    );
+    assert!(
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[1].is_empty(),
+        "the new network is above the clicked one"
+    );
+    let p = cell_pos(&h, 2, 0, 0);
+    pointer(&mut h, p, egui::PointerButton::Secondary);
+    h.get_by_label("Delete network").click();
+    h.run();
+    assert_eq!(
+        il_now(&h)[3..5],
+        ["LD X0002.1", "OUT Y0003.7"],
+        "the second network went"
+    );
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+            .networks
+            .len(),
+        2
+    );
+}
+
+#[test]
+fn double_clicking_a_contact_edits_its_address() {
+    let (mut h, _) = editor_on(TWO_NETWORKS, "dbl.ldp");
+    let p = cell_pos(&h, 0, 0, 0);
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false, true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    h.run();
+    let prompt = h.state().prompt.clone().expect("the operand prompt opened");
+    assert_eq!(prompt.text, "X0002.1", "with the contact's address");
+    h.state_mut().prompt.as_mut().unwrap().text.clear();
+    enter_operand(&mut h, "X2.3");
+    assert_eq!(il_now(&h)[3], "LD X0002.3");
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].rows[0].cells[1],
+        ladder_engine::model::Cell::Wire,
+        "the wire right of it is untouched"
+    );
+}
+
+#[test]
+fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo() {
+    let (mut h, _) = editor_on(
+        "LEVEL2\nNETWORK\nLD X0002.1\nCALL P0007\nNETWORK\nCALLU P0007\n\
+         SUB P0007 \"LUBE\"\nNETWORK\nLD R0001.0\nOUT R0001.1\nEND\n",
+        "subs.ldp",
+    );
+    h.get_by_label("Tools").click();
+    h.run();
+    h.get_by_label("New subprogram…").click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Number name")
+        .type_text("5 SPINDLE");
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+    h.get_by_label("P0005 SPINDLE");
+    let blocks = h.state().doc.as_ref().unwrap().project.ladder.blocks.len();
+    assert_eq!(blocks, 4, "P0005 joins P0007");
+    assert_eq!(
+        h.state().view,
+        View::Block(2),
+        "the new subprogram is shown"
+    );
+    // A second one with the same number is refused with the reason.
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::NewSub);
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Number name")
+        .type_text("P5");
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+    let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    assert!(
+        h.state()
+            .prompt
+            .as_ref()
+            .and_then(|p| p.error.clone())
+            .unwrap_or_else(|| panic!("{out:?}"))
+            .contains("already exists")
+    );
+    h.key_press(egui::Key::Escape);
+    h.run();
+    // View calls.
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::ViewCalls(7));
+    h.run();
+    assert_eq!(h.state().output.last().unwrap().text, "P0007: 2 calls");
+    h.get_by_label_contains("LEVEL2 N0002 1:  CALLU P0007");
+    h.get_by_label_contains("LEVEL2 N0001 1:  CALL P0007");
+    // Rename.
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::RenameSub(2));
+    h.run();
+    assert_eq!(
+        h.state().prompt.as_ref().unwrap().text,
+        "5 SPINDLE",
+        "the prompt shows the current number and name"
+    );
+    h.state_mut().prompt.as_mut().unwrap().text = "5 SPINDLE_MAIN".into();
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+    h.get_by_label("P0005 SPINDLE_MAIN");
+    // Delete, and undo brings it back.
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::DeleteSub(2));
+    h.run();
+    assert!(h.query_by_label("P0005 SPINDLE_MAIN").is_none());
+    h.state_mut().undo();
+    h.run();
+    h.get_by_label("P0005 SPINDLE_MAIN");
+}
+
+#[test]
+fn typing_after_f1_completes_from_the_symbol_table() {
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
+    h.run();
+    h.key_press(egui::Key::F1);
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Operand")
+        .type_text("tool_t");
+    h.run();
+    h.get_by_label_contains("TOOL_T1  X0000.0  Tool station 1 sensor");
+    h.key_press(egui::Key::Tab);
+    h.run();
+    assert_eq!(h.state().prompt.as_ref().unwrap().text, "TOOL_T1");
+    h.key_press(egui::Key::Enter);
+    h.run();
+    let c = h.state().cursor;
+    let cell = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[c.network].rows[0]
+        .cells[0]
+        .clone();
+    assert_eq!(
+        cell,
+        ladder_engine::model::Cell::Contact {
+            negated: false,
+            operand: ladder_engine::model::Operand::Symbol("TOOL_T1".into())
+        }
+    );
 }

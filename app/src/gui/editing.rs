@@ -2,6 +2,7 @@
 //! the engine's edit operations and the document's history, so undo is exact.
 
 use super::i18n::Msg;
+use super::settings::DisplayMode;
 use super::tree::View;
 use super::{LadderApp, OutputLine};
 use egui::{Key, Modifiers};
@@ -35,6 +36,16 @@ pub enum PlaceKind {
     Replace,
     /// Ctrl+G: `NETWORK [ROW]` of the current block (1-based).
     GoTo,
+    /// The cursor's network title.
+    NetworkTitle,
+    /// The cursor's network comment.
+    NetworkComment,
+    /// A new subprogram: `NUMBER [NAME]`.
+    NewSub,
+    /// Renumber or rename subprogram block `0`: `NUMBER [NAME]`.
+    RenameSub(usize),
+    /// Block `0`'s information text.
+    BlockInfo(usize),
 }
 
 /// The open operand prompt.
@@ -47,6 +58,9 @@ pub struct Prompt {
     /// Why the last Enter was refused.
     pub error: Option<String>,
 }
+
+/// A basic-toolbar button: its name, its keys and what it does.
+type ToolbarAction = (Msg, &'static str, fn(&mut LadderApp));
 
 /// The cell cursor (UI state, never saved).
 pub type Cursor = CellRef;
@@ -255,6 +269,20 @@ impl LadderApp {
             PlaceKind::Find => return self.find(text),
             PlaceKind::Replace => return self.replace(text),
             PlaceKind::GoTo => return self.go_to(text),
+            PlaceKind::NetworkTitle => {
+                self.set_network_text(Some(text), None);
+                return Ok(());
+            }
+            PlaceKind::NetworkComment => {
+                self.set_network_text(None, Some(text));
+                return Ok(());
+            }
+            PlaceKind::NewSub => return self.new_subprogram(text),
+            PlaceKind::RenameSub(i) => return self.rename_subprogram(i, text),
+            PlaceKind::BlockInfo(i) => {
+                self.set_block_info(i, text);
+                return Ok(());
+            }
             _ => {}
         }
         let Some(at) = self.ensure_network() else {
@@ -284,7 +312,14 @@ impl LadderApp {
                     };
                 }
             }
-            PlaceKind::Find | PlaceKind::Replace | PlaceKind::GoTo => {}
+            PlaceKind::Find
+            | PlaceKind::Replace
+            | PlaceKind::GoTo
+            | PlaceKind::NetworkTitle
+            | PlaceKind::NetworkComment
+            | PlaceKind::NewSub
+            | PlaceKind::RenameSub(_)
+            | PlaceKind::BlockInfo(_) => {}
             PlaceKind::Coil { .. } | PlaceKind::Function => {
                 let cell = match kind {
                     PlaceKind::Coil { negated } => Cell::Coil {
@@ -317,11 +352,25 @@ impl LadderApp {
         Ok(())
     }
 
+    /// Shift+arrow: the selection grows from where it started to the moved cursor.
+    fn extend_by(&mut self, dr: i32, dc: i32) {
+        let selection = self.selection;
+        let from = self.cursor;
+        self.move_cursor(dr, dc);
+        let to = self.cursor;
+        self.selection = selection;
+        if selection.is_none() {
+            self.cursor = from;
+        }
+        self.extend_selection(to);
+    }
+
     fn move_cursor(&mut self, dr: i32, dc: i32) {
         let Some(block) = self.block() else { return };
         let mut c = self.cursor;
         c.block = block;
         let width = self.width() as i32;
+        self.selection = None;
         c.col = (c.col as i32 + dc).clamp(0, width) as usize;
         let rows = self.rows_of(block, c.network) as i32;
         let row = c.row as i32 + dr;
@@ -375,9 +424,26 @@ impl LadderApp {
         } else if key(Modifiers::NONE, Key::F5) {
             self.link();
         } else if key(Modifiers::NONE, Key::Delete) {
-            if let Some(at) = self.ensure_network() {
-                self.edit(|l| l.delete_element(at));
-            }
+            self.run_command(super::pointer::Command::Delete);
+        } else if key(Modifiers::COMMAND, Key::X)
+            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Cut)))
+        {
+            self.cut();
+            self.copy_to_system(ctx);
+        } else if key(Modifiers::COMMAND, Key::C)
+            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Copy)))
+        {
+            self.copy();
+            self.copy_to_system(ctx);
+        } else if key(Modifiers::COMMAND, Key::V)
+            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Paste(_))))
+        {
+            self.paste();
+        } else if key(Modifiers::COMMAND, Key::E) {
+            self.copy_row();
+            self.copy_to_system(ctx);
+        } else if key(Modifiers::NONE, Key::Escape) {
+            self.selection = None;
         } else if key(Modifiers::COMMAND, Key::T) {
             self.insert_row(false);
         } else if key(Modifiers::COMMAND, Key::R) {
@@ -402,6 +468,14 @@ impl LadderApp {
             self.request(super::files::Action::New);
         } else if key(Modifiers::COMMAND, Key::O) {
             self.request(super::files::Action::OpenDialog);
+        } else if key(Modifiers::SHIFT, Key::ArrowLeft) {
+            self.extend_by(0, -1);
+        } else if key(Modifiers::SHIFT, Key::ArrowRight) {
+            self.extend_by(0, 1);
+        } else if key(Modifiers::SHIFT, Key::ArrowUp) {
+            self.extend_by(-1, 0);
+        } else if key(Modifiers::SHIFT, Key::ArrowDown) {
+            self.extend_by(1, 0);
         } else if key(Modifiers::NONE, Key::ArrowLeft) {
             self.move_cursor(0, -1);
         } else if key(Modifiers::NONE, Key::ArrowRight) {
@@ -416,6 +490,59 @@ impl LadderApp {
     /// The ladder edit toolbar: each button does what its key does, at the cursor.
     pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
+        // The basic toolbar and the ladder view toolbar (manual §3.3).
+        ui.horizontal(|ui| {
+            let basic: [ToolbarAction; 10] = [
+                (Msg::New, "Ctrl+N", |a| a.request(super::files::Action::New)),
+                (Msg::Open, "Ctrl+O", |a| {
+                    a.request(super::files::Action::OpenDialog)
+                }),
+                (Msg::Save, "Ctrl+S", LadderApp::save),
+                (Msg::Cut, "Ctrl+X", LadderApp::cut),
+                (Msg::Copy, "Ctrl+C", |a| {
+                    a.copy();
+                }),
+                (Msg::Paste, "Ctrl+V", LadderApp::paste),
+                (Msg::Undo, "Ctrl+Z", LadderApp::undo),
+                (Msg::Redo, "Ctrl+Y", LadderApp::redo),
+                (Msg::GoTo, "Ctrl+G", |a| {
+                    a.prompt = Some(Prompt {
+                        kind: PlaceKind::GoTo,
+                        text: String::new(),
+                        error: None,
+                    })
+                }),
+                (Msg::Compile, "F9", LadderApp::compile),
+            ];
+            for (msg, keys, action) in basic {
+                if ui.button(msg.text(lang)).on_hover_text(keys).clicked() {
+                    action(self);
+                }
+            }
+            ui.separator();
+            egui::ComboBox::new("display", Msg::DisplayModeLabel.text(lang))
+                .selected_text(match self.settings.display {
+                    DisplayMode::Address => Msg::DisplayAddress.text(lang),
+                    DisplayMode::Symbol => Msg::DisplaySymbol.text(lang),
+                    DisplayMode::Both => Msg::DisplayBoth.text(lang),
+                })
+                .show_ui(ui, |ui| {
+                    for (mode, msg) in [
+                        (DisplayMode::Address, Msg::DisplayAddress),
+                        (DisplayMode::Symbol, Msg::DisplaySymbol),
+                        (DisplayMode::Both, Msg::DisplayBoth),
+                    ] {
+                        ui.selectable_value(&mut self.settings.display, mode, msg.text(lang));
+                    }
+                });
+            egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
+                .selected_text(format!("{}%", self.settings.zoom))
+                .show_ui(ui, |ui| {
+                    for z in super::settings::ZOOMS {
+                        ui.selectable_value(&mut self.settings.zoom, z, format!("{z}%"));
+                    }
+                });
+        });
         let open = |kind| {
             Some(Prompt {
                 kind,
@@ -437,6 +564,8 @@ impl LadderApp {
                 (Msg::ToolRowBelow, "Ctrl+R"),
                 (Msg::ToolNetworkBelow, "Ctrl+I"),
             ];
+            ui.toggle_value(&mut self.pen, Msg::PenShort.text(lang))
+                .on_hover_text(Msg::Pen.text(lang));
             for (msg, keys) in tools {
                 let button = ui.button(msg.text(lang)).on_hover_text(keys);
                 if !button.clicked() {
@@ -568,12 +697,32 @@ impl LadderApp {
         };
         let lang = self.settings.lang;
         let mut close = false;
+        let label = match prompt.kind {
+            PlaceKind::NetworkTitle => Msg::TitlePrompt,
+            PlaceKind::NetworkComment => Msg::CommentPrompt,
+            PlaceKind::NewSub | PlaceKind::RenameSub(_) => Msg::SubPrompt,
+            PlaceKind::BlockInfo(_) => Msg::BlockInfoPrompt,
+            _ => Msg::Operand,
+        };
+        let completes = matches!(
+            prompt.kind,
+            PlaceKind::Contact { .. } | PlaceKind::Coil { .. } | PlaceKind::Parallel { .. }
+        );
+        let suggestions = if completes {
+            self.suggestions(&prompt.text)
+        } else {
+            Vec::new()
+        };
+        // Tab takes the first suggestion (before the text field sees the key).
+        if !suggestions.is_empty() && ui.input_mut(|i| i.consume_key(Modifiers::NONE, Key::Tab)) {
+            prompt.text = suggestions[0].0.clone();
+        }
         ui.horizontal(|ui| {
-            let label = ui.label(Msg::Operand.text(lang));
+            let label = ui.label(label.text(lang));
             let r = ui
                 .add(
                     egui::TextEdit::singleline(&mut prompt.text)
-                        .hint_text("X0002.1")
+                        .hint_text(if completes { "X0002.1" } else { "" })
                         .desired_width(280.0),
                 )
                 .labelled_by(label.id);
@@ -591,8 +740,63 @@ impl LadderApp {
                 }
             }
         });
+        if !suggestions.is_empty() && !close {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(Msg::Suggestions.text(lang));
+                for (name, shown) in &suggestions {
+                    if ui.small_button(shown).clicked() {
+                        prompt.text = name.clone();
+                    }
+                }
+            });
+        }
         if !close {
             self.prompt = Some(prompt);
         }
+    }
+
+    /// Symbols for what has been typed: names starting with it first, then names or comments
+    /// containing it; an address typed in full shows its symbol. Up to eight, as (text to
+    /// enter, text shown).
+    pub fn suggestions(&self, typed: &str) -> Vec<(String, String)> {
+        let typed = typed.trim();
+        let Some(doc) = self.doc.as_ref().filter(|_| !typed.is_empty()) else {
+            return Vec::new();
+        };
+        let project = &doc.project;
+        let lang = self.settings.lang.code();
+        let lower = typed.to_lowercase();
+        let shown = |s: &ladder_engine::model::Symbol| {
+            let comment = s.comments.get(lang).map_or("", String::as_str);
+            format!("{}  {}  {comment}", s.name, s.address)
+                .trim_end()
+                .to_string()
+        };
+        if let Ok(Operand::Addr(a)) = Operand::parse(typed) {
+            return project
+                .symbols()
+                .filter(|s| s.address == a && !s.name.is_empty())
+                .take(1)
+                .map(|s| (a.to_string(), shown(s)))
+                .collect();
+        }
+        let named = || project.symbols().filter(|s| !s.name.is_empty());
+        let mut out: Vec<(String, String)> = named()
+            .filter(|s| s.name.to_lowercase().starts_with(&lower))
+            .map(|s| (s.name.clone(), shown(s)))
+            .collect();
+        out.extend(
+            named()
+                .filter(|s| {
+                    !s.name.to_lowercase().starts_with(&lower)
+                        && (s.name.to_lowercase().contains(&lower)
+                            || s.comments
+                                .values()
+                                .any(|c| c.to_lowercase().contains(&lower)))
+                })
+                .map(|s| (s.name.clone(), shown(s))),
+        );
+        out.truncate(8);
+        out
     }
 }

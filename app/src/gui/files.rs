@@ -645,7 +645,7 @@ impl LadderApp {
                 (
                     t(Msg::UnsavedTitle),
                     format!("{} “{name}”?", t(Msg::SaveChangesTo)),
-                    vec![Msg::Save, Msg::DontSave, Msg::Cancel],
+                    vec![Msg::SaveChanges, Msg::DontSave, Msg::Cancel],
                 )
             }
             Question::Damaged { path, error } => (

@@ -2,14 +2,49 @@
 //! and function boxes. Only the networks inside the visible part are laid out and painted, so
 //! a 5000-step program scrolls as smoothly as a small one.
 
+use super::selection::Selection;
 use super::settings::DisplayMode;
 use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, StrokeKind, pos2, vec2};
 use ladder_engine::model::{Cell, Network, Operand, Project};
 
 /// Operand colours (manual §3.4.3.3): a symbol mapped to an address is blue, an undefined one
-/// red.
+/// red, an operand of the wrong type for its place (a byte address on a contact, an area the
+/// instruction does not take) orange.
 const MAPPED: Color32 = Color32::from_rgb(0x1f, 0x4f, 0xd0);
 const UNDEFINED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x20);
+/// Wrong type (see [`MAPPED`]).
+pub const WRONG_TYPE: Color32 = Color32::from_rgb(0xe0, 0x80, 0x00);
+/// The fill of selected cells, rows and networks.
+const SELECTED: Color32 = Color32::from_rgb(0xcc, 0xe0, 0xff);
+
+/// Where an operand stands, for its type check.
+#[derive(Clone, Copy, Debug)]
+pub enum Place {
+    /// On a contact or coil: a bit.
+    Bit,
+    /// Operand `i` of a function instruction.
+    Box(ladder_engine::Op, usize),
+}
+
+/// Whether an operand has the type its place needs (undefined symbols are not wrong-typed:
+/// they are red).
+fn right_type(project: &Project, o: &Operand, place: Place, operands: &[Operand]) -> bool {
+    match place {
+        Place::Bit => match o {
+            Operand::Addr(a) => a.bit.is_some(),
+            Operand::Symbol(name) => project.resolve_symbol(name).is_none_or(|a| a.bit.is_some()),
+            _ => false,
+        },
+        Place::Box(op, i) => {
+            if let Operand::Symbol(name) = o
+                && project.resolve_symbol(name).is_none()
+            {
+                return true;
+            }
+            ladder_engine::compiler::check::operand_ok(op, operands, i, project.profile())
+        }
+    }
+}
 
 /// Sizes at a zoom.
 #[derive(Clone, Copy, Debug)]
@@ -26,6 +61,8 @@ pub struct Metrics {
     pub header: f32,
     /// Font size.
     pub font: f32,
+    /// Left of the left rail: row numbers, and where a click selects a whole row.
+    pub margin: f32,
 }
 
 impl Metrics {
@@ -39,6 +76,7 @@ impl Metrics {
             line: 14.0 * z,
             header: 22.0 * z,
             font: 11.0 * z,
+            margin: 26.0 * z,
         }
     }
 
@@ -67,8 +105,24 @@ impl Metrics {
     }
 }
 
-/// How an operand is written and coloured in the current display mode.
-pub fn operand_text(project: &Project, o: &Operand, mode: DisplayMode) -> (String, Color32) {
+/// How an operand is written and coloured in the current display mode, orange when it has
+/// the wrong type for its place.
+pub fn operand_text(
+    project: &Project,
+    o: &Operand,
+    mode: DisplayMode,
+    place: Place,
+    operands: &[Operand],
+) -> (String, Color32) {
+    let (text, color) = plain_operand_text(project, o, mode);
+    if color != UNDEFINED && !right_type(project, o, place, operands) {
+        (text, WRONG_TYPE)
+    } else {
+        (text, color)
+    }
+}
+
+fn plain_operand_text(project: &Project, o: &Operand, mode: DisplayMode) -> (String, Color32) {
     match o {
         Operand::Symbol(name) => match project.resolve_symbol(name) {
             Some(a) => match mode {
@@ -134,7 +188,7 @@ fn network_ui(
         );
         y += m.header;
     }
-    let rail_x = origin.x + 8.0;
+    let rail_x = origin.x + m.margin;
     let col_x = |c: usize| rail_x + c as f32 * m.cell;
     let right_rail = col_x(width) + m.output + 8.0;
     let top = y;
@@ -180,7 +234,13 @@ fn network_ui(
                             wire,
                         );
                     }
-                    let (text, color) = operand_text(project, operand, mode);
+                    let (text, color) = operand_text(
+                        project,
+                        operand,
+                        mode,
+                        Place::Bit,
+                        std::slice::from_ref(operand),
+                    );
                     painter.text(
                         pos2(cx, mid - h - 2.0),
                         Align2::CENTER_BOTTOM,
@@ -204,7 +264,13 @@ fn network_ui(
                         );
                     }
                     painter.line_segment([pos2(cx + rad, mid), pos2(right_rail, mid)], wire);
-                    let (text, color) = operand_text(project, operand, mode);
+                    let (text, color) = operand_text(
+                        project,
+                        operand,
+                        mode,
+                        Place::Bit,
+                        std::slice::from_ref(operand),
+                    );
                     painter.text(
                         pos2(cx, mid - rad - 2.0),
                         Align2::CENTER_BOTTOM,
@@ -231,7 +297,8 @@ fn network_ui(
                     );
                     for (i, o) in operands.iter().enumerate() {
                         let name = op.spec().operand(i).map_or("", |s| s.name);
-                        let (text, color) = operand_text(project, o, mode);
+                        let (text, color) =
+                            operand_text(project, o, mode, Place::Box(*op, i), operands);
                         let p = rect.left_top() + vec2(4.0, m.line * (i as f32 + 1.0) + 2.0);
                         painter.text(
                             p,
@@ -277,13 +344,15 @@ pub struct Geometry {
     pub output: f32,
     /// Contact columns.
     pub width: usize,
+    /// Width of the left margin.
+    pub margin: f32,
 }
 
 impl Geometry {
     /// The screen centre of a cell.
     pub fn cell_center(&self, network: usize, row: usize, col: usize) -> Option<Pos2> {
         let top = self.origin.y + self.tops.get(network)? + self.rows.get(network)?.get(row)?;
-        let x = self.origin.x + 8.0 + col as f32 * self.cell;
+        let x = self.origin.x + self.margin + col as f32 * self.cell;
         let w = if col >= self.width {
             self.output
         } else {
@@ -304,6 +373,8 @@ pub struct ViewOptions {
     pub comments: bool,
     /// The cursor's (network, row, column) in this block.
     pub cursor: Option<(usize, usize, usize)>,
+    /// The selection in this block.
+    pub selection: Option<Selection>,
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
@@ -323,31 +394,98 @@ fn row_tops(net: &Network, m: &Metrics, comments: bool) -> Vec<f32> {
         .collect()
 }
 
-/// Which cell a point in network `n` (drawn at `origin`) falls on.
-fn cell_at(
+/// Where a point of the ladder view falls.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Hit {
+    /// A cell.
+    Cell {
+        /// Network.
+        network: usize,
+        /// Row.
+        row: usize,
+        /// Column (the output column is `width`).
+        col: usize,
+    },
+    /// A network's title line (selects the network).
+    Header {
+        /// Network.
+        network: usize,
+    },
+    /// The margin left of the rail (selects the row).
+    Margin {
+        /// Network.
+        network: usize,
+        /// Row.
+        row: usize,
+    },
+}
+
+impl Hit {
+    /// The network hit.
+    pub fn network(self) -> usize {
+        match self {
+            Hit::Cell { network, .. } | Hit::Header { network } | Hit::Margin { network, .. } => {
+                network
+            }
+        }
+    }
+}
+
+/// What the pointer did in the ladder view this frame.
+#[derive(Clone, Debug, Default)]
+pub struct ViewEvents {
+    /// A primary click, and the modifiers held.
+    pub click: Option<(Hit, egui::Modifiers)>,
+    /// A double click.
+    pub double_click: Option<Hit>,
+    /// A drag started this frame, where the button went down.
+    pub drag_start: Option<Hit>,
+    /// Where a drag in progress (or ending) is now.
+    pub drag_now: Option<Hit>,
+    /// The drag ended this frame.
+    pub drag_done: bool,
+    /// A secondary (right) click.
+    pub secondary: Option<Hit>,
+    /// The view's response, for its context menu.
+    pub response: Option<egui::Response>,
+}
+
+/// What a point in network `net` (drawn at `origin`) falls on.
+fn hit_in(
     project: &Project,
     net: &Network,
+    index: usize,
     origin: Pos2,
     p: Pos2,
     m: &Metrics,
     comments: bool,
-) -> Option<(usize, usize)> {
-    let col = ((p.x - origin.x - 8.0) / m.cell).floor();
-    if col < 0.0 {
-        return None;
-    }
-    let col = (col as usize).min(project.ladder.width);
+) -> Option<Hit> {
     let tops = row_tops(net, m, comments);
-    (0..net.rows.len())
-        .find(|r| {
-            let top = origin.y + tops[*r];
-            p.y >= top && p.y < top + m.row_height(&net.rows[*r].cells)
-        })
-        .map(|r| (r, col))
+    let first = tops.first().copied().unwrap_or(m.header);
+    if p.y < origin.y + first {
+        return Some(Hit::Header { network: index });
+    }
+    let row = (0..net.rows.len()).find(|r| {
+        let top = origin.y + tops[*r];
+        p.y >= top && p.y < top + m.row_height(&net.rows[*r].cells)
+    })?;
+    let x = p.x - origin.x - m.margin;
+    if x < 0.0 {
+        return Some(Hit::Margin {
+            network: index,
+            row,
+        });
+    }
+    let col = ((x / m.cell).floor() as usize).min(project.ladder.width);
+    Some(Hit::Cell {
+        network: index,
+        row,
+        col,
+    })
 }
 
 /// Draws block `block` of the project, scrolled; `jump_to` scrolls a network into view once.
-/// Returns the (network, row, column) of a cell the user clicked.
+/// Returns what the pointer did.
 pub fn block_ui(
     ui: &mut egui::Ui,
     project: &Project,
@@ -355,8 +493,10 @@ pub fn block_ui(
     opts: &ViewOptions,
     jump_to: &mut Option<usize>,
     geometry: &mut Geometry,
-) -> Option<(usize, usize, usize)> {
-    let b = project.ladder.blocks.get(block)?;
+) -> ViewEvents {
+    let Some(b) = project.ladder.blocks.get(block) else {
+        return ViewEvents::default();
+    };
     let (zoom, mode, comments) = (opts.zoom, opts.mode, opts.comments);
     let m = Metrics::at(zoom);
     // Offsets of every network: plain arithmetic over the model, no layout or text.
@@ -368,36 +508,51 @@ pub fn block_ui(
         y += h;
     }
     let total = vec2(
-        m.cell * project.ladder.width as f32 + m.output + 40.0,
+        m.margin + m.cell * project.ladder.width as f32 + m.output + 40.0,
         y.max(1.0),
     );
     let style = Style { m, mode, comments };
     egui::ScrollArea::both()
         .auto_shrink([false, false])
         .show_viewport(ui, |ui, viewport| {
-            let (rect, response) = ui.allocate_exact_size(total, Sense::click());
+            let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
             geometry.origin = rect.min;
             geometry.cell = m.cell;
             geometry.output = m.output;
             geometry.width = project.ladder.width;
+            geometry.margin = m.margin;
             geometry.tops = placed.iter().map(|p| p.top).collect();
             geometry.rows = b
                 .networks
                 .iter()
                 .map(|n| row_tops(n, &m, comments))
                 .collect();
-            let mut clicked = None;
-            if let Some(p) = response
-                .interact_pointer_pos()
-                .filter(|_| response.clicked())
-            {
+            let hit = |p: Pos2| {
                 let y = p.y - rect.min.y;
                 let i = placed.partition_point(|q| q.top + q.height <= y);
-                if let Some(q) = placed.get(i) {
-                    let origin = rect.min + vec2(0.0, q.top);
-                    clicked = cell_at(project, &b.networks[i], origin, p, &m, comments)
-                        .map(|(r, c)| (i, r, c));
-                }
+                let q = placed.get(i)?;
+                let origin = rect.min + vec2(0.0, q.top);
+                hit_in(project, &b.networks[i], i, origin, p, &m, comments)
+            };
+            let mut events = ViewEvents::default();
+            let pointer = response.interact_pointer_pos();
+            if response.clicked() {
+                let mods = ui.input(|i| i.modifiers);
+                events.click = pointer.and_then(hit).map(|h| (h, mods));
+            }
+            if response.double_clicked() {
+                events.double_click = pointer.and_then(hit);
+            }
+            if response.secondary_clicked() {
+                events.secondary = pointer.and_then(hit);
+            }
+            if response.drag_started() {
+                events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(hit);
+            }
+            if response.dragged() || response.drag_stopped() {
+                let now = pointer.or_else(|| ui.input(|i| i.pointer.latest_pos()));
+                events.drag_now = now.and_then(hit);
+                events.drag_done = response.drag_stopped();
             }
             let painter = ui.painter_at(rect);
             // Black on white, like a printed ladder, whatever the UI theme.
@@ -419,6 +574,18 @@ pub fn block_ui(
                     break;
                 }
                 let origin = rect.min + vec2(0.0, p.top);
+                if let Some(sel) = opts.selection {
+                    selection_ui(
+                        &painter,
+                        &b.networks[i],
+                        i,
+                        origin,
+                        p.height,
+                        total.x,
+                        &sel,
+                        &style,
+                    );
+                }
                 network_ui(&painter, project, &b.networks[i], i, origin, &style);
                 if let Some((cn, cr, cc)) = opts.cursor
                     && cn == i
@@ -439,9 +606,52 @@ pub fn block_ui(
                     Stroke::new(0.5, Color32::from_gray(200)),
                 );
             }
-            clicked
+            events.response = Some(response);
+            events
         })
         .inner
+}
+
+/// Fills what is selected in network `index`.
+#[allow(clippy::too_many_arguments)] // One painter call site; a struct would only rename them.
+fn selection_ui(
+    painter: &egui::Painter,
+    net: &Network,
+    index: usize,
+    origin: Pos2,
+    height: f32,
+    width: f32,
+    sel: &Selection,
+    style: &Style,
+) {
+    let m = &style.m;
+    if sel.covers_network(index) {
+        painter.rect_filled(
+            Rect::from_min_size(origin, vec2(width, height - 2.0)),
+            0.0,
+            SELECTED,
+        );
+        return;
+    }
+    let tops = row_tops(net, m, style.comments);
+    for (r, row) in net.rows.iter().enumerate() {
+        let h = m.row_height(&row.cells);
+        for c in 0..row.cells.len() {
+            if sel.contains(index, r, c) {
+                let x = origin.x + m.margin + c as f32 * m.cell;
+                let w = if c + 1 == row.cells.len() {
+                    m.output
+                } else {
+                    m.cell
+                };
+                painter.rect_filled(
+                    Rect::from_min_size(pos2(x, origin.y + tops[r]), vec2(w, h)),
+                    0.0,
+                    SELECTED,
+                );
+            }
+        }
+    }
 }
 
 /// Outlines the cursor's cell.
@@ -461,7 +671,7 @@ fn cursor_ui(
             .copied()
             .unwrap_or(m.header);
     let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
-    let x = origin.x + 8.0 + col as f32 * m.cell;
+    let x = origin.x + m.margin + col as f32 * m.cell;
     let w = if col >= width { m.output } else { m.cell };
     let rect = Rect::from_min_size(pos2(x, y), vec2(w, h));
     painter.rect_stroke(
@@ -470,4 +680,49 @@ fn cursor_ui(
         Stroke::new(2.0, Color32::from_rgb(0x20, 0x60, 0xff)),
         StrokeKind::Inside,
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn operands_are_blue_red_or_orange_as_the_manual_says() {
+        let mut p = Project::default();
+        p.symbol_tables[0].rows.push(ladder_engine::model::Symbol {
+            name: "START".into(),
+            address: ladder_engine::Address::parse("X0002.1").unwrap(),
+            comments: Default::default(),
+        });
+        p.symbol_tables[0].rows.push(ladder_engine::model::Symbol {
+            name: "SPEED".into(),
+            address: ladder_engine::Address::parse("D0010").unwrap(),
+            comments: Default::default(),
+        });
+        let o = |t: &str| Operand::parse(t).unwrap();
+        let bit = |t: &str| operand_text(&p, &o(t), DisplayMode::Address, Place::Bit, &[o(t)]);
+        assert_eq!(bit("START"), ("X0002.1".into(), MAPPED));
+        assert_eq!(bit("NOWHERE"), ("NOWHERE".into(), UNDEFINED));
+        assert_eq!(bit("X0002.1").1, Color32::BLACK);
+        assert_eq!(bit("R0010").1, WRONG_TYPE, "a byte on a contact");
+        assert_eq!(
+            bit("SPEED").1,
+            WRONG_TYPE,
+            "a symbol of a byte on a contact"
+        );
+        let tmrb = [o("T0000"), o("DT0004"), o("R0300.0")];
+        let boxed = |i: usize, ops: &[Operand]| {
+            operand_text(
+                &p,
+                &ops[i],
+                DisplayMode::Address,
+                Place::Box(ladder_engine::Op::Tmrb, i),
+                ops,
+            )
+            .1
+        };
+        assert_eq!(boxed(0, &tmrb), Color32::BLACK);
+        let wrong = [o("Y0001.0"), o("DT0004"), o("R0300.0")];
+        assert_eq!(boxed(0, &wrong), WRONG_TYPE, "TMRB takes a T address first");
+    }
 }

@@ -8,6 +8,8 @@ pub mod fonts;
 pub mod function_dialog;
 pub mod i18n;
 pub mod ladder_view;
+pub mod pointer;
+pub mod selection;
 pub mod settings;
 pub mod tables;
 pub mod tree;
@@ -15,6 +17,7 @@ pub mod tree;
 use document::Document;
 use i18n::{Lang, Msg};
 use ladder_engine::compiler::{Origin, Severity};
+use ladder_engine::model;
 use settings::{DisplayMode, Settings};
 use std::path::{Path, PathBuf};
 use tree::View;
@@ -69,6 +72,27 @@ pub struct LadderApp {
     pub last_autosave: Option<std::time::Instant>,
     /// The egui context, for starting dialogs outside a frame's closures.
     pub ctx: Option<egui::Context>,
+    /// The selection (block, what), if any.
+    pub selection: Option<(usize, selection::Selection)>,
+    /// What Ctrl+C, Ctrl+X or Ctrl+E put aside.
+    pub clipboard: Option<selection::Clip>,
+    /// Dragging draws wires and links instead of selecting cells.
+    pub pen: bool,
+    /// The open Help window.
+    pub help: Option<HelpPage>,
+    /// Where the drag in progress in the ladder view started.
+    pub drag_from: Option<ladder_view::Hit>,
+}
+
+/// A Help window.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HelpPage {
+    /// The keys.
+    Shortcuts,
+    /// Every instruction with its operands, from the catalogue.
+    Instructions,
+    /// Version and licence.
+    About,
 }
 
 impl LadderApp {
@@ -97,6 +121,11 @@ impl LadderApp {
             recovery_dir: None,
             last_autosave: None,
             ctx: None,
+            selection: None,
+            clipboard: None,
+            pen: false,
+            help: None,
+            drag_from: None,
         };
         let start = path
             .map(Path::to_path_buf)
@@ -180,6 +209,7 @@ impl LadderApp {
     fn menu_ui(&mut self, ui: &mut egui::Ui) {
         egui::MenuBar::new().ui(ui, |ui| {
             ui.menu_button(self.t(Msg::File), |ui| self.file_menu_ui(ui));
+            ui.menu_button(self.t(Msg::Edit), |ui| self.edit_menu_ui(ui));
             ui.menu_button(self.t(Msg::View), |ui| {
                 ui.label(self.t(Msg::Language));
                 if ui.button(Msg::Chinese.text(self.settings.lang)).clicked() {
@@ -210,6 +240,14 @@ impl LadderApp {
                 {
                     self.settings.show_comments = comments;
                 }
+                ui.separator();
+                let lang = self.settings.lang;
+                let s = &mut self.settings;
+                ui.checkbox(&mut s.show_tree, Msg::ProjectWindow.text(lang));
+                ui.checkbox(&mut s.show_output, Msg::OutputWindow.text(lang));
+                ui.checkbox(&mut s.show_toolbar, Msg::ToolbarView.text(lang));
+                ui.checkbox(&mut s.show_status, Msg::StatusBar.text(lang));
+                ui.separator();
                 if ui.button(self.t(Msg::ZoomIn)).clicked() {
                     self.settings.step_zoom(true);
                 }
@@ -219,14 +257,227 @@ impl LadderApp {
             });
             ui.menu_button(self.t(Msg::Plc), |ui| {
                 if ui
-                    .button(format!("{}    F9", self.t(Msg::Compile)))
+                    .add(egui::Button::new(self.t(Msg::Compile)).shortcut_text("F9"))
                     .clicked()
                 {
                     self.compile();
                     ui.close();
                 }
             });
+            ui.menu_button(self.t(Msg::Tools), |ui| self.tools_menu_ui(ui));
+            ui.menu_button(self.t(Msg::Help), |ui| {
+                for (page, msg) in [
+                    (HelpPage::Shortcuts, Msg::Shortcuts),
+                    (HelpPage::Instructions, Msg::InstructionHelp),
+                    (HelpPage::About, Msg::About),
+                ] {
+                    if ui.button(self.t(msg)).clicked() {
+                        self.help = Some(page);
+                        ui.close();
+                    }
+                }
+            });
         });
+    }
+
+    /// Runs what the project tree's right-click menu asked for.
+    pub fn tree_action(&mut self, action: tree::TreeAction) {
+        use tree::TreeAction;
+        let prompt = |kind, text: String| {
+            Some(editing::Prompt {
+                kind,
+                text,
+                error: None,
+            })
+        };
+        let block = |i: usize| {
+            self.doc
+                .as_ref()
+                .and_then(|d| d.project.ladder.blocks.get(i))
+                .cloned()
+        };
+        match action {
+            TreeAction::NewSub => self.prompt = prompt(editing::PlaceKind::NewSub, String::new()),
+            TreeAction::RenameSub(i) => {
+                if let Some(b) = block(i)
+                    && let model::BlockKind::Sub { number, name } = &b.kind
+                {
+                    self.prompt = prompt(
+                        editing::PlaceKind::RenameSub(i),
+                        format!("{number} {name}").trim().to_string(),
+                    );
+                }
+            }
+            TreeAction::DeleteSub(i) => self.delete_subprogram(i),
+            TreeAction::BlockInfo(i) => {
+                if let Some(b) = block(i) {
+                    self.prompt = prompt(editing::PlaceKind::BlockInfo(i), b.info.clone());
+                }
+            }
+            TreeAction::ViewCalls(n) => self.view_calls(n),
+        }
+    }
+
+    fn edit_menu_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let (can_undo, can_redo) = self.doc.as_ref().map_or((false, false), |d| {
+            (d.history.undo_len() > 0, d.history.redo_len() > 0)
+        });
+        if ui
+            .add_enabled(
+                can_undo,
+                egui::Button::new(t(Msg::Undo)).shortcut_text("Ctrl+Z"),
+            )
+            .clicked()
+        {
+            self.undo();
+            ui.close();
+        }
+        if ui
+            .add_enabled(
+                can_redo,
+                egui::Button::new(t(Msg::Redo)).shortcut_text("Ctrl+Y"),
+            )
+            .clicked()
+        {
+            self.redo();
+            ui.close();
+        }
+        ui.separator();
+        let open = |kind| {
+            Some(editing::Prompt {
+                kind,
+                text: String::new(),
+                error: None,
+            })
+        };
+        for (msg, keys, kind) in [
+            (Msg::Find, "Ctrl+F", editing::PlaceKind::Find),
+            (Msg::Replace, "Ctrl+H", editing::PlaceKind::Replace),
+            (Msg::GoTo, "Ctrl+G", editing::PlaceKind::GoTo),
+        ] {
+            if ui
+                .add(egui::Button::new(t(msg)).shortcut_text(keys))
+                .clicked()
+            {
+                self.prompt = open(kind);
+                ui.close();
+            }
+        }
+        if let View::Block(b) = self.view {
+            if let Some(number) = self
+                .doc
+                .as_ref()
+                .and_then(|d| d.project.ladder.blocks.get(b))
+                .and_then(|b| b.kind.sub_number())
+                && ui.button(t(Msg::ViewCalls)).clicked()
+            {
+                self.view_calls(number);
+                ui.close();
+            }
+            ui.separator();
+            self.commands_ui(ui);
+        }
+    }
+
+    fn tools_menu_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        for (view, msg) in [
+            (View::RefIndex, Msg::RefIndex),
+            (View::RefBits, Msg::RefBits),
+            (View::RefBytes, Msg::RefBytes),
+        ] {
+            if ui
+                .button(format!("{}: {}", t(Msg::Reference), t(msg)))
+                .clicked()
+            {
+                self.view = view;
+                ui.close();
+            }
+        }
+        ui.separator();
+        if ui.button(t(Msg::NewSub)).clicked() {
+            self.prompt = Some(editing::Prompt {
+                kind: editing::PlaceKind::NewSub,
+                text: String::new(),
+                error: None,
+            });
+            ui.close();
+        }
+    }
+
+    /// The Help windows.
+    fn help_ui(&mut self, ctx: &egui::Context) {
+        let Some(page) = self.help else { return };
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let title = match page {
+            HelpPage::Shortcuts => t(Msg::Shortcuts),
+            HelpPage::Instructions => t(Msg::InstructionHelp),
+            HelpPage::About => t(Msg::About),
+        };
+        let mut open = true;
+        egui::Window::new(title)
+            .open(&mut open)
+            .default_size([520.0, 480.0])
+            .vscroll(true)
+            .show(ctx, |ui| match page {
+                HelpPage::About => {
+                    ui.heading(format!("Ladder Studio {}", env!("CARGO_PKG_VERSION")));
+                    ui.label(t(Msg::AboutText));
+                    ui.label(env!("CARGO_PKG_LICENSE"));
+                }
+                HelpPage::Shortcuts => {
+                    egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
+                        let mut row = |keys: &str, what: &str| {
+                            ui.monospace(keys);
+                            ui.label(what);
+                            ui.end_row();
+                        };
+                        for group in pointer::Command::GROUPS {
+                            for c in group {
+                                let (msg, keys) = c.label();
+                                if !keys.is_empty() {
+                                    row(keys, t(msg));
+                                }
+                            }
+                        }
+                        row("Ctrl+Z", t(Msg::Undo));
+                        row("Ctrl+Y", t(Msg::Redo));
+                        row("Ctrl+F", t(Msg::Find));
+                        row("Ctrl+H", t(Msg::Replace));
+                        row("Ctrl+G", t(Msg::GoTo));
+                        row("F9", t(Msg::Compile));
+                        row("Ctrl+N", t(Msg::New));
+                        row("Ctrl+O", t(Msg::Open));
+                        row("Ctrl+S", t(Msg::Save));
+                        row("Shift+←↑→↓", t(Msg::Selected));
+                    });
+                }
+                HelpPage::Instructions => {
+                    for spec in ladder_engine::catalog::CATALOG.iter() {
+                        let (help, cat) = match lang {
+                            Lang::Zh => (spec.help_zh, spec.category.name_zh()),
+                            Lang::En => (spec.help_en, spec.category.name_en()),
+                        };
+                        ui.collapsing(format!("{}  ({cat})", spec.name), |ui| {
+                            ui.label(help);
+                            for o in spec.operands {
+                                let h = match lang {
+                                    Lang::Zh => o.help_zh,
+                                    Lang::En => o.help_en,
+                                };
+                                ui.label(format!("{}: {h}", o.name));
+                            }
+                        });
+                    }
+                }
+            });
+        if !open {
+            self.help = None;
+        }
     }
 
     fn main_ui(&mut self, ui: &mut egui::Ui) {
@@ -243,7 +494,8 @@ impl LadderApp {
                     self.cursor.row,
                     self.cursor.col,
                 ));
-                let clicked = ladder_view::block_ui(
+                let selection = self.selection.and_then(|(sb, s)| (sb == b).then_some(s));
+                let events = ladder_view::block_ui(
                     ui,
                     project,
                     b,
@@ -252,18 +504,12 @@ impl LadderApp {
                         mode: self.settings.display,
                         comments: self.settings.show_comments,
                         cursor,
+                        selection,
                     },
                     &mut self.jump_to,
                     &mut self.geometry,
                 );
-                if let Some((network, row, col)) = clicked {
-                    self.cursor = editing::Cursor {
-                        block: b,
-                        network,
-                        row,
-                        col,
-                    };
-                }
+                self.pointer_events(b, events);
             }
             View::RefIndex | View::RefBits | View::RefBytes => {
                 let x = ladder_engine::xref::build(project);
@@ -306,19 +552,66 @@ impl LadderApp {
 
     fn status_ui(&self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
         let Some(doc) = &self.doc else { return };
-        let name = doc
-            .name()
-            .unwrap_or_else(|| Msg::Untitled.text(lang).into());
+        let name = doc.name().unwrap_or_else(|| t(Msg::Untitled).into());
         let steps = doc.compiled.as_ref().map(|c| c.steps.total);
         ui.horizontal(|ui| {
             ui.label(name);
             if doc.dirty {
-                ui.label(Msg::Modified.text(lang));
+                ui.label(t(Msg::Modified));
+            }
+            ui.separator();
+            ui.label(if doc.read_only {
+                t(Msg::ModeReadOnly)
+            } else {
+                t(Msg::ModeEdit)
+            });
+            if let View::Block(b) = self.view {
+                let c = self.cursor;
+                let label = doc
+                    .project
+                    .ladder
+                    .blocks
+                    .get(b)
+                    .map_or(String::new(), |b| b.kind.label());
+                ui.separator();
+                ui.label(format!(
+                    "{}: {label} {} {}  {} {}  {} {}",
+                    t(Msg::Cursor),
+                    t(Msg::Network),
+                    c.network + 1,
+                    t(Msg::Row),
+                    c.row + 1,
+                    t(Msg::Column),
+                    c.col + 1
+                ));
+                if let Some((sb, sel)) = self.selection
+                    && sb == b
+                {
+                    let what = match sel {
+                        selection::Selection::Cells { rows, cols, .. } => format!(
+                            "{}×{}",
+                            rows.0.abs_diff(rows.1) + 1,
+                            cols.0.abs_diff(cols.1) + 1
+                        ),
+                        selection::Selection::Rows { rows, .. } => {
+                            format!("{} {}", rows.0.abs_diff(rows.1) + 1, t(Msg::Row))
+                        }
+                        selection::Selection::Networks { networks } => format!(
+                            "{} {}",
+                            networks.0.abs_diff(networks.1) + 1,
+                            t(Msg::Network)
+                        ),
+                    };
+                    ui.label(format!("{} {what}", t(Msg::Selected)));
+                }
             }
             if let Some(s) = steps {
-                ui.label(format!("{}: {s}", Msg::Steps.text(lang)));
+                ui.separator();
+                ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
+            ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
         });
     }
@@ -340,27 +633,40 @@ impl eframe::App for LadderApp {
         }
         self.keys(&ui.ctx().clone());
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
-        egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
+        if self.settings.show_toolbar {
+            egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
+        }
         if self.prompt.is_some() {
             egui::Panel::top("prompt").show(ui, |ui| self.prompt_ui(ui));
         }
-        egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
-        egui::Panel::bottom("output")
-            .resizable(true)
-            .show(ui, |ui| self.output_ui(ui));
-        egui::Panel::left("tree").resizable(true).show(ui, |ui| {
-            let lang = self.settings.lang;
-            ui.heading(Msg::Project.text(lang));
-            if let Some(doc) = &self.doc {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    tree::tree_ui(ui, &doc.project, lang, &mut self.view)
-                });
+        if self.settings.show_status {
+            egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        }
+        if self.settings.show_output {
+            egui::Panel::bottom("output")
+                .resizable(true)
+                .show(ui, |ui| self.output_ui(ui));
+        }
+        if self.settings.show_tree {
+            let mut action = None;
+            egui::Panel::left("tree").resizable(true).show(ui, |ui| {
+                let lang = self.settings.lang;
+                ui.heading(Msg::Project.text(lang));
+                if let Some(doc) = &self.doc {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        action = tree::tree_ui(ui, &doc.project, lang, &mut self.view)
+                    });
+                }
+            });
+            if let Some(a) = action {
+                self.tree_action(a);
             }
-        });
+        }
         egui::CentralPanel::default().show(ui, |ui| self.main_ui(ui));
         if self.function_dialog.is_some() {
-            self.function_dialog_ui(&ui.ctx().clone());
+            self.function_dialog_ui(&ctx);
         }
+        self.help_ui(&ctx);
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

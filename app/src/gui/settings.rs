@@ -37,6 +37,14 @@ pub struct Settings {
     pub display: DisplayMode,
     /// Whether network comments are shown.
     pub show_comments: bool,
+    /// Whether the toolbars are shown.
+    pub show_toolbar: bool,
+    /// Whether the output window is shown.
+    pub show_output: bool,
+    /// Whether the project manager (tree) is shown.
+    pub show_tree: bool,
+    /// Whether the status bar is shown.
+    pub show_status: bool,
 }
 
 impl Default for Settings {
@@ -47,6 +55,10 @@ impl Default for Settings {
             zoom: 100,
             display: DisplayMode::Address,
             show_comments: true,
+            show_toolbar: true,
+            show_output: true,
+            show_tree: true,
+            show_status: true,
         }
     }
 }

@@ -1,0 +1,639 @@
+//! The mouse in the ladder view (click, Shift+click, double-click, drag, right-click), the
+//! editing commands shared by the Edit menu and the right-click menu, and the subprogram
+//! commands of the project tree.
+
+use super::editing::{Cursor, PlaceKind, Prompt};
+use super::i18n::Msg;
+use super::ladder_view::{Hit, ViewEvents};
+use super::selection::Selection;
+use super::tree::View;
+use super::{LadderApp, OutputLine};
+use ladder_engine::Op;
+use ladder_engine::address::Area;
+use ladder_engine::model::{Block, BlockKind, Cell, Edit, Operand};
+
+/// An editing command: one entry of the Edit menu and the right-click menu.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Command {
+    /// F1.
+    Contact,
+    /// Shift+F1.
+    ContactNc,
+    /// F2.
+    Coil,
+    /// Shift+F2.
+    CoilN,
+    /// F3.
+    Function,
+    /// F4.
+    Wire,
+    /// F5.
+    Link,
+    /// F6.
+    Parallel,
+    /// Ctrl+X.
+    Cut,
+    /// Ctrl+C.
+    Copy,
+    /// Ctrl+V.
+    Paste,
+    /// Ctrl+E.
+    CopyRow,
+    /// Delete: the element, or the selection.
+    Delete,
+    /// The vertical link left of the cursor.
+    DeleteLink,
+    /// Ctrl+T.
+    InsertRowAbove,
+    /// Ctrl+R.
+    InsertRowBelow,
+    /// The cursor's row.
+    DeleteRow,
+    /// Ctrl+U.
+    InsertNetworkAbove,
+    /// Ctrl+I.
+    InsertNetworkBelow,
+    /// The cursor's network.
+    DeleteNetwork,
+    /// The network's title.
+    NetworkTitle,
+    /// The network's comment.
+    NetworkComment,
+}
+
+impl Command {
+    /// The element commands, then the clipboard, then insert/delete.
+    pub const GROUPS: [&'static [Command]; 3] = [
+        &[
+            Command::Contact,
+            Command::ContactNc,
+            Command::Coil,
+            Command::CoilN,
+            Command::Function,
+            Command::Wire,
+            Command::Link,
+            Command::Parallel,
+        ],
+        &[
+            Command::Cut,
+            Command::Copy,
+            Command::Paste,
+            Command::CopyRow,
+        ],
+        &[
+            Command::Delete,
+            Command::DeleteLink,
+            Command::InsertRowAbove,
+            Command::InsertRowBelow,
+            Command::DeleteRow,
+            Command::InsertNetworkAbove,
+            Command::InsertNetworkBelow,
+            Command::DeleteNetwork,
+            Command::NetworkTitle,
+            Command::NetworkComment,
+        ],
+    ];
+
+    /// Its name and its keys.
+    pub fn label(self) -> (Msg, &'static str) {
+        match self {
+            Command::Contact => (Msg::ToolContact, "F1"),
+            Command::ContactNc => (Msg::ToolContactNc, "Shift+F1"),
+            Command::Coil => (Msg::ToolCoil, "F2"),
+            Command::CoilN => (Msg::ToolCoilN, "Shift+F2"),
+            Command::Function => (Msg::ToolFunction, "F3"),
+            Command::Wire => (Msg::ToolWire, "F4"),
+            Command::Link => (Msg::ToolLink, "F5"),
+            Command::Parallel => (Msg::ToolParallel, "F6"),
+            Command::Cut => (Msg::Cut, "Ctrl+X"),
+            Command::Copy => (Msg::Copy, "Ctrl+C"),
+            Command::Paste => (Msg::Paste, "Ctrl+V"),
+            Command::CopyRow => (Msg::CopyRow, "Ctrl+E"),
+            Command::Delete => (Msg::ToolDelete, "Delete"),
+            Command::DeleteLink => (Msg::DeleteLink, ""),
+            Command::InsertRowAbove => (Msg::InsertRowAbove, "Ctrl+T"),
+            Command::InsertRowBelow => (Msg::InsertRowBelow, "Ctrl+R"),
+            Command::DeleteRow => (Msg::DeleteRow, ""),
+            Command::InsertNetworkAbove => (Msg::InsertNetworkAbove, "Ctrl+U"),
+            Command::InsertNetworkBelow => (Msg::InsertNetworkBelow, "Ctrl+I"),
+            Command::DeleteNetwork => (Msg::DeleteNetwork, ""),
+            Command::NetworkTitle => (Msg::NetworkTitle, ""),
+            Command::NetworkComment => (Msg::NetworkComment, ""),
+        }
+    }
+}
+
+impl LadderApp {
+    fn open_prompt(&mut self, kind: PlaceKind, text: String) {
+        self.prompt = Some(Prompt {
+            kind,
+            text,
+            error: None,
+        });
+    }
+
+    /// Runs an editing command at the cursor.
+    pub fn run_command(&mut self, c: Command) {
+        match c {
+            Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
+            Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),
+            Command::Coil => self.open_prompt(PlaceKind::Coil { negated: false }, "".into()),
+            Command::CoilN => self.open_prompt(PlaceKind::Coil { negated: true }, "".into()),
+            Command::Function => self.open_function_dialog(),
+            Command::Wire => self.wire(),
+            Command::Link => self.link(),
+            Command::Parallel => {
+                self.open_prompt(PlaceKind::Parallel { negated: false }, "".into())
+            }
+            Command::Cut => self.cut(),
+            Command::Copy => {
+                self.copy();
+            }
+            Command::Paste => self.paste(),
+            Command::CopyRow => self.copy_row(),
+            Command::Delete => {
+                if self.selection.is_some() {
+                    self.delete_selection();
+                } else if let Some(at) = self.ensure_network() {
+                    self.edit(|l| l.delete_element(at));
+                }
+            }
+            Command::DeleteLink => {
+                if let Some(at) = self.ensure_network() {
+                    self.edit(|l| l.set_link(at, false));
+                }
+            }
+            Command::InsertRowAbove => self.insert_row(false),
+            Command::InsertRowBelow => self.insert_row(true),
+            Command::DeleteRow => {
+                if let Some(at) = self.ensure_network() {
+                    self.selection = Some((
+                        at.block,
+                        Selection::Rows {
+                            network: at.network,
+                            rows: (at.row, at.row),
+                        },
+                    ));
+                    self.delete_selection();
+                }
+            }
+            Command::InsertNetworkAbove => self.insert_network(false),
+            Command::InsertNetworkBelow => self.insert_network(true),
+            Command::DeleteNetwork => {
+                if let Some(at) = self.ensure_network() {
+                    self.selection = Some((
+                        at.block,
+                        Selection::Networks {
+                            networks: (at.network, at.network),
+                        },
+                    ));
+                    self.delete_selection();
+                }
+            }
+            Command::NetworkTitle | Command::NetworkComment => {
+                if let Some(at) = self.ensure_network() {
+                    let n = &self
+                        .doc
+                        .as_ref()
+                        .expect("a network was ensured")
+                        .project
+                        .ladder
+                        .blocks[at.block]
+                        .networks[at.network];
+                    let (kind, text) = if c == Command::NetworkTitle {
+                        (PlaceKind::NetworkTitle, n.title.clone())
+                    } else {
+                        (PlaceKind::NetworkComment, n.comment.clone())
+                    };
+                    self.open_prompt(kind, text);
+                }
+            }
+        }
+    }
+
+    /// The editing commands as menu entries (Edit menu, right-click menu).
+    pub fn commands_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        for (g, group) in Command::GROUPS.iter().enumerate() {
+            if g > 0 {
+                ui.separator();
+            }
+            for c in group.iter() {
+                let (msg, keys) = c.label();
+                let mut b = egui::Button::new(msg.text(lang));
+                if !keys.is_empty() {
+                    b = b.shortcut_text(keys);
+                }
+                let enabled = *c != Command::Paste || self.clipboard.is_some();
+                if ui.add_enabled(enabled, b).clicked() {
+                    self.run_command(*c);
+                    ui.close();
+                }
+            }
+        }
+    }
+
+    /// Sets the net title or comment typed in the prompt.
+    pub fn set_network_text(&mut self, title: Option<&str>, comment: Option<&str>) {
+        if let Some(at) = self.ensure_network() {
+            self.edit(|l| {
+                let n = &l.blocks[at.block].networks[at.network];
+                let edit = Edit::SetNetworkText {
+                    block: at.block,
+                    network: at.network,
+                    title: title.map_or(n.title.clone(), str::to_string),
+                    comment: comment.map_or(n.comment.clone(), str::to_string),
+                };
+                l.apply(edit)
+            });
+        }
+    }
+
+    /// Handles what the pointer did in the ladder view of `block`.
+    pub fn pointer_events(&mut self, block: usize, ev: ViewEvents) {
+        let cell = |network, row, col| Cursor {
+            block,
+            network,
+            row,
+            col,
+        };
+        if let Some(start) = ev.drag_start {
+            self.drag_from = Some(start);
+        }
+        if let (Some(a), Some(z)) = (self.drag_from, ev.drag_now) {
+            if self.pen {
+                if ev.drag_done {
+                    self.draw_line(block, a, z);
+                }
+            } else if a != z {
+                self.drag_select(block, a, z);
+            }
+        }
+        if ev.drag_done {
+            self.drag_from = None;
+        }
+        if ev.drag_now.is_some() {
+            // A drag is not also a click.
+        } else if let Some((hit, mods)) = ev.click {
+            match hit {
+                Hit::Cell { network, row, col } => {
+                    if mods.shift {
+                        self.extend_selection(cell(network, row, col));
+                    } else {
+                        self.selection = None;
+                        self.cursor = cell(network, row, col);
+                    }
+                }
+                Hit::Header { network } => {
+                    let first = match self.selection {
+                        Some((b, Selection::Networks { networks })) if b == block && mods.shift => {
+                            networks.0
+                        }
+                        _ if mods.shift && self.cursor.block == block => self.cursor.network,
+                        _ => network,
+                    };
+                    self.selection = Some((
+                        block,
+                        Selection::Networks {
+                            networks: (first, network),
+                        },
+                    ));
+                    self.cursor = cell(network, 0, 0);
+                }
+                Hit::Margin { network, row } => {
+                    let first = match self.selection {
+                        Some((b, Selection::Rows { network: n, rows }))
+                            if b == block && n == network && mods.shift =>
+                        {
+                            rows.0
+                        }
+                        _ => row,
+                    };
+                    self.selection = Some((
+                        block,
+                        Selection::Rows {
+                            network,
+                            rows: (first, row),
+                        },
+                    ));
+                    self.cursor = cell(network, row, 0);
+                }
+            }
+        }
+        if let Some(hit) = ev.double_click {
+            match hit {
+                Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
+                Hit::Header { network } => {
+                    self.cursor = cell(network, 0, 0);
+                    self.run_command(Command::NetworkTitle);
+                }
+                Hit::Margin { .. } => {}
+            }
+        }
+        if let Some(Hit::Cell { network, row, col }) = ev.secondary {
+            let inside = self
+                .selection
+                .is_some_and(|(b, s)| b == block && s.contains(network, row, col));
+            if !inside {
+                self.selection = None;
+                self.cursor = cell(network, row, col);
+            }
+        }
+        if let Some(response) = ev.response {
+            response.context_menu(|ui| self.commands_ui(ui));
+        }
+    }
+
+    /// A drag without the pen selects cells (one network) or networks (across networks).
+    fn drag_select(&mut self, block: usize, a: Hit, z: Hit) {
+        let sel = match (a, z) {
+            (
+                Hit::Cell {
+                    network: n,
+                    row: r0,
+                    col: c0,
+                },
+                Hit::Cell {
+                    network,
+                    row: r1,
+                    col: c1,
+                },
+            ) if n == network => Selection::Cells {
+                network,
+                rows: (r0, r1),
+                cols: (c0, c1),
+            },
+            _ => Selection::Networks {
+                networks: (a.network(), z.network()),
+            },
+        };
+        self.selection = Some((block, sel));
+        if let Hit::Cell { network, row, col } = z {
+            self.cursor = Cursor {
+                block,
+                network,
+                row,
+                col,
+            };
+        }
+    }
+
+    /// A drag with the pen: along a row, wires over the empty cells; down a column, vertical
+    /// links at that column's left edge. One undo step.
+    pub fn draw_line(&mut self, block: usize, a: Hit, z: Hit) {
+        let (
+            Hit::Cell {
+                network,
+                row: r0,
+                col: c0,
+            },
+            Hit::Cell {
+                network: n1,
+                row: r1,
+                col: c1,
+            },
+        ) = (a, z)
+        else {
+            return;
+        };
+        if network != n1 || (r0 == r1 && c0 == c1) {
+            return;
+        }
+        let width = self.doc.as_ref().map_or(0, |d| d.project.ladder.width);
+        self.edit(|l| {
+            let n = &l.blocks[block].networks[network];
+            let at = |row, col| Cursor {
+                block,
+                network,
+                row,
+                col,
+            };
+            let mut edits = Vec::new();
+            if r0.abs_diff(r1) <= c0.abs_diff(c1) {
+                for col in c0.min(c1)..=c0.max(c1).min(width - 1) {
+                    if n.rows[r0].cells[col] == Cell::Empty {
+                        edits.push(Edit::SetCell {
+                            at: at(r0, col),
+                            cell: Cell::Wire,
+                        });
+                    }
+                }
+            } else {
+                let col = c0.clamp(1, width);
+                for row in r0.min(r1)..r0.max(r1) {
+                    edits.push(Edit::SetLink {
+                        at: at(row, col),
+                        on: true,
+                    });
+                }
+            }
+            l.apply(Edit::Batch(edits))
+        });
+    }
+
+    /// Double-click: edit the element's operands (an empty cell takes a new contact, or a
+    /// coil in the output column).
+    pub fn edit_element(&mut self, at: Cursor) {
+        self.selection = None;
+        self.cursor = at;
+        let Some(cell) = self
+            .doc
+            .as_ref()
+            .and_then(|d| d.project.ladder.blocks.get(at.block))
+            .and_then(|b| b.networks.get(at.network))
+            .and_then(|n| n.cell(at.row, at.col))
+            .cloned()
+        else {
+            return;
+        };
+        let width = self.doc.as_ref().map_or(0, |d| d.project.ladder.width);
+        match cell {
+            Cell::Contact { negated, operand } => {
+                self.open_prompt(PlaceKind::Contact { negated }, operand.to_string())
+            }
+            Cell::Coil { negated, operand } => {
+                self.open_prompt(PlaceKind::Coil { negated }, operand.to_string())
+            }
+            Cell::Box { .. } => self.edit_function_box(at),
+            Cell::Empty | Cell::Wire if at.col == width => {
+                self.open_prompt(PlaceKind::Coil { negated: false }, String::new())
+            }
+            Cell::Empty | Cell::Wire => {
+                self.open_prompt(PlaceKind::Contact { negated: false }, String::new())
+            }
+        }
+    }
+
+    /// "View calls": every CALL and CALLU of subprogram `number`, in the output window.
+    pub fn view_calls(&mut self, number: u16) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_ref() else { return };
+        let project = &doc.project;
+        let mut lines = Vec::new();
+        for (bi, b) in project.ladder.blocks.iter().enumerate() {
+            for (ni, n) in b.networks.iter().enumerate() {
+                for (ri, row) in n.rows.iter().enumerate() {
+                    for cell in &row.cells {
+                        let Cell::Box { op, operands } = cell else {
+                            continue;
+                        };
+                        if !matches!(op, Op::Call | Op::Callu) {
+                            continue;
+                        }
+                        let target = match operands.first() {
+                            Some(Operand::Addr(a)) => Some(*a),
+                            Some(Operand::Symbol(s)) => project.resolve_symbol(s),
+                            _ => None,
+                        };
+                        if target.is_some_and(|a| a.area == Area::P && a.number == number) {
+                            lines.push(OutputLine {
+                                text: format!(
+                                    "{} N{:04} {}:  {} P{number:04}",
+                                    b.kind.label(),
+                                    ni + 1,
+                                    ri + 1,
+                                    op.name()
+                                ),
+                                error: false,
+                                target: Some((bi, ni)),
+                            });
+                        }
+                    }
+                }
+            }
+        }
+        lines.push(OutputLine {
+            text: format!(
+                "P{number:04}: {} {}",
+                lines.len(),
+                Msg::CallsFound.text(lang)
+            ),
+            error: false,
+            target: None,
+        });
+        self.output = lines;
+    }
+
+    /// A new subprogram from `NUMBER [NAME]`, inserted in number order and shown.
+    pub fn new_subprogram(&mut self, text: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let (number, name) = self.parse_sub(text)?;
+        let ladder = &self
+            .doc
+            .as_ref()
+            .ok_or(Msg::NoProject.text(lang))?
+            .project
+            .ladder;
+        if ladder.sub_index(number).is_some() {
+            return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
+        }
+        let index = ladder.sub_insert_index(number);
+        let mut block = Block::new(BlockKind::Sub { number, name });
+        block.networks.push(ladder.new_network());
+        if self.edit(|l| {
+            l.apply(Edit::InsertBlock {
+                index,
+                block: Box::new(block),
+            })
+        }) {
+            self.view = View::Block(index);
+            self.cursor = Cursor {
+                block: index,
+                network: 0,
+                row: 0,
+                col: 0,
+            };
+        }
+        Ok(())
+    }
+
+    fn parse_sub(&self, text: &str) -> Result<(u16, String), String> {
+        let lang = self.settings.lang;
+        let mut words = text.split_whitespace();
+        let number = words
+            .next()
+            .map(|w| w.trim_start_matches(['P', 'p']))
+            .and_then(|w| w.parse::<u16>().ok());
+        let name = words.collect::<Vec<_>>().join(" ");
+        let profile = self
+            .doc
+            .as_ref()
+            .map(|d| d.project.profile())
+            .ok_or(Msg::NoProject.text(lang))?;
+        let (lo, hi) = profile.range(Area::P);
+        match number {
+            Some(n) if (lo..=hi).contains(&n) => {}
+            _ => return Err(format!("{}: P{lo:04}–P{hi:04}", Msg::SubUsage.text(lang))),
+        }
+        if !name.is_empty() && !ladder_engine::model::is_symbol_name(&name) {
+            return Err(format!("`{name}`: {}", Msg::BadSymbolName.text(lang)));
+        }
+        Ok((number.unwrap_or(0), name))
+    }
+
+    /// Renames (and renumbers) subprogram block `index` from `NUMBER [NAME]`.
+    pub fn rename_subprogram(&mut self, index: usize, text: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let (number, name) = self.parse_sub(text)?;
+        let ladder = &self
+            .doc
+            .as_ref()
+            .ok_or(Msg::NoProject.text(lang))?
+            .project
+            .ladder;
+        if ladder.sub_index(number).is_some_and(|i| i != index) {
+            return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
+        }
+        let info = ladder.blocks[index].info.clone();
+        let target = ladder.sub_insert_index(number);
+        let ok = self.edit(|l| {
+            // Renumbering keeps subprograms sorted: take the block out and put it back in
+            // its place, in the same undo step.
+            let mut block = l.blocks[index].clone();
+            block.kind = BlockKind::Sub { number, name };
+            block.info = info;
+            let to = if target > index { target - 1 } else { target };
+            l.apply(Edit::Batch(vec![
+                Edit::DeleteBlock { index },
+                Edit::InsertBlock {
+                    index: to,
+                    block: Box::new(block),
+                },
+            ]))
+        });
+        if ok
+            && let Some(i) = self
+                .doc
+                .as_ref()
+                .and_then(|d| d.project.ladder.sub_index(number))
+        {
+            self.view = View::Block(i);
+        }
+        Ok(())
+    }
+
+    /// Deletes subprogram block `index` (one undo step brings it back).
+    pub fn delete_subprogram(&mut self, index: usize) {
+        if self.edit(|l| l.apply(Edit::DeleteBlock { index })) {
+            self.view = View::Block(1);
+            self.cursor = Cursor {
+                block: 1,
+                network: 0,
+                row: 0,
+                col: 0,
+            };
+        }
+    }
+
+    /// Sets a block's information text.
+    pub fn set_block_info(&mut self, index: usize, info: &str) {
+        self.edit(|l| {
+            let kind = l.blocks[index].kind.clone();
+            l.apply(Edit::SetBlockHeader {
+                index,
+                kind,
+                info: info.to_string(),
+            })
+        });
+    }
+}
