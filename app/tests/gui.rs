@@ -92,11 +92,13 @@ fn a_compile_error_jumps_to_its_network() {
     h.key_press(egui::Key::F9);
     h.run();
     let diag = h.state().output[0].clone();
-    assert_eq!(diag.target, Some((1, 1)), "{}", diag.text);
+    let at = diag.target.expect("the diagnostic has a cell");
+    assert_eq!((at.block, at.network), (1, 1), "{}", diag.text);
     h.get_by_label_contains("undefined symbol `NOWHERE`")
         .click();
     h.run();
     assert_eq!(h.state().view, View::Block(1), "the error's block is shown");
+    assert_eq!(h.state().cursor, at, "the cursor is on the cell");
     assert_eq!(h.state().jump_to, None, "and its network was scrolled to");
 }
 
@@ -934,4 +936,44 @@ fn typing_after_f1_completes_from_the_symbol_table() {
             operand: ladder_engine::model::Operand::Symbol("TOOL_T1".into())
         }
     );
+}
+
+fn double_click(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false, true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    h.run();
+}
+
+#[test]
+fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
+    let (mut h, _) = editor_on(TWO_NETWORKS, "xref.ldp");
+    h.get_by_label("Cross-reference").click();
+    h.run();
+    h.get_by_label("Index").click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
+        .click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
+        .type_text("y3.6");
+    h.run();
+    assert_eq!(h.state().xref_filter, "y3.6");
+    assert!(
+        h.query_by_label_contains("Y0003.7").is_none(),
+        "the filter leaves only Y3.6"
+    );
+    let place = h.get_by_label("N0002 1:11").rect().center();
+    double_click(&mut h, place);
+    assert_eq!(h.state().view, View::Block(1));
+    let c = h.state().cursor;
+    assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
 }

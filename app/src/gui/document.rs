@@ -8,6 +8,8 @@ use std::path::{Path, PathBuf};
 /// The bundled sample, opened on first start.
 pub static SAMPLE: &[u8] = include_bytes!("../../../projects/lathe-988ta.ldp");
 
+static NEXT_SERIAL: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+
 /// An open project.
 pub struct Document {
     /// The model.
@@ -24,6 +26,8 @@ pub struct Document {
     pub read_only: bool,
     /// The damaged file a read-only document was recovered from.
     pub recovered_from: Option<PathBuf>,
+    /// Tells documents apart (a new or reopened project gets a new one), for caches.
+    pub serial: u64,
     /// Counts changes, so views can cache what they derive from the project.
     pub generation: u64,
 }
@@ -38,6 +42,7 @@ impl Document {
             dirty: false,
             compiled: None,
             generation: 0,
+            serial: NEXT_SERIAL.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
             read_only: false,
             recovered_from: None,
         }

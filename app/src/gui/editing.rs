@@ -186,7 +186,7 @@ impl LadderApp {
                         ladder_engine::xref::context(project, &r)
                     ),
                     error: false,
-                    target: Some((at.block, at.network)),
+                    target: Some(*at),
                 }
             })
             .collect();

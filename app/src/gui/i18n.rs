@@ -155,6 +155,12 @@ messages! {
     DisplayModeLabel => "显示地址类型", "Operands";
     ZoomLabel => "缩放比例", "Zoom";
     Suggestions => "符号（Tab 选第一个）：", "Symbols (Tab takes the first):";
+    XrefFilter => "地址或符号", "Address or symbol";
+    XrefHint => "双击一行跳转到该元件", "Double-click a row to go to the element";
+    XrefUse => "读/写", "Use";
+    XrefBlock => "程序块", "Block";
+    XrefPlace => "位置", "Place";
+    XrefElement => "元件", "Element";
     PenShort => "画线", "Draw lines";
     SaveChanges => "保存修改", "Save changes";
     Pen => "画线模式（拖动画横线/竖线）", "Line mode (drag to draw wires and links)";

@@ -540,7 +540,8 @@ pub fn block_ui(
                 let mods = ui.input(|i| i.modifiers);
                 events.click = pointer.and_then(hit).map(|h| (h, mods));
             }
-            if response.double_clicked() {
+            // A third quick click is still a double-click to a user.
+            if response.double_clicked() || response.triple_clicked() {
                 events.double_click = pointer.and_then(hit);
             }
             if response.secondary_clicked() {

@@ -13,6 +13,7 @@ pub mod selection;
 pub mod settings;
 pub mod tables;
 pub mod tree;
+pub mod xref_view;
 
 use document::Document;
 use i18n::{Lang, Msg};
@@ -32,8 +33,8 @@ pub struct OutputLine {
     pub text: String,
     /// An error (shown red).
     pub error: bool,
-    /// (block, network) to show on a double-click.
-    pub target: Option<(usize, usize)>,
+    /// The cell to show on a click.
+    pub target: Option<model::CellRef>,
 }
 
 /// The application: persisted settings, the open document and the UI state around it.
@@ -82,6 +83,10 @@ pub struct LadderApp {
     pub help: Option<HelpPage>,
     /// Where the drag in progress in the ladder view started.
     pub drag_from: Option<ladder_view::Hit>,
+    /// The cross-reference, derived once per change of the project.
+    pub xref: xref_view::XrefCache,
+    /// What the reference index is filtered by.
+    pub xref_filter: String,
 }
 
 /// A Help window.
@@ -126,6 +131,8 @@ impl LadderApp {
             pen: false,
             help: None,
             drag_from: None,
+            xref: Default::default(),
+            xref_filter: String::new(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -171,8 +178,15 @@ impl LadderApp {
             .map(|d| OutputLine {
                 text: d.render(&name),
                 error: d.severity() == Severity::Error,
-                target: matches!(d.location.origin, Origin::Cell { .. })
-                    .then_some((d.location.block, d.location.network)),
+                target: match d.location.origin {
+                    Origin::Cell { row, col } => Some(model::CellRef {
+                        block: d.location.block,
+                        network: d.location.network,
+                        row: row as usize,
+                        col: col as usize,
+                    }),
+                    _ => None,
+                },
             })
             .collect();
         let lang = self.settings.lang;
@@ -200,10 +214,13 @@ impl LadderApp {
         self.output = lines;
     }
 
-    /// Shows a diagnostic's network.
-    pub fn jump(&mut self, block: usize, network: usize) {
-        self.view = View::Block(block);
-        self.jump_to = Some(network);
+    /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
+    /// network, with the cursor on it.
+    pub fn jump(&mut self, at: model::CellRef) {
+        self.view = View::Block(at.block);
+        self.jump_to = Some(at.network);
+        self.selection = None;
+        self.cursor = at;
     }
 
     fn menu_ui(&mut self, ui: &mut egui::Ui) {
@@ -511,15 +528,7 @@ impl LadderApp {
                 );
                 self.pointer_events(b, events);
             }
-            View::RefIndex | View::RefBits | View::RefBytes => {
-                let x = ladder_engine::xref::build(project);
-                let text = match self.view {
-                    View::RefIndex => ladder_engine::xref::index_text(project, &x),
-                    View::RefBits => ladder_engine::xref::bits_text(&x),
-                    _ => ladder_engine::xref::bytes_text(&x),
-                };
-                egui::ScrollArea::both().show(ui, |ui| ui.monospace(text));
-            }
+            View::RefIndex | View::RefBits | View::RefBytes => self.xref_ui(ui),
             _ => self.tables_ui(ui),
         }
     }
@@ -545,8 +554,8 @@ impl LadderApp {
                     }
                 }
             });
-        if let Some((b, n)) = jump {
-            self.jump(b, n);
+        if let Some(at) = jump {
+            self.jump(at);
         }
     }
 

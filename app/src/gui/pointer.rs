@@ -473,7 +473,7 @@ impl LadderApp {
         for (bi, b) in project.ladder.blocks.iter().enumerate() {
             for (ni, n) in b.networks.iter().enumerate() {
                 for (ri, row) in n.rows.iter().enumerate() {
-                    for cell in &row.cells {
+                    for (ci, cell) in row.cells.iter().enumerate() {
                         let Cell::Box { op, operands } = cell else {
                             continue;
                         };
@@ -495,7 +495,12 @@ impl LadderApp {
                                     op.name()
                                 ),
                                 error: false,
-                                target: Some((bi, ni)),
+                                target: Some(Cursor {
+                                    block: bi,
+                                    network: ni,
+                                    row: ri,
+                                    col: ci,
+                                }),
                             });
                         }
                     }
