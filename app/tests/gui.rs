@@ -977,3 +977,20 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
     let c = h.state().cursor;
     assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
 }
+
+#[test]
+fn every_view_opened_gets_a_tab_that_switches_back_to_it() {
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.get_by_label("Level 1").click();
+    h.run();
+    h.get_by_label("Display messages").click();
+    h.run();
+    assert_eq!(
+        h.state().tabs,
+        [View::Block(1), View::Block(0), View::Messages]
+    );
+    h.get_by_label("Tab: Level 2").click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(1));
+}

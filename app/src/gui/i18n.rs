@@ -161,6 +161,7 @@ messages! {
     XrefBlock => "程序块", "Block";
     XrefPlace => "位置", "Place";
     XrefElement => "元件", "Element";
+    Tab => "标签", "Tab";
     PenShort => "画线", "Draw lines";
     SaveChanges => "保存修改", "Save changes";
     Pen => "画线模式（拖动画横线/竖线）", "Line mode (drag to draw wires and links)";

@@ -149,6 +149,7 @@ struct Style {
     m: Metrics,
     mode: DisplayMode,
     comments: bool,
+    titles: bool,
 }
 
 /// Draws one network with its top-left at `origin`.
@@ -160,12 +161,17 @@ fn network_ui(
     origin: Pos2,
     style: &Style,
 ) {
-    let Style { m, mode, comments } = style;
+    let Style {
+        m,
+        mode,
+        comments,
+        titles,
+    } = style;
     let (mode, comments) = (*mode, *comments);
     let width = project.ladder.width;
     let wire = Stroke::new(1.5, Color32::from_gray(40));
     let font = FontId::proportional(m.font);
-    let title = if net.title.is_empty() {
+    let title = if net.title.is_empty() || !titles {
         format!("N{:04}", index + 1)
     } else {
         format!("N{:04}  {}", index + 1, net.title)
@@ -371,6 +377,8 @@ pub struct ViewOptions {
     pub mode: DisplayMode,
     /// Network comments shown.
     pub comments: bool,
+    /// Network titles shown.
+    pub titles: bool,
     /// The cursor's (network, row, column) in this block.
     pub cursor: Option<(usize, usize, usize)>,
     /// The selection in this block.
@@ -511,7 +519,12 @@ pub fn block_ui(
         m.margin + m.cell * project.ladder.width as f32 + m.output + 40.0,
         y.max(1.0),
     );
-    let style = Style { m, mode, comments };
+    let style = Style {
+        m,
+        mode,
+        comments,
+        titles: opts.titles,
+    };
     egui::ScrollArea::both()
         .auto_shrink([false, false])
         .show_viewport(ui, |ui, viewport| {

@@ -87,7 +87,12 @@ pub struct LadderApp {
     pub xref: xref_view::XrefCache,
     /// What the reference index is filtered by.
     pub xref_filter: String,
+    /// The view tabs above the main area, in the order they were opened.
+    pub tabs: Vec<View>,
 }
+
+/// Most view tabs kept open; the oldest closes first.
+const MAX_TABS: usize = 10;
 
 /// A Help window.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -133,6 +138,7 @@ impl LadderApp {
             drag_from: None,
             xref: Default::default(),
             xref_filter: String::new(),
+            tabs: Vec::new(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -260,6 +266,7 @@ impl LadderApp {
                 ui.separator();
                 let lang = self.settings.lang;
                 let s = &mut self.settings;
+                ui.checkbox(&mut s.show_titles, Msg::ShowTitles.text(lang));
                 ui.checkbox(&mut s.show_tree, Msg::ProjectWindow.text(lang));
                 ui.checkbox(&mut s.show_output, Msg::OutputWindow.text(lang));
                 ui.checkbox(&mut s.show_toolbar, Msg::ToolbarView.text(lang));
@@ -333,6 +340,87 @@ impl LadderApp {
             }
             TreeAction::ViewCalls(n) => self.view_calls(n),
         }
+    }
+
+    /// A view's name, for its tab.
+    pub fn view_title(&self, view: View) -> String {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang).to_string();
+        let project = self.doc.as_ref().map(|d| &d.project);
+        match view {
+            View::Block(0) => t(Msg::Level1),
+            View::Block(1) => t(Msg::Level2),
+            View::Block(b) => {
+                project
+                    .and_then(|p| p.ladder.blocks.get(b))
+                    .map_or(String::new(), |b| match &b.kind {
+                        model::BlockKind::Sub { number, name } => format!("P{number:04} {name}"),
+                        k => k.label(),
+                    })
+            }
+            View::Symbols(i) => project
+                .and_then(|p| p.symbol_tables.get(i))
+                .map_or(t(Msg::SymbolTables), |s| s.name.clone()),
+            View::Data => t(Msg::DataTables),
+            View::Messages => t(Msg::Messages),
+            View::RefIndex => t(Msg::RefIndex),
+            View::RefBits => t(Msg::RefBits),
+            View::RefBytes => t(Msg::RefBytes),
+            View::Diagnosis => t(Msg::Diagnosis),
+            View::Permissions => t(Msg::Permissions),
+            View::MCodes => t(Msg::MCodes),
+            View::Version => t(Msg::VersionInfo),
+        }
+    }
+
+    /// The view tabs (manual §3.1 视图切换标签): every view opened, one click away.
+    fn tabs_ui(&mut self, ui: &mut egui::Ui) {
+        // Tabs of blocks that no longer exist (a deleted subprogram) close themselves.
+        let blocks = self
+            .doc
+            .as_ref()
+            .map_or(0, |d| d.project.ladder.blocks.len());
+        self.tabs
+            .retain(|v| !matches!(v, View::Block(b) if *b >= blocks));
+        if !self.tabs.contains(&self.view) {
+            self.tabs.push(self.view);
+            if self.tabs.len() > MAX_TABS {
+                self.tabs.remove(0);
+            }
+        }
+        let mut close = None;
+        ui.horizontal_wrapped(|ui| {
+            for (i, v) in self.tabs.clone().into_iter().enumerate() {
+                let title = self.view_title(v);
+                let selected = self.view == v;
+                let r = ui.selectable_label(selected, &title);
+                // Named "Tab: …" for assistive technology, apart from the tree's entry.
+                let name = format!("{}: {title}", Msg::Tab.text(self.settings.lang));
+                r.widget_info(|| {
+                    egui::WidgetInfo::selected(egui::Role::Tab, true, selected, &name)
+                });
+                if r.clicked() {
+                    self.view = v;
+                }
+                if ui
+                    .small_button("×")
+                    .on_hover_text(Msg::Close.text(self.settings.lang))
+                    .clicked()
+                {
+                    close = Some(i);
+                }
+                ui.separator();
+            }
+        });
+        if let Some(i) = close
+            && self.tabs.len() > 1
+        {
+            let closed = self.tabs.remove(i);
+            if closed == self.view {
+                self.view = self.tabs[i.min(self.tabs.len() - 1)];
+            }
+        }
+        ui.separator();
     }
 
     fn edit_menu_ui(&mut self, ui: &mut egui::Ui) {
@@ -520,6 +608,7 @@ impl LadderApp {
                         zoom: self.settings.zoom,
                         mode: self.settings.display,
                         comments: self.settings.show_comments,
+                        titles: self.settings.show_titles,
                         cursor,
                         selection,
                     },
@@ -671,7 +760,10 @@ impl eframe::App for LadderApp {
                 self.tree_action(a);
             }
         }
-        egui::CentralPanel::default().show(ui, |ui| self.main_ui(ui));
+        egui::CentralPanel::default().show(ui, |ui| {
+            self.tabs_ui(ui);
+            self.main_ui(ui)
+        });
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }

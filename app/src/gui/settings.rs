@@ -37,6 +37,8 @@ pub struct Settings {
     pub display: DisplayMode,
     /// Whether network comments are shown.
     pub show_comments: bool,
+    /// Whether network titles are shown.
+    pub show_titles: bool,
     /// Whether the toolbars are shown.
     pub show_toolbar: bool,
     /// Whether the output window is shown.
@@ -55,6 +57,7 @@ impl Default for Settings {
             zoom: 100,
             display: DisplayMode::Address,
             show_comments: true,
+            show_titles: true,
             show_toolbar: true,
             show_output: true,
             show_tree: true,
