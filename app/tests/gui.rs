@@ -994,3 +994,118 @@ fn every_view_opened_gets_a_tab_that_switches_back_to_it() {
     h.run();
     assert_eq!(h.state().view, View::Block(1));
 }
+
+#[test]
+fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(TWO_NETWORKS, "stale.ldp");
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::NewSub);
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Number name")
+        .type_text("77 FOO");
+    h.run();
+    h.key_press(Key::Enter);
+    h.run();
+    assert_eq!(h.state().view, View::Block(2));
+    // The rename prompt is open on P0077 when its creation is undone.
+    h.state_mut()
+        .tree_action(ladder_studio::gui::tree::TreeAction::RenameSub(2));
+    h.run();
+    h.state_mut().undo();
+    h.run();
+    assert_eq!(
+        h.state().view,
+        View::Block(1),
+        "the view left the vanished block"
+    );
+    h.key_press(Key::Enter);
+    h.run();
+    let err = h.state().prompt.as_ref().and_then(|p| p.error.clone());
+    assert!(err.is_some_and(|e| e.contains("no longer exists")));
+    h.key_press(Key::Escape);
+    h.run();
+    let before = h.state().doc.as_ref().unwrap().history.undo_len();
+    for k in [Key::F5, Key::Delete] {
+        h.key_press(k);
+        h.run();
+    }
+    h.key_press_modifiers(Modifiers::COMMAND, Key::V);
+    h.run();
+    // Level 1 is empty: Delete and a refused operand add nothing.
+    h.get_by_label("Level 1").click();
+    h.run();
+    let l1 = |h: &Harness<'static, LadderApp>| {
+        h.state().doc.as_ref().unwrap().project.ladder.blocks[0]
+            .networks
+            .len()
+    };
+    h.key_press(Key::Delete);
+    h.run();
+    h.key_press(Key::F1);
+    enter_operand(&mut h, "X99999.9");
+    assert!(h.state().prompt.as_ref().unwrap().error.is_some());
+    h.key_press(Key::Escape);
+    h.run();
+    h.key_press(Key::F3);
+    h.run();
+    h.key_press(Key::Escape);
+    h.run();
+    assert_eq!(l1(&h), 0, "no network was added for nothing");
+    // A contact in the empty block is one undo step, network included.
+    let steps = h.state().doc.as_ref().unwrap().history.undo_len();
+    h.key_press(Key::F1);
+    enter_operand(&mut h, "X2.1");
+    assert_eq!(l1(&h), 1);
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().history.undo_len(),
+        steps + 1
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(l1(&h), 0, "one undo takes back the contact and its network");
+    assert!(h.state().doc.as_ref().unwrap().history.undo_len() >= before);
+}
+
+#[test]
+fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
+    use egui::{Key, Modifiers};
+    let dir = tempfile_dir();
+    let rec = dir.join("recovery-esc");
+    let _ = std::fs::remove_dir_all(&rec);
+    let path = dir.join("late.ldp");
+    ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
+    {
+        let mut h = harness(Some(path.clone()), Lang::En);
+        h.state_mut().recovery_dir = Some(rec.clone());
+        h.run();
+        h.key_press_modifiers(Modifiers::COMMAND, Key::I);
+        h.run();
+        h.state_mut().autosave_now();
+    }
+    let mut h = harness(None, Lang::En);
+    h.state_mut().recovery_dir = Some(rec.clone());
+    h.state_mut().offer_restore();
+    h.run();
+    h.key_press(Key::Escape);
+    h.run();
+    assert!(h.state().question.is_none());
+    assert_eq!(
+        ladder_studio::gui::files::recovery_copies(&rec).len(),
+        1,
+        "Escape leaves the copy for later"
+    );
+    // Ctrl+O on an unchanged project, an edit while the dialog is open, then the answer.
+    scripted(&mut h, vec![Some(path.clone())]);
+    h.state_mut()
+        .request(ladder_studio::gui::files::Action::OpenDialog);
+    h.state_mut().insert_network(true);
+    h.run();
+    assert!(
+        matches!(
+            h.state().question,
+            Some(ladder_studio::gui::files::Question::Unsaved { .. })
+        ),
+        "the edit made meanwhile is not dropped without asking"
+    );
+}

@@ -65,6 +65,15 @@ pub enum FileError {
     /// The file is not UTF-8 text.
     #[error("the file is not UTF-8 text (byte {0})")]
     Encoding(usize),
+    /// The body parses but the ladder breaks the model's invariants.
+    #[error("the ladder is malformed: {0}")]
+    Structure(String),
+}
+
+/// Refuses a project whose ladder breaks the invariants the editor and compiler rely on.
+fn checked(p: Project) -> Result<Project, FileError> {
+    p.ladder.check_structure().map_err(FileError::Structure)?;
+    Ok(p)
 }
 
 /// The "ladder checksum" of the version-information dialog (§3.4.7): the CRC-32 of the saved
@@ -150,17 +159,18 @@ fn body_error(e: ron::error::SpannedError) -> FileError {
 
 /// Parses a body of a given schema version, migrating older ones.
 fn parse_versioned(body: &str, version: u32) -> Result<Project, FileError> {
-    match version {
+    let p = match version {
         1 => ron::from_str::<v1::Project>(body)
             .map(v1::migrate)
-            .map_err(body_error),
-        _ => ron::from_str::<Project>(body).map_err(body_error),
-    }
+            .map_err(body_error)?,
+        _ => ron::from_str::<Project>(body).map_err(body_error)?,
+    };
+    checked(p)
 }
 
 /// Parses a body without checking a checksum (the read-only recovery open).
 pub fn parse_body(body: &str) -> Result<Project, FileError> {
-    ron::from_str::<Project>(body).map_err(body_error)
+    checked(ron::from_str::<Project>(body).map_err(body_error)?)
 }
 
 /// Opens a damaged file as far as it can be read, for a read-only look: the checksum is not
@@ -333,6 +343,29 @@ mod tests {
         assert!(matches!(
             from_bytes(cut.as_bytes()),
             Err(FileError::Checksum { .. })
+        ));
+    }
+
+    #[test]
+    fn a_checksummed_file_with_a_malformed_ladder_is_refused_with_the_reason() {
+        let mut p = crate::il::import("LD X1.0\nOUT Y1.0\n").project.unwrap();
+        p.ladder.blocks[0].networks[0].rows[0].cells.pop();
+        let err = from_bytes(to_string(&p).as_bytes()).unwrap_err();
+        assert!(
+            matches!(&err, FileError::Structure(m) if m.contains("LEVEL1 network 1: row 1 has 10 cells")),
+            "{err}"
+        );
+        let mut p = Project::default();
+        p.ladder.blocks.swap(0, 1);
+        assert!(matches!(
+            from_bytes(to_string(&p).as_bytes()),
+            Err(FileError::Structure(_))
+        ));
+        let mut p = Project::default();
+        p.ladder.width = 0;
+        assert!(matches!(
+            from_bytes(to_string(&p).as_bytes()),
+            Err(FileError::Structure(_))
         ));
     }
 }

@@ -42,10 +42,10 @@ pub enum PlaceKind {
     NetworkComment,
     /// A new subprogram: `NUMBER [NAME]`.
     NewSub,
-    /// Renumber or rename subprogram block `0`: `NUMBER [NAME]`.
-    RenameSub(usize),
-    /// Block `0`'s information text.
-    BlockInfo(usize),
+    /// Renumber or rename subprogram P`0`: `NUMBER [NAME]`.
+    RenameSub(u16),
+    /// A block's information text.
+    BlockInfo(super::pointer::BlockKey),
 }
 
 /// The open operand prompt.
@@ -57,6 +57,32 @@ pub struct Prompt {
     pub text: String,
     /// Why the last Enter was refused.
     pub error: Option<String>,
+}
+
+/// Whether an applied edit's inverse would change nothing, i.e. the edit changed nothing.
+fn is_noop(ladder: &Ladder, inverse: &Edit) -> bool {
+    let net = |at: &CellRef| {
+        ladder
+            .blocks
+            .get(at.block)
+            .and_then(|b| b.networks.get(at.network))
+    };
+    match inverse {
+        Edit::Batch(edits) => edits.iter().all(|e| is_noop(ladder, e)),
+        Edit::SetCell { at, cell } => net(at).and_then(|n| n.cell(at.row, at.col)) == Some(cell),
+        Edit::SetLink { at, on } => net(at).is_some_and(|n| n.link(at.row, at.col) == *on),
+        Edit::SetNetworkText {
+            block,
+            network,
+            title,
+            comment,
+        } => ladder
+            .blocks
+            .get(*block)
+            .and_then(|b| b.networks.get(*network))
+            .is_some_and(|n| n.title == *title && n.comment == *comment),
+        _ => false,
+    }
 }
 
 /// A basic-toolbar button: its name, its keys and what it does.
@@ -89,7 +115,15 @@ impl LadderApp {
         }
         match f(&mut doc.project.ladder) {
             Ok(inverse) => {
-                doc.history.record(inverse);
+                if is_noop(&doc.project.ladder, &inverse) {
+                    // Nothing changed (Delete on an empty cell): no undo step, not dirty.
+                    return true;
+                }
+                if std::mem::take(&mut self.merge_next) {
+                    doc.history.record_merged(inverse);
+                } else {
+                    doc.history.record(inverse);
+                }
                 doc.changed();
                 true
             }
@@ -124,14 +158,21 @@ impl LadderApp {
     }
 
     /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
+    /// An empty block gets a network first; that insertion is folded into the undo step of
+    /// the gesture that needed it. `None` when there is no cell to edit (no project, not a
+    /// ladder view, a read-only project with an empty block).
     pub fn ensure_network(&mut self) -> Option<Cursor> {
         let block = self.block()?;
-        if self.networks_of(block) == 0 {
-            self.edit(|l| l.insert_network(block, 0));
+        if self.networks_of(block) == 0 && self.edit(|l| l.insert_network(block, 0)) {
+            self.merge_next = true;
+        }
+        let networks = self.networks_of(block);
+        if networks == 0 {
+            return None;
         }
         let mut c = self.cursor;
         c.block = block;
-        c.network = c.network.min(self.networks_of(block).saturating_sub(1));
+        c.network = c.network.min(networks - 1);
         c.row = c.row.min(self.rows_of(block, c.network).saturating_sub(1));
         c.col = c.col.min(self.width());
         self.cursor = c;
@@ -279,17 +320,21 @@ impl LadderApp {
             }
             PlaceKind::NewSub => return self.new_subprogram(text),
             PlaceKind::RenameSub(i) => return self.rename_subprogram(i, text),
-            PlaceKind::BlockInfo(i) => {
-                self.set_block_info(i, text);
-                return Ok(());
-            }
+            PlaceKind::BlockInfo(key) => return self.set_block_info(key, text),
             _ => {}
+        }
+        let operand = |t: &str| Operand::parse(t).map_err(|e| e.to_string());
+        // A typing error refuses before anything changes (no network added for nothing).
+        if matches!(
+            kind,
+            PlaceKind::Contact { .. } | PlaceKind::Coil { .. } | PlaceKind::Parallel { .. }
+        ) {
+            operand(text)?;
         }
         let Some(at) = self.ensure_network() else {
             return Err(Msg::NoProject.text(self.settings.lang).into());
         };
         let width = self.width();
-        let operand = |t: &str| Operand::parse(t).map_err(|e| e.to_string());
         match kind {
             PlaceKind::Contact { negated } | PlaceKind::Parallel { negated } => {
                 let cell = Cell::Contact {
@@ -665,7 +710,16 @@ impl LadderApp {
 
     /// Replaces a table through the history (table editors call this for every change).
     pub fn edit_table(&mut self, edit: TableEdit) {
-        if let Some(doc) = self.doc.as_mut().filter(|d| !d.read_only) {
+        if self.doc.as_ref().is_some_and(|d| d.read_only) {
+            let text = Msg::ReadOnly.text(self.settings.lang).to_string();
+            self.output.push(OutputLine {
+                text,
+                error: true,
+                target: None,
+            });
+            return;
+        }
+        if let Some(doc) = self.doc.as_mut() {
             let inverse = doc.project.apply_table(edit);
             doc.history.record(inverse);
             doc.changed();
@@ -679,6 +733,7 @@ impl LadderApp {
         {
             doc.changed();
         }
+        self.clamp_ui_state();
     }
 
     /// Ctrl+Y.
@@ -688,6 +743,7 @@ impl LadderApp {
         {
             doc.changed();
         }
+        self.clamp_ui_state();
     }
 
     /// The operand prompt: a text field; Enter places, Escape cancels.

@@ -248,6 +248,25 @@ fn remove_copy(copy: &Path) {
     }
 }
 
+/// The path with `.`, `..` and links resolved, so that two spellings of one file compare
+/// equal; a file that does not exist yet gets its folder resolved.
+pub fn canonical(path: &Path) -> PathBuf {
+    if let Ok(p) = std::fs::canonicalize(path) {
+        return p;
+    }
+    match (path.parent(), path.file_name()) {
+        (Some(dir), Some(name)) => {
+            let dir = if dir.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                dir
+            };
+            std::fs::canonicalize(dir).map_or_else(|_| path.to_path_buf(), |d| d.join(name))
+        }
+        _ => path.to_path_buf(),
+    }
+}
+
 /// Writes `text` to `path` through a temporary file in the same folder and a rename, so a
 /// crash leaves the old file or the new one.
 fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
@@ -320,6 +339,13 @@ impl LadderApp {
         self.function_dialog = None;
         self.jump_to = None;
         self.tables = Default::default();
+        // Nothing of the old project stays pointed at: selection, drag, tabs, and output
+        // lines whose targets were its cells. (The clipboard stays: copying between
+        // projects is how networks move from one machine's ladder to another's.)
+        self.selection = None;
+        self.drag_from = None;
+        self.tabs.clear();
+        self.output.retain(|l| l.target.is_none());
     }
 
     fn start_dialog(&mut self, kind: DialogKind) {
@@ -339,6 +365,11 @@ impl LadderApp {
             let name = format!("{stem}.{e}");
             dir.map_or(PathBuf::from(&name), |d| d.join(&name))
         });
+        if self.dialogs.busy() {
+            // One dialog at a time; what was waiting for this one is dropped with it.
+            self.after_save = None;
+            return;
+        }
         if let Some(ctx) = self.ctx.clone() {
             self.dialogs.start(&ctx, kind, suggested);
         }
@@ -355,9 +386,9 @@ impl LadderApp {
             return;
         };
         match kind {
-            DialogKind::OpenProject => {
-                self.open(&path);
-            }
+            // The editor kept working while the dialog was open: ask again about what
+            // changed meanwhile.
+            DialogKind::OpenProject => self.request(Action::Open(path)),
             DialogKind::SaveProjectAs => self.save_as(&path),
             DialogKind::ExportIl => self.export_il(&path),
             DialogKind::ExportComments => self.export_comments(&path),
@@ -367,6 +398,7 @@ impl LadderApp {
 
     /// Opens a project file. A damaged one (bad checksum, header or body) is offered read-only.
     pub fn open(&mut self, path: &Path) -> bool {
+        let path = &canonical(path);
         match Document::open(path) {
             Ok(doc) => {
                 self.drop_recovery_copy();
@@ -395,6 +427,7 @@ impl LadderApp {
     /// Opens what can be read of a damaged file, read-only: it can be looked at, compiled and
     /// saved under another name, never over the original.
     pub fn open_recovered(&mut self, path: &Path) -> bool {
+        let path = &canonical(path);
         let lang = self.settings.lang;
         let result = std::fs::read(path)
             .map_err(|e| e.to_string())
@@ -452,7 +485,8 @@ impl LadderApp {
     pub fn save_as(&mut self, path: &Path) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_mut() else { return };
-        if doc.recovered_from.as_deref() == Some(path) {
+        let path = &canonical(path);
+        if doc.recovered_from.as_deref() == Some(path.as_path()) {
             self.after_save = None;
             self.say(Msg::NotOverDamaged.text(lang).into(), true);
             return;
@@ -604,7 +638,9 @@ impl LadderApp {
         let Some(dir) = self.recovery_dir.as_ref() else {
             return;
         };
-        if let Some(copy) = recovery_copies(dir).into_iter().next() {
+        if let Some(copy) = recovery_copies(dir).into_iter().next()
+            && self.question.is_none()
+        {
             self.question = Some(Question::Restore(copy));
         }
     }
@@ -687,7 +723,8 @@ impl LadderApp {
                 }
             });
             if ui.input(|i| i.key_pressed(egui::Key::Escape)) {
-                answer = Some(buttons.len() - 1);
+                // Escape never discards: it cancels, or leaves the recovery copy for later.
+                answer = Some(usize::MAX);
             }
         });
         let Some(answer) = answer else { return };
@@ -702,7 +739,7 @@ impl LadderApp {
                 self.open_recovered(&path);
             }
             (Question::Restore(copy), 0) => self.restore(&copy),
-            (Question::Restore(copy), _) => remove_copy(&copy.copy),
+            (Question::Restore(copy), 1) => remove_copy(&copy.copy),
             _ => {}
         }
     }

@@ -692,7 +692,13 @@ impl FunctionDialog {
 impl LadderApp {
     /// F3: opens the dialog for a new box in the output column of the cursor's row.
     pub fn open_function_dialog(&mut self) {
-        if let Some(at) = self.ensure_network() {
+        // No network is added yet: an empty block gets one only when OK places the box, in
+        // the same undo step.
+        if let super::tree::View::Block(block) = self.view {
+            let at = CellRef {
+                block,
+                ..self.cursor
+            };
             self.function_dialog = Some(FunctionDialog::new(at));
         }
     }
@@ -748,6 +754,17 @@ impl LadderApp {
         let cell = dialog
             .cell()
             .ok_or_else(|| Msg::FnChoose.text(lang).to_string())?;
+        let mut dialog = dialog.clone();
+        if !dialog.editing {
+            // The cursor's row; in an empty block, a new network (folded into this step).
+            self.cursor = CellRef {
+                block: dialog.at.block,
+                ..self.cursor
+            };
+            dialog.at = self
+                .ensure_network()
+                .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
+        }
         let ladder = self
             .doc
             .as_ref()

@@ -162,6 +162,7 @@ messages! {
     XrefPlace => "位置", "Place";
     XrefElement => "元件", "Element";
     Tab => "标签", "Tab";
+    NoSuchSub => "这个程序块已不存在", "this block no longer exists";
     PenShort => "画线", "Draw lines";
     SaveChanges => "保存修改", "Save changes";
     Pen => "画线模式（拖动画横线/竖线）", "Line mode (drag to draw wires and links)";

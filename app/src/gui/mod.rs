@@ -89,6 +89,8 @@ pub struct LadderApp {
     pub xref_filter: String,
     /// The view tabs above the main area, in the order they were opened.
     pub tabs: Vec<View>,
+    /// The next recorded edit joins the last undo step (a network added for a gesture).
+    pub merge_next: bool,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -139,6 +141,7 @@ impl LadderApp {
             xref: Default::default(),
             xref_filter: String::new(),
             tabs: Vec::new(),
+            merge_next: false,
         };
         let start = path
             .map(Path::to_path_buf)
@@ -221,12 +224,71 @@ impl LadderApp {
     }
 
     /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
-    /// network, with the cursor on it.
+    /// network, with the cursor on it. A place that no longer exists is clamped.
     pub fn jump(&mut self, at: model::CellRef) {
         self.view = View::Block(at.block);
         self.jump_to = Some(at.network);
         self.selection = None;
         self.cursor = at;
+        self.clamp_ui_state();
+    }
+
+    /// Brings the UI state back inside the project after anything that may have shrunk it
+    /// (undo, redo, a deleted subprogram, another project): the view, the cursor, the
+    /// selection, the drag and the tabs never point past the end.
+    pub fn clamp_ui_state(&mut self) {
+        let Some(doc) = self.doc.as_ref() else {
+            self.selection = None;
+            self.drag_from = None;
+            return;
+        };
+        let p = &doc.project;
+        let blocks = &p.ladder.blocks;
+        let tables = p.symbol_tables.len();
+        let valid = |v: &View| match v {
+            View::Block(b) => *b < blocks.len(),
+            View::Symbols(t) => *t < tables,
+            _ => true,
+        };
+        if !valid(&self.view) {
+            self.view = View::Block(1);
+            self.drag_from = None;
+        }
+        self.tabs.retain(valid);
+        let c = &mut self.cursor;
+        if c.block >= blocks.len() {
+            *c = model::CellRef {
+                block: 1,
+                network: 0,
+                row: 0,
+                col: 0,
+            };
+        }
+        let networks = &blocks[c.block].networks;
+        c.network = c.network.min(networks.len().saturating_sub(1));
+        let rows = networks.get(c.network).map_or(1, |n| n.rows.len());
+        c.row = c.row.min(rows.saturating_sub(1));
+        c.col = c.col.min(p.ladder.width);
+        if let Some((b, sel)) = self.selection {
+            let fits = |n: usize, r: usize| {
+                blocks
+                    .get(b)
+                    .and_then(|bl| bl.networks.get(n))
+                    .is_some_and(|net| r < net.rows.len())
+            };
+            let ok = match sel {
+                selection::Selection::Cells {
+                    network,
+                    rows,
+                    cols,
+                } => fits(network, rows.0.max(rows.1)) && cols.0.max(cols.1) <= p.ladder.width,
+                selection::Selection::Rows { network, rows } => fits(network, rows.0.max(rows.1)),
+                selection::Selection::Networks { networks } => fits(networks.0.max(networks.1), 0),
+            };
+            if !ok {
+                self.selection = None;
+            }
+        }
     }
 
     fn menu_ui(&mut self, ui: &mut egui::Ui) {
@@ -327,15 +389,22 @@ impl LadderApp {
                     && let model::BlockKind::Sub { number, name } = &b.kind
                 {
                     self.prompt = prompt(
-                        editing::PlaceKind::RenameSub(i),
+                        editing::PlaceKind::RenameSub(*number),
                         format!("{number} {name}").trim().to_string(),
                     );
                 }
             }
-            TreeAction::DeleteSub(i) => self.delete_subprogram(i),
+            TreeAction::DeleteSub(i) => {
+                if block(i).is_some_and(|b| b.kind.sub_number().is_some()) {
+                    self.delete_subprogram(i);
+                }
+            }
             TreeAction::BlockInfo(i) => {
                 if let Some(b) = block(i) {
-                    self.prompt = prompt(editing::PlaceKind::BlockInfo(i), b.info.clone());
+                    self.prompt = prompt(
+                        editing::PlaceKind::BlockInfo(pointer::BlockKey::of(&b.kind)),
+                        b.info.clone(),
+                    );
                 }
             }
             TreeAction::ViewCalls(n) => self.view_calls(n),
@@ -719,6 +788,9 @@ impl eframe::App for LadderApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
+        self.clamp_ui_state();
+        // A network added for a gesture joins that gesture's step only within its frame.
+        self.merge_next = false;
         self.poll_dialogs();
         self.dropped_files(&ctx);
         self.close_requested(&ctx);

@@ -12,6 +12,38 @@ use ladder_engine::Op;
 use ladder_engine::address::Area;
 use ladder_engine::model::{Block, BlockKind, Cell, Edit, Operand};
 
+/// A block named by what it is rather than by its place in the list, which undo and
+/// subprogram edits change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BlockKey {
+    /// Level 1.
+    Level1,
+    /// Level 2.
+    Level2,
+    /// Subprogram P`0`.
+    Sub(u16),
+}
+
+impl BlockKey {
+    /// The key of a block.
+    pub fn of(kind: &BlockKind) -> BlockKey {
+        match kind {
+            BlockKind::Level1 => BlockKey::Level1,
+            BlockKind::Level2 => BlockKey::Level2,
+            BlockKind::Sub { number, .. } => BlockKey::Sub(*number),
+        }
+    }
+
+    /// Where the block is now, if it still exists.
+    pub fn index(self, ladder: &ladder_engine::model::Ladder) -> Option<usize> {
+        match self {
+            BlockKey::Level1 => Some(0),
+            BlockKey::Level2 => Some(1),
+            BlockKey::Sub(n) => ladder.sub_index(n),
+        }
+    }
+}
+
 /// An editing command: one entry of the Edit menu and the right-click menu.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Command {
@@ -132,6 +164,19 @@ impl LadderApp {
         });
     }
 
+    /// The cursor's cell when the shown block has it (deleting never adds a network first).
+    pub fn existing_cursor(&mut self) -> Option<Cursor> {
+        let View::Block(block) = self.view else {
+            return None;
+        };
+        let ladder = &self.doc.as_ref()?.project.ladder;
+        let n = ladder.blocks.get(block)?.networks.len();
+        if n == 0 {
+            return None;
+        }
+        self.ensure_network()
+    }
+
     /// Runs an editing command at the cursor.
     pub fn run_command(&mut self, c: Command) {
         match c {
@@ -154,19 +199,19 @@ impl LadderApp {
             Command::Delete => {
                 if self.selection.is_some() {
                     self.delete_selection();
-                } else if let Some(at) = self.ensure_network() {
+                } else if let Some(at) = self.existing_cursor() {
                     self.edit(|l| l.delete_element(at));
                 }
             }
             Command::DeleteLink => {
-                if let Some(at) = self.ensure_network() {
+                if let Some(at) = self.existing_cursor() {
                     self.edit(|l| l.set_link(at, false));
                 }
             }
             Command::InsertRowAbove => self.insert_row(false),
             Command::InsertRowBelow => self.insert_row(true),
             Command::DeleteRow => {
-                if let Some(at) = self.ensure_network() {
+                if let Some(at) = self.existing_cursor() {
                     self.selection = Some((
                         at.block,
                         Selection::Rows {
@@ -180,7 +225,7 @@ impl LadderApp {
             Command::InsertNetworkAbove => self.insert_network(false),
             Command::InsertNetworkBelow => self.insert_network(true),
             Command::DeleteNetwork => {
-                if let Some(at) = self.ensure_network() {
+                if let Some(at) = self.existing_cursor() {
                     self.selection = Some((
                         at.block,
                         Selection::Networks {
@@ -400,6 +445,18 @@ impl LadderApp {
             return;
         }
         let width = self.doc.as_ref().map_or(0, |d| d.project.ladder.width);
+        // The drag began on this frame's drawing, but check: the ladder may have changed.
+        let exists = self.doc.as_ref().is_some_and(|d| {
+            d.project
+                .ladder
+                .blocks
+                .get(block)
+                .and_then(|b| b.networks.get(network))
+                .is_some_and(|n| r0.max(r1) < n.rows.len())
+        });
+        if !exists || width == 0 {
+            return;
+        }
         self.edit(|l| {
             let n = &l.blocks[block].networks[network];
             let at = |row, col| Cursor {
@@ -541,6 +598,15 @@ impl LadderApp {
                 block: Box::new(block),
             })
         }) {
+            // Blocks from `index` on moved down one place: their tabs follow.
+            for v in &mut self.tabs {
+                if let View::Block(b) = v
+                    && *b >= index
+                {
+                    *b += 1;
+                }
+            }
+            self.selection = None;
             self.view = View::Block(index);
             self.cursor = Cursor {
                 block: index,
@@ -576,8 +642,8 @@ impl LadderApp {
         Ok((number.unwrap_or(0), name))
     }
 
-    /// Renames (and renumbers) subprogram block `index` from `NUMBER [NAME]`.
-    pub fn rename_subprogram(&mut self, index: usize, text: &str) -> Result<(), String> {
+    /// Renames (and renumbers) subprogram P`old` from `NUMBER [NAME]`.
+    pub fn rename_subprogram(&mut self, old: u16, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
         let (number, name) = self.parse_sub(text)?;
         let ladder = &self
@@ -586,6 +652,9 @@ impl LadderApp {
             .ok_or(Msg::NoProject.text(lang))?
             .project
             .ladder;
+        let index = ladder
+            .sub_index(old)
+            .ok_or_else(|| format!("P{old:04}: {}", Msg::NoSuchSub.text(lang)))?;
         if ladder.sub_index(number).is_some_and(|i| i != index) {
             return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
         }
@@ -612,6 +681,7 @@ impl LadderApp {
                 .as_ref()
                 .and_then(|d| d.project.ladder.sub_index(number))
         {
+            self.tabs.clear();
             self.view = View::Block(i);
         }
         Ok(())
@@ -620,6 +690,16 @@ impl LadderApp {
     /// Deletes subprogram block `index` (one undo step brings it back).
     pub fn delete_subprogram(&mut self, index: usize) {
         if self.edit(|l| l.apply(Edit::DeleteBlock { index })) {
+            // Later blocks moved up one place: their tabs follow, the deleted one's closes.
+            self.tabs.retain(|v| *v != View::Block(index));
+            for v in &mut self.tabs {
+                if let View::Block(b) = v
+                    && *b > index
+                {
+                    *b -= 1;
+                }
+            }
+            self.selection = None;
             self.view = View::Block(1);
             self.cursor = Cursor {
                 block: 1,
@@ -631,7 +711,13 @@ impl LadderApp {
     }
 
     /// Sets a block's information text.
-    pub fn set_block_info(&mut self, index: usize, info: &str) {
+    pub fn set_block_info(&mut self, key: BlockKey, info: &str) -> Result<(), String> {
+        let lang = self.settings.lang;
+        let index = self
+            .doc
+            .as_ref()
+            .and_then(|d| key.index(&d.project.ladder))
+            .ok_or_else(|| Msg::NoSuchSub.text(lang).to_string())?;
         self.edit(|l| {
             let kind = l.blocks[index].kind.clone();
             l.apply(Edit::SetBlockHeader {
@@ -640,5 +726,6 @@ impl LadderApp {
                 info: info.to_string(),
             })
         });
+        Ok(())
     }
 }

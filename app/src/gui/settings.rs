@@ -69,6 +69,7 @@ impl Default for Settings {
 impl Settings {
     /// Puts a path first in the recent list.
     pub fn remember(&mut self, path: PathBuf) {
+        let path = super::files::canonical(&path);
         self.recent.retain(|p| *p != path);
         self.recent.insert(0, path);
         self.recent.truncate(RECENT_FILES);

@@ -72,19 +72,29 @@ impl Project {
 
     /// Applies a change and returns its inverse; a refused ladder edit changes nothing.
     pub fn apply_change(&mut self, change: Change) -> Result<Change, EditError> {
+        self.apply_change_with(change, true)
+    }
+
+    /// Applies a change from the undo history (see [`crate::model::Ladder::restore`]).
+    pub fn restore_change(&mut self, change: Change) -> Result<Change, EditError> {
+        self.apply_change_with(change, false)
+    }
+
+    fn apply_change_with(&mut self, change: Change, strict: bool) -> Result<Change, EditError> {
         match change {
-            Change::Ladder(e) => self.ladder.apply(e).map(Change::Ladder),
+            Change::Ladder(e) if strict => self.ladder.apply(e).map(Change::Ladder),
+            Change::Ladder(e) => self.ladder.restore(e).map(Change::Ladder),
             Change::Table(t) => Ok(Change::Table(self.apply_table(t))),
             Change::Whole(p) => Ok(Change::Whole(Box::new(std::mem::replace(self, *p)))),
             Change::Batch(changes) => {
                 let mut inverses = Vec::with_capacity(changes.len());
                 for c in changes {
-                    match self.apply_change(c) {
+                    match self.apply_change_with(c, strict) {
                         Ok(inv) => inverses.push(inv),
                         Err(err) => {
                             // Roll back so a refused batch changes nothing.
                             for inv in inverses.into_iter().rev() {
-                                let _ = self.apply_change(inv);
+                                let _ = self.apply_change_with(inv, false);
                             }
                             return Err(err);
                         }
@@ -136,17 +146,21 @@ impl History {
         self.redo.clear();
     }
 
-    /// Undoes the last change; false when there is nothing to undo.
+    /// Undoes the last change; false when there is nothing to undo. A change that cannot be
+    /// applied stays on its stack (nothing is lost).
     pub fn undo(&mut self, project: &mut Project) -> bool {
         let Some(change) = self.undo.pop() else {
             return false;
         };
-        match project.apply_change(change) {
+        match project.restore_change(change.clone()) {
             Ok(redo) => {
                 self.redo.push(redo);
                 true
             }
-            Err(_) => false,
+            Err(_) => {
+                self.undo.push(change);
+                false
+            }
         }
     }
 
@@ -155,12 +169,27 @@ impl History {
         let Some(change) = self.redo.pop() else {
             return false;
         };
-        match project.apply_change(change) {
+        match project.restore_change(change.clone()) {
             Ok(undo) => {
                 self.undo.push(undo);
                 true
             }
-            Err(_) => false,
+            Err(_) => {
+                self.redo.push(change);
+                false
+            }
+        }
+    }
+
+    /// Folds the last recorded change into `inverse`, so that one undo takes back both (a
+    /// network added for a gesture and the gesture itself).
+    pub fn record_merged(&mut self, inverse: impl Into<Change>) {
+        match self.undo.pop() {
+            Some(last) => {
+                self.undo.push(Change::Batch(vec![inverse.into(), last]));
+                self.redo.clear();
+            }
+            None => self.record(inverse),
         }
     }
 
@@ -204,6 +233,46 @@ mod tests {
         assert!(!h.undo(&mut p));
         while h.redo(&mut p) {}
         assert_eq!(p, full);
+    }
+
+    #[test]
+    fn undo_brings_back_an_element_drawn_in_the_wrong_column() {
+        use crate::model::{Cell, CellRef, Operand};
+        let mut p = Project::default();
+        p.ladder.insert_network(1, 0).unwrap();
+        // A coil in a contact column, as a file or an import may hold (L005).
+        p.ladder.blocks[1].networks[0].rows[0].cells[0] = Cell::Coil {
+            negated: false,
+            operand: Operand::parse("Y0.0").unwrap(),
+        };
+        let drawn = p.clone();
+        let mut h = History::new(10);
+        let at = CellRef {
+            block: 1,
+            network: 0,
+            row: 0,
+            col: 0,
+        };
+        let inv = p.ladder.delete_element(at).unwrap();
+        h.record(inv);
+        assert!(h.undo(&mut p));
+        assert_eq!(p, drawn, "the coil is back");
+        assert!(h.redo(&mut p));
+        assert!(h.undo(&mut p));
+        assert_eq!(p, drawn);
+    }
+
+    #[test]
+    fn a_network_of_another_width_is_refused() {
+        let mut p = Project::default();
+        let narrow = crate::model::Ladder::new(4).new_network();
+        let r = p.ladder.apply(crate::model::Edit::InsertNetwork {
+            block: 1,
+            index: 0,
+            network: Box::new(narrow),
+        });
+        assert!(matches!(r, Err(EditError::WrongWidth(_))), "{r:?}");
+        assert!(p.ladder.blocks[1].networks.is_empty());
     }
 
     #[test]

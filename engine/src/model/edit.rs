@@ -131,6 +131,9 @@ pub enum EditError {
     /// F6 on the first row has nothing to be parallel with.
     #[error("a parallel contact needs an element in the row above")]
     NothingAbove,
+    /// A network from another project (the clipboard) whose rows have another width.
+    #[error("the network does not fit this ladder: {0}")]
+    WrongWidth(String),
 }
 
 impl Ladder {
@@ -162,16 +165,29 @@ impl Ladder {
     /// Applies an edit and returns its inverse. A refused edit changes nothing (a batch is
     /// rolled back to where it started).
     pub fn apply(&mut self, edit: Edit) -> Result<Edit, EditError> {
+        self.apply_with(edit, true)
+    }
+
+    /// Applies an inverse from the undo history: the column rules are not checked, because
+    /// undo must bring back exactly what was there, even an element the user drew in the
+    /// wrong column (which the compiler reports as L005).
+    pub fn restore(&mut self, edit: Edit) -> Result<Edit, EditError> {
+        self.apply_with(edit, false)
+    }
+
+    fn apply_with(&mut self, edit: Edit, strict: bool) -> Result<Edit, EditError> {
         match edit {
             Edit::SetCell { at, cell } => {
                 self.check_cell(at)?;
                 let output_col = at.col == self.width;
-                if output_col && !cell.is_output_kind() {
+                if !strict {
+                    // Bounds were checked; the column rule is not.
+                } else if output_col && !cell.is_output_kind() {
                     return Err(EditError::WrongColumn(
                         "contacts and wires go left of the output column",
                     ));
                 }
-                if !output_col && !cell.is_contact_kind() {
+                if strict && !output_col && !cell.is_contact_kind() {
                     return Err(EditError::WrongColumn(
                         "coils and function boxes go in the output column at the right end",
                     ));
@@ -237,6 +253,7 @@ impl Ladder {
                 index,
                 network,
             } => {
+                let width = self.width;
                 let b = self
                     .blocks
                     .get_mut(block)
@@ -244,6 +261,7 @@ impl Ladder {
                 if index > b.networks.len() {
                     return Err(EditError::NoSuchPlace("network"));
                 }
+                network.check_width(width).map_err(EditError::WrongWidth)?;
                 b.networks.insert(index, *network);
                 Ok(Edit::DeleteNetwork { block, index })
             }
@@ -282,6 +300,9 @@ impl Ladder {
                 if index < 2 || index > self.blocks.len() || block.kind.sub_number().is_none() {
                     return Err(EditError::FixedBlock);
                 }
+                for n in &block.networks {
+                    n.check_width(self.width).map_err(EditError::WrongWidth)?;
+                }
                 self.blocks.insert(index, *block);
                 Ok(Edit::DeleteBlock { index })
             }
@@ -313,12 +334,12 @@ impl Ladder {
             Edit::Batch(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for e in edits {
-                    match self.apply(e) {
+                    match self.apply_with(e, strict) {
                         Ok(inv) => inverses.push(inv),
                         Err(err) => {
                             // Roll back what was applied so a refused batch changes nothing.
                             for inv in inverses.into_iter().rev() {
-                                let _ = self.apply(inv);
+                                let _ = self.apply_with(inv, false);
                             }
                             return Err(err);
                         }

@@ -52,6 +52,37 @@ impl Ladder {
         NetworkId(max + 1)
     }
 
+    /// Checks the invariants the editor and compiler rely on: a width of 1…`MAX_WIDTH`,
+    /// level 1 and level 2 first, then subprograms with distinct P numbers in ascending
+    /// order, every network at least one row, every row `width + 1` cells and junctions.
+    /// A file that breaks them is refused rather than opened and crashed on later.
+    pub fn check_structure(&self) -> Result<(), String> {
+        if !(1..=MAX_WIDTH).contains(&self.width) {
+            return Err(format!("width {} is not 1–{MAX_WIDTH}", self.width));
+        }
+        match self.blocks.get(..2).map(|b| (&b[0].kind, &b[1].kind)) {
+            Some((BlockKind::Level1, BlockKind::Level2)) => {}
+            _ => return Err("the first two blocks must be LEVEL1 and LEVEL2".into()),
+        }
+        let mut last = None;
+        for b in &self.blocks[2..] {
+            let Some(n) = b.kind.sub_number() else {
+                return Err(format!("{} appears after the subprograms begin", b.kind));
+            };
+            if last.is_some_and(|l| l >= n) {
+                return Err(format!("P{n:04} is out of order or repeated"));
+            }
+            last = Some(n);
+        }
+        for b in &self.blocks {
+            for (i, n) in b.networks.iter().enumerate() {
+                n.check_width(self.width)
+                    .map_err(|e| format!("{} network {}: {e}", b.kind, i + 1))?;
+            }
+        }
+        Ok(())
+    }
+
     /// A new empty network with a fresh id.
     pub fn new_network(&self) -> Network {
         let id = self.new_network_id();

@@ -84,6 +84,26 @@ pub struct Network {
 }
 
 impl Network {
+    /// Whether the network fits a ladder `width` contact columns wide: at least one row, each
+    /// with `width + 1` cells and junctions.
+    pub fn check_width(&self, width: usize) -> Result<(), String> {
+        if self.rows.is_empty() {
+            return Err("it has no rows".into());
+        }
+        for (r, row) in self.rows.iter().enumerate() {
+            if row.cells.len() != width + 1 || row.links.len() != width + 1 {
+                return Err(format!(
+                    "row {} has {} cells and {} junctions, not {}",
+                    r + 1,
+                    row.cells.len(),
+                    row.links.len(),
+                    width + 1
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// An empty network of one empty row.
     pub fn new(id: NetworkId, width: usize) -> Network {
         Network {
