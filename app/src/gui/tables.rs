@@ -1659,8 +1659,11 @@ impl LadderApp {
             } else {
                 None
             };
+            let read_only = self.doc.as_ref().is_some_and(|d| d.read_only);
             if let Some(m) = refusal {
                 draft.note = Some((true, m));
+            } else if read_only {
+                draft.note = Some((true, Msg::ReadOnly));
             } else {
                 let mut next = current.clone();
                 next.password = set.then(|| PasswordHash::new(&draft.new, &new_salt()));
