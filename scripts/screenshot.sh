@@ -1,7 +1,6 @@
 #!/usr/bin/env bash
 # Takes docs/screenshot.png: the editor on the sample project in a real window under Xvfb with
-# software rendering, after F9. Needs: apt-get install xvfb imagemagick xdotool (and the
-# window libraries of scripts/setup-debian.sh).
+# software rendering, after F9. Needs what `scripts/setup-debian.sh --xvfb` installs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build -q --release -p ladder-studio

@@ -3,6 +3,8 @@
 # it uses sudo). Rust itself comes from rustup (https://rustup.rs), version 1.95 or newer.
 #   scripts/setup-debian.sh          build tools and the libraries the editor's window needs
 #   scripts/setup-debian.sh --build  build tools only (enough for the tests, which need no display)
+#   scripts/setup-debian.sh --xvfb   the window libraries plus a virtual X server and the tools
+#                                    scripts/screenshot.sh uses (a real window, no screen)
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -12,6 +14,10 @@ if [ "${1:-}" != "--build" ]; then
   # The window: OpenGL/Vulkan through Mesa (software rendering works too), X11 and Wayland
   # input, and fontconfig.
   PACKAGES="$PACKAGES libgl1-mesa-dri libegl1 libxkbcommon-x11-0 libxcursor1 libxrandr2 libxi6 libx11-xcb1 libwayland-client0 fontconfig"
+fi
+if [ "${1:-}" = "--xvfb" ]; then
+  # Software rendering in a virtual X server, and the tools to drive and capture it.
+  PACKAGES="$PACKAGES xvfb xdotool imagemagick"
 fi
 missing=""
 for p in $PACKAGES; do
