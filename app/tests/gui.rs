@@ -1109,3 +1109,25 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
         "the edit made meanwhile is not dropped without asking"
     );
 }
+
+#[test]
+fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
+    use egui::{Key, Modifiers};
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.state_mut().view = View::Symbols(0);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "25");
+    assert!(h.state().prompt.is_none());
+    let sheet = ladder_studio::gui::tables::Sheet::Symbols(0);
+    assert_eq!(h.state().tables.selected.get(&sheet), Some(&24));
+    assert!(
+        h.query_all_by_value("KEY_SP_CCW").next().is_some(),
+        "row 25 was scrolled into view (only visible rows are laid out)"
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "9999");
+    let err = h.state().prompt.clone().unwrap().error.unwrap();
+    assert!(err.starts_with("The table has no such row: 1–241"), "{err}");
+}

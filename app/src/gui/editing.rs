@@ -243,6 +243,21 @@ impl LadderApp {
     /// Ctrl+G: moves the cursor to `NETWORK [ROW]` of the shown block and scrolls to it.
     pub fn go_to(&mut self, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
+        if let Some(sheet) = self.tables.sheet_of(self.view) {
+            // In a table view, Ctrl+G goes to a row of the table.
+            let Some(doc) = self.doc.as_ref() else {
+                return Ok(());
+            };
+            let rows = self.tables.rows_in(sheet, &doc.project);
+            let row = text
+                .trim()
+                .parse::<usize>()
+                .map_err(|_| Msg::GoToRowUsage.text(lang).to_string())?;
+            if row == 0 || !self.tables.go_to_row(sheet, row - 1, &doc.project) {
+                return Err(format!("{}: 1–{rows}", Msg::NoSuchTableRow.text(lang)));
+            }
+            return Ok(());
+        }
         let block = self
             .block()
             .ok_or_else(|| Msg::GoToUsage.text(lang).to_string())?;

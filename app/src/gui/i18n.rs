@@ -162,6 +162,8 @@ messages! {
     XrefPlace => "位置", "Place";
     XrefElement => "元件", "Element";
     Tab => "标签", "Tab";
+    NoSuchTableRow => "表格没有这一行", "The table has no such row";
+    GoToRowUsage => "转到：输入表格的行号，例如 25", "Go to: type a row number of the table, e.g. 25";
     NoSuchSub => "这个程序块已不存在", "this block no longer exists";
     PenShort => "画线", "Draw lines";
     SaveChanges => "保存修改", "Save changes";

@@ -220,6 +220,42 @@ pub struct TableState {
 }
 
 impl TableState {
+    /// The row table `view` shows (the data-setting view: its current tab; the K page is not
+    /// a row table).
+    pub fn sheet_of(&self, view: View) -> Option<Sheet> {
+        Some(match view {
+            View::Symbols(t) => Sheet::Symbols(t),
+            View::Data => match self.data_tab {
+                DataTab::K => return None,
+                DataTab::D => Sheet::D,
+                DataTab::DFloat => Sheet::DFloat,
+                DataTab::Dt => Sheet::Dt,
+                DataTab::Dc => Sheet::Dc,
+            },
+            View::Messages => Sheet::Messages,
+            View::Diagnosis => Sheet::Diagnosis,
+            View::Permissions => Sheet::Permissions,
+            View::MCodes => Sheet::MCodes,
+            _ => return None,
+        })
+    }
+
+    /// Ctrl+G in a table (manual §3.2.2 转到): row `row` (0-based) is selected and scrolled
+    /// into view; false when the table has no such row.
+    pub fn go_to_row(&mut self, sheet: Sheet, row: usize, project: &Project) -> bool {
+        if row >= sheet.len(project) {
+            return false;
+        }
+        self.selected.insert(sheet, row);
+        self.scroll_to = Some((sheet, row));
+        true
+    }
+
+    /// Rows of a table.
+    pub fn rows_in(&self, sheet: Sheet, project: &Project) -> usize {
+        sheet.len(project)
+    }
+
     /// Drops everything typed and not committed.
     fn forget_drafts(&mut self) {
         self.pending.clear();
