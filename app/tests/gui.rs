@@ -210,6 +210,18 @@ fn find_and_replace_an_address() {
     enter_operand(&mut h, "y3.7");
     let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
     assert_eq!(out.last().unwrap(), "3 found", "{out:?}");
+    let at = |h: &Harness<'static, LadderApp>| {
+        let c = h.state().cursor;
+        (c.network, c.row, c.col)
+    };
+    assert_eq!(at(&h), (0, 0, 10), "the cursor went to the first match");
+    // Ctrl+F, Enter again: the next match ("find next").
+    h.key_press_modifiers(Modifiers::COMMAND, Key::F);
+    h.run();
+    assert_eq!(h.state().prompt.as_ref().unwrap().text, "y3.7");
+    h.key_press(Key::Enter);
+    h.run();
+    assert_eq!(at(&h), (0, 1, 0));
     h.get_by_label_contains("LEVEL2 N0002 1:1").click();
     h.run();
     assert_eq!(h.state().view, View::Block(1));

@@ -196,7 +196,9 @@ impl LadderApp {
             .collect()
     }
 
-    /// Ctrl+F: every match goes to the output window; a click shows it.
+    /// Ctrl+F: every match goes to the output window (a click shows it) and the cursor goes
+    /// to the next match; Ctrl+F, Enter again (the prompt keeps the text) goes on to the one
+    /// after, as GSKLadder's "find next".
     pub fn find(&mut self, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
         let query = Query::parse(text)
@@ -205,7 +207,8 @@ impl LadderApp {
             return Ok(());
         };
         let project = &doc.project;
-        let hits = find::find(project, &query);
+        let mut hits = find::find(project, &query);
+        hits.sort_unstable();
         let mut lines: Vec<OutputLine> = hits
             .iter()
             .map(|at| {
@@ -237,6 +240,18 @@ impl LadderApp {
             target: None,
         });
         self.output = lines;
+        // The same search again steps past the cursor; a new one may start on it.
+        let again = self.last_find == text;
+        let c = self.cursor;
+        let next = hits
+            .iter()
+            .find(|h| if again { **h > c } else { **h >= c })
+            .or(hits.first())
+            .copied();
+        self.last_find = text.to_string();
+        if let Some(at) = next {
+            self.jump(at);
+        }
         Ok(())
     }
 
@@ -513,7 +528,11 @@ impl LadderApp {
         } else if key(Modifiers::COMMAND, Key::I) {
             self.insert_network(true);
         } else if key(Modifiers::COMMAND, Key::F) {
-            self.prompt = open(PlaceKind::Find);
+            self.prompt = Some(Prompt {
+                kind: PlaceKind::Find,
+                text: self.last_find.clone(),
+                error: None,
+            });
         } else if key(Modifiers::COMMAND, Key::H) {
             self.prompt = open(PlaceKind::Replace);
         } else if key(Modifiers::COMMAND, Key::G) {

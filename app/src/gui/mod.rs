@@ -91,6 +91,8 @@ pub struct LadderApp {
     pub tabs: Vec<View>,
     /// The next recorded edit joins the last undo step (a network added for a gesture).
     pub merge_next: bool,
+    /// The last text searched for (Ctrl+F offers it again, to find the next match).
+    pub last_find: String,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -142,6 +144,7 @@ impl LadderApp {
             xref_filter: String::new(),
             tabs: Vec::new(),
             merge_next: false,
+            last_find: String::new(),
         };
         let start = path
             .map(Path::to_path_buf)
