@@ -191,13 +191,21 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             None => {}
         }
     }
+    // The table keeps a row per A bit of the largest profile; a smaller profile (the 980's
+    // A0–A24) must leave the rows beyond its range empty.
     let rows = crate::model::tables::message_rows(profile);
-    if project.messages.rows.len() != rows {
-        sink.report(
-            at(0, 0),
-            Code::T005MessageNumber,
-            format!("the message table must have exactly {rows} rows, one per A bit"),
-        );
+    for (k, m) in project.messages.rows.iter().enumerate().skip(rows) {
+        if *m != crate::model::Message::default() {
+            sink.report(
+                at(k, 0),
+                Code::T005MessageNumber,
+                format!(
+                    "{} is beyond this controller's A range (A0000.0–{}): clear the row",
+                    MessageTable::address(k),
+                    MessageTable::address(rows - 1)
+                ),
+            );
+        }
     }
     // Version information.
     sink.at(usize::MAX, "VERSION", 0);
@@ -214,5 +222,38 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                 format!("the {field} is longer than {max} characters"),
             );
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compiler::compile;
+    use crate::profile::ProfileId;
+
+    fn t005(p: &Project) -> Vec<String> {
+        compile(p)
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == Code::T005MessageNumber)
+            .map(|d| d.message.clone())
+            .collect()
+    }
+
+    #[test]
+    fn a_gsk980_project_has_a_message_row_per_a_bit_of_its_own_range() {
+        let mut p = Project {
+            profile: ProfileId::Gsk980,
+            ..Project::default()
+        };
+        assert!(t005(&p).is_empty(), "an empty 980 project compiles clean");
+        let a = Address::parse("A0030.0").unwrap();
+        let k = MessageTable::row_of(a).unwrap();
+        p.messages.rows[k].number = Some(1001);
+        let found = t005(&p);
+        assert_eq!(found.len(), 1, "{found:?}");
+        assert!(found[0].contains("A0030.0 is beyond this controller's A range"));
+        p.profile = ProfileId::Gsk988ta;
+        assert!(t005(&p).is_empty(), "the 988TA has A0–A49");
     }
 }
