@@ -4,8 +4,9 @@
 use crate::source::Source;
 use clap::{Parser, Subcommand};
 use ladder_engine::compiler::{Code, Compiled, compile};
+use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Script};
-use ladder_engine::vm::Vm;
+use ladder_engine::vm::cnc::Cnc;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
 use std::io::Write;
@@ -84,6 +85,9 @@ pub enum Command {
         /// Write every watched address per tick to this CSV file.
         #[arg(long)]
         trace: Option<PathBuf>,
+        /// Also run the simulated CNC (the `cnc` script commands and `cnc.KEY` values).
+        #[arg(long)]
+        cnc: bool,
     },
     /// Time the scan.
     Bench {
@@ -92,6 +96,9 @@ pub enum Command {
         /// Scans to time.
         #[arg(long, default_value_t = 10_000)]
         scans: u64,
+        /// Run the simulated CNC too, on a looping part program, and time its exchange.
+        #[arg(long)]
+        cnc: bool,
     },
     /// Build a project whose ladder diagram is drawn from an instruction list.
     ImportIl {
@@ -154,8 +161,9 @@ where
             path,
             script,
             trace,
-        }) => sim(&path, &script, trace.as_deref(), out, err),
-        Some(Command::Bench { path, scans }) => bench(&path, scans, out, err),
+            cnc,
+        }) => sim(&path, &script, trace.as_deref(), cnc, out, err),
+        Some(Command::Bench { path, scans, cnc }) => bench(&path, scans, cnc, out, err),
         Some(Command::ExportComments { path, lang, output }) => {
             export_comments(&path, lang.as_deref(), output.as_deref(), out, err)
         }
@@ -292,8 +300,9 @@ fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<
     Ok(i32::from(errors > 0))
 }
 
-/// Builds a PLC for a PATH, or reports why the program cannot run (exit 1).
-fn plc(path: &Path, err: &mut dyn Write) -> anyhow::Result<Result<Vm, i32>> {
+/// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the
+/// program cannot run (exit 1).
+fn machine(path: &Path, cnc: bool, err: &mut dyn Write) -> anyhow::Result<Result<Machine, i32>> {
     let source = Source::read(path)?;
     let project = match source {
         Source::Project(p) => p,
@@ -316,31 +325,46 @@ fn plc(path: &Path, err: &mut dyn Write) -> anyhow::Result<Result<Vm, i32>> {
         let _ = writeln!(err, "{}; the program cannot run", summary(&compiled));
         return Ok(Err(1));
     }
-    Ok(Ok(Vm::new(&project).map_err(|e| anyhow::anyhow!("{e}"))?))
+    Ok(Ok(
+        Machine::new(&project, cnc).map_err(|e| anyhow::anyhow!("{e}"))?
+    ))
 }
 
 fn sim(
     path: &Path,
     script_path: &Path,
     trace: Option<&Path>,
+    cnc: bool,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     let text = std::fs::read_to_string(script_path)
         .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", script_path.display()))?;
-    let mut vm = match plc(path, err)? {
-        Ok(vm) => vm,
+    let mut machine = match machine(path, cnc, err)? {
+        Ok(m) => m,
         Err(code) => return Ok(code),
     };
     let name = script_path.display().to_string();
-    let script = match Script::parse(&text, vm.profile()) {
+    let folder = script_path
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default();
+    let read_file = |p: &str| -> Result<String, String> {
+        let full = folder.join(p);
+        std::fs::read_to_string(&full).map_err(|e| format!("cannot read {}: {e}", full.display()))
+    };
+    let options = sim::Options {
+        cnc,
+        read_file: &read_file,
+    };
+    let script = match Script::parse_with(&text, machine.plc.profile(), &options) {
         Ok(s) => s,
         Err(e) => {
             let _ = writeln!(err, "{name}:{}: {}", e.line, e.message);
             return Ok(2);
         }
     };
-    let outcome = sim::run(&mut vm, &script, &name);
+    let outcome = sim::run(&mut machine, &script, &name, trace.is_some());
     for line in &outcome.output {
         let _ = writeln!(out, "{line}");
     }
@@ -352,28 +376,58 @@ fn sim(
     Ok(i32::from(outcome.failed > 0))
 }
 
-fn bench(path: &Path, scans: u64, out: &mut dyn Write, err: &mut dyn Write) -> anyhow::Result<i32> {
-    let mut vm = match plc(path, err)? {
-        Ok(vm) => vm,
+/// The part program `bench --cnc` runs in a loop: rapid, cutting feed, a dwell and the M/S/T
+/// handshakes, ending in M99 so the CNC never stops.
+const BENCH_PROGRAM: &str = "O0001;N10 M03 S800;N20 G00 X40 Z2;N30 G01 Z-20 F300;N40 G04 P200;\
+N50 G00 X60 Z10;N60 M05;N70 M99";
+
+fn bench(
+    path: &Path,
+    scans: u64,
+    cnc: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let mut machine = match machine(path, cnc, err)? {
+        Ok(m) => m,
         Err(code) => return Ok(code),
     };
+    if let Some(c) = &mut machine.cnc {
+        use ladder_engine::cnc::command::CncCommand;
+        c.apply(&CncCommand::Program(BENCH_PROGRAM.into()))
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+    }
     let scans = scans.max(1);
     // Warm up caches and branch predictors before timing.
     for _ in 0..scans.min(1000) {
-        vm.tick();
+        machine.tick();
     }
-    let before = vm.executed_steps();
+    let before = machine.plc.executed_steps();
     let start = std::time::Instant::now();
     for _ in 0..scans {
-        vm.tick();
+        machine.tick();
     }
     let elapsed = start.elapsed().as_nanos() as f64;
-    if let Some(h) = vm.halt() {
+    if let Some(h) = machine.plc.halt() {
         let _ = writeln!(err, "the PLC halted during the benchmark: {h}");
         return Ok(1);
     }
-    let steps = (vm.executed_steps() - before) as f64 / scans as f64;
+    let steps = (machine.plc.executed_steps() - before) as f64 / scans as f64;
     let ns_per_scan = elapsed / scans as f64;
+    if let Some(cnc) = &mut machine.cnc {
+        // The exchange alone, timed inside the same kind of run (the clock read adds a few
+        // tens of ns to each figure).
+        let mut timed = TimedCnc { cnc, nanos: 0 };
+        for _ in 0..scans {
+            machine.plc.tick(&mut timed);
+        }
+        let per = timed.nanos as f64 / scans as f64;
+        let hour = ns_per_scan * 450_000.0 / 1e9;
+        let _ = writeln!(
+            out,
+            "cnc_ns_per_exchange={per:.1} machine_ns_per_tick={ns_per_scan:.1} one_hour_s={hour:.3}"
+        );
+    }
     let _ = writeln!(
         out,
         "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3}",
@@ -382,6 +436,32 @@ fn bench(path: &Path, scans: u64, out: &mut dyn Write, err: &mut dyn Write) -> a
         ns_per_scan / steps.max(1.0)
     );
     Ok(0)
+}
+
+/// The simulated CNC with a stopwatch on its exchange, for `bench --cnc`.
+struct TimedCnc<'a> {
+    cnc: &'a mut ladder_engine::cnc::SimCnc,
+    nanos: u128,
+}
+
+impl Cnc for TimedCnc<'_> {
+    fn window_is_low_speed(&self, function: i32) -> bool {
+        self.cnc.window_is_low_speed(function)
+    }
+    fn window(&mut self, block: &mut [i32]) {
+        self.cnc.window(block);
+    }
+    fn machine_position(&self, axis: u32) -> Option<i64> {
+        self.cnc.machine_position(axis)
+    }
+    fn axis_status(&self, group: u8, ebuf: bool) -> ladder_engine::vm::cnc::AxisStatus {
+        self.cnc.axis_status(group, ebuf)
+    }
+    fn exchange(&mut self, now_ms: u64, g: &[u8], a: &[u8], f: &mut [u8]) {
+        let t = std::time::Instant::now();
+        self.cnc.exchange(now_ms, g, a, f);
+        self.nanos += t.elapsed().as_nanos();
+    }
 }
 
 /// The project a PATH holds (an IL file drawn as a ladder), or the exit code when it has none.

@@ -7,6 +7,7 @@
 use ladder_engine::generate::{Mix, program_il};
 use ladder_engine::il;
 use ladder_engine::vm::Vm;
+use ladder_engine::vm::cnc::NoCnc;
 use std::time::{Duration, Instant};
 
 fn vm(steps: u32, mix: Mix) -> Vm {
@@ -19,12 +20,12 @@ fn vm(steps: u32, mix: Mix) -> Vm {
 /// Nanoseconds per scan and per executed step over `scans` back-to-back scans.
 fn hot(vm: &mut Vm, scans: u64) -> (f64, f64) {
     for _ in 0..1000 {
-        vm.tick();
+        vm.tick(&mut NoCnc);
     }
     let before = vm.executed_steps();
     let t = Instant::now();
     for _ in 0..scans {
-        vm.tick();
+        vm.tick(&mut NoCnc);
     }
     let ns = t.elapsed().as_nanos() as f64;
     let steps = (vm.executed_steps() - before) as f64;
@@ -40,7 +41,7 @@ fn main() {
     for _ in 0..200 {
         std::thread::sleep(Duration::from_millis(8));
         let t = Instant::now();
-        bits.tick();
+        bits.tick(&mut NoCnc);
         paced.push(t.elapsed().as_nanos() as f64);
     }
     paced.sort_by(f64::total_cmp);
@@ -68,7 +69,7 @@ fn main() {
     let mut small = vm(500, Mix::Mixed);
     let t = Instant::now();
     for _ in 0..450_000 {
-        small.tick();
+        small.tick(&mut NoCnc);
     }
     println!(
         "one hour of machine time (450000 ticks) of a {}-step program: {:.3} s",

@@ -4,12 +4,14 @@
 
 pub mod address;
 pub mod catalog;
+pub mod cnc;
 pub mod comments;
 pub mod compiler;
 pub mod file;
 pub mod find;
 pub mod generate;
 pub mod il;
+pub mod machine;
 pub mod model;
 pub mod profile;
 pub mod sim;

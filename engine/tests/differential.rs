@@ -14,6 +14,7 @@ use ladder_engine::compiler::{Origin, Sink};
 use ladder_engine::generate::SplitMix64;
 use ladder_engine::model::{DEFAULT_WIDTH, Ladder, Network, NetworkId, Operand, Project};
 use ladder_engine::vm::Vm;
+use ladder_engine::vm::cnc::NoCnc;
 use std::collections::HashMap;
 
 /// Bits and 4-byte words of the reference machine.
@@ -253,7 +254,7 @@ fn the_vm_agrees_with_the_reference_on_1000_random_programs() {
                         .insert(Address::bit(Area::X, n, b), byte >> b & 1 == 1);
                 }
             }
-            vm.tick();
+            vm.tick(&mut NoCnc);
             reference.scan(&read_back, tick * 8);
             for (area, count) in [(Area::Y, 2u16), (Area::R, 4)] {
                 for n in 0..count {

@@ -5,6 +5,7 @@ use ladder_engine::compiler::compile;
 use ladder_engine::generate::SplitMix64;
 use ladder_engine::sim::Script;
 use ladder_engine::vm::Vm;
+use ladder_engine::vm::cnc::NoCnc;
 use ladder_engine::{Profile, ProfileId, il};
 
 const ALPHABET: &[char] = &[
@@ -108,7 +109,7 @@ fn the_il_parser_survives_100_000_mutated_programs() {
                 for k in 0..3 {
                     vm.write(Address::byte(Area::X, k), 1, rng.below(256) as i64);
                     vm.write(Address::byte(Area::R, k), 1, rng.below(256) as i64);
-                    vm.tick();
+                    vm.tick(&mut NoCnc);
                 }
             }
         }

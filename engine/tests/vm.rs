@@ -5,7 +5,7 @@ use ladder_engine::compiler::compile;
 use ladder_engine::il;
 use ladder_engine::model::Project;
 use ladder_engine::vm::Vm;
-use ladder_engine::vm::cnc::{AxisStatus, FakeCnc};
+use ladder_engine::vm::cnc::{AxisStatus, FakeCnc, NoCnc};
 use ladder_engine::vm::monitor::{code_network, network_view};
 
 fn project(text: &str) -> Project {
@@ -31,18 +31,18 @@ fn the_watchdog_stops_an_endless_jump_loop_and_names_it() {
     );
     let mut vm = Vm::new(&p).unwrap();
     vm.write(a("X1.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     let halt = vm.halt().expect("halted").clone();
     assert_eq!((halt.block.as_str(), halt.network), ("LEVEL2", 2), "{halt}");
     assert!(halt.message.contains("JMPB loop"), "{halt}");
     // Halted: level 1 no longer runs.
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(!vm.read_bit(a("R0.0")));
     // Power-cycle restarts it.
     vm.write(a("X1.0"), 1, 0);
     vm.power_cycle();
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(vm.halt().is_none());
     assert!(vm.read_bit(a("R0.0")));
 }
@@ -56,31 +56,31 @@ fn level2_slices_latch_inputs_at_the_start_of_each_cycle() {
     let mut vm = Vm::new(&p).unwrap();
     vm.set_division(2);
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("R0"), 1),
         0b0011,
         "first slice: the first two networks"
     );
     vm.write(a("X0.0"), 1, 0);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("R0"), 1),
         0b1111,
         "second slice still reads the latched X0.0 = 1"
     );
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(vm.read(a("R0"), 1), 0b1100, "a new cycle latches X0.0 = 0");
     // A new division waits for the next cycle: this tick is the old cycle's second slice.
     vm.set_division(1);
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("R0"), 1),
         0,
         "second slice of the n = 2 cycle, latched X0.0 = 0"
     );
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("R0"), 1),
         0b1111,
@@ -96,7 +96,7 @@ fn level1_reads_live_inputs_and_level2_the_latched_copy() {
     let mut vm = Vm::new(&p).unwrap();
     vm.set_division(1);
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(vm.read_bit(a("R0.0")) && vm.read_bit(a("R0.1")));
 }
 
@@ -104,14 +104,14 @@ fn level1_reads_live_inputs_and_level2_the_latched_copy() {
 fn windr_high_speed_completes_in_the_scan_and_low_speed_takes_two() {
     let p = project("LEVEL2\nNETWORK\nLD X0000.0\nWINDR D0100 R0001.0\n");
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(FakeCnc {
+    let mut cnc = FakeCnc {
         low_speed: vec![14],
         window_data: vec![988, 7],
         ..FakeCnc::default()
-    }));
+    };
     vm.write(a("D100"), 4, 6); // a read function
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(
         vm.read_bit(a("R1.0")),
         "ERR (completion) = 1 in the same scan"
@@ -125,15 +125,15 @@ fn windr_high_speed_completes_in_the_scan_and_low_speed_takes_two() {
         (0, 2, 988)
     );
     vm.write(a("X0.0"), 1, 0);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(!vm.read_bit(a("R1.0")), "ACT = 0: ERR := 0");
     vm.write(a("D100"), 4, 14); // a low-speed write function
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(!vm.read_bit(a("R1.0")), "first scan latches the block");
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(vm.read_bit(a("R1.0")), "second scan executes");
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(vm.read_bit(a("R1.0")), "and ERR stays 1 while ACT = 1");
 }
 
@@ -142,9 +142,9 @@ fn axctl_writes_the_group_signals_and_reports_fin() {
     let p =
         project("LEVEL2\nNETWORK\nLD X0000.0\nAXCTL 1 0x01 1500 20000 R0000.1 R0001.0 R0001.1\n");
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(FakeCnc::default()));
+    let mut cnc = FakeCnc::default();
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert_eq!(vm.read(a("G141"), 1) & 0x7F, 1, "CMD in EC0–EC6");
     assert_eq!(vm.read(a("G142"), 2), 1500, "DT1 in EIF0–15");
     assert_eq!(vm.read(a("G144"), 4), 20000, "DT2 in EID0–31");
@@ -152,24 +152,24 @@ fn axctl_writes_the_group_signals_and_reports_fin() {
     assert!(!vm.read_bit(a("R1.0")), "not ended yet");
     // ACT drops before the command ends: block stop (ESBK).
     vm.write(a("X0.0"), 1, 0);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(vm.read_bit(a("G140.3")));
     // A new command that the CNC reports ended.
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(FakeCnc {
+    let mut cnc = FakeCnc {
         axes: [AxisStatus {
             ended: true,
             error: false,
         }; 4],
         ..FakeCnc::default()
-    }));
+    };
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(
         !vm.read_bit(a("R1.0")),
         "the CNC sees the command only after this scan"
     );
-    vm.tick();
+    vm.tick(&mut cnc);
     assert!(vm.read_bit(a("R1.0")) && !vm.read_bit(a("R1.1")));
 }
 
@@ -181,10 +181,10 @@ fn psgnl_finds_the_zone_of_the_machine_position() {
         "LEVEL2\nNETWORK\nLD X0000.0\nPSGNL 1 D0000 R0100 R0101.0\nPSGN2 1 1000000 2000000 R0102.0 R0102.1\n",
     );
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(FakeCnc {
+    let mut cnc = FakeCnc {
         positions: vec![1_500_000],
         ..FakeCnc::default()
-    }));
+    };
     for (k, v) in [
         0, 1_000_000, 2_000_000, 3_000_000, 4_000_000, 5_000_000, 6_000_000,
     ]
@@ -194,13 +194,13 @@ fn psgnl_finds_the_zone_of_the_machine_position() {
         vm.write(Address::byte(ladder_engine::Area::D, k as u16), 4, *v);
     }
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert_eq!(vm.read(a("R100"), 1), 0b0010_0000);
     assert!(!vm.read_bit(a("R101.0")));
     assert!(vm.read_bit(a("R102.0")) && !vm.read_bit(a("R102.1")));
     // Boundaries not ascending: ERR and no zone.
     vm.write(a("D3"), 4, 0);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert_eq!(vm.read(a("R100"), 1), 0);
     assert!(vm.read_bit(a("R101.0")));
 }
@@ -216,7 +216,7 @@ fn a_watched_network_shows_contacts_power_and_box_values() {
     vm.watch(net, true);
     vm.write(a("X2.1"), 1, 1);
     vm.write(a("R10"), 1, 42);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     let grid = &p.ladder.blocks[1].networks[0];
     let view = network_view(&vm, &program, 1, 0, grid, p.ladder.width);
     let w = p.ladder.width;
@@ -236,7 +236,7 @@ fn a_watched_network_shows_contacts_power_and_box_values() {
     );
     // Press stop: the contact opens and no power reaches the coil.
     vm.write(a("X2.2"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     let view = network_view(&vm, &program, 1, 0, grid, w);
     assert_eq!(view.cells[0][1].closed, Some(false));
     assert!(!view.cells[0][w].power_in);
@@ -247,60 +247,37 @@ fn forces_hold_against_the_program_and_survive_power_cycle() {
     let p = project("LEVEL2\nNETWORK\nLD X0000.0\nOUT Y0000.0\nNETWORK\nLD Y0000.0\nOUT Y0000.1\n");
     let mut vm = Vm::new(&p).unwrap();
     vm.force(a("Y0.0"), 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(
         vm.read_bit(a("Y0.0")) && vm.read_bit(a("Y0.1")),
         "a later contact sees the forced value"
     );
     vm.power_cycle();
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(vm.read_bit(a("Y0.0")));
     vm.unforce(a("Y0.0"));
     assert!(vm.read_bit(a("Y0.0")), "unforce leaves the last value");
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert!(!vm.read_bit(a("Y0.0")));
-}
-
-/// Shares a CNC double between the test and the VM.
-struct Shared(std::rc::Rc<std::cell::RefCell<FakeCnc>>);
-
-impl ladder_engine::vm::cnc::Cnc for Shared {
-    fn window_is_low_speed(&self, f: i32) -> bool {
-        self.0.borrow().window_is_low_speed(f)
-    }
-    fn window(&mut self, block: &mut [i32]) {
-        self.0.borrow_mut().window(block)
-    }
-    fn machine_position(&self, axis: u32) -> Option<i64> {
-        self.0.borrow().machine_position(axis)
-    }
-    fn axis_status(&self, group: u8) -> AxisStatus {
-        self.0.borrow().axis_status(group)
-    }
-    fn exchange(&mut self, now: u64, g: &[u8], f: &mut [u8]) {
-        self.0.borrow_mut().exchange(now, g, f)
-    }
 }
 
 #[test]
 fn a_low_speed_window_uses_the_block_latched_at_its_first_scan() {
     use ladder_engine::vm::cnc::Cnc;
     let p = project("LEVEL2\nNETWORK\nLD X0000.0\nWINDR D0000 R0001.0\n");
-    let cnc = std::rc::Rc::new(std::cell::RefCell::new(FakeCnc {
+    let mut cnc = FakeCnc {
         low_speed: vec![14],
         ..FakeCnc::default()
-    }));
+    };
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(Shared(cnc.clone())));
     vm.write(a("D0"), 4, 14);
     vm.write(a("D6"), 4, 111);
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut cnc);
     vm.write(a("D6"), 4, 222);
-    vm.tick();
+    vm.tick(&mut cnc);
     assert_eq!(
-        cnc.borrow().last_block[6],
-        111,
+        cnc.last_block[6], 111,
         "the latched block, not the changed one"
     );
     assert_eq!(
@@ -308,18 +285,17 @@ fn a_low_speed_window_uses_the_block_latched_at_its_first_scan() {
         222,
         "the user's later value is not overwritten"
     );
-    assert!(cnc.borrow().window_is_low_speed(14));
+    assert!(cnc.window_is_low_speed(14));
 }
 
 #[test]
 fn g_signals_reach_the_cnc_at_the_end_of_the_tick_that_wrote_them() {
     let p = project("LEVEL2\nNETWORK\nLD X0000.0\nOUT G0008.4\n");
-    let cnc = std::rc::Rc::new(std::cell::RefCell::new(FakeCnc::default()));
+    let mut cnc = FakeCnc::default();
     let mut vm = Vm::new(&p).unwrap();
-    vm.set_cnc(Box::new(Shared(cnc.clone())));
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
-    assert_eq!(cnc.borrow().last_g[8] & 0x10, 0x10);
+    vm.tick(&mut cnc);
+    assert_eq!(cnc.last_g[8] & 0x10, 0x10);
 }
 
 #[test]
@@ -329,13 +305,13 @@ fn a_subprogram_called_from_both_levels_has_one_memory_per_instruction() {
     );
     let mut vm = Vm::new(&p).unwrap();
     vm.write(a("R0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("C1"), 4),
         1,
         "one rising edge counts once, whichever level runs it"
     );
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(vm.read(a("C1"), 4), 1);
 }
 
@@ -348,7 +324,7 @@ fn constants_are_read_at_their_width_and_counters_stay_non_negative() {
     vm.write(a("DC1"), 4, -5);
     vm.write(a("R0.1"), 1, 1);
     vm.write(a("X0.0"), 1, 1);
-    vm.tick();
+    vm.tick(&mut NoCnc);
     assert_eq!(
         vm.read(a("R10"), 1) & 0xFF,
         127,

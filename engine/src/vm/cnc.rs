@@ -11,8 +11,9 @@ pub struct AxisStatus {
     pub error: bool,
 }
 
-/// The CNC as the PLC sees it.
-pub trait Cnc {
+/// The CNC as the PLC sees it. `Send`, so a machine (PLC and CNC together) can run on a
+/// thread of its own while the user interface reads snapshots of it.
+pub trait Cnc: Send {
     /// Whether a WINDR function code is a low-speed (write) function that takes two scans.
     fn window_is_low_speed(&self, function: i32) -> bool;
     /// Executes a WINDR function on a window block (`block[0]` function code, `[1]` end code,
@@ -22,10 +23,13 @@ pub trait Cnc {
     /// The machine coordinate of an axis (1, 2, …; 21, 22, … for the second channel) in least
     /// input increments, or `None` when there is no such axis.
     fn machine_position(&self, axis: u32) -> Option<i64>;
-    /// The state of the command of a PLC axis group (1–4).
-    fn axis_status(&self, group: u8) -> AxisStatus;
-    /// Once per tick, after the PLC ran: the CNC reads the G signals and sets the F signals.
-    fn exchange(&mut self, now_ms: u64, g: &[u8], f: &mut [u8]);
+    /// The state of the command of a PLC axis group (1–4), given the group's EBUF bit as the
+    /// PLC holds it when it asks (a command issued but not yet read has not ended).
+    fn axis_status(&self, group: u8, ebuf: bool) -> AxisStatus;
+    /// Once per tick, after the PLC ran: the CNC reads the G signals and the A area (PLC
+    /// alarm requests) and sets the F signals. `now_ms` is the virtual time at the end of the
+    /// tick.
+    fn exchange(&mut self, now_ms: u64, g: &[u8], a: &[u8], f: &mut [u8]);
 }
 
 /// No CNC attached: windows answer "function not available" (end code 7), there are no
@@ -46,10 +50,10 @@ impl Cnc for NoCnc {
     fn machine_position(&self, _axis: u32) -> Option<i64> {
         None
     }
-    fn axis_status(&self, _group: u8) -> AxisStatus {
+    fn axis_status(&self, _group: u8, _ebuf: bool) -> AxisStatus {
         AxisStatus::default()
     }
-    fn exchange(&mut self, _now_ms: u64, _g: &[u8], _f: &mut [u8]) {}
+    fn exchange(&mut self, _now_ms: u64, _g: &[u8], _a: &[u8], _f: &mut [u8]) {}
 }
 
 /// A scriptable CNC for tests: fixed positions and axis states, a WINDR that answers with
@@ -95,13 +99,13 @@ impl Cnc for FakeCnc {
     fn machine_position(&self, axis: u32) -> Option<i64> {
         self.positions.get((axis as usize).checked_sub(1)?).copied()
     }
-    fn axis_status(&self, group: u8) -> AxisStatus {
+    fn axis_status(&self, group: u8, _ebuf: bool) -> AxisStatus {
         self.axes
             .get(usize::from(group).wrapping_sub(1))
             .copied()
             .unwrap_or_default()
     }
-    fn exchange(&mut self, _now_ms: u64, g: &[u8], _f: &mut [u8]) {
+    fn exchange(&mut self, _now_ms: u64, g: &[u8], _a: &[u8], _f: &mut [u8]) {
         self.last_g.clear();
         self.last_g.extend_from_slice(g);
     }

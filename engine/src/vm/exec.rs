@@ -3,6 +3,7 @@
 //! pushing and popping is a shift. The loop is instantiated twice: without tracing (the
 //! normal case, no extra work) and with tracing for watched networks; a `Net` word switches.
 
+use super::cnc::Cnc;
 use super::code::{Arg, C_INVERT, VmOp};
 
 // Opcodes of the other basic bit instructions as match patterns.
@@ -52,15 +53,21 @@ fn write_bit(mem: &mut [u8], arg: u32, v: u32) {
 impl Vm {
     /// Runs a level from word `pc`. Returns where level 2 stopped for this tick (`None` when
     /// it reached its end), or why the PLC halted.
-    pub(super) fn run(&mut self, pc: u32, level: Level, quota: u64) -> Result<Option<u32>, Halt> {
+    pub(super) fn run(
+        &mut self,
+        pc: u32,
+        level: Level,
+        quota: u64,
+        cnc: &mut dyn Cnc,
+    ) -> Result<Option<u32>, Halt> {
         let mut pc = pc;
         let mut tracing = false;
         let mut steps = 0u64;
         let result = loop {
             let exit = if tracing {
-                self.exec::<true>(pc, level, quota, &mut steps)
+                self.exec::<true>(pc, level, quota, &mut steps, cnc)
             } else {
-                self.exec::<false>(pc, level, quota, &mut steps)
+                self.exec::<false>(pc, level, quota, &mut steps, cnc)
             };
             match exit {
                 Exit::Switch(p) => {
@@ -108,6 +115,7 @@ impl Vm {
         level: Level,
         quota: u64,
         steps_out: &mut u64,
+        cnc: &mut dyn Cnc,
     ) -> Exit {
         let budget = if level == Level::One {
             WATCHDOG_STEPS
@@ -213,7 +221,6 @@ impl Vm {
                         code,
                         mem,
                         states,
-                        cnc,
                         window,
                         latches,
                         trace,
@@ -228,7 +235,7 @@ impl Vm {
                         mem,
                         consts: &code.consts,
                         now,
-                        cnc: cnc.as_mut(),
+                        cnc: &mut *cnc,
                         window,
                         latch: &mut latches[f.state as usize],
                         g_base,

@@ -699,11 +699,11 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         }
         // The CNC sees the new command only at the end of this tick, so on the issuing scan
         // the status it reports is the previous command's: it cannot have ended yet.
-        let status = if issuing {
-            Default::default()
-        } else {
-            cx.cnc.axis_status(group as u8)
-        };
+        let ebuf = mem.get(base as usize).is_some_and(|x| x >> 7 & 1 == 1);
+        let mut status = cx.cnc.axis_status(group as u8, ebuf);
+        if issuing {
+            status.ended = false;
+        }
         if status.ended {
             st.phase = 0;
         }
@@ -715,7 +715,8 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         set_bit(mem, a[5], false);
         set_bit(mem, a[6], false);
         set_g_bit(mem, 0, 6, false);
-        if st.phase == 1 && !cx.cnc.axis_status(group as u8).ended {
+        let ebuf = mem.get(base as usize).is_some_and(|x| x >> 7 & 1 == 1);
+        if st.phase == 1 && !cx.cnc.axis_status(group as u8, ebuf).ended {
             set_g_bit(mem, 0, 3, true);
         }
         st.phase = 0;

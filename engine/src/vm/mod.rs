@@ -16,7 +16,7 @@ use crate::address::{Address, Area};
 use crate::compiler::{Program, compile};
 use crate::model::Project;
 use crate::profile::Profile;
-use cnc::{Cnc, NoCnc};
+use cnc::Cnc;
 use code::{Code, LowerError, lower};
 use memory::{Layout, Loc};
 use std::fmt;
@@ -102,7 +102,6 @@ pub struct Vm {
     division: u32,
     level2: Level2,
     halt: Option<Halt>,
-    cnc: Box<dyn Cnc>,
     watched: Vec<bool>,
     watch_count: usize,
     /// Per word of code: the value a contact read or the power an output received, for
@@ -161,7 +160,6 @@ impl Vm {
             division: 1,
             level2: Level2::default(),
             halt: None,
-            cnc: Box::new(NoCnc),
             code,
             layout,
             profile,
@@ -190,16 +188,6 @@ impl Vm {
             }
         }
         self.apply_forces();
-    }
-
-    /// Attaches a CNC.
-    pub fn set_cnc(&mut self, cnc: Box<dyn Cnc>) {
-        self.cnc = cnc;
-    }
-
-    /// The attached CNC.
-    pub fn cnc_mut(&mut self) -> &mut dyn Cnc {
-        self.cnc.as_mut()
     }
 
     /// The executable code.
@@ -249,13 +237,15 @@ impl Vm {
     }
 
     /// Runs one 8 ms tick: level 1 whole, then the next slice of level 2, then the exchange
-    /// with the CNC. A halted PLC does nothing.
-    pub fn tick(&mut self) {
+    /// with the CNC. A halted PLC does nothing, but the CNC still exchanges (it sees the
+    /// frozen G). The VM does not own the CNC: the caller (usually a `Machine`) lends it for
+    /// the tick, so the CNC stays readable between ticks.
+    pub fn tick(&mut self, cnc: &mut dyn Cnc) {
         if self.halt.is_none() {
             self.apply_forces();
-            self.run_level1();
+            self.run_level1(cnc);
             if self.halt.is_none() {
-                self.run_level2_slice();
+                self.run_level2_slice(cnc);
             }
         }
         self.ticks += 1;
@@ -263,21 +253,25 @@ impl Vm {
         // samples. A halted PLC's outputs stay as they were, and the CNC keeps running.
         let g = self.layout.area_range(Area::G);
         let f = self.layout.area_range(Area::F);
+        let a = self.layout.area_range(Area::A);
         let now = self.now_ms();
-        // F lies before G in the image (layout order X Y F G …), so one split reaches both.
-        let (f_part, g_part) = self.mem.split_at_mut(g.start);
-        self.cnc.exchange(now, &g_part[..g.len()], &mut f_part[f]);
+        // Layout order X Y F G R A …: F lies before G, and G before A, so one split gives F
+        // mutably and G and A shared.
+        let (f_part, rest) = self.mem.split_at_mut(g.start);
+        let g_bytes = &rest[..g.len()];
+        let a_bytes = &rest[a.start - g.start..a.end - g.start];
+        cnc.exchange(now, g_bytes, a_bytes, &mut f_part[f]);
         self.apply_forces();
     }
 
-    fn run_level1(&mut self) {
+    fn run_level1(&mut self, cnc: &mut dyn Cnc) {
         let start = self.code.level1;
-        if let Err(h) = self.run(start, exec::Level::One, u64::MAX) {
+        if let Err(h) = self.run(start, exec::Level::One, u64::MAX, cnc) {
             self.halt = Some(h);
         }
     }
 
-    fn run_level2_slice(&mut self) {
+    fn run_level2_slice(&mut self, cnc: &mut dyn Cnc) {
         let l2 = &mut self.level2;
         let pc = match l2.resume {
             Some(pc) => pc,
@@ -300,7 +294,7 @@ impl Vm {
             0 | 1 => u64::MAX,
             n => u64::from(self.code.level2_steps).div_ceil(u64::from(n)),
         };
-        match self.run(pc, exec::Level::Two, quota.max(1)) {
+        match self.run(pc, exec::Level::Two, quota.max(1), cnc) {
             Ok(resume) => self.level2.resume = resume,
             Err(h) => self.halt = Some(h),
         }
@@ -426,6 +420,31 @@ impl Vm {
     /// The value of a location, for monitors: `bytes` at `loc`.
     pub fn read_loc(&self, loc: Loc, bytes: u32) -> i32 {
         memory::read(&self.mem, loc, bytes)
+    }
+
+    /// The whole memory image (areas as [`Vm::layout`] places them).
+    pub fn image(&self) -> &[u8] {
+        &self.mem
+    }
+
+    /// Every forced byte: its offset in the image, the mask of forced bits and their values.
+    pub fn forces(&self) -> impl Iterator<Item = (u32, u8, u8)> + '_ {
+        self.forced_bytes.iter().map(|&o| {
+            let i = o as usize;
+            (
+                o,
+                self.force_mask[i],
+                self.force_value[i] & self.force_mask[i],
+            )
+        })
+    }
+
+    /// Sets every byte of an area to 0 (forced bits keep their value): the CNC's F image at
+    /// power-on.
+    pub fn clear_area(&mut self, area: Area) {
+        let r = self.layout.area_range(area);
+        self.mem[r].fill(0);
+        self.apply_forces();
     }
 
     /// The memory layout.

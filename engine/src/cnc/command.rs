@@ -1,0 +1,790 @@
+//! What a user does to a running CNC and what they read back (docs/cnc.md, "Script
+//! commands"): the `cnc …` commands as values, checked when they are parsed so a script is
+//! refused before it runs, and the `cnc.KEY` values with their comparison rules.
+
+use super::data::{MacroSlot, OffsetType, WORK_SYSTEMS, parse_clock, work_system};
+use super::params::{self, ParamError, Params, Selector, TABLE};
+use super::{AXES, AXIS_NAMES, Mode, RunState, SimCnc};
+use crate::profile::ProfileId;
+use std::fmt;
+
+/// A command to the CNC.
+#[derive(Clone, Debug, PartialEq)]
+pub enum CncCommand {
+    /// Replaces every memory program (the text) and rewinds.
+    Program(String),
+    /// Replaces the MDI buffer.
+    Mdi(String),
+    /// Sets a parameter's effective value.
+    Param {
+        /// Number.
+        number: u16,
+        /// Axis or spindle, 1-based.
+        selector: Option<u8>,
+        /// Value.
+        value: i64,
+    },
+    /// Sets a tool offset.
+    Offset {
+        /// Offset number.
+        number: u8,
+        /// Which value.
+        kind: OffsetType,
+        /// Increments (tip: 0–9).
+        value: i64,
+    },
+    /// Sets a workpiece offset.
+    Workpiece {
+        /// EXT = 0, G54 = 1 …
+        system: u8,
+        /// Axis slot (0 = X).
+        axis: u8,
+        /// Increments.
+        value: i64,
+    },
+    /// Sets a macro variable (`None` = vacant).
+    Macro {
+        /// Variable number.
+        number: u16,
+        /// Value.
+        value: Option<f64>,
+    },
+    /// Sets the machine position of a still axis.
+    Position {
+        /// Axis slot.
+        axis: u8,
+        /// Increments.
+        value: i64,
+    },
+    /// Raises an alarm at the next exchange.
+    Alarm(u16),
+    /// Presses the RESET key for the next exchange.
+    Reset,
+    /// Handwheel pulses for the next exchange.
+    Handwheel(i64),
+    /// Sets the clock (seconds from 1970) at the current virtual time.
+    Clock(i64),
+}
+
+/// Axis by name (X Z Y 4 5) or number (1–5).
+pub fn parse_axis(text: &str) -> Option<u8> {
+    let t = text.to_ascii_uppercase();
+    AXIS_NAMES
+        .iter()
+        .position(|n| *n == t)
+        .or_else(|| {
+            t.parse::<usize>()
+                .ok()
+                .filter(|n| (1..=AXES).contains(n))
+                .map(|n| n - 1)
+        })
+        .map(|n| n as u8)
+}
+
+fn mm(text: &str) -> Result<i64, String> {
+    let v: f64 = text
+        .parse()
+        .ok()
+        .filter(|v: &f64| v.is_finite())
+        .ok_or_else(|| format!("`{text}` is not a number of mm"))?;
+    let incr = (v * 1000.0).round();
+    if incr.abs() > 99_999_999.0 {
+        return Err(format!("{text} mm is beyond ±99999.999 mm"));
+    }
+    Ok(incr as i64)
+}
+
+fn int(text: &str, what: &str) -> Result<i64, String> {
+    text.parse::<i64>()
+        .map_err(|_| format!("`{text}` is not an integer ({what})"))
+}
+
+fn param_error(e: ParamError, number: u16) -> String {
+    match e {
+        ParamError::Number => format!(
+            "no parameter {number} (the simulator has {})",
+            TABLE
+                .iter()
+                .map(|s| format!("{:04}", s.number))
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+        ParamError::Selector => {
+            let s = params::spec(number).expect("number checked first");
+            match s.selector {
+                Selector::None => format!("parameter {number} takes no axis or spindle number"),
+                Selector::Axis => format!("parameter {number} needs an axis number 1–5"),
+                Selector::Spindle => format!("parameter {number} needs a spindle number 1–4"),
+            }
+        }
+        ParamError::Value => {
+            let s = params::spec(number).expect("number checked first");
+            format!("parameter {number} is {}…{}", s.min, s.max)
+        }
+    }
+}
+
+/// Checks a parameter reference of a profile: GSK980 words 1–254, or a machine setting.
+fn check_param(
+    profile: ProfileId,
+    number: u16,
+    selector: Option<u8>,
+    value: i64,
+) -> Result<(), String> {
+    if profile == ProfileId::Gsk980 && (1..=params::GSK980_WORDS as u16).contains(&number) {
+        if selector.is_some() {
+            return Err(format!("GSK980 parameter {number} takes no selector"));
+        }
+        if i32::try_from(value).is_err() {
+            return Err(format!("GSK980 parameter {number} holds a 32-bit integer"));
+        }
+        return Ok(());
+    }
+    Params::check(number, selector, value)
+        .map(|_| ())
+        .map_err(|e| param_error(e, number))
+}
+
+fn offset_range(profile: ProfileId) -> std::ops::RangeInclusive<u8> {
+    match profile {
+        ProfileId::Gsk988ta => 1..=99,
+        ProfileId::Gsk980 => 0..=32,
+    }
+}
+
+fn writable_macro(n: i64) -> bool {
+    matches!(
+        MacroSlot::of(n),
+        MacroSlot::Volatile(_) | MacroSlot::Kept(_) | MacroSlot::Output(_)
+    )
+}
+
+impl CncCommand {
+    /// Parses the words after `cnc`. `read_file` reads a program file named in the script.
+    pub fn parse(
+        words: &[&str],
+        profile: ProfileId,
+        read_file: &dyn Fn(&str) -> Result<String, String>,
+    ) -> Result<CncCommand, String> {
+        let usage = |u: &str| format!("usage: cnc {u}");
+        let Some(&sub) = words.first() else {
+            return Err(format!(
+                "`cnc` needs a subcommand ({})",
+                SUBCOMMANDS.join(", ")
+            ));
+        };
+        let args = &words[1..];
+        let want = |n: usize, u: &str| {
+            if args.len() == n {
+                Ok(())
+            } else {
+                Err(usage(u))
+            }
+        };
+        Ok(match sub.to_ascii_lowercase().as_str() {
+            "program" => {
+                want(1, "program \"TEXT\"")?;
+                CncCommand::Program(args[0].to_string())
+            }
+            "program-file" => {
+                want(1, "program-file PATH")?;
+                CncCommand::Program(read_file(args[0])?)
+            }
+            "mdi" => {
+                want(1, "mdi \"TEXT\"")?;
+                CncCommand::Mdi(args[0].to_string())
+            }
+            "param" => {
+                if !(2..=3).contains(&args.len()) {
+                    return Err(usage("param N [SEL] VALUE"));
+                }
+                let number = args[0]
+                    .parse::<u16>()
+                    .map_err(|_| format!("`{}` is not a parameter number", args[0]))?;
+                let selector =
+                    match args.len() {
+                        3 => Some(args[1].parse::<u8>().map_err(|_| {
+                            format!("`{}` is not an axis or spindle number", args[1])
+                        })?),
+                        _ => None,
+                    };
+                let value = int(args[args.len() - 1], "a parameter value")?;
+                check_param(profile, number, selector, value)?;
+                CncCommand::Param {
+                    number,
+                    selector,
+                    value,
+                }
+            }
+            "offset" => {
+                want(3, "offset N TYPE VALUE")?;
+                let range = offset_range(profile);
+                let number = args[0]
+                    .parse::<u8>()
+                    .ok()
+                    .filter(|n| range.contains(n))
+                    .ok_or_else(|| {
+                        format!(
+                            "`{}`: tool offsets are {}–{}",
+                            args[0],
+                            range.start(),
+                            range.end()
+                        )
+                    })?;
+                let kind = OffsetType::parse(args[1]).ok_or_else(|| {
+                    format!("`{}`: the type is X Z R Y, WX WZ WR WY or TIP", args[1])
+                })?;
+                let value = if kind == OffsetType::Tip {
+                    let v = int(args[2], "the tip direction 0–9")?;
+                    if !(0..=9).contains(&v) {
+                        return Err(format!("the tip direction is 0–9, not {v}"));
+                    }
+                    v
+                } else {
+                    mm(args[2])?
+                };
+                CncCommand::Offset {
+                    number,
+                    kind,
+                    value,
+                }
+            }
+            "workpiece" => {
+                want(3, "workpiece SYS AXIS VALUE")?;
+                let system = work_system(args[0]).ok_or_else(|| {
+                    format!("`{}`: the system is {}", args[0], WORK_SYSTEMS.join(", "))
+                })? as u8;
+                let axis = parse_axis(args[1])
+                    .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[1]))?;
+                CncCommand::Workpiece {
+                    system,
+                    axis,
+                    value: mm(args[2])?,
+                }
+            }
+            "macro" => {
+                want(2, "macro N VALUE")?;
+                let n = int(args[0], "a variable number")?;
+                if !writable_macro(n) {
+                    return Err(format!(
+                        "#{n} cannot be set: the variables are #100–#199, #500–#999 and #1100–#1131"
+                    ));
+                }
+                let value = if args[1].eq_ignore_ascii_case("vacant") {
+                    None
+                } else {
+                    Some(
+                        args[1]
+                            .parse::<f64>()
+                            .ok()
+                            .filter(|v| v.is_finite())
+                            .ok_or_else(|| {
+                                format!("`{}` is not a decimal number or `vacant`", args[1])
+                            })?,
+                    )
+                };
+                if matches!(MacroSlot::of(n), MacroSlot::Output(_))
+                    && !matches!(value, Some(v) if v == 0.0 || v == 1.0)
+                {
+                    return Err(format!("#{n} is a signal bit: 0 or 1"));
+                }
+                CncCommand::Macro {
+                    number: n as u16,
+                    value,
+                }
+            }
+            "position" => {
+                want(2, "position AXIS VALUE")?;
+                let axis = parse_axis(args[0])
+                    .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[0]))?;
+                CncCommand::Position {
+                    axis,
+                    value: mm(args[1])?,
+                }
+            }
+            "alarm" => {
+                want(1, "alarm N")?;
+                let n = int(args[0], "an alarm number")?;
+                if !(1..=999).contains(&n) || matches!(n, 500 | 501 | 506 | 507 | 950) {
+                    return Err(format!(
+                        "alarm {n} cannot be raised by a script: 1–999 except 500, 501, 506, 507 and 950 (those come from the machine)"
+                    ));
+                }
+                CncCommand::Alarm(n as u16)
+            }
+            "reset" => {
+                want(0, "reset")?;
+                CncCommand::Reset
+            }
+            "handwheel" => {
+                want(1, "handwheel COUNT")?;
+                let n = int(args[0], "pulses")?;
+                if !(-10_000..=10_000).contains(&n) {
+                    return Err(format!("{n} pulses: the count is −10000…10000"));
+                }
+                CncCommand::Handwheel(n)
+            }
+            "clock" => {
+                want(1, "clock YYYY-MM-DDTHH:MM:SS")?;
+                CncCommand::Clock(parse_clock(args[0]).ok_or_else(|| {
+                    format!("`{}` is not a date and time YYYY-MM-DDTHH:MM:SS", args[0])
+                })?)
+            }
+            _ => {
+                return Err(format!(
+                    "unknown cnc command `{sub}` (commands: {})",
+                    SUBCOMMANDS.join(", ")
+                ));
+            }
+        })
+    }
+}
+
+const SUBCOMMANDS: [&str; 12] = [
+    "program",
+    "program-file",
+    "mdi",
+    "param",
+    "offset",
+    "workpiece",
+    "macro",
+    "position",
+    "alarm",
+    "reset",
+    "handwheel",
+    "clock",
+];
+
+/// A value of the CNC that scripts and the editor read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CncKey {
+    /// `cnc.mode`.
+    Mode,
+    /// `cnc.run`.
+    Run,
+    /// `cnc.block`.
+    Block,
+    /// `cnc.prog`.
+    Prog,
+    /// `cnc.pos.AXIS`.
+    Pos(u8),
+    /// `cnc.abs.AXIS`.
+    Abs(u8),
+    /// `cnc.spindle`.
+    Spindle,
+    /// `cnc.alarm.N`.
+    Alarm(u16),
+    /// `cnc.alarms`.
+    Alarms,
+    /// `cnc.param.N[.SEL]`.
+    Param(u16, Option<u8>),
+    /// `cnc.offset.N.TYPE`.
+    Offset(u8, OffsetType),
+    /// `cnc.work.SYS.AXIS`.
+    Work(u8, u8),
+    /// `cnc.macro.N`.
+    Macro(u16),
+}
+
+/// A value read from the CNC.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CncValue {
+    /// A name (mode, run state).
+    Name(&'static str),
+    /// An integer.
+    Int(i64),
+    /// A length in increments of 0.001 mm, shown in mm.
+    Mm(i64),
+    /// A macro variable (`None` = vacant).
+    Macro(Option<f64>),
+}
+
+impl fmt::Display for CncValue {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            CncValue::Name(n) => f.write_str(n),
+            CncValue::Int(v) => write!(f, "{v}"),
+            CncValue::Mm(v) => {
+                let sign = if v < 0 { "-" } else { "" };
+                write!(f, "{sign}{}.{:03}", v.abs() / 1000, v.abs() % 1000)
+            }
+            CncValue::Macro(None) => f.write_str("vacant"),
+            CncValue::Macro(Some(v)) => write!(f, "{v}"),
+        }
+    }
+}
+
+impl CncKey {
+    /// Parses `cnc.KEY` (the text starts with `cnc.`, any case).
+    pub fn parse(text: &str, profile: ProfileId) -> Result<CncKey, String> {
+        let lower = text.to_ascii_lowercase();
+        let parts: Vec<&str> = lower.split('.').collect();
+        let bad = || {
+            format!(
+                "unknown CNC value `{text}` (cnc.mode, cnc.run, cnc.block, cnc.prog, cnc.pos.AXIS, cnc.abs.AXIS, cnc.spindle, cnc.alarm.N, cnc.alarms, cnc.param.N[.SEL], cnc.offset.N.TYPE, cnc.work.SYS.AXIS, cnc.macro.N)"
+            )
+        };
+        if parts.first() != Some(&"cnc") {
+            return Err(bad());
+        }
+        let axis = |t: &str| {
+            parse_axis(t)
+                .ok_or_else(|| format!("`{t}` in `{text}`: the axis is X, Z, Y, 4, 5 or 1–5"))
+        };
+        Ok(match parts[1..] {
+            ["mode"] => CncKey::Mode,
+            ["run"] => CncKey::Run,
+            ["block"] => CncKey::Block,
+            ["prog"] => CncKey::Prog,
+            ["spindle"] => CncKey::Spindle,
+            ["alarms"] => CncKey::Alarms,
+            ["pos", a] => CncKey::Pos(axis(a)?),
+            ["abs", a] => CncKey::Abs(axis(a)?),
+            ["alarm", n] => CncKey::Alarm(
+                n.parse::<u16>()
+                    .ok()
+                    .filter(|n| (1..=9999).contains(n))
+                    .ok_or_else(|| format!("`{n}` in `{text}`: alarm numbers are 1–9999"))?,
+            ),
+            ["param", n] | ["param", n, _] => {
+                let number = n
+                    .parse::<u16>()
+                    .map_err(|_| format!("`{n}` in `{text}` is not a parameter number"))?;
+                let selector = match parts.get(3) {
+                    Some(s) => Some(s.parse::<u8>().map_err(|_| {
+                        format!("`{s}` in `{text}` is not an axis or spindle number")
+                    })?),
+                    None => None,
+                };
+                // Any value in range: only the number and selector are checked here.
+                let probe = params::spec(number).map_or(0, |s| s.min);
+                check_param(profile, number, selector, probe)?;
+                CncKey::Param(number, selector)
+            }
+            ["offset", n, t] => {
+                let range = offset_range(profile);
+                let number = n
+                    .parse::<u8>()
+                    .ok()
+                    .filter(|n| range.contains(n))
+                    .ok_or_else(|| {
+                        format!(
+                            "`{n}` in `{text}`: tool offsets are {}–{}",
+                            range.start(),
+                            range.end()
+                        )
+                    })?;
+                let kind = OffsetType::parse(t).ok_or_else(|| {
+                    format!("`{t}` in `{text}`: the type is X Z R Y, WX WZ WR WY or TIP")
+                })?;
+                CncKey::Offset(number, kind)
+            }
+            ["work", s, a] => CncKey::Work(
+                work_system(s).ok_or_else(|| {
+                    format!(
+                        "`{s}` in `{text}`: the system is {}",
+                        WORK_SYSTEMS.join(", ")
+                    )
+                })? as u8,
+                axis(a)?,
+            ),
+            ["macro", n] => {
+                let v = n
+                    .parse::<i64>()
+                    .ok()
+                    .filter(|v| {
+                        matches!(
+                            MacroSlot::of(*v),
+                            MacroSlot::Volatile(_)
+                                | MacroSlot::Kept(_)
+                                | MacroSlot::Input(_)
+                                | MacroSlot::Output(_)
+                        )
+                    })
+                    .ok_or_else(|| {
+                        format!(
+                            "`{n}` in `{text}`: the variables are #100–#199, #500–#999, #1000–#1031 and #1100–#1131"
+                        )
+                    })?;
+                CncKey::Macro(v as u16)
+            }
+            _ => return Err(bad()),
+        })
+    }
+
+    /// The key as printed.
+    pub fn text(&self) -> String {
+        match *self {
+            CncKey::Mode => "cnc.mode".into(),
+            CncKey::Run => "cnc.run".into(),
+            CncKey::Block => "cnc.block".into(),
+            CncKey::Prog => "cnc.prog".into(),
+            CncKey::Pos(a) => format!("cnc.pos.{}", AXIS_NAMES[usize::from(a)]),
+            CncKey::Abs(a) => format!("cnc.abs.{}", AXIS_NAMES[usize::from(a)]),
+            CncKey::Spindle => "cnc.spindle".into(),
+            CncKey::Alarm(n) => format!("cnc.alarm.{n}"),
+            CncKey::Alarms => "cnc.alarms".into(),
+            CncKey::Param(n, None) => format!("cnc.param.{n}"),
+            CncKey::Param(n, Some(s)) => format!("cnc.param.{n}.{s}"),
+            CncKey::Offset(n, t) => format!("cnc.offset.{n}.{}", t.name()),
+            CncKey::Work(s, a) => format!(
+                "cnc.work.{}.{}",
+                WORK_SYSTEMS[usize::from(s)],
+                AXIS_NAMES[usize::from(a)]
+            ),
+            CncKey::Macro(n) => format!("cnc.macro.{n}"),
+        }
+    }
+
+    /// The value an `expect` line wants, read by the key's kind: names case-insensitively,
+    /// lengths rounded to 0.001 mm, macros as decimals or `vacant`.
+    pub fn expected(&self, text: &str) -> Result<CncValue, String> {
+        match self {
+            CncKey::Mode => Mode::ALL
+                .iter()
+                .find(|m| m.name().eq_ignore_ascii_case(text))
+                .map(|m| CncValue::Name(m.name()))
+                .ok_or_else(|| {
+                    format!(
+                        "`{text}` is not a mode ({})",
+                        Mode::ALL.map(Mode::name).join(" ")
+                    )
+                }),
+            CncKey::Run => RunState::ALL
+                .iter()
+                .find(|m| m.name().eq_ignore_ascii_case(text))
+                .map(|m| CncValue::Name(m.name()))
+                .ok_or_else(|| format!("`{text}` is not a run state (IDLE RUN HOLD STOP)")),
+            CncKey::Pos(_) | CncKey::Abs(_) | CncKey::Work(..) => mm(text).map(CncValue::Mm),
+            CncKey::Offset(_, t) if *t != OffsetType::Tip => mm(text).map(CncValue::Mm),
+            CncKey::Macro(_) => {
+                if text.eq_ignore_ascii_case("vacant") {
+                    Ok(CncValue::Macro(None))
+                } else {
+                    text.parse::<f64>()
+                        .ok()
+                        .filter(|v| v.is_finite())
+                        .map(|v| CncValue::Macro(Some(v)))
+                        .ok_or_else(|| format!("`{text}` is not a decimal number or `vacant`"))
+                }
+            }
+            _ => int(text, "an integer").map(CncValue::Int),
+        }
+    }
+}
+
+impl SimCnc {
+    /// Carries out a command between ticks; its effect on F appears at the next exchange.
+    /// A command that cannot apply now says why.
+    pub fn apply(&mut self, cmd: &CncCommand) -> Result<(), String> {
+        match cmd {
+            CncCommand::Program(text) | CncCommand::Mdi(text) => {
+                if self.auto.state != RunState::Idle {
+                    return Err(format!(
+                        "the program cannot be replaced while automatic operation is {} (reset first)",
+                        self.auto.state.name()
+                    ));
+                }
+                if matches!(cmd, CncCommand::Program(_)) {
+                    self.load_programs(text);
+                } else {
+                    self.load_mdi(text);
+                }
+            }
+            CncCommand::Param {
+                number,
+                selector,
+                value,
+            } => {
+                if self.profile == ProfileId::Gsk980
+                    && (1..=params::GSK980_WORDS as u16).contains(number)
+                {
+                    self.params.set_word980(usize::from(*number), *value as i32);
+                } else {
+                    let (i, slot) = Params::check(*number, *selector, *value)
+                        .map_err(|e| param_error(e, *number))?;
+                    self.params.set(i, slot, *value);
+                }
+            }
+            CncCommand::Offset {
+                number,
+                kind,
+                value,
+            } => self.offsets[usize::from(*number)].set(*kind, *value),
+            CncCommand::Workpiece {
+                system,
+                axis,
+                value,
+            } => self.work[usize::from(*system)][usize::from(*axis)] = *value,
+            CncCommand::Macro { number, value } => self
+                .set_macro(MacroSlot::of(i64::from(*number)), *value)
+                .map_err(|()| format!("#{number} cannot take that value"))?,
+            CncCommand::Position { axis, value } => {
+                let n = usize::from(*axis);
+                if n >= self.axis_count() {
+                    return Err(format!(
+                        "axis {} is beyond the {} controlled axes (#8130)",
+                        AXIS_NAMES[n],
+                        self.axis_count()
+                    ));
+                }
+                if self.remaining(n) != 0 || self.manual.moving(n) || self.plc_moving(n) {
+                    return Err(format!(
+                        "axis {} is moving; its position can be set only while it is still",
+                        AXIS_NAMES[n]
+                    ));
+                }
+                self.axes[n].m = *value;
+            }
+            CncCommand::Alarm(n) => self.pending_alarms.push(*n),
+            CncCommand::Reset => self.reset_key_pending = true,
+            CncCommand::Handwheel(n) => self.manual.pulses += n,
+            CncCommand::Clock(t) => {
+                self.clock_origin = *t;
+                self.clock_set_ms = self.now_ms;
+            }
+        }
+        Ok(())
+    }
+
+    /// Reads a value; positions of an axis beyond #8130 cannot be read.
+    pub fn value(&self, key: &CncKey) -> Result<CncValue, String> {
+        let axis = |a: u8| {
+            let n = usize::from(a);
+            if n >= self.axis_count() {
+                Err(format!(
+                    "axis {} is beyond the {} controlled axes (#8130)",
+                    AXIS_NAMES[n],
+                    self.axis_count()
+                ))
+            } else {
+                Ok(n)
+            }
+        };
+        Ok(match *key {
+            CncKey::Mode => CncValue::Name(self.mode.name()),
+            CncKey::Run => CncValue::Name(self.auto.state.name()),
+            CncKey::Block => CncValue::Int(i64::from(self.auto.last_n)),
+            CncKey::Prog => CncValue::Int(i64::from(self.current_program_number())),
+            CncKey::Pos(a) => CncValue::Mm(self.axes[axis(a)?].m),
+            CncKey::Abs(a) => CncValue::Mm(self.absolute(axis(a)?)),
+            CncKey::Spindle => CncValue::Int(i64::from(self.spindle.s_out)),
+            CncKey::Alarm(n) => CncValue::Int(i64::from(self.alarm_active(n))),
+            CncKey::Alarms => CncValue::Int(self.alarms.len() as i64),
+            CncKey::Param(n, sel) => {
+                if self.profile == ProfileId::Gsk980
+                    && (1..=params::GSK980_WORDS as u16).contains(&n)
+                {
+                    CncValue::Int(i64::from(self.params.word980(usize::from(n))))
+                } else {
+                    let i = params::index(n).ok_or_else(|| format!("no parameter {n}"))?;
+                    let slot = sel.map_or(0, |s| usize::from(s).saturating_sub(1));
+                    CncValue::Int(self.params.get(i, slot))
+                }
+            }
+            CncKey::Offset(n, t) => {
+                let v = self.offsets[usize::from(n)].get(t);
+                if t == OffsetType::Tip {
+                    CncValue::Int(v)
+                } else {
+                    CncValue::Mm(v)
+                }
+            }
+            CncKey::Work(s, a) => CncValue::Mm(self.work[usize::from(s)][usize::from(a)]),
+            CncKey::Macro(n) => CncValue::Macro(match MacroSlot::of(i64::from(n)) {
+                MacroSlot::Volatile(k) => self.macros.volatile[k],
+                MacroSlot::Kept(k) => self.macros.kept[k],
+                MacroSlot::Input(k) => Some(f64::from(self.inp.macro_in >> k & 1)),
+                MacroSlot::Output(k) => Some(f64::from(self.macros.outputs >> k & 1)),
+                _ => None,
+            }),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn parse(words: &[&str]) -> Result<CncCommand, String> {
+        CncCommand::parse(words, ProfileId::Gsk988ta, &|p| Err(format!("no file {p}")))
+    }
+
+    #[test]
+    fn commands_are_checked_when_parsed() {
+        assert_eq!(
+            parse(&["param", "1420", "2", "3000"]),
+            Ok(CncCommand::Param {
+                number: 1420,
+                selector: Some(2),
+                value: 3000
+            })
+        );
+        assert!(
+            parse(&["param", "1420", "3000"])
+                .unwrap_err()
+                .contains("axis number")
+        );
+        assert!(
+            parse(&["param", "3003", "1", "3"])
+                .unwrap_err()
+                .contains("no axis")
+        );
+        assert!(parse(&["param", "8130", "9"]).unwrap_err().contains("2…5"));
+        assert!(
+            parse(&["offset", "100", "X", "1"])
+                .unwrap_err()
+                .contains("1–99")
+        );
+        assert!(parse(&["offset", "1", "TIP", "10"]).is_err());
+        assert_eq!(
+            parse(&["offset", "2", "wz", "-0.5"]),
+            Ok(CncCommand::Offset {
+                number: 2,
+                kind: OffsetType::Wear(1),
+                value: -500
+            })
+        );
+        assert!(parse(&["alarm", "950"]).is_err());
+        assert!(parse(&["alarm", "401"]).is_ok());
+        assert!(parse(&["macro", "1000", "1"]).is_err());
+        assert!(parse(&["macro", "1100", "2"]).is_err());
+        assert!(parse(&["macro", "100", "vacant"]).is_ok());
+        assert!(parse(&["handwheel", "20000"]).is_err());
+        assert!(parse(&["clock", "2026-02-30T00:00:00"]).is_err());
+        assert!(
+            parse(&["spin"])
+                .unwrap_err()
+                .contains("unknown cnc command")
+        );
+        assert!(
+            parse(&["program-file", "x.nc"])
+                .unwrap_err()
+                .contains("no file")
+        );
+        assert!(parse(&["position", "Q", "1"]).is_err());
+    }
+
+    #[test]
+    fn keys_print_canonically_and_read_expectations_by_kind() {
+        let k = CncKey::parse("CNC.POS.z", ProfileId::Gsk988ta).unwrap();
+        assert_eq!(k.text(), "cnc.pos.Z");
+        assert_eq!(k.expected("-5"), Ok(CncValue::Mm(-5000)));
+        assert_eq!(CncValue::Mm(-4987).to_string(), "-4.987");
+        assert_eq!(CncValue::Mm(-5).to_string(), "-0.005");
+        let m = CncKey::parse("cnc.mode", ProfileId::Gsk988ta).unwrap();
+        assert_eq!(m.expected("mem"), Ok(CncValue::Name("MEM")));
+        assert!(m.expected("AUTO").is_err());
+        assert!(CncKey::parse("cnc.pos.Q", ProfileId::Gsk988ta).is_err());
+        assert!(CncKey::parse("cnc.param.1420", ProfileId::Gsk988ta).is_err());
+        assert!(CncKey::parse("cnc.param.1420.1", ProfileId::Gsk988ta).is_ok());
+        assert!(CncKey::parse("cnc.param.77", ProfileId::Gsk980).is_ok());
+        assert!(CncKey::parse("cnc.speed", ProfileId::Gsk988ta).is_err());
+        assert_eq!(
+            CncKey::parse("cnc.macro.500", ProfileId::Gsk988ta)
+                .unwrap()
+                .expected("vacant"),
+            Ok(CncValue::Macro(None))
+        );
+    }
+}

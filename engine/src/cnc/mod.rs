@@ -1,0 +1,723 @@
+//! The simulated GSK CNC (docs/cnc.md): operation preparation and modes, automatic operation
+//! of NC programs with the M/S/T handshakes, motion of up to five axes, the spindle, manual
+//! operation, overtravel, alarms, CNC data for WINDR, and PLC axis control (AXCTL).
+//!
+//! [`SimCnc`] implements the PLC's [`Cnc`] port. Once per tick the PLC calls
+//! [`Cnc::exchange`], which runs the steps of one exchange in a fixed order (docs/cnc.md,
+//! "Tick and exchange"): sample G and A, alarms and reset, mode, automatic operation, motion,
+//! MST acceptance, end of block, and finally the F image. Everything is virtual time and
+//! integer or f64 arithmetic with fixed formulas, so a run is reproducible byte for byte.
+//!
+//! The module is split by responsibility: `signals` (G sampled, F written), `params`,
+//! `data` (offsets, macros, clock), `program` (NC text), `motion` (straight lines), `auto`
+//! (automatic operation and MST), `manual` (JOG, handwheel, reference return, overtravel),
+//! `plc_axes` (AXCTL groups), `windr` (the window functions), `command` (what scripts and the
+//! editor do to a running CNC, and the values they read back).
+
+mod auto;
+pub mod command;
+pub mod data;
+mod manual;
+pub mod motion;
+pub mod params;
+mod plc_axes;
+pub mod program;
+pub mod signals;
+mod windr;
+
+use crate::model::tables::MessageTable;
+use crate::profile::ProfileId;
+use crate::vm::cnc::{AxisStatus, Cnc};
+use auto::Auto;
+use data::{Macros, TOOL_OFFSETS, ToolOffset};
+use manual::Manual;
+use params::{P0071, P1006, P3003, Params};
+use plc_axes::Group;
+use program::{NcProgram, parse_mdi, parse_programs};
+use signals::{FImage, GroupInputs, Inputs};
+
+pub use auto::RunState;
+
+/// Axes the simulator can have (#8130 is 2–5).
+pub const AXES: usize = 5;
+
+/// Axis names in axis order: 1 = X, 2 = Z, 3 = Y, 4, 5.
+pub const AXIS_NAMES: [&str; AXES] = ["X", "Z", "Y", "4", "5"];
+
+/// The E-stop alarm.
+pub const ALARM_ESTOP: u16 = 950;
+/// Stored stroke limit, + and −.
+pub const ALARM_STROKE: [u16; 2] = [500, 501];
+/// Hardware overtravel, + and −.
+pub const ALARM_HARD_LIMIT: [u16; 2] = [506, 507];
+
+/// The operation mode.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Mode {
+    /// Program editing.
+    Edit,
+    /// Automatic operation from memory.
+    Mem,
+    /// Manual data input (the power-on mode: G43 = 0).
+    #[default]
+    Mdi,
+    /// Handwheel.
+    Handle,
+    /// Jog.
+    Jog,
+    /// DNC.
+    Dnc,
+    /// Reference return.
+    Ref,
+}
+
+impl Mode {
+    /// The script and display name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Edit => "EDIT",
+            Mode::Mem => "MEM",
+            Mode::Mdi => "MDI",
+            Mode::Handle => "HANDLE",
+            Mode::Jog => "JOG",
+            Mode::Dnc => "DNC",
+            Mode::Ref => "REF",
+        }
+    }
+
+    /// Every mode, for name look-ups.
+    pub const ALL: [Mode; 7] = [
+        Mode::Edit,
+        Mode::Mem,
+        Mode::Mdi,
+        Mode::Handle,
+        Mode::Jog,
+        Mode::Dnc,
+        Mode::Ref,
+    ];
+
+    fn from_code(code: u8) -> Option<Mode> {
+        Some(match code {
+            3 => Mode::Edit,
+            1 => Mode::Mem,
+            0 => Mode::Mdi,
+            4 => Mode::Handle,
+            5 => Mode::Jog,
+            33 => Mode::Dnc,
+            133 => Mode::Ref,
+            _ => return None,
+        })
+    }
+}
+
+/// One axis.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct AxisState {
+    /// Machine position, increments (X as a diameter).
+    pub m: i64,
+    /// Shift SH (machine lock, manual absolute off, reset by a reference return).
+    pub sh: i64,
+    /// Reference point established.
+    pub zrf: bool,
+    /// At reference point 1 (ZP).
+    pub zp: bool,
+    /// At reference points 2–4 (ZP2–ZP4).
+    pub zp_n: [bool; 3],
+    /// Moved at this exchange.
+    pub mv: bool,
+    /// The last move was negative.
+    pub mvd: bool,
+    /// Hardware overtravel alarm stored, + and −.
+    pub hard_limit: [bool; 2],
+    /// Stored stroke direction blocked, + and −.
+    pub stroke: [bool; 2],
+}
+
+/// Per-exchange results that F reports.
+#[derive(Clone, Copy, Debug, Default)]
+struct Flags {
+    /// A reset condition held at this exchange: no CNC motion advances.
+    halted: bool,
+    /// A rapid-type motion advanced.
+    rapid: bool,
+    /// A cutting feed advanced.
+    cut: bool,
+    /// Path speed of program motion, mm/min.
+    path_speed: f64,
+}
+
+/// Spindle state.
+#[derive(Clone, Copy, Debug, Default)]
+struct Spindle {
+    /// The last S commanded.
+    s_cmd: u32,
+    /// The output speed, r/min.
+    s_out: u32,
+    /// Maximum of the selected gear.
+    g_max: u32,
+}
+
+/// The simulated CNC.
+#[derive(Clone, Debug)]
+pub struct SimCnc {
+    profile: ProfileId,
+    params: Params,
+    offsets: Vec<ToolOffset>,
+    work: [[i64; AXES]; 7],
+    macros: Macros,
+    clock_origin: i64,
+    clock_set_ms: u64,
+    cutting_ms: u64,
+    now_ms: u64,
+    exchange_no: u64,
+    /// Alarm number per A bit (0: not an alarm).
+    plc_alarm_of_bit: Vec<u16>,
+    prev_a: Vec<u8>,
+    alarms: Vec<u16>,
+    pending_alarms: Vec<u16>,
+    inp: Inputs,
+    prev: Inputs,
+    group_in: [GroupInputs; 4],
+    mode: Mode,
+    reset_key_pending: bool,
+    reset_key: bool,
+    last_reset: Option<u64>,
+    rst: bool,
+    axes: [AxisState; AXES],
+    auto: Auto,
+    programs: Vec<NcProgram>,
+    program_text: String,
+    mdi: NcProgram,
+    mdi_text: String,
+    spindle: Spindle,
+    manual: Manual,
+    groups: [Group; 4],
+    flags: Flags,
+    eaxsl: bool,
+}
+
+/// Seconds from 1970 of the clock's origin, 2026-01-01 00:00:00.
+const CLOCK_ORIGIN: i64 = 1_767_225_600;
+
+impl SimCnc {
+    /// A CNC of a profile, with the project's display-message table deciding which A bits are
+    /// alarms (docs/cnc.md, "Alarms": numbers 1000–1999 are alarms, 2000–9999 operator
+    /// messages; a table with no number at all, as an instruction list gives, makes every
+    /// A bit k alarm 1000 + k).
+    pub fn new(profile: ProfileId, messages: &MessageTable) -> SimCnc {
+        let any = messages.rows.iter().any(|m| m.number.is_some());
+        let plc_alarm_of_bit = messages
+            .rows
+            .iter()
+            .enumerate()
+            .map(|(k, m)| match m.number {
+                Some(n) if (1000..2000).contains(&n) => n,
+                Some(_) => 0,
+                None if !any => 1000 + k as u16,
+                None => 0,
+            })
+            .collect();
+        SimCnc {
+            profile,
+            params: Params::default(),
+            offsets: vec![ToolOffset::default(); TOOL_OFFSETS],
+            work: [[0; AXES]; 7],
+            macros: Macros::default(),
+            clock_origin: CLOCK_ORIGIN,
+            clock_set_ms: 0,
+            cutting_ms: 0,
+            now_ms: 0,
+            exchange_no: 0,
+            plc_alarm_of_bit,
+            prev_a: Vec::new(),
+            alarms: Vec::with_capacity(16),
+            pending_alarms: Vec::new(),
+            inp: Inputs::zero(),
+            prev: Inputs::zero(),
+            group_in: [GroupInputs::default(); 4],
+            mode: Mode::Mdi,
+            reset_key_pending: false,
+            reset_key: false,
+            last_reset: None,
+            rst: false,
+            axes: [AxisState::default(); AXES],
+            auto: Auto::default(),
+            programs: Vec::new(),
+            program_text: String::new(),
+            mdi: NcProgram::default(),
+            mdi_text: String::new(),
+            spindle: Spindle::default(),
+            manual: Manual::default(),
+            groups: Default::default(),
+            flags: Flags::default(),
+            eaxsl: false,
+        }
+    }
+
+    /// The profile.
+    pub fn profile(&self) -> ProfileId {
+        self.profile
+    }
+
+    /// Controlled axes (#8130).
+    pub fn axis_count(&self) -> usize {
+        self.params.one(params::P8130).clamp(2, AXES as i64) as usize
+    }
+
+    /// The axes.
+    pub fn axes(&self) -> &[AxisState; AXES] {
+        &self.axes
+    }
+
+    /// The mode.
+    pub fn mode(&self) -> Mode {
+        self.mode
+    }
+
+    /// Active alarms in order of occurrence.
+    pub fn alarms(&self) -> &[u16] {
+        &self.alarms
+    }
+
+    /// The parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Whether axis slot `n` is a diameter axis (#1006 bit 3).
+    fn diameter(&self, n: usize) -> bool {
+        self.params.bit(P1006, n, 3)
+    }
+
+    fn diameters(&self) -> [bool; AXES] {
+        std::array::from_fn(|n| self.diameter(n))
+    }
+
+    /// Whether an interlock check of #3003 is enabled.
+    fn check(&self, bit: u32) -> bool {
+        self.params.bit(P3003, 0, bit)
+    }
+
+    /// Whether alarm `n` is active.
+    pub fn alarm_active(&self, n: u16) -> bool {
+        self.alarms.contains(&n)
+    }
+
+    fn servo_alarm(&self) -> bool {
+        self.alarms.iter().any(|a| (401..=499).contains(a))
+    }
+
+    /// Raises an alarm; a new one in RUN or HOLD stops automatic operation.
+    fn raise(&mut self, n: u16) {
+        if self.alarms.contains(&n) {
+            return;
+        }
+        self.alarms.push(n);
+        self.auto_alarm_stop();
+    }
+
+    fn clear_alarm(&mut self, n: u16) {
+        self.alarms.retain(|a| *a != n);
+    }
+
+    /// The absolute position of axis slot `n`: M − TO − WO − SH.
+    pub fn absolute(&self, n: usize) -> i64 {
+        let a = &self.axes[n];
+        a.m - self.tool_offset_along(n) - self.work_offset(n) - a.sh
+    }
+
+    fn tool_offset_along(&self, n: usize) -> i64 {
+        match self.auto.tool_offset {
+            0 => 0,
+            k => self.offsets[usize::from(k)].along(n),
+        }
+    }
+
+    fn work_offset(&self, n: usize) -> i64 {
+        self.work[0][n] + self.work[1 + usize::from(self.auto.modal.work)][n]
+    }
+
+    /// The virtual time of the last exchange, ms.
+    pub fn now_ms(&self) -> u64 {
+        self.now_ms
+    }
+
+    /// Replaces every memory program and rewinds.
+    fn load_programs(&mut self, text: &str) {
+        self.programs = parse_programs(text);
+        self.program_text = text.to_string();
+        self.auto.rewind_all();
+    }
+
+    fn load_mdi(&mut self, text: &str) {
+        self.mdi = parse_mdi(text);
+        self.mdi_text = text.to_string();
+        self.auto.rewind_all();
+    }
+
+    /// The memory programs' text.
+    pub fn program_text(&self) -> &str {
+        &self.program_text
+    }
+
+    /// The MDI buffer's text.
+    pub fn mdi_text(&self) -> &str {
+        &self.mdi_text
+    }
+
+    /// Power off and on (docs/cnc.md, "power-cycle").
+    pub fn power_cycle(&mut self) {
+        self.params.power_cycle();
+        self.alarms.clear();
+        self.pending_alarms.clear();
+        self.auto = Auto::default();
+        self.manual = Manual::default();
+        self.groups = Default::default();
+        self.spindle = Spindle::default();
+        for a in &mut self.axes {
+            *a = AxisState {
+                m: a.m,
+                ..AxisState::default()
+            };
+        }
+        self.macros.volatile = [None; 100];
+        self.macros.outputs = 0;
+        self.inp = Inputs::zero();
+        self.prev = Inputs::zero();
+        self.group_in = [GroupInputs::default(); 4];
+        self.mode = Mode::Mdi;
+        self.reset_key_pending = false;
+        self.reset_key = false;
+        self.last_reset = None;
+        self.rst = false;
+        self.eaxsl = false;
+        self.prev_a.clear();
+        self.flags = Flags::default();
+    }
+
+    /// Alarm sources and reset: step (b) of an exchange.
+    fn alarms_and_reset(&mut self, a: &[u8]) {
+        let inp = self.inp;
+        if inp.estop {
+            self.raise(ALARM_ESTOP);
+        } else {
+            self.clear_alarm(ALARM_ESTOP);
+        }
+        let pending = std::mem::take(&mut self.pending_alarms);
+        for n in &pending {
+            self.raise(*n);
+        }
+        self.pending_alarms = pending;
+        self.pending_alarms.clear();
+        if self.check(5) {
+            for n in 0..self.axis_count() {
+                for (d, bits) in [inp.limit_plus, inp.limit_minus].into_iter().enumerate() {
+                    if bits >> n & 1 == 1 {
+                        self.axes[n].hard_limit[d] = true;
+                        self.raise(ALARM_HARD_LIMIT[d]);
+                    }
+                }
+            }
+        }
+        self.plc_alarms(a);
+        let c = inp.estop || inp.ers || self.reset_key;
+        if c {
+            self.reset();
+            self.last_reset = Some(self.exchange_no);
+        }
+        let e = (self.params.one(P0071) as u64).div_ceil(8);
+        self.rst = self.last_reset.is_some_and(|k| self.exchange_no - k <= e);
+        if inp.estop || self.servo_alarm() {
+            for a in &mut self.axes {
+                a.zp = false;
+                a.zp_n = [false; 3];
+            }
+        }
+        self.claims();
+    }
+
+    fn plc_alarms(&mut self, a: &[u8]) {
+        if self.prev_a.as_slice() == a {
+            return;
+        }
+        for k in 0..self.plc_alarm_of_bit.len() {
+            let n = self.plc_alarm_of_bit[k];
+            if n == 0 {
+                continue;
+            }
+            let on = a.get(k / 8).is_some_and(|b| b >> (k % 8) & 1 == 1);
+            if on {
+                self.raise(n);
+            } else {
+                self.clear_alarm(n);
+            }
+        }
+        self.prev_a.clear();
+        self.prev_a.extend_from_slice(a);
+    }
+
+    /// A reset condition (docs/cnc.md, "Reset").
+    fn reset(&mut self) {
+        self.auto.reset();
+        self.manual.stop_all();
+        self.flags.halted = true;
+        self.alarms
+            .retain(|&n| n >= 1000 || n == ALARM_ESTOP || ALARM_HARD_LIMIT.contains(&n));
+        let inp = self.inp;
+        for (n, a) in self.axes.iter_mut().enumerate() {
+            if inp.limit_plus >> n & 1 == 0 {
+                a.hard_limit[0] = false;
+            }
+            if inp.limit_minus >> n & 1 == 0 {
+                a.hard_limit[1] = false;
+            }
+        }
+        for (d, alarm) in ALARM_HARD_LIMIT.into_iter().enumerate() {
+            if !self.axes.iter().any(|a| a.hard_limit[d]) {
+                self.clear_alarm(alarm);
+            }
+        }
+    }
+
+    /// The mode: step (c).
+    fn update_mode(&mut self) {
+        let Some(new) = Mode::from_code(self.inp.mode_code) else {
+            return;
+        };
+        if new == self.mode {
+            return;
+        }
+        self.auto.mode_change(new);
+        self.manual.stop_all();
+        self.mode = new;
+    }
+
+    /// The spindle output (docs/cnc.md, "Spindle").
+    fn update_spindle(&mut self) {
+        let inp = self.inp;
+        let g_max = self
+            .params
+            .get(params::P3741 + usize::from(inp.gear), 0)
+            .max(0) as u32;
+        let s_out = if inp.estop || inp.sstp {
+            0
+        } else if inp.sind {
+            (f64::from(inp.ri) * f64::from(g_max) / 4095.0).round() as u32
+        } else {
+            let sov = f64::from(inp.sov.clamp(5, 12)) / 10.0;
+            ((f64::from(self.spindle.s_cmd) * sov).round() as u32).min(g_max)
+        };
+        self.spindle.s_out = s_out;
+        self.spindle.g_max = g_max;
+    }
+
+    fn bookkeeping(&mut self) {
+        let p = &self.params;
+        for (n, a) in self.axes.iter_mut().enumerate() {
+            if a.zp && a.m != p.get(params::P1240, n) {
+                a.zp = false;
+            }
+            for k in 0..3 {
+                if a.zp_n[k] && a.m != p.get(params::P1240 + 1 + k, n) {
+                    a.zp_n[k] = false;
+                }
+            }
+        }
+        if self.flags.cut {
+            self.cutting_ms += 8;
+        }
+    }
+
+    /// Writes the F image (step (h)).
+    fn write_f(&self, f: &mut [u8]) {
+        let mut img = FImage::new();
+        self.auto_f(&mut img);
+        let inp = &self.inp;
+        let cnc_alarm = self.alarms.iter().any(|&n| n < 1000);
+        img.bit(0, 6, !inp.estop && !self.servo_alarm());
+        img.bit(1, 0, !self.alarms.is_empty());
+        img.bit(1, 1, self.rst);
+        img.bit(1, 7, !cnc_alarm);
+        img.bit(1, 4, self.spindle.s_out != 0);
+        img.bit(2, 1, self.flags.rapid);
+        img.bit(2, 6, self.flags.cut);
+        img.bit(2, 7, inp.drn);
+        let (byte, b) = match self.mode {
+            Mode::Edit => (3, 6),
+            Mode::Mem => (3, 5),
+            Mode::Mdi => (3, 3),
+            Mode::Handle => (3, 1),
+            Mode::Jog => (3, 2),
+            Mode::Dnc => (3, 4),
+            Mode::Ref => (4, 5),
+        };
+        img.bit(byte, b, true);
+        img.bit(4, 0, inp.bdt1);
+        img.bit(4, 1, inp.mlk);
+        img.bit(4, 2, !inp.absm);
+        img.bit(4, 3, inp.sbk);
+        img.bit(4, 4, inp.afl);
+        img.bit(
+            6,
+            0,
+            self.alarm_active(ALARM_STROKE[0]) || self.alarm_active(ALARM_STROKE[1]),
+        );
+        img.bit(6, 1, self.reset_key);
+        // Spindle.
+        let sp = &self.spindle;
+        let s12 = if inp.sind {
+            u32::from(inp.ri)
+        } else if sp.g_max > 0 {
+            (4095.0 * f64::from(sp.s_out) / f64::from(sp.g_max)).round() as u32
+        } else {
+            0
+        };
+        img.value(36, 2, s12.min(4095));
+        img.value(40, 2, sp.s_out.min(65_535));
+        let p = &self.params;
+        let (made, wanted) = (p.one(params::P6711), p.one(params::P6713));
+        img.bit(62, 7, wanted > 0 && made >= wanted);
+        // Axes.
+        let ots = p.bit(params::P1301, 0, 6);
+        for (n, a) in self.axes.iter().enumerate() {
+            let b = n as u32;
+            img.bit(94, b, a.zp);
+            img.bit(96, b, a.zp_n[0]);
+            img.bit(98, b, a.zp_n[1]);
+            img.bit(100, b, a.zp_n[2]);
+            img.bit(102, b, a.mv);
+            img.bit(106, b, a.mvd);
+            img.bit(120, b, a.zrf);
+            img.bit(124, b, ots && a.stroke[0]);
+            img.bit(126, b, ots && a.stroke[1]);
+        }
+        self.plc_axes_f(&mut img);
+        img.value(214, 4, self.macros.outputs);
+        img.store(f);
+    }
+
+    /// A snapshot of what a CNC screen shows.
+    pub fn status(&self) -> CncStatus {
+        let count = self.axis_count();
+        CncStatus {
+            mode: self.mode,
+            run: self.auto.state,
+            block: self.auto.last_n,
+            program: self.current_program_number(),
+            line: self.auto.current_line(&self.programs, &self.mdi),
+            mdi: self.auto.running_mdi(),
+            axes: count,
+            machine: std::array::from_fn(|n| self.axes[n].m),
+            absolute: std::array::from_fn(|n| self.absolute(n)),
+            spindle: self.spindle.s_out,
+            alarms: self.alarms.clone(),
+            mst: self.mst_status(),
+        }
+    }
+}
+
+/// What a CNC screen shows, copied out for the editor each frame.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CncStatus {
+    /// Mode.
+    pub mode: Mode,
+    /// Automatic operation state.
+    pub run: RunState,
+    /// `cnc.block`.
+    pub block: u32,
+    /// `cnc.prog`.
+    pub program: u32,
+    /// 1-based line of the executing (or next) block in its text, if any.
+    pub line: Option<usize>,
+    /// The running program is the MDI buffer.
+    pub mdi: bool,
+    /// Controlled axes.
+    pub axes: usize,
+    /// Machine positions, increments.
+    pub machine: [i64; AXES],
+    /// Absolute positions, increments.
+    pub absolute: [i64; AXES],
+    /// Spindle output, r/min.
+    pub spindle: u32,
+    /// Active alarms.
+    pub alarms: Vec<u16>,
+    /// M/S/T lamps.
+    pub mst: MstStatus,
+}
+
+/// The M/S/T interface as lamps and codes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MstStatus {
+    /// M code and MF.
+    pub m: u32,
+    /// MF.
+    pub mf: bool,
+    /// S code.
+    pub s: u32,
+    /// SF.
+    pub sf: bool,
+    /// T code.
+    pub t: u32,
+    /// TF.
+    pub tf: bool,
+    /// FIN as last sampled.
+    pub fin: bool,
+    /// DEN.
+    pub den: bool,
+}
+
+impl Cnc for SimCnc {
+    fn window_is_low_speed(&self, function: i32) -> bool {
+        match self.profile {
+            ProfileId::Gsk988ta => matches!(function, 14 | 18 | 22),
+            ProfileId::Gsk980 => matches!(function, 14 | 16 | 18 | 22),
+        }
+    }
+
+    fn window(&mut self, block: &mut [i32]) {
+        self.windr(block);
+    }
+
+    fn machine_position(&self, axis: u32) -> Option<i64> {
+        let n = axis as usize;
+        (1..=self.axis_count())
+            .contains(&n)
+            .then(|| self.axes[n - 1].m)
+    }
+
+    fn axis_status(&self, group: u8, ebuf: bool) -> AxisStatus {
+        self.plc_axis_status(group, ebuf)
+    }
+
+    fn exchange(&mut self, now_ms: u64, g: &[u8], a: &[u8], f: &mut [u8]) {
+        self.now_ms = now_ms;
+        self.exchange_no += 1;
+        // (a) sample.
+        self.prev = self.inp;
+        self.inp = Inputs::read(g);
+        for (k, gi) in self.group_in.iter_mut().enumerate() {
+            *gi = GroupInputs::read(g, k);
+        }
+        self.reset_key = std::mem::take(&mut self.reset_key_pending);
+        self.flags = Flags::default();
+        for a in &mut self.axes {
+            a.mv = false;
+        }
+        // (b)–(c).
+        self.alarms_and_reset(a);
+        self.update_mode();
+        // (d).
+        self.automatic();
+        self.update_spindle();
+        // (e).
+        self.advance_program();
+        self.advance_manual();
+        self.advance_plc_axes();
+        // (f)–(g).
+        self.mst_acceptance();
+        self.end_of_block();
+        self.bookkeeping();
+        // (h).
+        self.write_f(f);
+    }
+}

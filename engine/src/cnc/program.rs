@@ -1,0 +1,469 @@
+//! NC program text (docs/cnc.md, "NC programs"): split into programs and blocks, each block
+//! read into its words once when the text is loaded. Errors that depend only on the text are
+//! found here and kept with the block; like a real CNC, the simulator raises them only when the
+//! block is about to execute. Errors that depend on the machine state (an axis beyond #8130,
+//! G01 without F, M98 to a missing program…) are checked at that moment by `auto.rs`.
+
+/// P/S alarm numbers of program errors.
+pub mod ps {
+    /// Too many digits.
+    pub const DIGITS: u16 = 3;
+    /// Unknown address, letter without number, malformed number, address twice, no such axis.
+    pub const ADDRESS: u16 = 9;
+    /// A G code that is not modelled, or two of one group.
+    pub const G_CODE: u16 = 10;
+    /// G01 while F = 0.
+    pub const NO_FEED: u16 = 11;
+    /// More than three M codes.
+    pub const M_COUNT: u16 = 14;
+    /// M98: no such program.
+    pub const NO_PROGRAM: u16 = 76;
+    /// M98 nested too deep.
+    pub const NESTING: u16 = 77;
+    /// G28 (or AXCTL 08h–0Ah) before the reference point is established.
+    pub const NO_REFERENCE: u16 = 90;
+    /// PLC axis control refused (no axis in the group, or an unknown command).
+    pub const PLC_AXIS: u16 = 130;
+    /// An axis claimed by both the CNC and the PLC.
+    pub const AXIS_CLAIM: u16 = 139;
+}
+
+/// Largest coordinate, in increments (±99999.999 mm).
+const COORD_MAX: f64 = 99_999_999.0;
+
+/// One block's words, as read from the text.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Words {
+    /// Group 01: 0 (G00) or 1 (G01).
+    pub motion: Option<u8>,
+    /// G04 dwell.
+    pub dwell: bool,
+    /// G28 reference return.
+    pub g28: bool,
+    /// Group 14: 0 (G54) … 5 (G59).
+    pub work: Option<u8>,
+    /// Group 03: `Some(false)` G98, `Some(true)` G99.
+    pub per_rev: Option<bool>,
+    /// X, Z, Y: the value in increments and whether it is incremental (U, W, V).
+    pub axes: [Option<(i64, bool)>; 3],
+    /// F, mm/min or mm/rev.
+    pub f: Option<f64>,
+    /// S, r/min.
+    pub s: Option<u32>,
+    /// T, TTOO.
+    pub t: Option<u32>,
+    /// M codes in order (up to three).
+    pub m: [u32; 3],
+    /// How many M codes.
+    pub m_count: u8,
+    /// P, an integer (G04 ms, M98 program).
+    pub p: Option<u32>,
+    /// G04 time given with X or U, seconds.
+    pub dwell_s: Option<f64>,
+}
+
+impl Words {
+    /// The M codes of the block.
+    pub fn ms(&self) -> &[u32] {
+        &self.m[..usize::from(self.m_count)]
+    }
+
+    /// Whether any axis word is given (outside G04, where X/U are the time).
+    pub fn moves(&self) -> bool {
+        self.axes.iter().any(Option::is_some)
+    }
+}
+
+/// One block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NcBlock {
+    /// 1-based line of the text it came from.
+    pub line: usize,
+    /// Its text, as written.
+    pub text: String,
+    /// It began with `/` (skipped while BDT1 = 1).
+    pub slash: bool,
+    /// Its sequence number.
+    pub n: Option<u32>,
+    /// Its words, or the P/S alarm its text gives.
+    pub words: Result<Words, u16>,
+}
+
+/// One program: O number and blocks.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct NcProgram {
+    /// O number (0 for text before the first O line; 10000 for MDI).
+    pub number: u32,
+    /// Blocks in order (O lines, blank lines and comments are not blocks).
+    pub blocks: Vec<NcBlock>,
+}
+
+/// Program number reported for the MDI buffer.
+pub const MDI_NUMBER: u32 = 10_000;
+
+/// Splits text into programs: `O`n starts one; text before the first O is O0000.
+pub fn parse_programs(text: &str) -> Vec<NcProgram> {
+    let mut programs: Vec<NcProgram> = Vec::new();
+    for (line, segment) in segments(text) {
+        let clean = clean(segment);
+        if clean.is_empty() || clean.starts_with('%') {
+            continue;
+        }
+        let mut body = clean.as_str();
+        if let Some(rest) = body.strip_prefix('O') {
+            let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
+            let number: Option<u32> = rest[..digits].parse().ok().filter(|_| digits <= 8);
+            match number {
+                Some(o) if (1..=9999).contains(&o) => {
+                    programs.push(NcProgram {
+                        number: o,
+                        blocks: Vec::new(),
+                    });
+                    body = &rest[digits..];
+                    if body.is_empty() {
+                        continue;
+                    }
+                }
+                _ => {
+                    // A malformed O line is a block that cannot execute.
+                    let alarm = if digits > 4 { ps::DIGITS } else { ps::ADDRESS };
+                    push(
+                        &mut programs,
+                        NcBlock {
+                            line,
+                            text: segment.trim().to_string(),
+                            slash: false,
+                            n: None,
+                            words: Err(alarm),
+                        },
+                    );
+                    continue;
+                }
+            }
+        }
+        let block = parse_block(line, segment.trim(), body);
+        push(&mut programs, block);
+    }
+    programs
+}
+
+fn push(programs: &mut Vec<NcProgram>, block: NcBlock) {
+    if programs.is_empty() {
+        programs.push(NcProgram::default());
+    }
+    programs.last_mut().expect("one program").blocks.push(block);
+}
+
+/// The MDI buffer: every block of the text as one program.
+pub fn parse_mdi(text: &str) -> NcProgram {
+    NcProgram {
+        number: MDI_NUMBER,
+        blocks: parse_programs(text)
+            .into_iter()
+            .flat_map(|p| p.blocks)
+            .collect(),
+    }
+}
+
+/// Blocks of text with their 1-based lines: `;` and newlines end blocks.
+fn segments(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    text.lines()
+        .enumerate()
+        .flat_map(|(i, l)| l.split(';').map(move |s| (i + 1, s)))
+}
+
+/// Upper case, without spaces and `( … )` comments.
+fn clean(segment: &str) -> String {
+    let mut out = String::with_capacity(segment.len());
+    let mut depth = 0;
+    for c in segment.chars() {
+        match c {
+            '(' => depth += 1,
+            ')' if depth > 0 => depth -= 1,
+            _ if depth > 0 => {}
+            c if c.is_whitespace() => {}
+            c => out.push(c.to_ascii_uppercase()),
+        }
+    }
+    out
+}
+
+/// A number as written after a letter.
+struct Number {
+    value: f64,
+    decimal: bool,
+    text_len: usize,
+}
+
+fn number(s: &str) -> Option<Number> {
+    let b = s.as_bytes();
+    let mut i = 0;
+    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
+        i += 1;
+    }
+    let int_start = i;
+    while i < b.len() && b[i].is_ascii_digit() {
+        i += 1;
+    }
+    let mut digits = i - int_start;
+    let mut decimal = false;
+    if i < b.len() && b[i] == b'.' {
+        decimal = true;
+        i += 1;
+        let f = i;
+        while i < b.len() && b[i].is_ascii_digit() {
+            i += 1;
+        }
+        digits += i - f;
+    }
+    if digits == 0 {
+        return None;
+    }
+    let value: f64 = s[..i].parse().ok()?;
+    Some(Number {
+        value,
+        decimal,
+        text_len: i,
+    })
+}
+
+fn parse_block(line: usize, text: &str, body: &str) -> NcBlock {
+    let (slash, body) = match body.strip_prefix('/') {
+        Some(rest) => (true, rest),
+        None => (false, body),
+    };
+    let mut block = NcBlock {
+        line,
+        text: text.to_string(),
+        slash,
+        n: None,
+        words: Ok(Words::default()),
+    };
+    // The N comes first; read it even when a later word is wrong, so the alarm can name it.
+    if let Some(rest) = body.strip_prefix('N')
+        && let Some(num) = number(rest)
+        && !num.decimal
+        && num.value >= 1.0
+        && num.value <= 99_999.0
+    {
+        block.n = Some(num.value as u32);
+    }
+    block.words = words(body);
+    block
+}
+
+fn words(mut body: &str) -> Result<Words, u16> {
+    let mut w = Words::default();
+    let mut seen = [false; 26];
+    let mut groups = [false; 11];
+    while let Some(letter) = body.chars().next() {
+        if !letter.is_ascii_uppercase() {
+            return Err(ps::ADDRESS);
+        }
+        let rest = &body[1..];
+        let num = number(rest).ok_or(ps::ADDRESS)?;
+        body = &rest[num.text_len..];
+        let slot = (letter as u8 - b'A') as usize;
+        if letter != 'G' && letter != 'M' {
+            if seen[slot] {
+                return Err(ps::ADDRESS);
+            }
+            seen[slot] = true;
+        }
+        let v = num.value;
+        let integer = |max: f64| -> Result<u32, u16> {
+            if num.decimal || v < 0.0 {
+                Err(ps::ADDRESS)
+            } else if v > max {
+                Err(ps::DIGITS)
+            } else {
+                Ok(v as u32)
+            }
+        };
+        match letter {
+            'N' => {
+                if num.decimal || v < 1.0 {
+                    return Err(ps::ADDRESS);
+                }
+                if v > 99_999.0 {
+                    return Err(ps::DIGITS);
+                }
+            }
+            'G' => {
+                let code = &rest[..num.text_len];
+                g_code(code, &mut w, &mut groups)?;
+            }
+            'X' | 'Z' | 'Y' | 'U' | 'W' | 'V' => {
+                let incr = (v * 1000.0).round();
+                if incr.abs() > COORD_MAX {
+                    return Err(ps::DIGITS);
+                }
+                let (k, inc) = match letter {
+                    'X' => (0, false),
+                    'Z' => (1, false),
+                    'Y' => (2, false),
+                    'U' => (0, true),
+                    'W' => (1, true),
+                    _ => (2, true),
+                };
+                if w.axes[k].is_some() {
+                    return Err(ps::ADDRESS);
+                }
+                w.axes[k] = Some((incr as i64, inc));
+            }
+            'F' => {
+                if v < 0.0 {
+                    return Err(ps::ADDRESS);
+                }
+                if v > 99_999.999 {
+                    return Err(ps::DIGITS);
+                }
+                w.f = Some(v);
+            }
+            'S' => w.s = Some(integer(99_999_999.0)?),
+            'T' => w.t = Some(integer(9999.0)?),
+            'P' => w.p = Some(integer(99_999_999.0)?),
+            'M' => {
+                let max = if w.m_count == 0 {
+                    99_999_999.0
+                } else {
+                    65_535.0
+                };
+                let m = integer(max)?;
+                if w.m_count == 3 {
+                    return Err(ps::M_COUNT);
+                }
+                w.m[usize::from(w.m_count)] = m;
+                w.m_count += 1;
+            }
+            _ => return Err(ps::ADDRESS),
+        }
+    }
+    if w.dwell {
+        // G04 X/U: the time in seconds, not a coordinate.
+        if let Some((v, _)) = w.axes[0].take() {
+            w.dwell_s = Some(v as f64 / 1000.0);
+        }
+    }
+    Ok(w)
+}
+
+fn g_code(code: &str, w: &mut Words, groups: &mut [bool; 11]) -> Result<(), u16> {
+    let value: f64 = code.parse().map_err(|_| ps::G_CODE)?;
+    let tenths = (value * 10.0).round();
+    if (value * 10.0 - tenths).abs() > 1e-9 || code.starts_with(['+', '-']) {
+        return Err(ps::G_CODE);
+    }
+    // Groups: 0 one-shot (G04, G28), 1 motion, 2 feed mode, 3 workpiece, 4+ accepted ones.
+    let group = match tenths as i64 {
+        0 => {
+            w.motion = Some(0);
+            1
+        }
+        10 => {
+            w.motion = Some(1);
+            1
+        }
+        40 => {
+            w.dwell = true;
+            0
+        }
+        280 => {
+            w.g28 = true;
+            0
+        }
+        540 | 550 | 560 | 570 | 580 | 590 => {
+            w.work = Some(((tenths as i64 - 540) / 10) as u8);
+            3
+        }
+        980 => {
+            w.per_rev = Some(false);
+            2
+        }
+        990 => {
+            w.per_rev = Some(true);
+            2
+        }
+        131 => 4,
+        150 => 5,
+        180 => 6,
+        210 => 7,
+        400 => 8,
+        670 => 9,
+        970 => 10,
+        _ => return Err(ps::G_CODE),
+    };
+    if groups[group] {
+        return Err(ps::G_CODE);
+    }
+    groups[group] = true;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn block(text: &str) -> NcBlock {
+        let p = parse_programs(text);
+        p[0].blocks[0].clone()
+    }
+
+    #[test]
+    fn programs_split_at_o_lines_and_text_before_is_o0000() {
+        let p = parse_programs("G00 X1;\n%\nO0001 (MAIN)\nM03 S800;T0202\n\nO12;M99");
+        assert_eq!(p.len(), 3);
+        assert_eq!((p[0].number, p[0].blocks.len()), (0, 1));
+        assert_eq!((p[1].number, p[1].blocks.len()), (1, 2));
+        assert_eq!(p[2].number, 12);
+        assert_eq!(p[1].blocks[1].line, 4);
+    }
+
+    #[test]
+    fn words_read_as_written() {
+        let b = block("/N20 G01 X10 W-5.5 F100 M03 M08 S800 T0202");
+        assert!(b.slash);
+        assert_eq!(b.n, Some(20));
+        let w = b.words.unwrap();
+        assert_eq!(w.motion, Some(1));
+        assert_eq!(w.axes[0], Some((10_000, false)));
+        assert_eq!(w.axes[1], Some((-5_500, true)));
+        assert_eq!(w.ms(), &[3, 8]);
+        assert_eq!((w.s, w.t, w.f), (Some(800), Some(202), Some(100.0)));
+        let w = block("G04 X1.5").words.unwrap();
+        assert_eq!((w.dwell, w.dwell_s, w.axes[0]), (true, Some(1.5), None));
+        assert!(block("g13.1 g18 g21 g40 g67 g97 g15").words.is_ok());
+    }
+
+    #[test]
+    fn text_errors_give_their_alarm_and_keep_the_n() {
+        let cases = [
+            ("N10 G01 X1 X2", 9),
+            ("N10 Q5", 9),
+            ("N10 X", 9),
+            ("N10 X1..2", 9),
+            ("N10 G02 X1", 10),
+            ("N10 G00 G01 X1", 10),
+            ("N10 X100000", 3),
+            ("N10 T12345", 3),
+            ("N10 M1 M2 M3 M4", 14),
+            ("N10 M1 M70000", 3),
+            ("N10 #1=2", 9),
+            ("N10 S1.5", 9),
+        ];
+        for (text, alarm) in cases {
+            let b = block(text);
+            assert_eq!(b.words, Err(alarm), "{text}");
+            assert_eq!(b.n, Some(10), "{text}");
+        }
+        assert_eq!(block("N123456 X1").words, Err(3));
+        assert_eq!(block("N123456 X1").n, None);
+    }
+
+    #[test]
+    fn mdi_is_one_program() {
+        let m = parse_mdi("M03 S500;O0005;G04 P100");
+        assert_eq!(m.number, MDI_NUMBER);
+        assert_eq!(m.blocks.len(), 2);
+    }
+}

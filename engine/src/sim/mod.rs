@@ -1,0 +1,606 @@
+//! Stimulus scripts (README, "Stimulus scripts"; docs/cnc.md for the `cnc` lines): parsed
+//! whole before anything runs, so a typo on line 40 is reported before line 1 executes;
+//! then run against a [`Machine`], counting `expect`s. Every line that acts on the machine
+//! becomes a [`MachineCommand`], the same commands the editor sends to a running machine.
+
+mod lex;
+
+use crate::address::{Address, AddressError, Area};
+use crate::cnc::command::{CncCommand, CncKey, CncValue};
+use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
+use crate::profile::Profile;
+use crate::vm::TICK_MS;
+use std::fmt::Write as _;
+use thiserror::Error;
+
+pub use crate::machine::Target;
+
+/// One script line.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Something done to the machine: `set`, `setf`, `force`, `unforce`, `scan`, `run`,
+    /// `watch`, `division`, `power-cycle`, `cnc …`.
+    Do(MachineCommand),
+    /// `expect ADDR[:N] VALUE`.
+    Expect(Target, i64),
+    /// `expectf ADDR VALUE [TOL]`.
+    ExpectReal(Address, f32, Option<f32>),
+    /// `expect cnc.KEY VALUE`, with the value as written.
+    ExpectCnc(CncKey, CncValue, String),
+    /// `print ADDR[:N]` or `print cnc.KEY`.
+    Print(Probe),
+}
+
+/// A script line that cannot be used.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[error("line {line}: {message}")]
+pub struct ScriptError {
+    /// 1-based line.
+    pub line: usize,
+    /// What is wrong and how to fix it.
+    pub message: String,
+}
+
+/// A parsed script: commands with their lines.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Script {
+    /// (line, command).
+    pub commands: Vec<(usize, Command)>,
+}
+
+/// How a script is read.
+pub struct Options<'a> {
+    /// `sim --cnc`: the `cnc` lines and `cnc.KEY` values are allowed.
+    pub cnc: bool,
+    /// Reads a file a `cnc program-file` line names (relative to the script's folder).
+    pub read_file: &'a dyn Fn(&str) -> Result<String, String>,
+}
+
+const COMMANDS: &[&str] = &[
+    "set",
+    "setf",
+    "force",
+    "unforce",
+    "scan",
+    "run",
+    "expect",
+    "expectf",
+    "print",
+    "watch",
+    "division",
+    "power-cycle",
+    "cnc",
+];
+
+fn target(text: &str, profile: &Profile) -> Result<Target, String> {
+    let (addr, bytes) = match text.split_once(':') {
+        Some((a, n)) => {
+            let n: u32 = n
+                .parse()
+                .ok()
+                .filter(|n| matches!(n, 1 | 2 | 4))
+                .ok_or_else(|| format!("`{text}`: the byte count after `:` is 1, 2 or 4"))?;
+            (a, Some(n))
+        }
+        None => (text, None),
+    };
+    let address = Address::parse_in(addr, profile).map_err(|e: AddressError| e.to_string())?;
+    if matches!(address.area, Area::L | Area::P) {
+        return Err(format!("`{text}`: labels and subprograms hold no value"));
+    }
+    if address.bit.is_some() && bytes.is_some() {
+        return Err(format!("`{text}`: a bit address takes no byte count"));
+    }
+    let natural = if address.bit.is_some() {
+        1
+    } else {
+        u32::from(address.area.element_bytes())
+    };
+    let bytes = bytes.unwrap_or(natural);
+    if address.bit.is_none() && address.area.element_bytes() == 1 {
+        address
+            .check_span(profile, bytes)
+            .map_err(|e| e.to_string())?;
+    }
+    Ok(Target {
+        address,
+        bytes,
+        explicit: bytes != natural,
+    })
+}
+
+fn is_cnc_key(text: &str) -> bool {
+    text.get(..4)
+        .is_some_and(|p| p.eq_ignore_ascii_case("cnc."))
+}
+
+fn probe(text: &str, profile: &Profile, cnc: bool) -> Result<Probe, String> {
+    if is_cnc_key(text) {
+        if !cnc {
+            return Err(format!("`{text}` is a CNC value: run with `sim --cnc`"));
+        }
+        return CncKey::parse(text, profile.id).map(Probe::Cnc);
+    }
+    target(text, profile).map(Probe::Memory)
+}
+
+fn memory_target(text: &str, profile: &Profile, verb: &str) -> Result<Target, String> {
+    if is_cnc_key(text) {
+        return Err(format!(
+            "`{verb}` writes PLC memory; `{text}` is a CNC value (use a `cnc` command)"
+        ));
+    }
+    target(text, profile)
+}
+
+fn integer(text: &str) -> Result<i64, String> {
+    let (neg, digits) = match text.strip_prefix('-') {
+        Some(d) => (true, d),
+        None => (false, text.strip_prefix('+').unwrap_or(text)),
+    };
+    let v = match digits
+        .strip_prefix("0x")
+        .or_else(|| digits.strip_prefix("0X"))
+    {
+        Some(hex) => i64::from_str_radix(hex, 16),
+        None => digits.parse::<i64>(),
+    }
+    .map_err(|_| format!("`{text}` is not an integer"))?;
+    Ok(if neg { -v } else { v })
+}
+
+fn fits(target: &Target, v: i64) -> Result<(), String> {
+    if target.address.bit.is_some() {
+        return if v == 0 || v == 1 {
+            Ok(())
+        } else {
+            Err(format!(
+                "{} is a bit: the value is 0 or 1, not {v}",
+                target.text()
+            ))
+        };
+    }
+    let bits = 8 * target.bytes;
+    let (lo, hi) = (-(1i64 << (bits - 1)), (1i64 << bits) - 1);
+    if v < lo || v > hi {
+        return Err(format!(
+            "{v} does not fit {} ({} byte{}: {lo}…{hi})",
+            target.text(),
+            target.bytes,
+            if target.bytes == 1 { "" } else { "s" }
+        ));
+    }
+    Ok(())
+}
+
+fn duration(text: &str) -> Result<u64, String> {
+    let bad = || format!("`{text}` is not a duration (write 250ms, 2s or a number of ms)");
+    let (number, scale) = if let Some(n) = text.strip_suffix("ms") {
+        (n, 1.0)
+    } else if let Some(n) = text.strip_suffix('s') {
+        (n, 1000.0)
+    } else {
+        (text, 1.0)
+    };
+    let v: f64 = number.parse().map_err(|_| bad())?;
+    if !v.is_finite() || v < 0.0 || v * scale > 1e13 {
+        return Err(bad());
+    }
+    Ok(((v * scale) / TICK_MS as f64).ceil() as u64)
+}
+
+fn real(text: &str) -> Result<f32, String> {
+    text.parse::<f32>()
+        .map_err(|_| format!("`{text}` is not a number"))
+}
+
+fn four_byte(t: &Target, verb: &str) -> Result<(), String> {
+    if t.address.bit.is_some() || t.address.area.element_bytes() != 4 {
+        return Err(format!(
+            "{verb} needs a 4-byte address (D, T, C, DT, DC), not {}",
+            t.address
+        ));
+    }
+    Ok(())
+}
+
+fn no_files(path: &str) -> Result<String, String> {
+    Err(format!("cannot read `{path}`: no files here"))
+}
+
+impl Script {
+    /// Parses a whole script for the PLC alone (no `cnc` lines), or says which line is wrong.
+    pub fn parse(text: &str, profile: &Profile) -> Result<Script, ScriptError> {
+        Script::parse_with(
+            text,
+            profile,
+            &Options {
+                cnc: false,
+                read_file: &no_files,
+            },
+        )
+    }
+
+    /// Parses a whole script, or says which line is wrong.
+    pub fn parse_with(
+        text: &str,
+        profile: &Profile,
+        options: &Options<'_>,
+    ) -> Result<Script, ScriptError> {
+        let mut commands = Vec::new();
+        for (i, raw) in text.lines().enumerate() {
+            let line = i + 1;
+            let err = |message: String| ScriptError { line, message };
+            let words = lex::words(raw).map_err(err)?;
+            let Some(&verb) = words.first() else {
+                continue;
+            };
+            let command = parse_line(verb, &words[1..], profile, options).map_err(err)?;
+            commands.push((line, command));
+        }
+        Ok(Script { commands })
+    }
+}
+
+fn parse_line(
+    verb: &str,
+    args: &[&str],
+    profile: &Profile,
+    options: &Options<'_>,
+) -> Result<Command, String> {
+    let want = |n: std::ops::RangeInclusive<usize>, usage: &str| {
+        if n.contains(&args.len()) {
+            Ok(())
+        } else {
+            Err(format!("usage: {usage}"))
+        }
+    };
+    let lower = verb.to_ascii_lowercase();
+    let act = |c: MachineCommand| Ok(Command::Do(c));
+    match lower.as_str() {
+        "set" => {
+            want(2..=2, "set ADDR[:N] VALUE")?;
+            let t = memory_target(args[0], profile, "set")?;
+            let v = integer(args[1])?;
+            fits(&t, v)?;
+            act(MachineCommand::Write(t, v))
+        }
+        "setf" => {
+            want(2..=2, "setf ADDR VALUE")?;
+            let t = memory_target(args[0], profile, "setf")?;
+            four_byte(&t, "setf")?;
+            act(MachineCommand::WriteReal(t.address, real(args[1])?))
+        }
+        "force" => {
+            want(2..=2, "force ADDR VALUE")?;
+            let t = memory_target(args[0], profile, "force")?;
+            let v = integer(args[1])?;
+            fits(&t, v)?;
+            act(MachineCommand::Force(t.address, v))
+        }
+        "unforce" => {
+            want(1..=1, "unforce ADDR")?;
+            act(MachineCommand::Unforce(
+                memory_target(args[0], profile, "unforce")?.address,
+            ))
+        }
+        "scan" => {
+            want(0..=1, "scan [N]")?;
+            let n = match args.first() {
+                Some(n) => n
+                    .parse::<u64>()
+                    .ok()
+                    .filter(|n| *n <= 100_000_000)
+                    .ok_or_else(|| format!("`{n}` is not a number of scans"))?,
+                None => 1,
+            };
+            act(MachineCommand::Tick(n))
+        }
+        "run" => {
+            want(1..=1, "run DURATION")?;
+            act(MachineCommand::Tick(duration(args[0])?))
+        }
+        "expect" => {
+            want(2..=2, "expect ADDR[:N] VALUE")?;
+            match probe(args[0], profile, options.cnc)? {
+                Probe::Cnc(k) => Ok(Command::ExpectCnc(k, k.expected(args[1])?, args[1].into())),
+                Probe::Memory(t) => {
+                    let v = integer(args[1])?;
+                    fits(&t, v)?;
+                    Ok(Command::Expect(t, v))
+                }
+            }
+        }
+        "expectf" => {
+            want(2..=3, "expectf ADDR VALUE [TOL]")?;
+            let t = memory_target(args[0], profile, "expectf")?;
+            four_byte(&t, "expectf")?;
+            let tol = match args.get(2) {
+                Some(t) => Some(real(t)?),
+                None => None,
+            };
+            Ok(Command::ExpectReal(t.address, real(args[1])?, tol))
+        }
+        "print" => {
+            want(1..=1, "print ADDR[:N]")?;
+            Ok(Command::Print(probe(args[0], profile, options.cnc)?))
+        }
+        "watch" => {
+            want(1..=1, "watch ADDR[:N]")?;
+            act(MachineCommand::Watch(probe(args[0], profile, options.cnc)?))
+        }
+        "division" => {
+            want(1..=1, "division N")?;
+            let n = args[0]
+                .parse::<u32>()
+                .ok()
+                .filter(|n| (1..=1000).contains(n))
+                .ok_or_else(|| format!("`{}`: the division is a number 1–1000", args[0]))?;
+            act(MachineCommand::Division(n))
+        }
+        "power-cycle" => {
+            want(0..=0, "power-cycle")?;
+            act(MachineCommand::PowerCycle)
+        }
+        "cnc" => {
+            if !options.cnc {
+                return Err("`cnc` lines drive the simulated CNC: run with `sim --cnc`".into());
+            }
+            act(MachineCommand::Cnc(CncCommand::parse(
+                args,
+                profile.id,
+                options.read_file,
+            )?))
+        }
+        _ => {
+            let prefix: String = lower.chars().take(3).collect();
+            let near = COMMANDS
+                .iter()
+                .find(|c| c.starts_with(&prefix))
+                .map(|c| format!("; did you mean `{c}`?"))
+                .unwrap_or_default();
+            Err(format!(
+                "unknown command `{verb}`{near} (commands: {})",
+                COMMANDS.join(", ")
+            ))
+        }
+    }
+}
+
+/// What running a script produced.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Outcome {
+    /// Lines to print (expect failures, `print`s, halts, refused commands), in order.
+    pub output: Vec<String>,
+    /// `expect`/`expectf` that held.
+    pub passed: usize,
+    /// `expect`/`expectf` that did not, and commands that could not apply.
+    pub failed: usize,
+    /// The trace as CSV (header and one row per tick), when asked for and anything was
+    /// watched.
+    pub trace_csv: String,
+}
+
+fn masked(v: i64, bytes: u32) -> u64 {
+    if bytes >= 8 {
+        v as u64
+    } else {
+        (v as u64) & ((1u64 << (8 * bytes)) - 1)
+    }
+}
+
+fn trace_row(m: &Machine, out: &mut String) {
+    let watched = m.watches();
+    if watched.is_empty() {
+        return;
+    }
+    if out.is_empty() {
+        out.push_str("tick,ms");
+        for p in watched {
+            let _ = write!(out, ",{}", p.text());
+        }
+        out.push('\n');
+    }
+    let _ = write!(out, "{},{}", m.plc.ticks(), m.plc.now_ms());
+    for p in watched {
+        match m.read(p) {
+            Ok(v) => {
+                let _ = write!(out, ",{v}");
+            }
+            Err(_) => out.push(','),
+        }
+    }
+    out.push('\n');
+}
+
+/// Runs a parsed script. `name` prefixes failure lines (`SCRIPT:LINE: expect …`); the trace
+/// CSV is kept only when `trace` is set.
+pub fn run(machine: &mut Machine, script: &Script, name: &str, trace: bool) -> Outcome {
+    let mut out = Outcome::default();
+    let mut reported_halt = false;
+    for (line, command) in &script.commands {
+        match command {
+            Command::Do(MachineCommand::Tick(n)) => {
+                let mut csv = std::mem::take(&mut out.trace_csv);
+                for _ in 0..*n {
+                    machine.tick();
+                    if trace {
+                        trace_row(machine, &mut csv);
+                    }
+                    if let Some(h) = machine.plc.halt()
+                        && !reported_halt
+                    {
+                        out.output.push(format!("{name}:{line}: PLC halted at {h}"));
+                        reported_halt = true;
+                    }
+                }
+                out.trace_csv = csv;
+            }
+            Command::Do(c) => {
+                if matches!(c, MachineCommand::PowerCycle) {
+                    reported_halt = false;
+                }
+                if let Err(e) = machine.apply(c) {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            }
+            Command::Print(p) => match machine.read(p) {
+                Ok(v) => out.output.push(format!("{} = {v}", p.text())),
+                Err(e) => {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            },
+            Command::Expect(t, want) => {
+                let got = machine.plc.read(t.address, t.bytes);
+                if masked(got, t.bytes) == masked(*want, t.bytes) {
+                    out.passed += 1;
+                } else {
+                    // Show the value the way the expectation was written.
+                    let shown = if *want >= 0 {
+                        masked(got, t.bytes).to_string()
+                    } else {
+                        got.to_string()
+                    };
+                    out.output.push(format!(
+                        "{name}:{line}: expect {} = {want}, got {shown}",
+                        t.text()
+                    ));
+                    out.failed += 1;
+                }
+            }
+            Command::ExpectCnc(key, want, written) => match machine.read(&Probe::Cnc(*key)) {
+                Ok(ProbeValue::Cnc(got)) if got == *want => out.passed += 1,
+                Ok(got) => {
+                    out.output.push(format!(
+                        "{name}:{line}: expect {} = {written}, got {got}",
+                        key.text()
+                    ));
+                    out.failed += 1;
+                }
+                Err(e) => {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            },
+            Command::ExpectReal(a, want, tol) => {
+                let got = machine.plc.read_real(*a);
+                let tol = tol.unwrap_or(1e-4);
+                let ok = if *want == 0.0 {
+                    got.abs() <= tol
+                } else {
+                    ((got - want) / want).abs() <= tol
+                };
+                if ok && !got.is_nan() {
+                    out.passed += 1;
+                } else {
+                    out.output
+                        .push(format!("{name}:{line}: expect {a} = {want}, got {got}"));
+                    out.failed += 1;
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::profile::ProfileId;
+
+    fn parse(text: &str) -> Result<Script, ScriptError> {
+        Script::parse(text, Profile::get(ProfileId::Gsk988ta))
+    }
+
+    fn parse_cnc(text: &str) -> Result<Script, ScriptError> {
+        Script::parse_with(
+            text,
+            Profile::get(ProfileId::Gsk988ta),
+            &Options {
+                cnc: true,
+                read_file: &|p| {
+                    if p == "part.nc" {
+                        Ok("O0001;M30".into())
+                    } else {
+                        Err(format!("cannot read {p}"))
+                    }
+                },
+            },
+        )
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let e = parse("scan\n\nset R0000 256\n").unwrap_err();
+        assert_eq!(e.line, 3);
+        assert!(
+            e.message.contains("256 does not fit R0000"),
+            "{}",
+            e.message
+        );
+        let e = parse("# comment\nsett X1.0 1").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(e.message.contains("did you mean `set`"), "{}", e.message);
+        assert!(
+            parse("set R1000 1")
+                .unwrap_err()
+                .message
+                .contains("R0–R999")
+        );
+        assert!(parse("set X1.0 2").is_err());
+        assert!(parse("run 2x").is_err());
+        assert!(parse("expect D1:3 0").is_err());
+        assert!(parse("setf R1 1.5").is_err());
+    }
+
+    #[test]
+    fn cnc_lines_need_the_cnc_and_are_checked_before_anything_runs() {
+        let e = parse("scan\ncnc reset").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(e.message.contains("--cnc"), "{}", e.message);
+        assert!(
+            parse("expect cnc.mode MEM")
+                .unwrap_err()
+                .message
+                .contains("--cnc")
+        );
+        assert!(parse_cnc("cnc program \"O0001;M03 S800;M30\"").is_ok());
+        assert!(parse_cnc("cnc program-file part.nc").is_ok());
+        let e = parse_cnc("scan\ncnc program-file other.nc").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(e.message.contains("other.nc"));
+        assert!(
+            parse_cnc("set cnc.mode 1")
+                .unwrap_err()
+                .message
+                .contains("CNC value")
+        );
+        assert!(parse_cnc("force cnc.pos.X 1").is_err());
+        assert!(parse_cnc("expect cnc.run GO").is_err());
+        assert!(parse_cnc("expect cnc.pos.X").is_err());
+        assert!(parse_cnc("cnc program \"M03").is_err());
+        assert!(parse_cnc("watch cnc.pos.Z\nprint cnc.spindle").is_ok());
+    }
+
+    #[test]
+    fn durations_round_up_to_ticks() {
+        let s = parse("run 250ms\nrun 2s\nrun 9\nscan 3 ; three\nrun 0").unwrap();
+        let ticks: Vec<u64> = s
+            .commands
+            .iter()
+            .map(|(_, c)| match c {
+                Command::Do(MachineCommand::Tick(n)) => *n,
+                _ => 0,
+            })
+            .collect();
+        assert_eq!(ticks, vec![32, 250, 2, 3, 0]);
+    }
+
+    #[test]
+    fn both_spellings_of_a_byte_match() {
+        assert_eq!(masked(255, 1), masked(-1, 1));
+        assert_ne!(masked(255, 2), masked(-1, 2));
+    }
+}
