@@ -42,6 +42,11 @@ impl SimCnc {
         if b.len() < 6 {
             return;
         }
+        // A write's data must lie inside the D area.
+        let writes = matches!(b[0], 14 | 16 | 18 | 22);
+        if writes && (b[2] < 0 || 6 + b[2] as usize > b.len()) {
+            return fail(b, 2);
+        }
         match self.profile {
             ProfileId::Gsk988ta => self.windr_988(b),
             ProfileId::Gsk980 => self.windr_980(b),
