@@ -70,7 +70,7 @@ fn f9_compiles_into_the_output_window() {
         .expect("a summary line")
         .text
         .clone();
-    assert_eq!(last, "Compiled without errors (706 steps)");
+    assert_eq!(last, "Compiled without errors (716 steps)");
     h.get_by_label_contains("Compiled without errors");
 }
 
@@ -1141,5 +1141,5 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "9999");
     let err = h.state().prompt.clone().unwrap().error.unwrap();
-    assert!(err.starts_with("The table has no such row: 1–241"), "{err}");
+    assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
 }

@@ -77,7 +77,10 @@ fn without_feed_override_the_axis_never_moves() {
     r.xs(50);
     assert_eq!(r.m(2), 0);
     assert!(r.fb(129, 5), "EOV0");
-    assert!(r.fb(129, 7) && !r.fb(112, 2), "*EAXSL, EADEN3 = 0 while unfinished");
+    assert!(
+        r.fb(129, 7) && !r.fb(112, 2),
+        "*EAXSL, EADEN3 = 0 while unfinished"
+    );
 }
 
 #[test]

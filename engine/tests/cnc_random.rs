@@ -35,8 +35,8 @@ impl Rng {
 
 /// G bytes a CNC reads, so random flips there matter.
 const G_BYTES: [usize; 40] = [
-    4, 5, 6, 7, 8, 10, 11, 12, 14, 18, 19, 28, 29, 30, 32, 33, 38, 43, 44, 46, 100, 102, 114,
-    116, 130, 136, 140, 141, 142, 144, 150, 151, 160, 170, 196, 201, 214, 145, 152, 154,
+    4, 5, 6, 7, 8, 10, 11, 12, 14, 18, 19, 28, 29, 30, 32, 33, 38, 43, 44, 46, 100, 102, 114, 116,
+    130, 136, 140, 141, 142, 144, 150, 151, 160, 170, 196, 201, 214, 145, 152, 154,
 ];
 
 fn program(rng: &mut Rng) -> String {
@@ -57,7 +57,9 @@ fn program(rng: &mut Rng) -> String {
             ]);
             let number = match letter {
                 "G" => rng
-                    .pick(&["0", "1", "4", "28", "54", "55", "98", "99", "2", "13.1", "97", "7"])
+                    .pick(&[
+                        "0", "1", "4", "28", "54", "55", "98", "99", "2", "13.1", "97", "7",
+                    ])
                     .to_string(),
                 "M" => rng
                     .pick(&["3", "5", "8", "0", "1", "30", "2", "98", "99", "123456789"])
@@ -90,7 +92,10 @@ fn command(rng: &mut Rng) -> Option<CncCommand> {
     let words: Vec<String> = match rng.below(9) {
         0 => vec!["reset".into()],
         1 => vec!["alarm".into(), rng.pick(&["3", "401", "123"]).into()],
-        2 => vec!["handwheel".into(), format!("{}", rng.below(200) as i64 - 100)],
+        2 => vec![
+            "handwheel".into(),
+            format!("{}", rng.below(200) as i64 - 100),
+        ],
         3 => vec![
             "param".into(),
             rng.pick(&["1420", "1423", "1320", "8010", "1240"]).into(),
@@ -110,7 +115,11 @@ fn command(rng: &mut Rng) -> Option<CncCommand> {
             format!("{}", rng.below(100)),
         ],
         7 => vec!["macro".into(), "1100".into(), format!("{}", rng.below(2))],
-        _ => vec!["param".into(), "8130".into(), format!("{}", rng.below(4) + 2)],
+        _ => vec![
+            "param".into(),
+            "8130".into(),
+            format!("{}", rng.below(4) + 2),
+        ],
     };
     let refs: Vec<&str> = words.iter().map(String::as_str).collect();
     CncCommand::parse(&refs, ProfileId::Gsk988ta, &|_| Err(String::new())).ok()
@@ -167,7 +176,10 @@ fn run(seed: u64, profile: ProfileId, exchanges: u64) -> u64 {
             let _ = r.cnc.apply(&c);
         }
         if rng.chance(20) {
-            let f = [0, 5, 13, 14, 15, 16, 17, 18, 21, 22, 23, 24, 25, 26, 27, 28, 32, 74, 75, 76, 81, 151][rng.below(22) as usize];
+            let f = [
+                0, 5, 13, 14, 15, 16, 17, 18, 21, 22, 23, 24, 25, 26, 27, 28, 32, 74, 75, 76, 81,
+                151,
+            ][rng.below(22) as usize];
             let mut block = vec![0i32; 6 + rng.below(8) as usize];
             for v in block.iter_mut() {
                 *v = (rng.next() % 4000) as i32 - 2000;
@@ -196,11 +208,17 @@ fn run(seed: u64, profile: ProfileId, exchanges: u64) -> u64 {
         ran += u32::from(r.fb(0, 5));
         moved += u32::from(r.f[102] != 0);
         strobed += u32::from(r.fb(7, 0) || r.fb(7, 2) || r.fb(7, 3));
-        digest = digest.rotate_left(5) ^ r.f.iter().fold(0u64, |h, b| h.wrapping_mul(31) ^ u64::from(*b));
+        digest = digest.rotate_left(5)
+            ^ r.f
+                .iter()
+                .fold(0u64, |h, b| h.wrapping_mul(31) ^ u64::from(*b));
     }
     if exchanges >= 100_000 {
         // The run exercised the machine, not just an idle CNC.
-        assert!(ran > 100 && moved > 100 && strobed > 0, "seed {seed}: {ran} {moved} {strobed}");
+        assert!(
+            ran > 100 && moved > 100 && strobed > 0,
+            "seed {seed}: {ran} {moved} {strobed}"
+        );
     }
     digest
 }
@@ -215,7 +233,10 @@ fn random_runs_never_panic_or_write_foreign_f_bits() {
 
 #[test]
 fn the_same_seed_gives_the_same_run() {
-    assert_eq!(run(7, ProfileId::Gsk988ta, 5000), run(7, ProfileId::Gsk988ta, 5000));
+    assert_eq!(
+        run(7, ProfileId::Gsk988ta, 5000),
+        run(7, ProfileId::Gsk988ta, 5000)
+    );
 }
 
 #[test]

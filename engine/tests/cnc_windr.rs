@@ -30,7 +30,10 @@ fn res(b: &[i32], n: usize) -> (i32, i32, Vec<i32>) {
 #[test]
 fn gsk988ta_system_permission_and_tool_offsets() {
     let mut r = r988();
-    assert_eq!(res(&r.windr(0, 0, 0, 0, &[]), 5), (0, 5, vec![988, 2, 0, 100, 2]));
+    assert_eq!(
+        res(&r.windr(0, 0, 0, 0, &[]), 5),
+        (0, 5, vec![988, 2, 0, 100, 2])
+    );
     assert_eq!(res(&r.windr(5, 0, 0, 0, &[]), 1), (0, 1, vec![2]));
     // 14 writes, 13 reads back.
     assert_eq!(r.windr(14, 5, 3, 1, &[-250])[1], 0);
@@ -51,9 +54,16 @@ fn gsk988ta_system_permission_and_tool_offsets() {
 #[test]
 fn gsk988ta_parameters() {
     let mut r = r988();
-    assert_eq!(res(&r.windr(17, 1420, -1, 0, &[]), 2), (0, 2, vec![6000, 6000]));
+    assert_eq!(
+        res(&r.windr(17, 1420, -1, 0, &[]), 2),
+        (0, 2, vec![6000, 6000])
+    );
     assert_eq!(res(&r.windr(17, 1006, 1, 0, &[]), 1), (0, 1, vec![8]));
-    assert_eq!(res(&r.windr(17, 3741, -1, 0, &[]), 4).1, 4, "spindle -1: 4 slots");
+    assert_eq!(
+        res(&r.windr(17, 3741, -1, 0, &[]), 4).1,
+        4,
+        "spindle -1: 4 slots"
+    );
     assert_eq!(r.windr(17, 1234, 0, 0, &[])[1], 3);
     assert_eq!(r.windr(17, 1420, 0, 0, &[])[1], 4);
     assert_eq!(r.windr(17, 3003, 1, 0, &[])[1], 4);
@@ -66,7 +76,11 @@ fn gsk988ta_parameters() {
     assert_eq!(r.windr(18, 1423, -1, 2, &[700, 800])[1], 0);
     assert_eq!(res(&r.windr(17, 1423, -1, 0, &[]), 2).2, vec![700, 800]);
     assert_eq!(r.windr(18, 1423, -1, 3, &[1, 2, 3])[1], 2);
-    assert_eq!(r.windr(18, 3003, 0, 1, &[256])[1], 6, "a bit parameter is a byte");
+    assert_eq!(
+        r.windr(18, 3003, 0, 1, &[256])[1],
+        6,
+        "a bit parameter is a byte"
+    );
     assert_eq!(r.windr(18, 8130, 0, 1, &[9])[1], 6);
     // A power-on parameter waits for power-cycle.
     assert_eq!(r.windr(18, 8130, 0, 1, &[3])[1], 0);
@@ -88,13 +102,21 @@ fn gsk988ta_macro_variables() {
     assert_eq!(r.windr(22, 1000, 0, 2, &[1, 0])[1], 8, "read only");
     assert_eq!(r.windr(22, 100, 0, 1, &[1])[1], 2);
     assert_eq!(r.windr(22, 100, 0, 2, &[1, 9])[1], 6);
-    assert_eq!(r.windr(22, 1105, 0, 2, &[2, 0])[1], 6, "signal bits are 0 or 1");
+    assert_eq!(
+        r.windr(22, 1105, 0, 2, &[2, 0])[1],
+        6,
+        "signal bits are 0 or 1"
+    );
     assert_eq!(r.windr(22, 1105, 0, 2, &[1, 0])[1], 0);
     r.x();
     assert!(r.fb(214, 5), "#1105 drives F214.5");
     r.g[215] = 0b100;
     r.x();
-    assert_eq!(res(&r.windr(21, 1010, 0, 0, &[]), 2).2, vec![1, 0], "#1010 = G215.2");
+    assert_eq!(
+        res(&r.windr(21, 1010, 0, 0, &[]), 2).2,
+        vec![1, 0],
+        "#1010 = G215.2"
+    );
     assert_eq!(r.windr(22, 999, 0, 2, &[i32::MAX, 0])[1], 0);
     assert_eq!(r.windr(21, 999, 1, 0, &[])[1], 6, "not representable");
 }
@@ -120,10 +142,16 @@ fn gsk988ta_positions_loads_time_and_clock() {
     assert_eq!(r.windr(82, 0, -1, 0, &[])[..3], [82, 0, 0]);
     assert_eq!(r.windr(82, 0, 1, 0, &[])[1], 4);
     assert_eq!(res(&r.windr(81, 0, 0, 0, &[]), 3), (0, 3, vec![0, 0, 0]));
-    assert_eq!(res(&r.windr(151, 0, 0, 0, &[]), 6).2, vec![2026, 1, 1, 0, 0, 0]);
+    assert_eq!(
+        res(&r.windr(151, 0, 0, 0, &[]), 6).2,
+        vec![2026, 1, 1, 0, 0, 0]
+    );
     r.cmd(&["clock", "2026-12-31T23:59:58"]);
     r.xs(250);
-    assert_eq!(res(&r.windr(151, 0, 0, 0, &[]), 6).2, vec![2027, 1, 1, 0, 0, 0]);
+    assert_eq!(
+        res(&r.windr(151, 0, 0, 0, &[]), 6).2,
+        vec![2027, 1, 1, 0, 0, 0]
+    );
 }
 
 #[test]
@@ -175,7 +203,11 @@ fn gsk980_codes() {
     assert_eq!(res(&r.windr(25, 0, 0, 0, &[]), 1).2, vec![30]);
     assert_eq!(res(&r.windr(26, 0, 0, 0, &[]), 1).2, vec![600]);
     assert_eq!(res(&r.windr(75, 0, 2, 0, &[]), 1).2, vec![-1000 + 80]);
-    assert_eq!(res(&r.windr(74, 0, -1, 0, &[]), 5).2, vec![-1, -82, 0, 0, 0], "G54 holds 1, 2");
+    assert_eq!(
+        res(&r.windr(74, 0, -1, 0, &[]), 5).2,
+        vec![-1, -82, 0, 0, 0],
+        "G54 holds 1, 2"
+    );
     assert_eq!(r.windr(29, 0, 1, 0, &[])[1], 5);
     assert_eq!(r.windr(29, 0, 9, 0, &[])[1], 4);
     assert_eq!(
