@@ -96,9 +96,12 @@ pub enum Command {
         /// Scans to time.
         #[arg(long, default_value_t = 10_000)]
         scans: u64,
-        /// Run the simulated CNC too, on a looping part program, and time its exchange.
+        /// Run the simulated CNC too, and time its exchange.
         #[arg(long)]
         cnc: bool,
+        /// A stimulus script run first, untimed (set the machine up, start a program).
+        #[arg(long)]
+        script: Option<PathBuf>,
     },
     /// Build a project whose ladder diagram is drawn from an instruction list.
     ImportIl {
@@ -163,7 +166,12 @@ where
             trace,
             cnc,
         }) => sim(&path, &script, trace.as_deref(), cnc, out, err),
-        Some(Command::Bench { path, scans, cnc }) => bench(&path, scans, cnc, out, err),
+        Some(Command::Bench {
+            path,
+            scans,
+            cnc,
+            script,
+        }) => bench(&path, scans, cnc, script.as_deref(), out, err),
         Some(Command::ExportComments { path, lang, output }) => {
             export_comments(&path, lang.as_deref(), output.as_deref(), out, err)
         }
@@ -330,21 +338,16 @@ fn machine(path: &Path, cnc: bool, err: &mut dyn Write) -> anyhow::Result<Result
     ))
 }
 
-fn sim(
-    path: &Path,
+/// Reads and parses a stimulus script (`cnc program-file` paths relative to its folder), or
+/// reports its first bad line (exit 2).
+fn read_script(
     script_path: &Path,
-    trace: Option<&Path>,
+    machine: &Machine,
     cnc: bool,
-    out: &mut dyn Write,
     err: &mut dyn Write,
-) -> anyhow::Result<i32> {
+) -> anyhow::Result<Result<Script, i32>> {
     let text = std::fs::read_to_string(script_path)
         .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", script_path.display()))?;
-    let mut machine = match machine(path, cnc, err)? {
-        Ok(m) => m,
-        Err(code) => return Ok(code),
-    };
-    let name = script_path.display().to_string();
     let folder = script_path
         .parent()
         .map(Path::to_path_buf)
@@ -357,13 +360,35 @@ fn sim(
         cnc,
         read_file: &read_file,
     };
-    let script = match Script::parse_with(&text, machine.plc.profile(), &options) {
-        Ok(s) => s,
+    match Script::parse_with(&text, machine.plc.profile(), &options) {
+        Ok(s) => Ok(Ok(s)),
         Err(e) => {
-            let _ = writeln!(err, "{name}:{}: {}", e.line, e.message);
-            return Ok(2);
+            let _ = writeln!(err, "{}:{}: {}", script_path.display(), e.line, e.message);
+            Ok(Err(2))
         }
+    }
+}
+
+fn sim(
+    path: &Path,
+    script_path: &Path,
+    trace: Option<&Path>,
+    cnc: bool,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    if !script_path.is_file() {
+        anyhow::bail!("cannot read {}: no such file", script_path.display());
+    }
+    let mut machine = match machine(path, cnc, err)? {
+        Ok(m) => m,
+        Err(code) => return Ok(code),
     };
+    let script = match read_script(script_path, &machine, cnc, err)? {
+        Ok(s) => s,
+        Err(code) => return Ok(code),
+    };
+    let name = script_path.display().to_string();
     let outcome = sim::run(&mut machine, &script, &name, trace.is_some());
     for line in &outcome.output {
         let _ = writeln!(out, "{line}");
@@ -376,15 +401,11 @@ fn sim(
     Ok(i32::from(outcome.failed > 0))
 }
 
-/// The part program `bench --cnc` runs in a loop: rapid, cutting feed, a dwell and the M/S/T
-/// handshakes, ending in M99 so the CNC never stops.
-const BENCH_PROGRAM: &str = "O0001;N10 M03 S800;N20 G00 X40 Z2;N30 G01 Z-20 F300;N40 G04 P200;\
-N50 G00 X60 Z10;N60 M05;N70 M99";
-
 fn bench(
     path: &Path,
     scans: u64,
     cnc: bool,
+    setup: Option<&Path>,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
@@ -392,10 +413,20 @@ fn bench(
         Ok(m) => m,
         Err(code) => return Ok(code),
     };
-    if let Some(c) = &mut machine.cnc {
-        use ladder_engine::cnc::command::CncCommand;
-        c.apply(&CncCommand::Program(BENCH_PROGRAM.into()))
-            .map_err(|e| anyhow::anyhow!("{e}"))?;
+    if let Some(script_path) = setup {
+        let script = match read_script(script_path, &machine, cnc, err)? {
+            Ok(s) => s,
+            Err(code) => return Ok(code),
+        };
+        let name = script_path.display().to_string();
+        let outcome = sim::run(&mut machine, &script, &name, false);
+        if outcome.failed > 0 {
+            for line in &outcome.output {
+                let _ = writeln!(err, "{line}");
+            }
+            let _ = writeln!(err, "the set-up script failed; nothing was timed");
+            return Ok(1);
+        }
     }
     let scans = scans.max(1);
     // Warm up caches and branch predictors before timing.
