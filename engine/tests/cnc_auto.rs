@@ -241,6 +241,8 @@ fn program_errors_raise_their_alarm_and_show_the_block() {
         ("N10 G28 U0", 90),
         ("N10 Y5", 9),
         ("N10 T12345", 3),
+        ("N10 G90 X1", 10),
+        ("N10 M98", 76),
     ];
     for (block, alarm) in cases {
         let mut r = mem(&format!("O0001;N5;{block}"));
@@ -524,6 +526,9 @@ fn rapid_takes_the_slowest_axis_and_the_rapid_override() {
     r.g[14] = 3; // F0: #1421 = 600
     r.x();
     assert_eq!(r.m(1), -280);
+    r.set(8, 0, false); // *IT: the rapid stops, and RPDO with it
+    r.x();
+    assert!(!r.fb(2, 1), "RPDO is 0 once the feed stops");
 }
 
 #[test]

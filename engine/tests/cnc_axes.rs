@@ -259,3 +259,127 @@ fn a_plc_claim_of_an_axis_in_a_program_motion_raises_0139() {
     assert_eq!(r.v("cnc.alarm.139"), "1");
     assert_eq!(r.v("cnc.block"), "7");
 }
+
+#[test]
+fn eaxsl_stays_1_while_a_command_waits_and_esbk_holds_the_next_one() {
+    let mut r = rig();
+    issue(&mut r, 1, 600, 800); // 10 exchanges
+    r.x();
+    r.set(140, 3, true); // ESBK: block stop
+    issue(&mut r, 1, 600, 800);
+    r.x();
+    r.until(20, |r| r.m(2) == 800);
+    r.xs(5);
+    assert_eq!(r.m(2), 800, "ESBK = 1: the held command does not start");
+    assert!(r.fb(129, 7), "*EAXSL stays 1 while a command is held");
+    assert!(r.fb(182, 2), "EACNT3");
+    r.set(140, 3, false);
+    r.x();
+    assert_eq!(r.m(2), 880, "released: it starts at once");
+}
+
+#[test]
+fn emsbk_lets_the_next_command_start_despite_esbk() {
+    let mut r = rig();
+    r.set(140, 3, true);
+    r.set(141, 7, true); // EMSBK with the first command
+    issue(&mut r, 1, 600, 80);
+    r.x();
+    r.set(141, 7, false);
+    issue(&mut r, 1, 600, 80);
+    r.x();
+    // ESBK = 1 held the first one back too: nothing executes, the oldest waits.
+    assert_eq!(r.m(2), 0);
+    r.set(140, 3, false);
+    r.x(); // the first starts and ends (0.08 mm in one exchange)
+    assert_eq!(r.m(2), 80);
+    r.set(140, 3, true);
+    r.x();
+    assert_eq!(
+        r.m(2),
+        160,
+        "the command before had EMSBK = 1: the next starts"
+    );
+}
+
+#[test]
+fn a_07h_return_on_an_axis_without_reference_point_uses_the_dog_at_1424() {
+    let mut r = rig();
+    r.cmd(&["param", "1424", "3", "3000"]);
+    r.cmd(&["param", "1240", "3", "5000"]);
+    issue(&mut r, 7, 0, 0);
+    r.x();
+    assert_eq!(r.m(2), 400, "rapid phase at #1424 = 3000 mm/min");
+    r.set(196, 2, false);
+    r.x();
+    assert_eq!(r.m(2), 416, "FL on the dog");
+    r.set(196, 2, true);
+    r.x();
+    assert_eq!(r.m(2), 5000);
+    assert!(r.fb(94, 2) && r.fb(120, 2), "ZP3, ZRF3");
+    let st = ladder_engine::vm::cnc::Cnc::axis_status(&r.cnc, 1, r.g[140] >> 7 == 1);
+    assert!(st.ended && !st.error);
+    // With the reference point known, 08h goes to #1241 and sets ZP2n.
+    r.cmd(&["param", "1241", "3", "2000"]);
+    issue(&mut r, 8, 0, 0);
+    r.until(20, |r| r.m(2) == 2000);
+    assert!(r.fb(96, 2));
+}
+
+#[test]
+fn a_claim_during_a_program_motion_leaves_eial_alone() {
+    let mut r = rig();
+    r.set(136, 2, false);
+    r.mode(ladder_engine::cnc::Mode::Mem);
+    r.x();
+    r.program("O0001;G01 V10 F600");
+    r.start();
+    r.xs(2);
+    r.set(136, 2, true);
+    r.x();
+    assert_eq!(r.v("cnc.alarm.139"), "1");
+    assert!(!r.fb(140, 2), "EAX 0→1 while *EAXSL = 0: no EIAL");
+}
+
+#[test]
+fn the_issuing_scan_never_reports_the_previous_command_as_this_ones_end() {
+    // AXCTL writes ESBK := 0 on ACT 0→1: a command abandoned earlier does not block the next.
+    let p = il::import(
+        "LEVEL2\nNETWORK\nLDI R0999.7\nMOVN 1 255 G0114\nMOVN 1 255 G0116\nOUT G0008.4\nOUT G0136.2\nMOVN 1 10 G0012\nNETWORK\nLD X0000.0\nAXCTL 1 1 600 8000 R0000.1 R0001.0 R0001.1\n",
+    )
+    .project
+    .expect("draws");
+    let mut m = Machine::new(&p, true).unwrap();
+    for c in [
+        CncCommand::Param {
+            number: 8130,
+            selector: None,
+            value: 3,
+        },
+        CncCommand::Param {
+            number: 8010,
+            selector: Some(3),
+            value: 1,
+        },
+    ] {
+        m.apply(&MachineCommand::Cnc(c)).unwrap();
+    }
+    let a = |t: &str| Address::parse(t).unwrap();
+    m.plc.write(a("X0.0"), 1, 1);
+    m.tick();
+    m.tick();
+    m.plc.write(a("X0.0"), 1, 0); // ACT drops before the end: ESBK := 1
+    m.tick();
+    assert!(m.plc.read_bit(a("G140.3")));
+    m.run_ticks(200, |_| {});
+    m.plc.write(a("X0.0"), 1, 1);
+    m.tick();
+    assert!(
+        !m.plc.read_bit(a("G140.3")),
+        "ESBK withdrawn by the new command"
+    );
+    assert!(!m.plc.read_bit(a("R1.0")), "not ended on the issuing scan");
+    m.run_ticks(101, |_| {});
+    assert!(m.plc.read_bit(a("R1.0")), "the new command ran and ended");
+    assert_eq!(m.cnc.as_ref().unwrap().axes()[2].m, 16_000);
+}

@@ -284,3 +284,36 @@ fn a_low_speed_write_completes_on_the_second_scan_and_needs_act_back_at_0() {
     assert!(m.plc.read_bit(a("R1.0")));
     assert_eq!(m.plc.read(a("D1"), 4), 3);
 }
+
+#[test]
+fn remaining_end_codes_and_980_positions() {
+    let mut r = r988();
+    assert_eq!(r.windr(18, 1234, 0, 1, &[0])[1], 3);
+    assert_eq!(r.windr(18, 1420, 0, 1, &[0])[1], 4);
+    assert_eq!(r.windr(18, 1420, 1, 1, &[240_001])[1], 6);
+    let mut short = vec![22, 0, 2, 100, 0, 0, 5];
+    ladder_engine::vm::cnc::Cnc::window(&mut r.cnc, &mut short);
+    assert_eq!(short[1], 2, "the data runs past the end of D");
+    let mut r = r980();
+    r.cmd(&["position", "X", "4"]);
+    assert_eq!(
+        res(&r.windr(28, 0, -1, 0, &[]), 5).2,
+        vec![4000, 0, 0, 0, 0]
+    );
+    assert_eq!(res(&r.windr(27, 0, 1, 0, &[]), 1).2, vec![4000]);
+    assert_eq!(
+        res(&r.windr(28, 0, 5, 0, &[]), 1).2,
+        vec![0],
+        "an unused axis reads 0"
+    );
+    assert_eq!(r.windr(28, 0, 6, 0, &[])[1], 4);
+    // The GSK980 parameter words and No.4 from a script command.
+    r.cmd(&["param", "4", "16"]);
+    assert_eq!(r.v("cnc.param.4"), "16");
+    r.cmd(&["offset", "0", "X", "3"]);
+    assert_eq!(
+        res(&r.windr(13, 0, 1, 0, &[]), 1).2,
+        vec![1500],
+        "radius on the window"
+    );
+}

@@ -1,5 +1,4 @@
-//! The CNC window (WINDR) functions of both profiles (docs/cnc.md, "CNC data", and
-//! docs/windr.md): reads and writes of offsets, parameters, macro variables, positions,
+//! The CNC window (WINDR) functions of both profiles (docs/cnc.md, "WINDR"): reads and writes of offsets, parameters, macro variables, positions,
 //! the clock and the status, each with the end codes its table documents.
 //!
 //! A block is `[0]` function, `[1]` end code, `[2]` data length, `[3]` data number,
@@ -29,6 +28,19 @@ fn out(b: &mut [i32], data: &[i64]) {
     b[2] = data.len() as i32;
     for (slot, v) in b[6..].iter_mut().zip(data) {
         *slot = (*v).clamp(-i64::from(i32::MAX), i64::from(i32::MAX)) as i32;
+    }
+}
+
+/// Writes `n` values computed by `f` (no allocation: windows run inside the scan).
+fn out_n(b: &mut [i32], n: usize, f: impl Fn(usize) -> i64) {
+    if 6 + n > b.len() {
+        fail(b, 2);
+        return;
+    }
+    b[1] = 0;
+    b[2] = n as i32;
+    for (k, slot) in b[6..6 + n].iter_mut().enumerate() {
+        *slot = f(k).clamp(-i64::from(i32::MAX), i64::from(i32::MAX)) as i32;
     }
 }
 
@@ -96,8 +108,8 @@ impl SimCnc {
                 let Some(sel) = axis_selection(b[4], n, true) else {
                     return fail(b, 4);
                 };
-                let v: Vec<i64> = sel.map(|k| self.axis_value(b[0], k)).collect();
-                out(b, &v);
+                let f = b[0];
+                out_n(b, sel.len(), |k| self.axis_value(f, sel.start + k));
             }
             34 | 79 | 83 => {
                 if !(1..=count).contains(&i64::from(b[4])) {
@@ -179,8 +191,7 @@ impl SimCnc {
                 };
                 let sys = sys as usize;
                 if b[0] == 15 {
-                    let v: Vec<i64> = sel.map(|n| self.work[sys][n]).collect();
-                    out(b, &v);
+                    out_n(b, sel.len(), |k| self.work[sys][sel.start + k]);
                 } else {
                     let want = sel.len();
                     if b[2] as usize != want || b.len() < 6 + want {
@@ -214,8 +225,7 @@ impl SimCnc {
             21 => self.macro_read(b),
             22 => self.macro_write(b),
             23 => {
-                let v: Vec<i64> = self.alarms.iter().map(|a| i64::from(*a)).collect();
-                out(b, &v);
+                out_n(b, self.alarms.len(), |k| i64::from(self.alarms[k]));
             }
             24 => {
                 if !self.has_program() {
@@ -244,16 +254,11 @@ impl SimCnc {
                     return fail(b, 5);
                 }
                 let f = b[0];
-                let v: Vec<i64> = sel
-                    .map(|n| {
-                        if n >= self.axis_count() {
-                            0
-                        } else {
-                            self.axis_value(f, n)
-                        }
-                    })
-                    .collect();
-                out(b, &v);
+                let count = self.axis_count();
+                out_n(b, sel.len(), |k| {
+                    let n = sel.start + k;
+                    if n >= count { 0 } else { self.axis_value(f, n) }
+                });
             }
             32 => {
                 let m = &self.auto.modal;
@@ -341,8 +346,7 @@ impl SimCnc {
         let Some(sel) = self.param_selection(spec.selector, b[4]) else {
             return fail(b, 4);
         };
-        let v: Vec<i64> = sel.map(|k| self.params.get(i, k)).collect();
-        out(b, &v);
+        out_n(b, sel.len(), |k| self.params.get(i, sel.start + k));
     }
 
     fn param_write_988(&mut self, b: &mut [i32]) {
@@ -353,7 +357,7 @@ impl SimCnc {
         let Some(sel) = self.param_selection(spec.selector, b[4]) else {
             return fail(b, 4);
         };
-        let slots: Vec<usize> = sel.collect();
+        let slots = sel;
         let len = b[2];
         let per_slot = if len == 1 {
             false
@@ -370,7 +374,7 @@ impl SimCnc {
         if (0..slots.len()).any(|k| !(min..=max).contains(&value(k))) {
             return fail(b, 6);
         }
-        for (k, &slot) in slots.iter().enumerate() {
+        for (k, slot) in slots.clone().enumerate() {
             self.params.write(i, slot, value(k));
         }
         written(b);
