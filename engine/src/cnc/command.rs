@@ -66,6 +66,11 @@ pub enum CncCommand {
     Clock(i64),
 }
 
+/// The name of axis slot `a` ("?" beyond the fifth).
+pub fn axis_name(a: u8) -> &'static str {
+    AXIS_NAMES.get(usize::from(a)).copied().unwrap_or("?")
+}
+
 /// Axis by name (X Z Y 4 5) or number (1–5).
 pub fn parse_axis(text: &str) -> Option<u8> {
     let t = text.to_ascii_uppercase();
@@ -519,8 +524,8 @@ impl CncKey {
             CncKey::Run => "cnc.run".into(),
             CncKey::Block => "cnc.block".into(),
             CncKey::Prog => "cnc.prog".into(),
-            CncKey::Pos(a) => format!("cnc.pos.{}", AXIS_NAMES[usize::from(a)]),
-            CncKey::Abs(a) => format!("cnc.abs.{}", AXIS_NAMES[usize::from(a)]),
+            CncKey::Pos(a) => format!("cnc.pos.{}", axis_name(a)),
+            CncKey::Abs(a) => format!("cnc.abs.{}", axis_name(a)),
             CncKey::Spindle => "cnc.spindle".into(),
             CncKey::Alarm(n) => format!("cnc.alarm.{n}"),
             CncKey::Alarms => "cnc.alarms".into(),
@@ -530,7 +535,7 @@ impl CncKey {
             CncKey::Work(s, a) => format!(
                 "cnc.work.{}.{}",
                 WORK_SYSTEMS[usize::from(s)],
-                AXIS_NAMES[usize::from(a)]
+                axis_name(a)
             ),
             CncKey::Macro(n) => format!("cnc.macro.{n}"),
         }
@@ -610,12 +615,32 @@ impl SimCnc {
                 number,
                 kind,
                 value,
-            } => self.offsets[usize::from(*number)].set(*kind, *value),
+            } => {
+                let range = offset_range(self.profile);
+                if !range.contains(number) {
+                    return Err(format!(
+                        "tool offsets are {}–{}, not {number}",
+                        range.start(),
+                        range.end()
+                    ));
+                }
+                if *kind == OffsetType::Tip && !(0..=9).contains(value) {
+                    return Err(format!("the tip direction is 0–9, not {value}"));
+                }
+                self.offsets[usize::from(*number)].set(*kind, *value);
+            }
             CncCommand::Workpiece {
                 system,
                 axis,
                 value,
-            } => self.work[usize::from(*system)][usize::from(*axis)] = *value,
+            } => {
+                let slot = self
+                    .work
+                    .get_mut(usize::from(*system))
+                    .and_then(|w| w.get_mut(usize::from(*axis)))
+                    .ok_or_else(|| "no such workpiece system or axis".to_string())?;
+                *slot = *value;
+            }
             CncCommand::Macro { number, value } => self
                 .set_macro(MacroSlot::of(i64::from(*number)), *value)
                 .map_err(|()| format!("#{number} cannot take that value"))?,
@@ -624,7 +649,7 @@ impl SimCnc {
                 if n >= self.axis_count() {
                     return Err(format!(
                         "axis {} is beyond the {} controlled axes (#8130)",
-                        AXIS_NAMES[n],
+                        AXIS_NAMES.get(n).unwrap_or(&"?"),
                         self.axis_count()
                     ));
                 }
@@ -634,11 +659,15 @@ impl SimCnc {
                         AXIS_NAMES[n]
                     ));
                 }
-                self.axes[n].m = *value;
+                self.axes[n].m = (*value).clamp(-99_999_999, 99_999_999);
             }
             CncCommand::Alarm(n) => self.pending_alarms.push(*n),
             CncCommand::Reset => self.reset_key_pending = true,
-            CncCommand::Handwheel(n) => self.manual.pulses += n,
+            CncCommand::Handwheel(n) => {
+                // Pulses queued for one exchange: a real handwheel gives at most a few hundred.
+                self.manual.pulses = (self.manual.pulses + (*n).clamp(-10_000, 10_000))
+                    .clamp(-1_000_000, 1_000_000);
+            }
             CncCommand::Clock(t) => {
                 self.clock_origin = *t;
                 self.clock_set_ms = self.now_ms;
@@ -654,7 +683,7 @@ impl SimCnc {
             if n >= self.axis_count() {
                 Err(format!(
                     "axis {} is beyond the {} controlled axes (#8130)",
-                    AXIS_NAMES[n],
+                    AXIS_NAMES.get(n).unwrap_or(&"?"),
                     self.axis_count()
                 ))
             } else {
@@ -683,14 +712,24 @@ impl SimCnc {
                 }
             }
             CncKey::Offset(n, t) => {
-                let v = self.offsets[usize::from(n)].get(t);
+                let v = self
+                    .offsets
+                    .get(usize::from(n))
+                    .ok_or_else(|| format!("no tool offset {n}"))?
+                    .get(t);
                 if t == OffsetType::Tip {
                     CncValue::Int(v)
                 } else {
                     CncValue::Mm(v)
                 }
             }
-            CncKey::Work(s, a) => CncValue::Mm(self.work[usize::from(s)][usize::from(a)]),
+            CncKey::Work(s, a) => CncValue::Mm(
+                *self
+                    .work
+                    .get(usize::from(s))
+                    .and_then(|w| w.get(usize::from(a)))
+                    .ok_or_else(|| "no such workpiece system or axis".to_string())?,
+            ),
             CncKey::Macro(n) => CncValue::Macro(match MacroSlot::of(i64::from(n)) {
                 MacroSlot::Volatile(k) => self.macros.volatile[k],
                 MacroSlot::Kept(k) => self.macros.kept[k],
