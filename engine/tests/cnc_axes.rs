@@ -383,3 +383,96 @@ fn the_issuing_scan_never_reports_the_previous_command_as_this_ones_end() {
     assert!(m.plc.read_bit(a("R1.0")), "the new command ran and ended");
     assert_eq!(m.cnc.as_ref().unwrap().axes()[2].m, 16_000);
 }
+
+#[test]
+fn a_plc_return_stopped_by_a_limit_reports_the_direction_it_moved_in() {
+    let mut r = rig();
+    r.cmd(&["param", "1006", "3", "32"]); // ZMI: Y returns in −
+    r.set(116, 2, false); // *−L3
+    r.x();
+    issue(&mut r, 5, 0, 0);
+    r.x();
+    assert!(r.fb(140, 6) && !r.fb(140, 5), "EOTNA, not EOTPA");
+    assert!(r.fb(140, 2));
+    r.set(116, 2, true);
+    r.set(140, 6, true);
+    r.x();
+    assert!(r.fb(140, 6), "ECLR keeps EOTN while 0507 is active");
+    r.cmd(&["reset"]);
+    r.xs(2);
+    assert!(!r.fb(140, 6) && !r.fb(140, 2));
+}
+
+#[test]
+fn when_one_axis_of_a_plc_move_stops_on_its_limit_the_others_do_not_advance() {
+    let mut r = Rig::new();
+    r.cmd(&["param", "8130", "3"]);
+    r.cmd(&["param", "8010", "1", "1"]);
+    r.cmd(&["param", "8010", "3", "1"]);
+    // Reference points of X and Y by dog returns at 0 (before the PLC claims them).
+    r.mode(ladder_engine::cnc::Mode::Ref);
+    r.x();
+    r.set(100, 0, true);
+    r.set(100, 2, true);
+    r.x();
+    r.set(196, 0, false);
+    r.set(196, 2, false);
+    r.x();
+    r.set(196, 0, true);
+    r.set(196, 2, true);
+    r.x();
+    r.set(100, 0, false);
+    r.set(100, 2, false);
+    r.mode(ladder_engine::cnc::Mode::Mdi);
+    r.set(136, 0, true);
+    r.set(136, 2, true);
+    r.x();
+    assert!(r.fb(120, 0) && r.fb(120, 2), "ZRF1, ZRF3");
+    r.cmd(&["param", "1320", "3", "500"]);
+    issue(&mut r, 1, 600, 10_000);
+    r.until(50, |r| r.m(2) == 500);
+    assert_eq!(r.v("cnc.alarm.500"), "1");
+    let at_stop = r.m(0);
+    r.xs(3);
+    assert_eq!(r.m(0), at_stop, "X stopped with Y");
+    assert!(
+        at_stop < 1000,
+        "X did not advance in the exchange Y stopped: {at_stop}"
+    );
+}
+
+#[test]
+fn e_stop_drops_commands_held_behind_esbk() {
+    let mut r = rig();
+    r.set(140, 3, true);
+    issue(&mut r, 1, 600, 800);
+    r.x();
+    assert!(r.fb(129, 7), "held");
+    r.set(8, 4, false);
+    r.x();
+    r.set(8, 4, true);
+    r.set(140, 3, false);
+    r.xs(20);
+    assert_eq!(r.m(2), 0, "the held command was dropped");
+    assert!(!r.fb(129, 7));
+}
+
+#[test]
+fn a_return_to_where_the_axis_already_is_still_sets_zp() {
+    let mut r = rig();
+    // Y's reference point by a dog return (07h), then a 07h again at the point.
+    issue(&mut r, 7, 0, 0);
+    r.x();
+    r.set(196, 2, false);
+    r.x();
+    r.set(196, 2, true);
+    r.x();
+    assert!(r.fb(94, 2));
+    r.cmd(&["param", "1240", "3", "0"]);
+    issue(&mut r, 4, 0, 0);
+    r.x();
+    r.cmd(&["position", "Y", "0"]);
+    issue(&mut r, 7, 0, 0);
+    r.xs(2);
+    assert!(r.fb(94, 2), "ZP3 at the point");
+}

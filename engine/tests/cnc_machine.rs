@@ -364,3 +364,69 @@ fn the_stored_stroke_limit_stops_on_the_limit_until_moved_back() {
     r.x();
     assert!(!r.fb(124, 1) && r.m(1) < 1000);
 }
+
+#[test]
+fn a_direct_reference_return_takes_the_exchanges_of_its_distance() {
+    let mut r = Rig::new();
+    // Establish Z's reference point at 0 with the dog, move away 10 mm, return at 1000 mm/min.
+    r.mode(Mode::Ref);
+    r.x();
+    r.set(100, 1, true);
+    r.x();
+    r.set(196, 1, false);
+    r.x();
+    r.set(196, 1, true);
+    r.x();
+    r.set(100, 1, false);
+    r.cmd(&["position", "Z", "10"]);
+    r.cmd(&["param", "1420", "2", "1000"]);
+    r.x();
+    r.set(100, 1, true);
+    r.x();
+    let s = r.n;
+    let end = r.until(200, |r| r.m(1) == 0);
+    assert_eq!(end - s + 1, 75, "⌈10 / (1000 · 8 / 60000)⌉ exchanges");
+    assert!(r.fb(94, 1));
+}
+
+#[test]
+fn g28_at_the_reference_point_sets_zp() {
+    let mut r = Rig::new();
+    r.mode(Mode::Ref);
+    r.x();
+    r.set(100, 1, true);
+    r.x();
+    r.set(196, 1, false);
+    r.x();
+    r.set(196, 1, true);
+    r.x();
+    r.set(100, 1, false);
+    r.set(8, 4, false); // E-stop clears ZP
+    r.x();
+    r.set(8, 4, true);
+    r.x();
+    assert!(!r.fb(94, 1));
+    r.mode(Mode::Mdi);
+    r.cmd(&["mdi", "G28 W0"]);
+    r.start();
+    r.x();
+    assert!(r.fb(94, 1));
+}
+
+#[test]
+fn leaving_auto_mode_while_no_block_runs_stops_at_once() {
+    let mut r = Rig::new();
+    r.mode(Mode::Mem);
+    r.x();
+    r.program("O0001;N10;N20 G00 W1");
+    r.set(8, 3, false); // *BSL holds N20 back
+    r.start();
+    r.x();
+    assert_eq!(r.v("cnc.run"), "RUN");
+    r.mode(Mode::Edit);
+    r.x();
+    assert_eq!(r.v("cnc.run"), "STOP");
+    r.set(8, 3, true);
+    r.xs(3);
+    assert_eq!(r.m(1), 0, "no block starts in EDIT");
+}

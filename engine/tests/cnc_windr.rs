@@ -140,7 +140,12 @@ fn gsk988ta_positions_loads_time_and_clock() {
         assert_eq!(r.windr(f, 0, 2, 0, &[])[1], 4);
     }
     assert_eq!(r.windr(82, 0, -1, 0, &[])[..3], [82, 0, 0]);
-    assert_eq!(r.windr(82, 0, 1, 0, &[])[1], 4);
+    assert_eq!(
+        res(&r.windr(82, 0, 1, 0, &[]), 1),
+        (0, 1, vec![0]),
+        "unassigned: 0"
+    );
+    assert_eq!(r.windr(82, 0, 5, 0, &[])[1], 4);
     assert_eq!(res(&r.windr(81, 0, 0, 0, &[]), 3), (0, 3, vec![0, 0, 0]));
     assert_eq!(
         res(&r.windr(151, 0, 0, 0, &[]), 6).2,

@@ -316,6 +316,11 @@ impl SimCnc {
                 RunState::Run => {}
             }
         }
+        if self.auto.state == RunState::Run && self.auto.exec.is_none() && self.auto.pending_stop {
+            // The mode was left while no block executed (held back by *BSL or *CSL): stop now.
+            self.auto.state = RunState::Stop;
+            self.auto.pending_stop = false;
+        }
         if self.auto.state == RunState::Run && self.auto.exec.is_none() && !self.flags.halted {
             self.start_next_block();
         }
@@ -533,7 +538,7 @@ impl SimCnc {
     }
 
     /// Starts the second segment of a G28: rapid to reference point 1 of the named axes.
-    fn g28_second(&self, e: &mut Exec) {
+    fn g28_second(&mut self, e: &mut Exec) {
         let cur: [i64; AXES] = std::array::from_fn(|n| self.axes[n].m - self.axes[n].sh);
         let mut target = cur;
         for (n, t) in target.iter_mut().enumerate() {
@@ -546,6 +551,20 @@ impl SimCnc {
         e.motion = (!m.is_empty()).then_some(m);
         if e.motion.is_none() {
             e.first_done_at = self.exchange_no;
+            self.g28_arrived(e.g28_axes);
+        }
+    }
+
+    /// The named axes of a G28 are at reference point 1: ZP, and the shift is cleared.
+    fn g28_arrived(&mut self, axes: u8) {
+        if self.inp.mlk {
+            return;
+        }
+        for n in 0..AXES {
+            if axes >> n & 1 == 1 {
+                self.axes[n].sh = 0;
+                self.axes[n].zp = true;
+            }
         }
     }
 
@@ -653,13 +672,8 @@ impl SimCnc {
         self.flags.path_speed = v;
         if m.done() {
             e.first_done_at = self.exchange_no;
-            if e.g28_stage == 2 && !inp.mlk {
-                for n in 0..AXES {
-                    if e.g28_axes >> n & 1 == 1 {
-                        self.axes[n].sh = 0;
-                        self.axes[n].zp = true;
-                    }
-                }
+            if e.g28_stage == 2 {
+                self.g28_arrived(e.g28_axes);
             }
         }
         e.motion = Some(m);

@@ -532,11 +532,9 @@ impl CncKey {
             CncKey::Param(n, None) => format!("cnc.param.{n}"),
             CncKey::Param(n, Some(s)) => format!("cnc.param.{n}.{s}"),
             CncKey::Offset(n, t) => format!("cnc.offset.{n}.{}", t.name()),
-            CncKey::Work(s, a) => format!(
-                "cnc.work.{}.{}",
-                WORK_SYSTEMS[usize::from(s)],
-                axis_name(a)
-            ),
+            CncKey::Work(s, a) => {
+                format!("cnc.work.{}.{}", WORK_SYSTEMS[usize::from(s)], axis_name(a))
+            }
             CncKey::Macro(n) => format!("cnc.macro.{n}"),
         }
     }
@@ -665,8 +663,8 @@ impl SimCnc {
             CncCommand::Reset => self.reset_key_pending = true,
             CncCommand::Handwheel(n) => {
                 // Pulses queued for one exchange: a real handwheel gives at most a few hundred.
-                self.manual.pulses = (self.manual.pulses + (*n).clamp(-10_000, 10_000))
-                    .clamp(-1_000_000, 1_000_000);
+                self.manual.pulses =
+                    (self.manual.pulses + (*n).clamp(-10_000, 10_000)).clamp(-1_000_000, 1_000_000);
             }
             CncCommand::Clock(t) => {
                 self.clock_origin = *t;

@@ -2,7 +2,7 @@
 //! JOG, the handwheel, reference return with or without a deceleration dog, and the stored
 //! stroke check that every motion of the simulator passes through.
 
-use super::motion::MM_PER_EXCHANGE;
+use super::motion::{MM_PER_EXCHANGE, Motion, MotionKind};
 use super::params::{P1006, P1240, P1320, P1321, P1326, P1327, P1423, P1425, P7103, P7113, P7114};
 use super::{ALARM_STROKE, AXES, Mode, SimCnc};
 
@@ -40,12 +40,51 @@ impl Run {
 /// A reference return of one axis.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Return {
-    /// Rapid straight to #1240 (the reference point is known).
-    Direct,
+    /// Rapid straight to #1240 (the reference point is known), timed like every motion:
+    /// from, to (increments), length (mm), distance covered (mm).
+    Direct(Straight),
     /// Rapid towards the dog.
     Rapid(Run),
     /// On the dog at the FL speed.
     Slow(Run),
+}
+
+/// A straight single-axis move, with the timing rule of [`Motion`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Straight {
+    from: i64,
+    to: i64,
+    length: f64,
+    covered: f64,
+}
+
+impl Straight {
+    fn new(from: i64, to: i64, diameter: bool) -> Straight {
+        let m = Motion::new(
+            MotionKind::Rapid,
+            [from; AXES],
+            {
+                let mut t = [from; AXES];
+                t[0] = to;
+                t
+            },
+            [diameter; AXES],
+        );
+        Straight {
+            from,
+            to,
+            length: m.length,
+            covered: 0.0,
+        }
+    }
+
+    fn position(&self, covered: f64) -> i64 {
+        if covered >= self.length - 1e-9 {
+            self.to
+        } else {
+            self.from + ((self.to - self.from) as f64 * (covered / self.length)).round() as i64
+        }
+    }
 }
 
 /// Manual motion state.
@@ -262,13 +301,8 @@ impl SimCnc {
             } else {
                 (inp.jog_plus, prev.jog_plus)
             };
-            let dir: i64 = if minus { -1 } else { 1 };
             if self.manual.returns[n].is_none() && now >> n & 1 == 1 && before >> n & 1 == 0 {
-                self.manual.returns[n] = Some(if self.axes[n].zrf {
-                    Return::Direct
-                } else {
-                    Return::Rapid(Run::new(dir))
-                });
+                self.manual.returns[n] = Some(self.start_return(n, self.axes[n].zrf));
             }
             let Some(ret) = self.manual.returns[n] else {
                 continue;
@@ -299,26 +333,27 @@ impl SimCnc {
         // A reference return moves the machine itself: machine lock and ABSM do not apply,
         // and arriving sets the shift to 0 anyway.
         match ret {
-            Return::Direct => {
-                let from = self.axes[n].m;
-                let remaining = reference - from;
-                let k = if dia { 2000.0 } else { 1000.0 };
-                let step = (rapid * MM_PER_EXCHANGE * k).round() as i64;
-                if step <= 0 && remaining != 0 {
-                    return Ok(Some(ret));
+            Return::Direct(mut m) => {
+                if m.from == m.to {
+                    self.arrive(n);
+                    return Ok(None);
                 }
-                let d = remaining.clamp(-step, step);
-                if d != 0 {
-                    self.flags.rapid = true;
+                if rapid <= 0.0 {
+                    return Ok(Some(Return::Direct(m)));
                 }
+                let covered = m.covered + rapid * MM_PER_EXCHANGE;
+                let d = m.position(covered) - m.position(m.covered);
                 if !self.guarded_move(n, d, false, false) {
                     return Err(());
                 }
-                if self.axes[n].m == reference {
+                self.flags.rapid = true;
+                m.covered = covered;
+                if covered >= m.length - 1e-9 {
+                    self.axes[n].m = reference;
                     self.arrive(n);
                     Ok(None)
                 } else {
-                    Ok(Some(ret))
+                    Ok(Some(Return::Direct(m)))
                 }
             }
             Return::Rapid(run) if on_dog => {
@@ -363,9 +398,18 @@ impl SimCnc {
     pub(super) fn start_return(&self, n: usize, direct: bool) -> Return {
         let dir = if self.params.bit(P1006, n, 5) { -1 } else { 1 };
         if direct {
-            Return::Direct
+            let to = self.params.get(P1240, n);
+            Return::Direct(Straight::new(self.axes[n].m, to, self.diameter(n)))
         } else {
             Return::Rapid(Run::new(dir))
+        }
+    }
+
+    /// The direction (0 +, 1 −) a reference return of axis slot `n` moves in now.
+    pub(super) fn return_direction(&self, ret: &Return) -> usize {
+        match ret {
+            Return::Direct(m) => usize::from(m.to < m.from),
+            Return::Rapid(r) | Return::Slow(r) => usize::from(r.dir < 0),
         }
     }
 }

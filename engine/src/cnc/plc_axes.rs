@@ -82,6 +82,8 @@ pub(super) struct Group {
     eot: [bool; 2],
     eot_alarm: [u16; 2],
     egen: bool,
+    /// ESTPg as sampled at the last exchange.
+    paused: bool,
     next_id: u32,
     last_read: u32,
     last_ended: bool,
@@ -113,7 +115,7 @@ impl Group {
             r.axes >> n & 1 == 1
                 && match r.work {
                     Work::Move { .. } | Work::Return { .. } | Work::Continuous { .. } => true,
-                    Work::Speed { eif } => eif != 0,
+                    Work::Speed { eif } => eif != 0 && !self.paused,
                     _ => false,
                 }
         })
@@ -212,6 +214,20 @@ impl SimCnc {
         }
     }
 
+    /// The first axis whose move of `delta` the stroke rules stop (hardware limit, a stored
+    /// direction, or a stored stroke limit it would pass).
+    fn blocked_axis(&self, delta: &[i64; AXES]) -> Option<(usize, i64)> {
+        delta.iter().enumerate().find_map(|(n, &d)| {
+            if d == 0 {
+                return None;
+            }
+            let from = self.axes[n].m;
+            let blocked = self.axes[n].hard_limit[usize::from(d < 0)]
+                || self.stroke_stop(n, from, from + d).is_some();
+            blocked.then_some((n, d))
+        })
+    }
+
     fn rapid_of_group(&self, axes: u8, rpd: Option<f64>) -> f64 {
         match self.inp.rov {
             3 => self.params.one(P1421) as f64,
@@ -294,7 +310,9 @@ impl SimCnc {
                 axes: std::array::from_fn(|n| {
                     (axes >> n & 1 == 1).then(|| self.start_return(n, self.axes[n].zrf))
                 }),
-                rapid: rpd,
+                // EIF (RPD) replaces the rapid of 07h's straight return only; 05h is a manual
+                // reference return, and the dog phase of 07h runs at #1424.
+                rapid: if cmd.ec == 0x07 { rpd } else { None },
                 dog_rapid: if cmd.ec == 0x07 { P1424 } else { P1420 },
             },
             0x06 => Work::Continuous {
@@ -345,7 +363,7 @@ impl SimCnc {
         for k in 0..4 {
             self.groups[k].egen = false;
             let gi = self.group_in[k];
-            if self.groups[k].exec.is_some() {
+            if self.groups[k].held() > 0 {
                 if self.inp.estop {
                     self.end_command(k, true, None);
                 } else if let Some(&servo) = self.alarms.iter().find(|a| (401..=499).contains(*a)) {
@@ -463,6 +481,7 @@ impl SimCnc {
         };
         let gi = self.group_in[k];
         let paused = gi.estp;
+        self.groups[k].paused = paused;
         let mut ended = false;
         match &mut r.work {
             Work::Aux { started, .. } => {
@@ -488,24 +507,30 @@ impl SimCnc {
                     Rate::Feed(f) => f * self.fov(),
                     Rate::PerRev(x) => x * f64::from(self.spindle.s_out) * self.fov(),
                 };
-                if motion.is_empty() {
-                    ended = true;
-                } else if v > 0.0 {
+                if motion.is_empty() || v > 0.0 {
                     let covered = motion.next_covered(v);
-                    for n in 0..AXES {
-                        let d =
-                            motion.position_at(n, covered) - motion.position_at(n, motion.covered);
-                        if d != 0 && !self.guarded_move(n, d, false, false) {
-                            self.overtravel_end(k, n, usize::from(d < 0));
-                            return;
-                        }
+                    let delta: [i64; AXES] = std::array::from_fn(|n| {
+                        motion.position_at(n, covered) - motion.position_at(n, motion.covered)
+                    });
+                    // Every axis is checked first: when one must stop, the others do not
+                    // advance at this exchange either.
+                    if let Some((n, d)) = self.blocked_axis(&delta) {
+                        self.guarded_move(n, d, false, false);
+                        self.overtravel_end(k, n, usize::from(d < 0));
+                        return;
+                    }
+                    for (n, &d) in delta.iter().enumerate() {
+                        self.apply_delta(n, d, false, false);
                     }
                     motion.covered = covered;
-                    self.groups[k].egen = true;
-                    if motion.kind == MotionKind::Rapid {
-                        self.flags.rapid = true;
+                    if !motion.is_empty() {
+                        self.groups[k].egen = true;
+                        match motion.kind {
+                            MotionKind::Rapid => self.flags.rapid = true,
+                            MotionKind::Cut => self.flags.cut = true,
+                        }
                     }
-                    if motion.done() {
+                    if motion.is_empty() || motion.done() {
                         ended = true;
                         for n in 0..AXES {
                             if r.axes >> n & 1 == 1 {
@@ -529,22 +554,21 @@ impl SimCnc {
             } => {
                 for (n, slot) in axes.iter_mut().enumerate() {
                     let Some(ret) = *slot else { continue };
-                    let rate = if self.axes[n].zrf {
+                    let rate = if matches!(ret, Return::Direct(_)) {
                         self.rapid_of_group(r.axes, *rapid)
                     } else {
                         match self.inp.rov {
                             3 => self.params.one(P1421) as f64,
                             ro => {
-                                rapid.unwrap_or(self.params.get(*dog_rapid, n) as f64)
+                                self.params.get(*dog_rapid, n) as f64
                                     * [1.0, 0.5, 0.25][usize::from(ro)]
                             }
                         }
                     };
-                    let before = self.axes[n].m;
+                    let dir = self.return_direction(&ret);
                     match self.return_step(n, ret, rate) {
                         Ok(next) => *slot = next,
                         Err(()) => {
-                            let dir = usize::from(self.axes[n].m < before);
                             self.overtravel_end(k, n, dir);
                             return;
                         }
@@ -557,18 +581,23 @@ impl SimCnc {
             }
             Work::Continuous { speed, runs, .. } => {
                 let v = f64::from(*speed) * self.fov();
+                let mut delta = [0i64; AXES];
                 for (n, run) in runs.iter_mut().enumerate() {
-                    if r.axes >> n & 1 == 0 {
-                        continue;
+                    if r.axes >> n & 1 == 1 {
+                        delta[n] = run.step(v, self.diameter(n));
                     }
-                    let d = run.step(v, self.diameter(n));
-                    if d != 0 {
-                        if !self.guarded_move(n, d, false, false) {
-                            self.overtravel_end(k, n, usize::from(d < 0));
-                            return;
-                        }
-                        self.groups[k].egen = true;
-                    }
+                }
+                if let Some((n, d)) = self.blocked_axis(&delta) {
+                    self.guarded_move(n, d, false, false);
+                    self.overtravel_end(k, n, usize::from(d < 0));
+                    return;
+                }
+                for (n, &d) in delta.iter().enumerate() {
+                    self.apply_delta(n, d, false, false);
+                }
+                if v > 0.0 {
+                    self.groups[k].egen = true;
+                    self.flags.cut = true;
                 }
             }
         }

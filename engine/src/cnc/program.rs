@@ -312,11 +312,8 @@ fn words(mut body: &str) -> Result<Words, u16> {
                 w.axes[k] = Some((incr as i64, inc));
             }
             'F' => {
-                if v < 0.0 {
+                if v < 0.0 || !v.is_finite() {
                     return Err(ps::ADDRESS);
-                }
-                if v > 99_999.999 {
-                    return Err(ps::DIGITS);
                 }
                 w.f = Some(v);
             }

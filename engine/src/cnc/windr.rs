@@ -10,6 +10,7 @@ use super::params::{self, ParamKind, Selector, TABLE};
 use super::program::MDI_NUMBER;
 use super::{ALARM_ESTOP, AXES, Mode, RunState, SimCnc};
 use crate::profile::ProfileId;
+use crate::vm::cnc::Cnc;
 
 /// Largest tool-offset value, increments (±99999.999 mm).
 const OFFSET_MAX: i64 = 99_999_999;
@@ -55,7 +56,7 @@ impl SimCnc {
             return;
         }
         // A write's data must lie inside the D area.
-        let writes = matches!(b[0], 14 | 16 | 18 | 22);
+        let writes = self.window_is_low_speed(b[0]);
         if writes && (b[2] < 0 || 6 + b[2] as usize > b.len()) {
             return fail(b, 2);
         }
@@ -128,11 +129,12 @@ impl SimCnc {
                 out(b, &[s / 3600, s / 60 % 60, s % 60]);
             }
             82 => {
-                // No additional axes (#8410 = 0): all of them is none, any single one invalid.
-                if b[4] == -1 {
-                    out(b, &[]);
-                } else {
-                    fail(b, 4);
+                // No additional axes (#8410 = 0): all of them is none; a single one of the
+                // four is unassigned and reads 0.
+                match b[4] {
+                    -1 => out(b, &[]),
+                    1..=4 => out(b, &[0]),
+                    _ => fail(b, 4),
                 }
             }
             151 => {
