@@ -167,8 +167,11 @@ impl SimCnc {
         }
         a.mv = true;
         a.mvd = d < 0;
-        // Moving away from a stored stroke direction releases it.
-        a.stroke[usize::from(d > 0)] = false;
+        // Moving away from a stored stroke direction releases it (the machine must move:
+        // under machine lock only the distribution advances).
+        if !lock {
+            a.stroke[usize::from(d > 0)] = false;
+        }
     }
 
     /// Whether manual motion of axis slot `n` is blocked now (E-stop, servo alarm, an
