@@ -1,12 +1,13 @@
 //! Automatic operation (docs/cnc.md, "Automatic operation" and "MST interface"): the run
 //! states, cycle start and feed hold, starting and ending blocks, subprograms, program end,
-//! the M/S/T sequence of a block, and program motion.
+//! the output of a block's M/S/T functions, and program motion; `mst.rs` runs the
+//! handshake.
 
 use super::motion::{Motion, MotionKind};
+use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P1240, P1410, P1420, P1421, P6711, P6712};
 use super::program::{MDI_NUMBER, NcBlock, NcProgram, Words, ps};
-use super::signals::FImage;
-use super::{AXES, Mode, MstStatus, SimCnc};
+use super::{AXES, Mode, SimCnc};
 
 /// The automatic operation state.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -60,47 +61,29 @@ struct Frame {
     repeats: u32,
 }
 
-/// Strobe bits of an open MST sequence.
-const MF: u8 = 1;
-const MF2: u8 = 2;
-const MF3: u8 = 4;
-const SF: u8 = 8;
-const TF: u8 = 16;
-
-/// The M/S/T sequence of a block.
-#[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Mst {
-    open: bool,
-    strobes: u8,
-    started: u64,
-    m: [u32; 3],
-    s: u32,
-    t: u32,
-}
-
 /// The executing block.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Exec {
-    motion: Option<Motion>,
+    pub(super) motion: Option<Motion>,
     /// G28: 0 none, 1 first segment, 2 second segment.
-    g28_stage: u8,
-    g28_axes: u8,
-    first_done_at: u64,
-    dwell_ms: f64,
-    dwell_total: f64,
-    feed: f64,
-    per_rev: bool,
-    mst: Mst,
-    stop_after: bool,
-    end: bool,
-    call: Option<(usize, u32)>,
-    ret: bool,
-    offset: Option<u8>,
-    line: usize,
+    pub(super) g28_stage: u8,
+    pub(super) g28_axes: u8,
+    pub(super) first_done_at: u64,
+    pub(super) dwell_ms: f64,
+    pub(super) dwell_total: f64,
+    pub(super) feed: f64,
+    pub(super) per_rev: bool,
+    pub(super) mst: Mst,
+    pub(super) stop_after: bool,
+    pub(super) end: bool,
+    pub(super) call: Option<(usize, u32)>,
+    pub(super) ret: bool,
+    pub(super) offset: Option<u8>,
+    pub(super) line: usize,
 }
 
 impl Exec {
-    fn motion_done(&self) -> bool {
+    pub(super) fn motion_done(&self) -> bool {
         self.motion.is_none_or(|m| m.done())
             && self.g28_stage != 1
             && self.dwell_ms >= self.dwell_total
@@ -140,7 +123,7 @@ pub(super) struct Auto {
     pub last_n: u32,
     pub modal: Modal,
     pub tool_offset: u8,
-    dm99: bool,
+    pub dm99: bool,
 }
 
 impl Auto {
@@ -680,27 +663,6 @@ impl SimCnc {
         self.auto.exec = Some(e);
     }
 
-    /// Step (f): strobes drop on FIN or their own finish signal; the sequence finishes when
-    /// every finish signal is 0 again.
-    pub(super) fn mst_acceptance(&mut self) {
-        let inp = self.inp;
-        let n = self.exchange_no;
-        let Some(e) = &mut self.auto.exec else { return };
-        let mst = &mut e.mst;
-        if !mst.open || n <= mst.started {
-            return;
-        }
-        let own = [inp.mfin, inp.mfin2, inp.mfin3, inp.sfin, inp.tfin];
-        for (i, bit) in [MF, MF2, MF3, SF, TF].into_iter().enumerate() {
-            if mst.strobes & bit != 0 && (inp.fin || own[i]) {
-                mst.strobes &= !bit;
-            }
-        }
-        if mst.strobes == 0 && !inp.fin && !own.iter().any(|x| *x) {
-            *mst = Mst::default();
-        }
-    }
-
     /// Step (g): the executing block ends when its motion, dwell and MST sequence are done.
     pub(super) fn end_of_block(&mut self) {
         let a = &self.auto;
@@ -755,63 +717,5 @@ impl SimCnc {
             }
             _ => {}
         }
-    }
-
-    /// The automatic-operation part of F.
-    pub(super) fn auto_f(&self, img: &mut FImage) {
-        let a = &self.auto;
-        let run = a.state == RunState::Run;
-        let hold = a.state == RunState::Hold;
-        img.bit(0, 5, run);
-        img.bit(0, 4, hold);
-        img.bit(0, 7, run || hold);
-        img.bit(9, 3, a.dm99);
-        let Some(e) = &a.exec else { return };
-        let mst = &e.mst;
-        if !mst.open {
-            return;
-        }
-        let done = e.motion_done();
-        img.value(10, 4, mst.m[0]);
-        img.value(14, 2, mst.m[1]);
-        img.value(16, 2, mst.m[2]);
-        img.value(22, 4, mst.s);
-        img.value(26, 4, mst.t);
-        img.bit(7, 0, mst.strobes & MF != 0);
-        img.bit(7, 2, mst.strobes & SF != 0);
-        img.bit(7, 3, mst.strobes & TF != 0);
-        img.bit(8, 4, mst.strobes & MF2 != 0);
-        img.bit(8, 5, mst.strobes & MF3 != 0);
-        img.bit(1, 3, done);
-        if done && mst.strobes & MF != 0 {
-            match mst.m[0] {
-                0 => img.bit(9, 7, true),
-                1 => img.bit(9, 6, true),
-                2 => img.bit(9, 5, true),
-                30 => img.bit(9, 4, true),
-                _ => {}
-            }
-        }
-    }
-
-    /// The M/S/T lamps.
-    pub(super) fn mst_status(&self) -> MstStatus {
-        let mut s = MstStatus {
-            fin: self.inp.fin,
-            ..MstStatus::default()
-        };
-        if let Some(e) = &self.auto.exec
-            && e.mst.open
-        {
-            let m = &e.mst;
-            s.m = m.m[0];
-            s.s = m.s;
-            s.t = m.t;
-            s.mf = m.strobes & MF != 0;
-            s.sf = m.strobes & SF != 0;
-            s.tf = m.strobes & TF != 0;
-            s.den = e.motion_done();
-        }
-        s
     }
 }

@@ -10,15 +10,17 @@
 //!
 //! The module is split by responsibility: `signals` (G sampled, F written), `params`,
 //! `data` (offsets, macros, clock), `program` (NC text), `motion` (straight lines), `auto`
-//! (automatic operation and MST), `manual` (JOG, handwheel, reference return, overtravel),
-//! `plc_axes` (AXCTL groups), `windr` (the window functions), `command` (what scripts and the
-//! editor do to a running CNC, and the values they read back).
+//! (automatic operation), `mst` (the M/S/T handshake), `manual` (JOG, handwheel, reference
+//! return, overtravel), `plc_axes` (AXCTL groups), `windr` (the window functions), `command`
+//! (what scripts and the editor do to a running CNC) and `keys` (the values they read back).
 
 mod auto;
 pub mod command;
 pub mod data;
+mod keys;
 mod manual;
 pub mod motion;
+mod mst;
 pub mod params;
 mod plc_axes;
 pub mod program;

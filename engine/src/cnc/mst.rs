@@ -1,0 +1,106 @@
+//! The M/S/T interface of a block (docs/cnc.md, "MST interface"): strobes drop on FIN or
+//! their own finish signal, the sequence finishes when every finish signal is 0 again, and
+//! the F image of the strobes, codes, DEN and the decode signals.
+
+use super::auto::RunState;
+use super::signals::FImage;
+use super::{MstStatus, SimCnc};
+
+/// Strobe bits of an open MST sequence.
+pub(super) const MF: u8 = 1;
+pub(super) const MF2: u8 = 2;
+pub(super) const MF3: u8 = 4;
+pub(super) const SF: u8 = 8;
+pub(super) const TF: u8 = 16;
+
+/// The M/S/T sequence of a block.
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Mst {
+    pub(super) open: bool,
+    pub(super) strobes: u8,
+    pub(super) started: u64,
+    pub(super) m: [u32; 3],
+    pub(super) s: u32,
+    pub(super) t: u32,
+}
+
+impl SimCnc {
+    /// Step (f): strobes drop on FIN or their own finish signal; the sequence finishes when
+    /// every finish signal is 0 again.
+    pub(super) fn mst_acceptance(&mut self) {
+        let inp = self.inp;
+        let n = self.exchange_no;
+        let Some(e) = &mut self.auto.exec else { return };
+        let mst = &mut e.mst;
+        if !mst.open || n <= mst.started {
+            return;
+        }
+        let own = [inp.mfin, inp.mfin2, inp.mfin3, inp.sfin, inp.tfin];
+        for (i, bit) in [MF, MF2, MF3, SF, TF].into_iter().enumerate() {
+            if mst.strobes & bit != 0 && (inp.fin || own[i]) {
+                mst.strobes &= !bit;
+            }
+        }
+        if mst.strobes == 0 && !inp.fin && !own.iter().any(|x| *x) {
+            *mst = Mst::default();
+        }
+    }
+
+    /// The automatic-operation part of F.
+    pub(super) fn auto_f(&self, img: &mut FImage) {
+        let a = &self.auto;
+        let run = a.state == RunState::Run;
+        let hold = a.state == RunState::Hold;
+        img.bit(0, 5, run);
+        img.bit(0, 4, hold);
+        img.bit(0, 7, run || hold);
+        img.bit(9, 3, a.dm99);
+        let Some(e) = &a.exec else { return };
+        let mst = &e.mst;
+        if !mst.open {
+            return;
+        }
+        let done = e.motion_done();
+        img.value(10, 4, mst.m[0]);
+        img.value(14, 2, mst.m[1]);
+        img.value(16, 2, mst.m[2]);
+        img.value(22, 4, mst.s);
+        img.value(26, 4, mst.t);
+        img.bit(7, 0, mst.strobes & MF != 0);
+        img.bit(7, 2, mst.strobes & SF != 0);
+        img.bit(7, 3, mst.strobes & TF != 0);
+        img.bit(8, 4, mst.strobes & MF2 != 0);
+        img.bit(8, 5, mst.strobes & MF3 != 0);
+        img.bit(1, 3, done);
+        if done && mst.strobes & MF != 0 {
+            match mst.m[0] {
+                0 => img.bit(9, 7, true),
+                1 => img.bit(9, 6, true),
+                2 => img.bit(9, 5, true),
+                30 => img.bit(9, 4, true),
+                _ => {}
+            }
+        }
+    }
+
+    /// The M/S/T lamps.
+    pub(super) fn mst_status(&self) -> MstStatus {
+        let mut s = MstStatus {
+            fin: self.inp.fin,
+            ..MstStatus::default()
+        };
+        if let Some(e) = &self.auto.exec
+            && e.mst.open
+        {
+            let m = &e.mst;
+            s.m = m.m[0];
+            s.s = m.s;
+            s.t = m.t;
+            s.mf = m.strobes & MF != 0;
+            s.sf = m.strobes & SF != 0;
+            s.tf = m.strobes & TF != 0;
+            s.den = e.motion_done();
+        }
+        s
+    }
+}
