@@ -476,3 +476,15 @@ fn a_return_to_where_the_axis_already_is_still_sets_zp() {
     r.xs(2);
     assert!(r.fb(94, 2), "ZP3 at the point");
 }
+
+#[test]
+fn a_block_that_names_a_claimed_axis_without_moving_it_runs() {
+    let mut r = Rig::new();
+    r.mode(ladder_engine::cnc::Mode::Mem);
+    r.set(136, 1, true);
+    r.x();
+    r.program("O0001;N7 G00 W0 M03");
+    r.start();
+    assert_eq!(r.v("cnc.alarms"), "0", "W0 does not move Z");
+    assert!(r.fb(7, 0));
+}

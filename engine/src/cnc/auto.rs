@@ -397,12 +397,22 @@ impl SimCnc {
                 if w.g28 && !self.axes[k].zrf {
                     return Err(ps::NO_REFERENCE);
                 }
-                if self.inp.eax >> k & 1 == 1 {
+                if self.inp.eax >> k & 1 == 1 && (w.g28 || self.word_moves(w, k)) {
                     return Err(ps::AXIS_CLAIM);
                 }
             }
         }
         Ok(call)
+    }
+
+    /// Whether the axis word of slot `k` moves that axis (a G28 always may).
+    fn word_moves(&self, w: &Words, k: usize) -> bool {
+        let cur = self.axes[k].m - self.axes[k].sh;
+        match w.axes[k] {
+            Some((v, true)) => v != 0,
+            Some((v, false)) => v + self.tool_offset_along(k) + self.work_offset(k) != cur,
+            None => false,
+        }
     }
 
     fn execute(&mut self, w: &Words, line: usize, call: Option<(usize, u32)>) {
