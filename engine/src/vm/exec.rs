@@ -15,6 +15,8 @@ const OP_MPP: u32 = VmOp::Mpp as u32;
 const OP_OUT: u32 = VmOp::Out as u32;
 const OP_OUTN: u32 = VmOp::Outn as u32;
 const OP_NET: u32 = VmOp::Net as u32;
+const OP_SET: u32 = VmOp::Set as u32;
+const OP_RST: u32 = VmOp::Rst as u32;
 use super::functions::{self, Ctx};
 use super::{Frame, Halt, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
 
@@ -354,6 +356,20 @@ fn hot<const TRACE: bool>(
                 }
                 let byte = &mut mem[index];
                 *byte = (*byte & !(1 << shift)) | (((acc ^ (op & 1)) as u8) << shift);
+            }
+            OP_SET | OP_RST => {
+                // As the coils: here unless forces must follow the write. Two steps.
+                if forcing {
+                    break at;
+                }
+                if TRACE {
+                    trace[at as usize] = acc as u8;
+                }
+                if acc != 0 {
+                    let byte = &mut mem[index];
+                    *byte = (*byte & !(1 << shift)) | (u8::from(op == OP_SET) << shift);
+                }
+                steps += 1;
             }
             OP_NET => {
                 // Leave only to suspend level 2, or where recording starts or stops.
