@@ -2,7 +2,7 @@
 //! `cnc` lines are refused with their line before anything runs, commands that cannot apply
 //! fail with their line, and `--trace` records CNC values.
 
-use ladder_tests::{here, run};
+use ladder_tests::{here, run, run_scripts, scripts};
 
 fn bench_ladder() -> String {
     here().join("cnc/mst.il").display().to_string()
@@ -17,32 +17,15 @@ fn script(dir: &tempfile::TempDir, text: &str) -> String {
 #[test]
 fn every_cnc_script_passes() {
     let dir = here().join("cnc");
-    let mut scripts: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "script"))
-        .collect();
-    scripts.sort();
+    let scripts = scripts(&dir);
     assert!(!scripts.is_empty());
-    for s in scripts {
+    let program = |s: &std::path::Path| {
         let il = s.with_extension("il");
-        let il = if il.exists() { il } else { dir.join("mst.il") };
-        let r = run(&[
-            "sim",
-            il.to_str().unwrap(),
-            "--script",
-            s.to_str().unwrap(),
-            "--cnc",
-        ]);
-        let last = r.stdout.lines().last().unwrap_or("");
-        assert!(
-            r.code == 0 && last.ends_with(" passed, 0 failed"),
-            "{}:\n{}{}",
-            s.display(),
-            r.stdout,
-            r.stderr
-        );
-    }
+        if il.exists() { il } else { dir.join("mst.il") }
+    };
+    let (failures, expects) = run_scripts(&scripts, program, &["--cnc"]);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(expects >= 30, "only {expects} expectations ran");
 }
 
 #[test]

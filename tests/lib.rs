@@ -50,3 +50,47 @@ pub fn corpus(folder: &str) -> Vec<PathBuf> {
 pub fn read(path: &Path) -> String {
     std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
 }
+
+/// The `.script` files of a folder, sorted.
+pub fn scripts(dir: &Path) -> Vec<PathBuf> {
+    let mut scripts: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.expect("a directory entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "script"))
+        .collect();
+    scripts.sort();
+    scripts
+}
+
+/// Runs `sim PROGRAM --script SCRIPT EXTRA…` for each script, the program chosen per script.
+/// Returns the failures (script, output) and the number of expectations that passed.
+pub fn run_scripts(
+    scripts: &[PathBuf],
+    program: impl Fn(&Path) -> PathBuf,
+    extra: &[&str],
+) -> (Vec<String>, usize) {
+    let mut failures = Vec::new();
+    let mut expects = 0;
+    for script in scripts {
+        let target = program(script);
+        let mut args = vec![
+            "sim",
+            target.to_str().expect("UTF-8 path"),
+            "--script",
+            script.to_str().expect("UTF-8 path"),
+        ];
+        args.extend_from_slice(extra);
+        let r = run(&args);
+        let last = r.stdout.lines().last().unwrap_or("").to_string();
+        let passed: usize = last
+            .split(' ')
+            .next()
+            .and_then(|n| n.parse().ok())
+            .unwrap_or(0);
+        expects += passed;
+        if r.code != 0 || !last.ends_with(" passed, 0 failed") || passed == 0 {
+            failures.push(format!("{}:\n{}{}", script.display(), r.stdout, r.stderr));
+        }
+    }
+    (failures, expects)
+}

@@ -3,7 +3,7 @@
 use ladder_engine::address::Area;
 use ladder_engine::compiler::compile;
 use ladder_engine::{file, xref};
-use ladder_tests::{here, run};
+use ladder_tests::{here, run, run_scripts, scripts};
 
 fn lathe() -> ladder_engine::model::Project {
     file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample loads")
@@ -59,30 +59,11 @@ fn every_address_of_the_lathe_has_a_symbol_with_both_comments() {
 #[test]
 fn the_lathe_scripts_pass_against_the_project_under_the_simulated_cnc() {
     let ldp = here().join("../projects/lathe-988ta.ldp");
-    let mut scripts: Vec<_> = std::fs::read_dir(here().join("lathe"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "script"))
-        .collect();
-    scripts.sort();
+    let scripts = scripts(&here().join("lathe"));
     assert!(scripts.len() >= 10);
-    for s in scripts {
-        let r = run(&[
-            "sim",
-            ldp.to_str().unwrap(),
-            "--script",
-            s.to_str().unwrap(),
-            "--cnc",
-        ]);
-        let last = r.stdout.lines().last().unwrap_or("");
-        assert!(
-            r.code == 0 && last.ends_with(" passed, 0 failed"),
-            "{}:\n{}{}",
-            s.display(),
-            r.stdout,
-            r.stderr
-        );
-    }
+    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc"]);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(expects > 400, "only {expects} expectations ran");
 }
 
 #[test]

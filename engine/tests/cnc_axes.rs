@@ -19,21 +19,9 @@ fn rig() -> Rig {
     r
 }
 
-/// Issues a command to group A: EC, EIF, EID, and EBUF toggled.
-fn issue(r: &mut Rig, ec: u8, eif: u16, eid: i32) {
-    r.g[141] = (r.g[141] & 0x80) | ec;
-    r.g[142..144].copy_from_slice(&eif.to_le_bytes());
-    r.g[144..148].copy_from_slice(&eid.to_le_bytes());
-    r.g[140] ^= 0x80;
-}
-
-#[test]
-fn the_manual_example_moves_y_10_mm_and_axctl_sees_fin_from_tick_t_plus_125() {
-    let p = il::import(
-        "LEVEL2\nNETWORK\nLDI R0999.7\nMOVN 1 255 G0114\nMOVN 1 255 G0116\nOUT G0008.0\nOUT G0008.1\nOUT G0008.3\nOUT G0008.4\nOUT G0008.5\nOUT G0136.2\nMOVN 1 10 G0012\nNETWORK\nLD X0000.0\nAXCTL 1 1 600 10000 R0000.1 R0001.0 R0001.1\n",
-    )
-    .project
-    .expect("draws");
+/// A machine running `il` with three axes, Y in group A (the PLC claims it in the ladder).
+fn y_machine(il: &str) -> Machine {
+    let p = il::import(il).project.expect("draws");
     let mut m = Machine::new(&p, true).unwrap();
     for c in [
         CncCommand::Param {
@@ -49,6 +37,22 @@ fn the_manual_example_moves_y_10_mm_and_axctl_sees_fin_from_tick_t_plus_125() {
     ] {
         m.apply(&MachineCommand::Cnc(c)).unwrap();
     }
+    m
+}
+
+/// Issues a command to group A: EC, EIF, EID, and EBUF toggled.
+fn issue(r: &mut Rig, ec: u8, eif: u16, eid: i32) {
+    r.g[141] = (r.g[141] & 0x80) | ec;
+    r.g[142..144].copy_from_slice(&eif.to_le_bytes());
+    r.g[144..148].copy_from_slice(&eid.to_le_bytes());
+    r.g[140] ^= 0x80;
+}
+
+#[test]
+fn the_manual_example_moves_y_10_mm_and_axctl_sees_fin_from_tick_t_plus_125() {
+    let mut m = y_machine(
+        "LEVEL2\nNETWORK\nLDI R0999.7\nMOVN 1 255 G0114\nMOVN 1 255 G0116\nOUT G0008.0\nOUT G0008.1\nOUT G0008.3\nOUT G0008.4\nOUT G0008.5\nOUT G0136.2\nMOVN 1 10 G0012\nNETWORK\nLD X0000.0\nAXCTL 1 1 600 10000 R0000.1 R0001.0 R0001.1\n",
+    );
     m.tick();
     let a = |t: &str| Address::parse(t).unwrap();
     m.plc.write(a("X0.0"), 1, 1);
@@ -344,26 +348,9 @@ fn a_claim_during_a_program_motion_leaves_eial_alone() {
 #[test]
 fn the_issuing_scan_never_reports_the_previous_command_as_this_ones_end() {
     // AXCTL writes ESBK := 0 on ACT 0→1: a command abandoned earlier does not block the next.
-    let p = il::import(
+    let mut m = y_machine(
         "LEVEL2\nNETWORK\nLDI R0999.7\nMOVN 1 255 G0114\nMOVN 1 255 G0116\nOUT G0008.4\nOUT G0136.2\nMOVN 1 10 G0012\nNETWORK\nLD X0000.0\nAXCTL 1 1 600 8000 R0000.1 R0001.0 R0001.1\n",
-    )
-    .project
-    .expect("draws");
-    let mut m = Machine::new(&p, true).unwrap();
-    for c in [
-        CncCommand::Param {
-            number: 8130,
-            selector: None,
-            value: 3,
-        },
-        CncCommand::Param {
-            number: 8010,
-            selector: Some(3),
-            value: 1,
-        },
-    ] {
-        m.apply(&MachineCommand::Cnc(c)).unwrap();
-    }
+    );
     let a = |t: &str| Address::parse(t).unwrap();
     m.plc.write(a("X0.0"), 1, 1);
     m.tick();
@@ -410,19 +397,7 @@ fn when_one_axis_of_a_plc_move_stops_on_its_limit_the_others_do_not_advance() {
     r.cmd(&["param", "8010", "1", "1"]);
     r.cmd(&["param", "8010", "3", "1"]);
     // Reference points of X and Y by dog returns at 0 (before the PLC claims them).
-    r.mode(ladder_engine::cnc::Mode::Ref);
-    r.x();
-    r.set(100, 0, true);
-    r.set(100, 2, true);
-    r.x();
-    r.set(196, 0, false);
-    r.set(196, 2, false);
-    r.x();
-    r.set(196, 0, true);
-    r.set(196, 2, true);
-    r.x();
-    r.set(100, 0, false);
-    r.set(100, 2, false);
+    r.home(&[0, 2]);
     r.mode(ladder_engine::cnc::Mode::Mdi);
     r.set(136, 0, true);
     r.set(136, 2, true);

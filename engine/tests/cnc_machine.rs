@@ -259,14 +259,7 @@ fn reference_return_with_a_dog_establishes_the_reference_point() {
 #[test]
 fn g28_goes_through_the_point_to_the_reference_position() {
     let mut r = Rig::new();
-    r.mode(Mode::Ref);
-    r.x();
-    r.set(100, 1, true);
-    r.x();
-    r.set(196, 1, false);
-    r.x();
-    r.set(196, 1, true);
-    r.x();
+    r.home(&[1]);
     assert!(r.fb(120, 1));
     r.set(100, 1, false);
     r.mode(Mode::Mdi);
@@ -334,15 +327,7 @@ fn hardware_overtravel_stops_automatic_operation_and_blocks_its_direction() {
 fn the_stored_stroke_limit_stops_on_the_limit_until_moved_back() {
     let mut r = Rig::new();
     // Reference point established by a dog return at 0.
-    r.mode(Mode::Ref);
-    r.x();
-    r.set(100, 1, true);
-    r.x();
-    r.set(196, 1, false);
-    r.x();
-    r.set(196, 1, true);
-    r.x();
-    r.set(100, 1, false);
+    r.home(&[1]);
     r.cmd(&["param", "1320", "2", "1000"]);
     r.cmd(&["param", "1301", "64"]); // OTS
     r.mode(Mode::Jog);
@@ -369,15 +354,7 @@ fn the_stored_stroke_limit_stops_on_the_limit_until_moved_back() {
 fn a_direct_reference_return_takes_the_exchanges_of_its_distance() {
     let mut r = Rig::new();
     // Establish Z's reference point at 0 with the dog, move away 10 mm, return at 1000 mm/min.
-    r.mode(Mode::Ref);
-    r.x();
-    r.set(100, 1, true);
-    r.x();
-    r.set(196, 1, false);
-    r.x();
-    r.set(196, 1, true);
-    r.x();
-    r.set(100, 1, false);
+    r.home(&[1]);
     r.cmd(&["position", "Z", "10"]);
     r.cmd(&["param", "1420", "2", "1000"]);
     r.x();
@@ -392,15 +369,7 @@ fn a_direct_reference_return_takes_the_exchanges_of_its_distance() {
 #[test]
 fn g28_at_the_reference_point_sets_zp() {
     let mut r = Rig::new();
-    r.mode(Mode::Ref);
-    r.x();
-    r.set(100, 1, true);
-    r.x();
-    r.set(196, 1, false);
-    r.x();
-    r.set(196, 1, true);
-    r.x();
-    r.set(100, 1, false);
+    r.home(&[1]);
     r.set(8, 4, false); // E-stop clears ZP
     r.x();
     r.set(8, 4, true);

@@ -228,6 +228,21 @@ impl SimCnc {
         })
     }
 
+    /// Moves group `k`'s axes by `delta`. Every axis is checked first: when one must stop
+    /// (on its limit, with the alarm) the others do not advance either, and the command ends
+    /// in error; returns whether the move went on.
+    fn move_group(&mut self, k: usize, delta: &[i64; AXES]) -> bool {
+        if let Some((n, d)) = self.blocked_axis(delta) {
+            self.guarded_move(n, d, false, false);
+            self.overtravel_end(k, n, usize::from(d < 0));
+            return false;
+        }
+        for (n, &d) in delta.iter().enumerate() {
+            self.apply_delta(n, d, false, false);
+        }
+        true
+    }
+
     fn rapid_of_group(&self, axes: u8, rpd: Option<f64>) -> f64 {
         match self.inp.rov {
             3 => self.params.one(P1421) as f64,
@@ -512,15 +527,8 @@ impl SimCnc {
                     let delta: [i64; AXES] = std::array::from_fn(|n| {
                         motion.position_at(n, covered) - motion.position_at(n, motion.covered)
                     });
-                    // Every axis is checked first: when one must stop, the others do not
-                    // advance at this exchange either.
-                    if let Some((n, d)) = self.blocked_axis(&delta) {
-                        self.guarded_move(n, d, false, false);
-                        self.overtravel_end(k, n, usize::from(d < 0));
+                    if !self.move_group(k, &delta) {
                         return;
-                    }
-                    for (n, &d) in delta.iter().enumerate() {
-                        self.apply_delta(n, d, false, false);
                     }
                     motion.covered = covered;
                     if !motion.is_empty() {
@@ -587,13 +595,8 @@ impl SimCnc {
                         delta[n] = run.step(v, self.diameter(n));
                     }
                 }
-                if let Some((n, d)) = self.blocked_axis(&delta) {
-                    self.guarded_move(n, d, false, false);
-                    self.overtravel_end(k, n, usize::from(d < 0));
+                if !self.move_group(k, &delta) {
                     return;
-                }
-                for (n, &d) in delta.iter().enumerate() {
-                    self.apply_delta(n, d, false, false);
                 }
                 if v > 0.0 {
                     self.groups[k].egen = true;

@@ -124,6 +124,28 @@ impl Rig {
         self.n
     }
 
+    /// Establishes the reference points of axis slots `axes` by dog returns in REF mode: +J
+    /// pressed, onto the dog, off it; the keys are released and the mode stays REF.
+    pub fn home(&mut self, axes: &[usize]) {
+        self.mode(Mode::Ref);
+        self.x();
+        for &n in axes {
+            self.set(100, n as u32, true);
+        }
+        self.x();
+        for &n in axes {
+            self.set(196, n as u32, false);
+        }
+        self.x();
+        for &n in axes {
+            self.set(196, n as u32, true);
+        }
+        self.x();
+        for &n in axes {
+            self.set(100, n as u32, false);
+        }
+    }
+
     /// A CNC value as text.
     pub fn v(&self, key: &str) -> String {
         let k = CncKey::parse(key, self.cnc.profile()).unwrap();
