@@ -1,4 +1,4 @@
-//! The headless subcommands of formats.md §1. Exit codes: 0 success, 1 valid input that fails
+//! The headless subcommands (README, "Command line"). Exit codes: 0 success, 1 valid input that fails
 //! (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad arguments).
 
 use crate::source::Source;

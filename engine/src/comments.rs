@@ -1,4 +1,4 @@
-//! Comments as CSV (formats.md §1 `export-comments` / `import-comments`): symbols, network
+//! Comments as CSV (README, `export-comments` / `import-comments`): symbols, network
 //! comments, messages and the other tables' comments, one column per language.
 //!
 //! Columns: `kind,table,key,symbol,<lang>…`. `kind` is `symbol` (table: the symbol table),

@@ -1,4 +1,4 @@
-//! Project files (`.ldp`, formats.md §3): a header line with the schema version and a CRC-32
+//! Project files (`.ldp`, README "Projects"): a header line with the schema version and a CRC-32
 //! of the body, then the project serialized as RON. This is the engine's only I/O.
 
 use crate::model::Project;

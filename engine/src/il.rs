@@ -1,4 +1,4 @@
-//! Instruction-list text (isa.md §6): parsing with line-numbered errors, printing in the
+//! Instruction-list text (docs/plc.md, "Instruction-list text"): parsing with line-numbered errors, printing in the
 //! canonical form, and building a project whose ladder is drawn from the IL.
 
 use crate::catalog::{InstrClass, Op, OperandKind};

@@ -1,5 +1,5 @@
 //! Every WINDR function code of both profiles on the simulated CNC: the data it reads or
-//! writes and each end code its table documents (docs/windr.md).
+//! writes and each end code its table documents (docs/cnc.md, "WINDR").
 
 mod common;
 

@@ -3,7 +3,7 @@
 //!
 //! The reference walks the rung trees the ladder reads as (`compiler::lower`) with a map of
 //! bits: no lowering, no words, no stacks. It implements the bit logic, SET/RST, DIFU/DIFD,
-//! ALT and TMRB from isa.md directly.
+//! ALT and TMRB from docs/plc.md directly.
 
 use ladder_engine::Op;
 use ladder_engine::address::{Address, Area};

@@ -175,7 +175,7 @@ fn axctl_writes_the_group_signals_and_reports_fin() {
 
 #[test]
 fn psgnl_finds_the_zone_of_the_machine_position() {
-    // isa.md §4.6: 150.0000 mm (IS-C: 1500000) between D1 = 1000000 and D2 = 2000000 is zone 3:
+    // docs/plc.md (PSGNL): 150.0000 mm (IS-C: 1500000) between D1 = 1000000 and D2 = 2000000 is zone 3:
     // R100.5.
     let p = project(
         "LEVEL2\nNETWORK\nLD X0000.0\nPSGNL 1 D0000 R0100 R0101.0\nPSGN2 1 1000000 2000000 R0102.0 R0102.1\n",

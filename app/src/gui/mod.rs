@@ -110,7 +110,7 @@ pub enum HelpPage {
 }
 
 impl LadderApp {
-    /// Starts on `path`, else the last project, else the bundled sample (formats.md §1).
+    /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").
     pub fn new(settings: Settings, path: Option<&Path>) -> LadderApp {
         let mut app = LadderApp {
             settings,

@@ -13,9 +13,9 @@ use crate::model::{BlockKind, Operand, Project, SymbolIndex};
 use crate::profile::Profile;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
-/// Block stack limit (isa.md §3 DECISION).
+/// Block stack limit (docs/plc.md, "Basic instructions").
 pub const BLOCK_STACK_DEPTH: usize = 32;
-/// Branch (MPS) stack limit (isa.md §3 DECISION).
+/// Branch (MPS) stack limit (docs/plc.md, "Basic instructions").
 pub const BRANCH_STACK_DEPTH: usize = 16;
 
 /// Where an instruction is: (block, network, origin).
@@ -361,7 +361,7 @@ fn table_shape(instr: &Instr, name: &str) -> Option<(u32, u32)> {
     }
 }
 
-/// Addresses covered from `a` by `count` elements of `bytes` (element rule, isa.md §1).
+/// Addresses covered from `a` by `count` elements of `bytes` (element rule, docs/plc.md).
 fn covered(a: Address, bytes: u32, count: u32) -> u32 {
     if a.area.element_bytes() == 1 {
         bytes * count

@@ -176,7 +176,7 @@ impl Diagnostic {
         self.code.severity()
     }
 
-    /// Formats the diagnostic as `formats.md` §1 prints it, with `path` in front:
+    /// Formats the diagnostic as `check` prints it (README, "Command line"), with `path` in front:
     /// `PATH:BLOCK:NETWORK:ROW:COL: error: MESSAGE` for ladder cells (1-based), or
     /// `PATH:LINE: error: MESSAGE` for IL lines.
     pub fn render(&self, path: &str) -> String {

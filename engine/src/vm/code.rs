@@ -213,7 +213,7 @@ struct Lowerer<'a> {
     /// Label word per (block, context): label number → word.
     labels: Vec<(usize, usize, u16, u32)>,
     /// The memory slot of each function instruction in the program text: a subprogram lowered
-    /// for both levels shares it (isa.md §5: memories belong to the instruction).
+    /// for both levels shares it (docs/plc.md, "Scan": memories belong to the instruction).
     states: std::collections::HashMap<(u16, u32, u32), u32>,
 }
 

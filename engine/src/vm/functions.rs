@@ -1,4 +1,4 @@
-//! The function instructions' semantics (isa.md §4), one arm per instruction.
+//! The function instructions' semantics (docs/plc.md, "Function instructions"), one arm per instruction.
 //!
 //! Common rules: ACT=0 leaves outputs unchanged unless the row says otherwise; where an
 //! instruction has RST (AXCTL aside) RST=1 is served whatever ACT is and the operation is not
@@ -57,7 +57,7 @@ fn size(a: Arg) -> u32 {
     }
 }
 
-/// The signed range a result of `bytes` must fit (isa.md §1: ±2147483647 for 4 bytes).
+/// The signed range a result of `bytes` must fit (docs/plc.md, "Memory": ±2147483647 for 4 bytes).
 fn fits(v: i64, bytes: u32) -> bool {
     match bytes {
         1 => (-128..=127).contains(&v),
@@ -75,7 +75,7 @@ fn three_bits(mem: &mut [u8], out: Arg, which: u32) {
     }
 }
 
-/// Element `k` of a table of `bytes`-wide elements at `loc` (isa.md §1 element rule), or
+/// Element `k` of a table of `bytes`-wide elements at `loc` (docs/plc.md element rule), or
 /// `None` when it lies past the area's end.
 fn element(loc: Loc, k: u32, bytes: u32) -> Option<Loc> {
     let step = if loc.wide { 4 } else { bytes };
@@ -121,7 +121,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
         Op::Cmpr => {
             if act {
                 let (x, y) = (real(mem, a[0]), real(mem, a[1]));
-                // A NaN compares as "less" (isa.md §4 common rules).
+                // A NaN compares as "less" (docs/plc.md, function instructions).
                 three_bits(
                     mem,
                     a[2],
@@ -165,7 +165,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             };
             let down = fmt % 10 == 1;
             let initial = (fmt / 10) % 10;
-            // C holds 0…2147483647 (isa.md §1): a negative preset counts as 0.
+            // C holds 0…2147483647 (docs/plc.md, "Memory"): a negative preset counts as 0.
             let n = int(mem, a[3], 4).max(0);
             let start = if down { n } else { initial };
             if bit(mem, a[1]) {
@@ -628,7 +628,7 @@ fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         st.prev_act = true;
         return;
     }
-    // Low speed (windr.md §1.3): the block is latched at the first scan, the write is applied
+    // Low speed (docs/cnc.md, "WINDR"): the block is latched at the first scan, the write is applied
     // from the latched block at the second, then ERR stays 1 until ACT drops.
     let n = slots.min(cx.latch.len());
     match st.phase {

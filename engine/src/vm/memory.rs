@@ -1,4 +1,4 @@
-//! The PLC's memory image: every area in one byte array, with the width rule of isa.md §1.
+//! The PLC's memory image: every area in one byte array, with the width rule of docs/plc.md.
 //!
 //! 1-byte areas (X Y F G R A K) hold one byte per address; an access of SIZE s at address n
 //! covers n…n+s−1, little-endian. 4-byte areas (T C DT DC D) hold an i32 per address; an access

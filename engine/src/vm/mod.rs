@@ -1,4 +1,4 @@
-//! The scan engine: runs a compiled program the way the GSK PLC does (isa.md §3–§5).
+//! The scan engine: runs a compiled program the way the GSK PLC does (docs/plc.md).
 //!
 //! [`code`] lowers the compiled program once to compact words with addresses resolved;
 //! [`exec`] runs them (no allocation, hashing or string work in the loop); [`functions`]
@@ -288,7 +288,7 @@ impl Vm {
                 self.code.level2
             }
         };
-        // With n = 1 the whole of level 2 runs every tick (isa.md §5), however many steps its
+        // With n = 1 the whole of level 2 runs every tick (docs/plc.md, "Scan"), however many steps its
         // calls and loops execute; only a division above 1 slices it.
         let quota = match self.level2.division {
             0 | 1 => u64::MAX,
@@ -300,7 +300,7 @@ impl Vm {
         }
     }
 
-    /// Reads `bytes` (1, 2, 4) at an address as a signed value (isa.md §1 width rule).
+    /// Reads `bytes` (1, 2, 4) at an address as a signed value (docs/plc.md width rule).
     pub fn read(&self, a: Address, bytes: u32) -> i64 {
         if let Some(bit) = a.bit {
             return i64::from(self.read_bit(Address {
