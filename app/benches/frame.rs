@@ -22,7 +22,7 @@ fn main() {
         .state()
         .doc
         .as_ref()
-        .map_or(0, |d| d.project.ladder.blocks[1].networks.len());
+        .map_or(0, |d| d.project().ladder.blocks[1].networks.len());
     let mut times = Vec::new();
     for k in 0..300 {
         h.state_mut().jump_to = Some(k * 7 % networks.max(1));

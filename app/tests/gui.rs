@@ -152,7 +152,7 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     let mut h = harness(Some(path.clone()), Lang::En);
     h.run();
-    let empty = h.state().doc.as_ref().unwrap().project.ladder.clone();
+    let empty = h.state().doc.as_ref().unwrap().project().ladder.clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::I); // a network
     h.run();
     h.key_press(Key::F1); // start X2.1
@@ -171,7 +171,7 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     enter_operand(&mut h, "Y3.7");
     h.key_press_modifiers(Modifiers::COMMAND, Key::S);
     h.run();
-    let drawn = h.state().doc.as_ref().unwrap().project.ladder.clone();
+    let drawn = h.state().doc.as_ref().unwrap().project().ladder.clone();
     assert!(!h.state().doc.as_ref().unwrap().dirty, "saved");
 
     // Reopened from the file, the ladder exports the manual's instruction list.
@@ -185,12 +185,12 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
         h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
         h.run();
     }
-    assert_eq!(h.state().doc.as_ref().unwrap().project.ladder, empty);
+    assert_eq!(h.state().doc.as_ref().unwrap().project().ladder, empty);
     for _ in 0..20 {
         h.key_press_modifiers(Modifiers::COMMAND, Key::Y);
         h.run();
     }
-    assert_eq!(h.state().doc.as_ref().unwrap().project.ladder, drawn);
+    assert_eq!(h.state().doc.as_ref().unwrap().project().ladder, drawn);
 }
 
 #[test]
@@ -232,7 +232,7 @@ fn find_and_replace_an_address() {
         h.state().output.last().unwrap().text,
         "2 replaced, 1 skipped where the result would be invalid"
     );
-    let project = &h.state().doc.as_ref().unwrap().project;
+    let project = h.state().doc.as_ref().unwrap().project();
     let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
     assert!(
         il.contains("OR   X0001.0") && il.contains("OUT  Y0003.7") && il.contains("LD   X0001.0"),
@@ -331,7 +331,7 @@ fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bool, 
         (
             d.path.clone(),
             d.dirty,
-            d.project.ladder.blocks[1].networks.len(),
+            d.project().ladder.blocks[1].networks.len(),
         )
     })
 }
@@ -439,7 +439,7 @@ fn an_untitled_project_is_saved_through_the_save_as_dialog_and_joins_the_recent_
     assert_eq!(h.state().settings.recent.first(), Some(&path));
     assert_eq!(
         ladder_engine::file::load(&path).unwrap(),
-        h.state().doc.as_ref().unwrap().project
+        h.state().doc.as_ref().unwrap().project().clone()
     );
 }
 
@@ -468,7 +468,7 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         1,
@@ -549,7 +549,7 @@ fn export_il_and_comments_from_the_file_menu() {
     h.run();
     h.run();
     let il = std::fs::read_to_string(&il_path).unwrap();
-    let project = h.state().doc.as_ref().unwrap().project.clone();
+    let project = h.state().doc.as_ref().unwrap().project().clone();
     assert_eq!(
         il,
         ladder_engine::il::print(&ladder_engine::compiler::compile(&project).program)
@@ -577,7 +577,7 @@ fn editor_on(il: &str, name: &str) -> (Harness<'static, LadderApp>, PathBuf) {
 
 /// The instructions the editor's project compiles to (directives kept, spaces folded).
 fn il_now(h: &Harness<'static, LadderApp>) -> Vec<String> {
-    let project = &h.state().doc.as_ref().unwrap().project;
+    let project = h.state().doc.as_ref().unwrap().project();
     ladder_engine::il::print(&ladder_engine::compiler::compile(project).program)
         .lines()
         .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
@@ -672,7 +672,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
             "END"
         ]
     );
-    let ids: Vec<u64> = h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+    let ids: Vec<u64> = h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
         .networks
         .iter()
         .map(|n| n.id.0)
@@ -687,7 +687,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::X);
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         1
@@ -719,7 +719,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::X);
     h.run();
     let row0 = |h: &Harness<'static, LadderApp>| {
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].rows[0]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0]
             .cells
             .clone()
     };
@@ -737,7 +737,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::V);
     h.run();
-    let rows = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0]
+    let rows = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0]
         .rows
         .clone();
     assert_eq!(rows.len(), 2);
@@ -759,7 +759,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     enter_operand(&mut h, "X2.2");
     let (a, z) = (cell_pos(&h, 0, 1, 1), cell_pos(&h, 0, 1, 3));
     drag(&mut h, a, z);
-    let net = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].clone();
+    let net = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].clone();
     for col in 1..=3 {
         assert_eq!(
             net.rows[1].cells[col],
@@ -769,7 +769,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     }
     let (a, z) = (cell_pos(&h, 0, 0, 4), cell_pos(&h, 0, 1, 4));
     drag(&mut h, a, z);
-    let net = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].clone();
+    let net = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].clone();
     assert!(net.link(0, 4), "a link at the left edge of column 5");
     assert_eq!(
         il_now(&h)[3..7],
@@ -791,13 +791,13 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
     h.get_by_label_contains("Insert network above").click();
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         3
     );
     assert!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[1].is_empty(),
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[1].is_empty(),
         "the new network is above the clicked one"
     );
     let p = cell_pos(&h, 2, 0, 0);
@@ -810,7 +810,7 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
         "the second network went"
     );
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         2
@@ -839,7 +839,7 @@ fn double_clicking_a_contact_edits_its_address() {
     enter_operand(&mut h, "X2.3");
     assert_eq!(il_now(&h)[3], "LD X0002.3");
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[0].rows[0].cells[1],
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0].cells[1],
         ladder_engine::model::Cell::Wire,
         "the wire right of it is untouched"
     );
@@ -862,7 +862,15 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.key_press(egui::Key::Enter);
     h.run();
     h.get_by_label("P0005 SPINDLE");
-    let blocks = h.state().doc.as_ref().unwrap().project.ladder.blocks.len();
+    let blocks = h
+        .state()
+        .doc
+        .as_ref()
+        .unwrap()
+        .project()
+        .ladder
+        .blocks
+        .len();
     assert_eq!(blocks, 4, "P0005 joins P0007");
     assert_eq!(
         h.state().view,
@@ -871,7 +879,7 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     );
     // A second one with the same number is refused with the reason.
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::NewSub);
+        .ask(ladder_studio::gui::command::Command::NewSub);
     h.run();
     h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Number name")
         .type_text("P5");
@@ -891,14 +899,14 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.run();
     // View calls.
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::ViewCalls(7));
+        .ask(ladder_studio::gui::command::Command::ViewCalls(7));
     h.run();
     assert_eq!(h.state().output.last().unwrap().text, "P0007: 2 calls");
     h.get_by_label_contains("LEVEL2 N0002 1:  CALLU P0007");
     h.get_by_label_contains("LEVEL2 N0001 1:  CALL P0007");
     // Rename.
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::RenameSub(2));
+        .ask(ladder_studio::gui::command::Command::RenameSub(5));
     h.run();
     assert_eq!(
         h.state().prompt.as_ref().unwrap().text,
@@ -912,7 +920,7 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.get_by_label("P0005 SPINDLE_MAIN");
     // Delete, and undo brings it back.
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::DeleteSub(2));
+        .ask(ladder_studio::gui::command::Command::DeleteSub(5));
     h.run();
     assert!(h.query_by_label("P0005 SPINDLE_MAIN").is_none());
     h.state_mut().undo();
@@ -938,8 +946,9 @@ fn typing_after_f1_completes_from_the_symbol_table() {
     h.key_press(egui::Key::Enter);
     h.run();
     let c = h.state().cursor;
-    let cell = h.state().doc.as_ref().unwrap().project.ladder.blocks[1].networks[c.network].rows[0]
-        .cells[0]
+    let cell = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[c.network].rows
+        [0]
+    .cells[0]
         .clone();
     assert_eq!(
         cell,
@@ -1012,7 +1021,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     use egui::{Key, Modifiers};
     let (mut h, _) = editor_on(TWO_NETWORKS, "stale.ldp");
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::NewSub);
+        .ask(ladder_studio::gui::command::Command::NewSub);
     h.run();
     h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Number name")
         .type_text("77 FOO");
@@ -1022,7 +1031,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     assert_eq!(h.state().view, View::Block(2));
     // The rename prompt is open on P0077 when its creation is undone.
     h.state_mut()
-        .tree_action(ladder_studio::gui::tree::TreeAction::RenameSub(2));
+        .ask(ladder_studio::gui::command::Command::RenameSub(77));
     h.run();
     h.state_mut().undo();
     h.run();
@@ -1037,7 +1046,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     assert!(err.is_some_and(|e| e.contains("no longer exists")));
     h.key_press(Key::Escape);
     h.run();
-    let before = h.state().doc.as_ref().unwrap().history.undo_len();
+    let before = h.state().doc.as_ref().unwrap().history().undo_len();
     for k in [Key::F5, Key::Delete] {
         h.key_press(k);
         h.run();
@@ -1048,7 +1057,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.get_by_label("Level 1").click();
     h.run();
     let l1 = |h: &Harness<'static, LadderApp>| {
-        h.state().doc.as_ref().unwrap().project.ladder.blocks[0]
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[0]
             .networks
             .len()
     };
@@ -1065,18 +1074,18 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.run();
     assert_eq!(l1(&h), 0, "no network was added for nothing");
     // A contact in the empty block is one undo step, network included.
-    let steps = h.state().doc.as_ref().unwrap().history.undo_len();
+    let steps = h.state().doc.as_ref().unwrap().history().undo_len();
     h.key_press(Key::F1);
     enter_operand(&mut h, "X2.1");
     assert_eq!(l1(&h), 1);
     assert_eq!(
-        h.state().doc.as_ref().unwrap().history.undo_len(),
+        h.state().doc.as_ref().unwrap().history().undo_len(),
         steps + 1
     );
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
     assert_eq!(l1(&h), 0, "one undo takes back the contact and its network");
-    assert!(h.state().doc.as_ref().unwrap().history.undo_len() >= before);
+    assert!(h.state().doc.as_ref().unwrap().history().undo_len() >= before);
 }
 
 #[test]
@@ -1142,4 +1151,93 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
     enter_operand(&mut h, "9999");
     let err = h.state().prompt.clone().unwrap().error.unwrap();
     assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
+}
+
+#[test]
+fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(
+        "LEVEL2\nNETWORK\nLD X0002.1\nAND X0002.2\nOUT Y0003.7\n",
+        "tooldel.ldp",
+    );
+    let p = cell_pos(&h, 0, 0, 0);
+    pointer(&mut h, p, egui::PointerButton::Primary);
+    h.key_press_modifiers(Modifiers::SHIFT, Key::ArrowRight);
+    h.run();
+    h.get_by_label("Delete").click();
+    h.run();
+    let cells = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0]
+        .cells
+        .clone();
+    assert_eq!(
+        cells[..2],
+        [
+            ladder_engine::model::Cell::Empty,
+            ladder_engine::model::Cell::Empty
+        ],
+        "both selected contacts went, as with the Delete key"
+    );
+    assert_eq!(h.state().doc.as_ref().unwrap().history().undo_len(), 1);
+    // On a new project's empty level 2 the button deletes nothing and adds no network.
+    h.state_mut()
+        .perform(ladder_studio::gui::files::Action::New);
+    h.run();
+    h.get_by_label("Delete").click();
+    h.run();
+    let doc = h.state().doc.as_ref().unwrap();
+    assert!(doc.project().ladder.blocks[1].networks.is_empty());
+    assert_eq!(doc.history().undo_len(), 0);
+    assert!(!doc.dirty);
+}
+
+#[test]
+fn undo_goes_to_the_view_and_the_place_it_changes() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(TWO_NETWORKS, "undoview.ldp");
+    // A change in a table, then the ladder view and a change in its second network.
+    let mut tables = h
+        .state()
+        .doc
+        .as_ref()
+        .unwrap()
+        .project()
+        .symbol_tables
+        .clone();
+    tables[0].rows.push(ladder_engine::model::Symbol {
+        name: "START".into(),
+        address: ladder_engine::Address::parse("X0002.1").unwrap(),
+        comments: Default::default(),
+    });
+    h.state_mut()
+        .edit_table(ladder_engine::model::TableEdit::Symbols(tables));
+    h.state_mut().view = View::Messages;
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(
+        h.state().view,
+        View::Symbols(0),
+        "the undone rename is shown"
+    );
+    assert!(
+        h.state().doc.as_ref().unwrap().project().symbol_tables[0]
+            .rows
+            .is_empty()
+    );
+    h.state_mut().view = View::Block(1);
+    h.state_mut().cursor.network = 1;
+    h.run();
+    h.key_press(Key::Delete);
+    h.run();
+    h.state_mut().cursor.network = 0;
+    h.state_mut().view = View::Data;
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(h.state().view, View::Block(1));
+    assert_eq!(
+        h.state().cursor.network,
+        1,
+        "the cursor is on the contact brought back"
+    );
 }

@@ -1,8 +1,14 @@
 //! An open project: the model, where it lives, its undo history and whether it changed.
+//!
+//! The document is the one door into the project: [`Document::apply`] is the only way to
+//! change it. It refuses every change of a read-only (recovered) project, drops changes that
+//! change nothing, records the inverse for undo (steps of one gesture inside
+//! [`Document::begin_group`] … [`Document::end_group`] become one undo step) and counts the
+//! change, so views that cache what they derive from the project know to refresh.
 
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::file;
-use ladder_engine::model::{History, Project};
+use ladder_engine::model::{Change, EditError, History, Project};
 use std::path::{Path, PathBuf};
 
 /// The bundled sample, opened on first start.
@@ -10,14 +16,23 @@ pub static SAMPLE: &[u8] = include_bytes!("../../../projects/lathe-988ta.ldp");
 
 static NEXT_SERIAL: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
 
+/// Why a change was not applied.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refused {
+    /// The project was recovered from a damaged file and is read-only.
+    ReadOnly,
+    /// The engine refused the edit (the place does not exist, the wrong column…).
+    Edit(EditError),
+}
+
 /// An open project.
 pub struct Document {
-    /// The model.
-    pub project: Project,
+    project: Project,
+    history: History,
+    /// An undo group is open: changes from this undo depth on become one step.
+    group: Option<usize>,
     /// Where it is saved; `None` for the sample and new projects.
     pub path: Option<PathBuf>,
-    /// Undo and redo.
-    pub history: History,
     /// Changed since the last save.
     pub dirty: bool,
     /// The last compile, if any.
@@ -37,8 +52,9 @@ impl Document {
     pub fn new(project: Project, path: Option<PathBuf>) -> Document {
         Document {
             project,
-            path,
             history: History::new(200),
+            group: None,
+            path,
             dirty: false,
             compiled: None,
             generation: 0,
@@ -48,8 +64,76 @@ impl Document {
         }
     }
 
+    /// The project, to read.
+    pub fn project(&self) -> &Project {
+        &self.project
+    }
+
+    /// The undo history, to read (what can be undone or redone).
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    /// Applies a change: `Ok(true)` when the project changed, `Ok(false)` when the change
+    /// changed nothing (no undo step, not unsaved).
+    pub fn apply(&mut self, change: impl Into<Change>) -> Result<bool, Refused> {
+        if self.read_only {
+            return Err(Refused::ReadOnly);
+        }
+        let inverse = self
+            .project
+            .apply_change(change.into())
+            .map_err(Refused::Edit)?;
+        if self.project.is_unchanged_by(&inverse) {
+            return Ok(false);
+        }
+        match self.group {
+            Some(depth) if self.history.undo_len() > depth => self.history.record_merged(inverse),
+            _ => self.history.record(inverse),
+        }
+        self.changed();
+        Ok(true)
+    }
+
+    /// Opens an undo group: every change until [`Document::end_group`] is one undo step (a
+    /// network added to an empty block for the contact placed in it). Groups do not nest: an
+    /// inner begin is part of the outer group.
+    pub fn begin_group(&mut self) {
+        if self.group.is_none() {
+            self.group = Some(self.history.undo_len());
+        }
+    }
+
+    /// Closes the undo group.
+    pub fn end_group(&mut self) {
+        self.group = None;
+    }
+
+    /// Takes back the last step; returns the step that a redo would do again (it names the
+    /// place that changed), `None` when there was nothing to undo.
+    pub fn undo(&mut self) -> Option<&Change> {
+        self.group = None;
+        if self.history.undo(&mut self.project) {
+            self.changed();
+            self.history.last_redo()
+        } else {
+            None
+        }
+    }
+
+    /// Does the last undone step again; returns it inverted, as [`Document::undo`] does.
+    pub fn redo(&mut self) -> Option<&Change> {
+        self.group = None;
+        if self.history.redo(&mut self.project) {
+            self.changed();
+            self.history.last_undo()
+        } else {
+            None
+        }
+    }
+
     /// Notes a change of the project: unsaved, not compiled, derived views stale.
-    pub fn changed(&mut self) {
+    fn changed(&mut self) {
         self.dirty = true;
         self.compiled = None;
         self.generation += 1;
@@ -75,6 +159,16 @@ impl Document {
         Ok(())
     }
 
+    /// Saves under a new name; the project then lives there and is no longer read-only.
+    pub fn save_as(&mut self, path: &Path) -> Result<(), file::FileError> {
+        file::save(&self.project, path)?;
+        self.path = Some(path.to_path_buf());
+        self.dirty = false;
+        self.read_only = false;
+        self.recovered_from = None;
+        Ok(())
+    }
+
     /// Compiles and keeps the result.
     pub fn compile(&mut self) -> &Compiled {
         self.compiled.insert(compile(&self.project))
@@ -86,5 +180,67 @@ impl Document {
             .as_ref()
             .and_then(|p| p.file_name())
             .map(|n| n.to_string_lossy().into_owned())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use ladder_engine::model::{Cell, CellRef, Edit, TableEdit};
+
+    fn at(network: usize, col: usize) -> CellRef {
+        CellRef {
+            block: 1,
+            network,
+            row: 0,
+            col,
+        }
+    }
+
+    #[test]
+    fn a_group_is_one_undo_step_and_a_change_of_nothing_is_none() {
+        let mut d = Document::new(Project::default(), None);
+        let insert = d.project().ladder.plan_insert_network(1, 0);
+        d.begin_group();
+        assert_eq!(d.apply(insert), Ok(true));
+        assert_eq!(
+            d.apply(Edit::SetCell {
+                at: at(0, 0),
+                cell: Cell::Wire
+            }),
+            Ok(true)
+        );
+        d.end_group();
+        assert_eq!(d.history().undo_len(), 1, "one gesture, one step");
+        let generation = d.generation;
+        let same = Edit::SetCell {
+            at: at(0, 0),
+            cell: Cell::Wire,
+        };
+        assert_eq!(d.apply(same), Ok(false));
+        assert_eq!(
+            d.generation, generation,
+            "nothing changed, nothing to refresh"
+        );
+        let tables = TableEdit::MCodes(d.project().m_codes.clone());
+        assert_eq!(d.apply(tables), Ok(false));
+        assert!(d.undo().is_some());
+        assert!(d.project().ladder.blocks[1].networks.is_empty());
+        assert!(d.undo().is_none());
+    }
+
+    #[test]
+    fn a_read_only_document_refuses_every_change() {
+        let mut d = Document::new(Project::default(), None);
+        d.read_only = true;
+        let insert = d.project().ladder.plan_insert_network(1, 0);
+        assert_eq!(d.apply(insert), Err(Refused::ReadOnly));
+        assert!(!d.dirty);
+        let bad = Edit::SetCell {
+            at: at(5, 0),
+            cell: Cell::Wire,
+        };
+        d.read_only = false;
+        assert!(matches!(d.apply(bad), Err(Refused::Edit(_))));
     }
 }

@@ -2,13 +2,12 @@
 //! the engine's edit operations and the document's history, so undo is exact.
 
 use super::i18n::Msg;
-use super::settings::DisplayMode;
 use super::tree::View;
 use super::{LadderApp, OutputLine};
 use egui::{Key, Modifiers};
 use ladder_engine::Op;
 use ladder_engine::find::{self, Query};
-use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Operand, TableEdit};
+use ladder_engine::model::{Cell, Change, Edit, EditError, Ladder, Operand, TableEdit};
 
 /// What the operand prompt will place.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,37 +58,7 @@ pub struct Prompt {
     pub error: Option<String>,
 }
 
-/// Whether an applied edit's inverse would change nothing, i.e. the edit changed nothing.
-fn is_noop(ladder: &Ladder, inverse: &Edit) -> bool {
-    let net = |at: &CellRef| {
-        ladder
-            .blocks
-            .get(at.block)
-            .and_then(|b| b.networks.get(at.network))
-    };
-    match inverse {
-        Edit::Batch(edits) => edits.iter().all(|e| is_noop(ladder, e)),
-        Edit::SetCell { at, cell } => net(at).and_then(|n| n.cell(at.row, at.col)) == Some(cell),
-        Edit::SetLink { at, on } => net(at).is_some_and(|n| n.link(at.row, at.col) == *on),
-        Edit::SetNetworkText {
-            block,
-            network,
-            title,
-            comment,
-        } => ladder
-            .blocks
-            .get(*block)
-            .and_then(|b| b.networks.get(*network))
-            .is_some_and(|n| n.title == *title && n.comment == *comment),
-        _ => false,
-    }
-}
-
-/// A basic-toolbar button: its name, its keys and what it does.
-type ToolbarAction = (Msg, &'static str, fn(&mut LadderApp));
-
-/// The cell cursor (UI state, never saved).
-pub type Cursor = CellRef;
+pub use super::place::Cursor;
 
 impl LadderApp {
     fn block(&self) -> Option<usize> {
@@ -99,37 +68,23 @@ impl LadderApp {
         }
     }
 
-    /// Applies an edit through the history; a refusal goes to the output window.
-    pub fn edit(&mut self, f: impl FnOnce(&mut Ladder) -> Result<Edit, EditError>) -> bool {
-        let Some(doc) = self.doc.as_mut() else {
-            return false;
-        };
-        if doc.read_only {
-            let text = Msg::ReadOnly.text(self.settings.lang).to_string();
-            self.output.push(OutputLine {
-                text,
-                error: true,
-                target: None,
-            });
-            return false;
-        }
-        match f(&mut doc.project.ladder) {
-            Ok(inverse) => {
-                if is_noop(&doc.project.ladder, &inverse) {
-                    // Nothing changed (Delete on an empty cell): no undo step, not dirty.
-                    return true;
-                }
-                if std::mem::take(&mut self.merge_next) {
-                    doc.history.record_merged(inverse);
-                } else {
-                    doc.history.record(inverse);
-                }
-                doc.changed();
-                true
-            }
-            Err(e) => {
+    /// Applies a change through the document's door; a refusal is returned, in the UI's
+    /// language, for the caller to show once (the prompt shows it, a command reports it).
+    pub fn try_edit(&mut self, change: impl Into<Change>) -> Result<bool, String> {
+        let lang = self.settings.lang;
+        let doc = self.doc.as_mut().ok_or(Msg::NoProject.text(lang))?;
+        doc.apply(change)
+            .map_err(|e| super::errors::refused(&e, lang))
+    }
+
+    /// Applies a change from a command; a refusal goes to the output window. True when the
+    /// change was applied (or changed nothing).
+    pub fn edit(&mut self, change: impl Into<Change>) -> bool {
+        match self.try_edit(change) {
+            Ok(_) => true,
+            Err(text) => {
                 self.output.push(OutputLine {
-                    text: e.to_string(),
+                    text,
                     error: true,
                     target: None,
                 });
@@ -138,14 +93,31 @@ impl LadderApp {
         }
     }
 
+    /// The ladder, to read.
+    pub fn ladder(&self) -> Option<&Ladder> {
+        self.doc.as_ref().map(|d| &d.project().ladder)
+    }
+
+    /// Runs `f` as one undo step: everything it changes is undone together.
+    pub fn grouped<R>(&mut self, f: impl FnOnce(&mut LadderApp) -> R) -> R {
+        if let Some(d) = self.doc.as_mut() {
+            d.begin_group();
+        }
+        let r = f(self);
+        if let Some(d) = self.doc.as_mut() {
+            d.end_group();
+        }
+        r
+    }
+
     fn width(&self) -> usize {
-        self.doc.as_ref().map_or(0, |d| d.project.ladder.width)
+        self.doc.as_ref().map_or(0, |d| d.project().ladder.width)
     }
 
     fn rows_of(&self, block: usize, network: usize) -> usize {
         self.doc
             .as_ref()
-            .and_then(|d| d.project.ladder.blocks.get(block))
+            .and_then(|d| d.project().ladder.blocks.get(block))
             .and_then(|b| b.networks.get(network))
             .map_or(0, |n| n.rows.len())
     }
@@ -153,18 +125,19 @@ impl LadderApp {
     fn networks_of(&self, block: usize) -> usize {
         self.doc
             .as_ref()
-            .and_then(|d| d.project.ladder.blocks.get(block))
+            .and_then(|d| d.project().ladder.blocks.get(block))
             .map_or(0, |b| b.networks.len())
     }
 
     /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
-    /// An empty block gets a network first; that insertion is folded into the undo step of
-    /// the gesture that needed it. `None` when there is no cell to edit (no project, not a
+    /// An empty block gets a network first; the gesture that needed it runs in an undo group
+    /// (every command does), so one undo takes back both. `None` when there is no cell to edit (no project, not a
     /// ladder view, a read-only project with an empty block).
     pub fn ensure_network(&mut self) -> Option<Cursor> {
         let block = self.block()?;
-        if self.networks_of(block) == 0 && self.edit(|l| l.insert_network(block, 0)) {
-            self.merge_next = true;
+        if self.networks_of(block) == 0 {
+            let insert = self.ladder()?.plan_insert_network(block, 0);
+            self.edit(insert);
         }
         let networks = self.networks_of(block);
         if networks == 0 {
@@ -179,23 +152,6 @@ impl LadderApp {
         Some(c)
     }
 
-    /// The wires that join a new coil or box at `at` (output column) to the last element
-    /// left of it.
-    pub fn wires_to_output(ladder: &Ladder, at: Cursor) -> Vec<Edit> {
-        // A coil or box is joined to what stands left of it by wire, as GSKLadder draws it.
-        let row = &ladder.blocks[at.block].networks[at.network].rows[at.row];
-        let last = (0..ladder.width)
-            .rev()
-            .find(|c| row.cells[*c] != Cell::Empty);
-        let from = last.map_or(ladder.width, |c| c + 1);
-        (from..ladder.width)
-            .map(|col| Edit::SetCell {
-                at: Cursor { col, ..at },
-                cell: Cell::Wire,
-            })
-            .collect()
-    }
-
     /// Ctrl+F: every match goes to the output window (a click shows it) and the cursor goes
     /// to the next match; Ctrl+F, Enter again (the prompt keeps the text) goes on to the one
     /// after, as GSKLadder's "find next".
@@ -206,7 +162,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return Ok(());
         };
-        let project = &doc.project;
+        let project = doc.project();
         let mut hits = find::find(project, &query);
         hits.sort_unstable();
         let mut lines: Vec<OutputLine> = hits
@@ -263,12 +219,12 @@ impl LadderApp {
             let Some(doc) = self.doc.as_ref() else {
                 return Ok(());
             };
-            let rows = self.tables.rows_in(sheet, &doc.project);
+            let rows = self.tables.rows_in(sheet, doc.project());
             let row = text
                 .trim()
                 .parse::<usize>()
                 .map_err(|_| Msg::GoToRowUsage.text(lang).to_string())?;
-            if row == 0 || !self.tables.go_to_row(sheet, row - 1, &doc.project) {
+            if row == 0 || !self.tables.go_to_row(sheet, row - 1, doc.project()) {
                 return Err(format!("{}: 1–{rows}", Msg::NoSuchTableRow.text(lang)));
             }
             return Ok(());
@@ -318,9 +274,9 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return Ok(());
         };
-        let (edit, done, skipped) = find::replace(&doc.project, &query, &to);
+        let (edit, done, skipped) = find::replace(doc.project(), &query, &to);
         if done > 0 {
-            self.edit(|l| l.apply(edit));
+            self.try_edit(edit)?;
         }
         self.output.push(OutputLine {
             text: format!(
@@ -375,12 +331,13 @@ impl LadderApp {
                     col: at.col.min(width - 1),
                     ..at
                 };
-                let ok = if matches!(kind, PlaceKind::Parallel { .. }) {
-                    self.edit(|l| l.parallel_contact(at, cell))
+                let edit = if matches!(kind, PlaceKind::Parallel { .. }) {
+                    Ladder::plan_parallel_contact(at, cell)
+                        .map_err(|e| super::errors::edit_error(&e, self.settings.lang))?
                 } else {
-                    self.edit(|l| l.place(at, cell))
+                    Edit::SetCell { at, cell }
                 };
-                if ok {
+                if self.try_edit(edit)? {
                     self.cursor = Cursor {
                         col: at.col + 1,
                         ..at
@@ -414,12 +371,14 @@ impl LadderApp {
                     }
                 };
                 let at = Cursor { col: width, ..at };
-                let ok = self.edit(|l| {
-                    let mut edits = LadderApp::wires_to_output(l, at);
-                    edits.push(Edit::SetCell { at, cell });
-                    l.apply(Edit::Batch(edits))
-                });
-                if ok {
+                let edit = self
+                    .ladder()
+                    .map(|l| l.plan_output(at, cell))
+                    .transpose()
+                    .map_err(|e| super::errors::edit_error(&e, self.settings.lang))?;
+                if let Some(edit) = edit
+                    && self.try_edit(edit)?
+                {
                     self.cursor = at;
                 }
             }
@@ -428,7 +387,7 @@ impl LadderApp {
     }
 
     /// Shift+arrow: the selection grows from where it started to the moved cursor.
-    fn extend_by(&mut self, dr: i32, dc: i32) {
+    pub(super) fn extend_by(&mut self, dr: i32, dc: i32) {
         let selection = self.selection;
         let from = self.cursor;
         self.move_cursor(dr, dc);
@@ -440,7 +399,7 @@ impl LadderApp {
         self.extend_selection(to);
     }
 
-    fn move_cursor(&mut self, dr: i32, dc: i32) {
+    pub(super) fn move_cursor(&mut self, dr: i32, dc: i32) {
         let Some(block) = self.block() else { return };
         let mut c = self.cursor;
         c.block = block;
@@ -462,215 +421,6 @@ impl LadderApp {
         self.jump_to = Some(c.network);
     }
 
-    /// The editing keys, when no text field has the keyboard.
-    pub fn keys(&mut self, ctx: &egui::Context) {
-        if self.prompt.is_some()
-            || self.function_dialog.is_some()
-            || self.question.is_some()
-            || ctx.egui_wants_keyboard_input()
-        {
-            return;
-        }
-        let key = |m: Modifiers, k: Key| ctx.input_mut(|i| i.consume_key(m, k));
-        let open = |kind| {
-            Some(Prompt {
-                kind,
-                text: String::new(),
-                error: None,
-            })
-        };
-        // The most specific combination first: Shift+F1 before F1.
-        if key(Modifiers::SHIFT, Key::F1) {
-            self.prompt = open(PlaceKind::Contact { negated: true });
-        } else if key(Modifiers::NONE, Key::F1) {
-            self.prompt = open(PlaceKind::Contact { negated: false });
-        } else if key(Modifiers::SHIFT, Key::F2) {
-            self.prompt = open(PlaceKind::Coil { negated: true });
-        } else if key(Modifiers::NONE, Key::F2) {
-            self.prompt = open(PlaceKind::Coil { negated: false });
-        } else if key(Modifiers::NONE, Key::F3) {
-            self.open_function_dialog();
-        } else if key(Modifiers::SHIFT, Key::F6) {
-            self.prompt = open(PlaceKind::Parallel { negated: true });
-        } else if key(Modifiers::NONE, Key::F6) {
-            self.prompt = open(PlaceKind::Parallel { negated: false });
-        } else if key(Modifiers::NONE, Key::F4) {
-            self.wire();
-        } else if key(Modifiers::NONE, Key::F5) {
-            self.link();
-        } else if key(Modifiers::NONE, Key::Delete) {
-            self.run_command(super::pointer::Command::Delete);
-        } else if key(Modifiers::COMMAND, Key::X)
-            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Cut)))
-        {
-            self.cut();
-            self.copy_to_system(ctx);
-        } else if key(Modifiers::COMMAND, Key::C)
-            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Copy)))
-        {
-            self.copy();
-            self.copy_to_system(ctx);
-        } else if key(Modifiers::COMMAND, Key::V)
-            || ctx.input(|i| i.events.iter().any(|e| matches!(e, egui::Event::Paste(_))))
-        {
-            self.paste();
-        } else if key(Modifiers::COMMAND, Key::E) {
-            self.copy_row();
-            self.copy_to_system(ctx);
-        } else if key(Modifiers::NONE, Key::Escape) {
-            self.selection = None;
-        } else if key(Modifiers::COMMAND, Key::T) {
-            self.insert_row(false);
-        } else if key(Modifiers::COMMAND, Key::R) {
-            self.insert_row(true);
-        } else if key(Modifiers::COMMAND, Key::U) {
-            self.insert_network(false);
-        } else if key(Modifiers::COMMAND, Key::I) {
-            self.insert_network(true);
-        } else if key(Modifiers::COMMAND, Key::F) {
-            self.prompt = Some(Prompt {
-                kind: PlaceKind::Find,
-                text: self.last_find.clone(),
-                error: None,
-            });
-        } else if key(Modifiers::COMMAND, Key::H) {
-            self.prompt = open(PlaceKind::Replace);
-        } else if key(Modifiers::COMMAND, Key::G) {
-            self.prompt = open(PlaceKind::GoTo);
-        } else if key(Modifiers::COMMAND, Key::Z) {
-            self.undo();
-        } else if key(Modifiers::COMMAND, Key::Y) {
-            self.redo();
-        } else if key(Modifiers::COMMAND, Key::S) {
-            self.save();
-        } else if key(Modifiers::COMMAND, Key::N) {
-            self.request(super::files::Action::New);
-        } else if key(Modifiers::COMMAND, Key::O) {
-            self.request(super::files::Action::OpenDialog);
-        } else if key(Modifiers::SHIFT, Key::ArrowLeft) {
-            self.extend_by(0, -1);
-        } else if key(Modifiers::SHIFT, Key::ArrowRight) {
-            self.extend_by(0, 1);
-        } else if key(Modifiers::SHIFT, Key::ArrowUp) {
-            self.extend_by(-1, 0);
-        } else if key(Modifiers::SHIFT, Key::ArrowDown) {
-            self.extend_by(1, 0);
-        } else if key(Modifiers::NONE, Key::ArrowLeft) {
-            self.move_cursor(0, -1);
-        } else if key(Modifiers::NONE, Key::ArrowRight) {
-            self.move_cursor(0, 1);
-        } else if key(Modifiers::NONE, Key::ArrowUp) {
-            self.move_cursor(-1, 0);
-        } else if key(Modifiers::NONE, Key::ArrowDown) {
-            self.move_cursor(1, 0);
-        }
-    }
-
-    /// The ladder edit toolbar: each button does what its key does, at the cursor.
-    pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        // The basic toolbar and the ladder view toolbar (manual §3.3).
-        ui.horizontal(|ui| {
-            let basic: [ToolbarAction; 10] = [
-                (Msg::New, "Ctrl+N", |a| a.request(super::files::Action::New)),
-                (Msg::Open, "Ctrl+O", |a| {
-                    a.request(super::files::Action::OpenDialog)
-                }),
-                (Msg::Save, "Ctrl+S", LadderApp::save),
-                (Msg::Cut, "Ctrl+X", LadderApp::cut),
-                (Msg::Copy, "Ctrl+C", |a| {
-                    a.copy();
-                }),
-                (Msg::Paste, "Ctrl+V", LadderApp::paste),
-                (Msg::Undo, "Ctrl+Z", LadderApp::undo),
-                (Msg::Redo, "Ctrl+Y", LadderApp::redo),
-                (Msg::GoTo, "Ctrl+G", |a| {
-                    a.prompt = Some(Prompt {
-                        kind: PlaceKind::GoTo,
-                        text: String::new(),
-                        error: None,
-                    })
-                }),
-                (Msg::Compile, "F9", LadderApp::compile),
-            ];
-            for (msg, keys, action) in basic {
-                if ui.button(msg.text(lang)).on_hover_text(keys).clicked() {
-                    action(self);
-                }
-            }
-            ui.separator();
-            egui::ComboBox::new("display", Msg::DisplayModeLabel.text(lang))
-                .selected_text(match self.settings.display {
-                    DisplayMode::Address => Msg::DisplayAddress.text(lang),
-                    DisplayMode::Symbol => Msg::DisplaySymbol.text(lang),
-                    DisplayMode::Both => Msg::DisplayBoth.text(lang),
-                })
-                .show_ui(ui, |ui| {
-                    for (mode, msg) in [
-                        (DisplayMode::Address, Msg::DisplayAddress),
-                        (DisplayMode::Symbol, Msg::DisplaySymbol),
-                        (DisplayMode::Both, Msg::DisplayBoth),
-                    ] {
-                        ui.selectable_value(&mut self.settings.display, mode, msg.text(lang));
-                    }
-                });
-            egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
-                .selected_text(format!("{}%", self.settings.zoom))
-                .show_ui(ui, |ui| {
-                    for z in super::settings::ZOOMS {
-                        ui.selectable_value(&mut self.settings.zoom, z, format!("{z}%"));
-                    }
-                });
-        });
-        let open = |kind| {
-            Some(Prompt {
-                kind,
-                text: String::new(),
-                error: None,
-            })
-        };
-        ui.horizontal(|ui| {
-            let tools = [
-                (Msg::ToolContact, "─┤ ├─  F1"),
-                (Msg::ToolContactNc, "─┤/├─"),
-                (Msg::ToolCoil, "─( )─  F2"),
-                (Msg::ToolCoilN, "─(/)─"),
-                (Msg::ToolFunction, "[ ]  F3"),
-                (Msg::ToolWire, "──  F4"),
-                (Msg::ToolLink, "│  F5"),
-                (Msg::ToolParallel, "┤├  F6"),
-                (Msg::ToolDelete, "Del"),
-                (Msg::ToolRowBelow, "Ctrl+R"),
-                (Msg::ToolNetworkBelow, "Ctrl+I"),
-            ];
-            ui.toggle_value(&mut self.pen, Msg::PenShort.text(lang))
-                .on_hover_text(Msg::Pen.text(lang));
-            for (msg, keys) in tools {
-                let button = ui.button(msg.text(lang)).on_hover_text(keys);
-                if !button.clicked() {
-                    continue;
-                }
-                match msg {
-                    Msg::ToolContact => self.prompt = open(PlaceKind::Contact { negated: false }),
-                    Msg::ToolContactNc => self.prompt = open(PlaceKind::Contact { negated: true }),
-                    Msg::ToolCoil => self.prompt = open(PlaceKind::Coil { negated: false }),
-                    Msg::ToolCoilN => self.prompt = open(PlaceKind::Coil { negated: true }),
-                    Msg::ToolFunction => self.open_function_dialog(),
-                    Msg::ToolParallel => self.prompt = open(PlaceKind::Parallel { negated: false }),
-                    Msg::ToolWire => self.wire(),
-                    Msg::ToolLink => self.link(),
-                    Msg::ToolDelete => {
-                        if let Some(at) = self.ensure_network() {
-                            self.edit(|l| l.delete_element(at));
-                        }
-                    }
-                    Msg::ToolRowBelow => self.insert_row(true),
-                    _ => self.insert_network(true),
-                }
-            }
-        });
-    }
-
     /// F4: a wire at the cursor.
     pub fn wire(&mut self) {
         if let Some(at) = self.ensure_network() {
@@ -678,7 +428,10 @@ impl LadderApp {
                 col: at.col.min(self.width() - 1),
                 ..at
             };
-            if self.edit(|l| l.place(at, Cell::Wire)) {
+            if self.edit(Edit::SetCell {
+                at,
+                cell: Cell::Wire,
+            }) {
                 self.cursor = Cursor {
                     col: at.col + 1,
                     ..at
@@ -693,30 +446,27 @@ impl LadderApp {
         let Some(at) = self.ensure_network() else {
             return;
         };
-        let on = !self.doc.as_ref().is_some_and(|d| {
-            d.project.ladder.blocks[at.block].networks[at.network].link(at.row, at.col)
-        });
-        let rows = self.rows_of(at.block, at.network);
-        self.edit(|l| {
-            let mut edits = Vec::new();
-            if at.row + 1 >= rows {
-                edits.push(Edit::InsertRow {
-                    block: at.block,
-                    network: at.network,
-                    row: at.row + 1,
-                    content: ladder_engine::model::Row::empty(l.width),
-                });
+        let planned = self.ladder().map(|l| l.plan_toggle_link(at));
+        match planned {
+            Some(Ok(edit)) => {
+                self.edit(edit);
             }
-            edits.push(Edit::SetLink { at, on });
-            l.apply(Edit::Batch(edits))
-        });
+            Some(Err(e)) => self.report_edit_error(&e),
+            None => {}
+        }
     }
 
     /// Ctrl+T (above) and Ctrl+R (below the cursor): a new empty row; the cursor goes to it.
     pub fn insert_row(&mut self, below: bool) {
         if let Some(at) = self.ensure_network() {
             let row = at.row + usize::from(below);
-            if self.edit(|l| l.insert_row(at.block, at.network, row)) {
+            let Some(insert) = self
+                .ladder()
+                .map(|l| l.plan_insert_row(at.block, at.network, row))
+            else {
+                return;
+            };
+            if self.edit(insert) {
                 self.cursor = Cursor { row, ..at };
             }
         }
@@ -731,7 +481,10 @@ impl LadderApp {
         } else {
             (self.cursor.network + usize::from(below)).min(n)
         };
-        if self.edit(|l| l.insert_network(block, index)) {
+        let Some(insert) = self.ladder().map(|l| l.plan_insert_network(block, index)) else {
+            return;
+        };
+        if self.edit(insert) {
             self.cursor = Cursor {
                 block,
                 network: index,
@@ -742,42 +495,50 @@ impl LadderApp {
         }
     }
 
-    /// Replaces a table through the history (table editors call this for every change).
+    /// Replaces a table through the document's door (table editors call this for every
+    /// change).
     pub fn edit_table(&mut self, edit: TableEdit) {
-        if self.doc.as_ref().is_some_and(|d| d.read_only) {
-            let text = Msg::ReadOnly.text(self.settings.lang).to_string();
-            self.output.push(OutputLine {
-                text,
-                error: true,
-                target: None,
-            });
-            return;
-        }
-        if let Some(doc) = self.doc.as_mut() {
-            let inverse = doc.project.apply_table(edit);
-            doc.history.record(inverse);
-            doc.changed();
-        }
+        self.edit(edit);
     }
 
-    /// Ctrl+Z.
+    /// Reports an edit the engine refused, in the output window.
+    pub fn report_edit_error(&mut self, e: &EditError) {
+        let text = super::errors::edit_error(e, self.settings.lang);
+        self.output.push(OutputLine {
+            text,
+            error: true,
+            target: None,
+        });
+    }
+
+    /// Ctrl+Z: a draft being typed in a table goes first, as a text field would; else the last
+    /// step of the project is taken back and shown where it changed.
     pub fn undo(&mut self) {
-        if let Some(doc) = self.doc.as_mut()
-            && doc.history.undo(&mut doc.project)
-        {
-            doc.changed();
-        }
-        self.clamp_ui_state();
+        let Some(doc) = self.doc.as_mut() else { return };
+        let place = doc.undo().cloned();
+        let place = place.and_then(|c| super::place::place_of(&c, self.doc.as_ref()?.project()));
+        self.after_history(place);
     }
 
-    /// Ctrl+Y.
+    /// Ctrl+Y: the last undone step again, shown where it changed.
     pub fn redo(&mut self) {
-        if let Some(doc) = self.doc.as_mut()
-            && doc.history.redo(&mut doc.project)
-        {
-            doc.changed();
-        }
+        let Some(doc) = self.doc.as_mut() else { return };
+        let place = doc.redo().cloned();
+        let place = place.and_then(|c| super::place::place_of(&c, self.doc.as_ref()?.project()));
+        self.after_history(place);
+    }
+
+    fn after_history(&mut self, place: Option<super::place::Place>) {
         self.clamp_ui_state();
+        match place {
+            Some(super::place::Place::Cell(at)) => self.jump(at),
+            Some(super::place::Place::Block(b)) => {
+                self.view = View::Block(b);
+                self.clamp_ui_state();
+            }
+            Some(super::place::Place::View(v)) => self.view = v,
+            None => {}
+        }
     }
 
     /// The operand prompt: a text field; Enter places, Escape cancels.
@@ -824,7 +585,7 @@ impl LadderApp {
                 close = true;
             } else if ui.input(|i| i.key_pressed(Key::Enter)) {
                 let text = prompt.text.trim().to_string();
-                match self.place(prompt.kind, &text) {
+                match self.grouped(|app| app.place(prompt.kind, &text)) {
                     Ok(()) => close = true,
                     Err(e) => prompt.error = Some(e),
                 }
@@ -853,7 +614,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref().filter(|_| !typed.is_empty()) else {
             return Vec::new();
         };
-        let project = &doc.project;
+        let project = doc.project();
         let lang = self.settings.lang.code();
         let lower = typed.to_lowercase();
         let shown = |s: &ladder_engine::model::Symbol| {

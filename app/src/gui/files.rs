@@ -348,7 +348,7 @@ impl LadderApp {
         self.output.retain(|l| l.target.is_none());
     }
 
-    fn start_dialog(&mut self, kind: DialogKind) {
+    pub(super) fn start_dialog(&mut self, kind: DialogKind) {
         let doc = self.doc.as_ref();
         let stem = doc
             .and_then(|d| d.path.as_ref().or(d.recovered_from.as_ref()))
@@ -495,7 +495,7 @@ impl LadderApp {
             .recovery_dir
             .as_ref()
             .map(|d| recovery_path(d, doc.path.as_deref()));
-        match file::save(&doc.project, path) {
+        match file::save(doc.project(), path) {
             Ok(()) => {
                 doc.path = Some(path.to_path_buf());
                 doc.dirty = false;
@@ -547,7 +547,7 @@ impl LadderApp {
     pub fn export_comments(&mut self, path: &Path) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_ref() else { return };
-        let text = ladder_engine::comments::export(&doc.project, None);
+        let text = ladder_engine::comments::export(doc.project(), None);
         match write_atomic(path, &text) {
             Ok(()) => self.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
@@ -572,17 +572,12 @@ impl LadderApp {
                 return;
             }
         };
-        let mut project = doc.project.clone();
+        let mut project = doc.project().clone();
         match ladder_engine::comments::import(&mut project, &text, None) {
-            Ok(n) => {
-                let inverse = doc
-                    .project
-                    .apply_change(Change::Whole(Box::new(project)))
-                    .expect("replacing the whole project cannot be refused");
-                doc.history.record(inverse);
-                doc.changed();
-                self.say(format!("{n} {}", Msg::RowsApplied.text(lang)), false);
-            }
+            Ok(n) => match doc.apply(Change::Whole(Box::new(project))) {
+                Ok(_) => self.say(format!("{n} {}", Msg::RowsApplied.text(lang)), false),
+                Err(e) => self.say(super::errors::refused(&e, lang), true),
+            },
             Err(e) => self.say(format!("{}: {e}", path.display()), true),
         }
     }
@@ -599,7 +594,7 @@ impl LadderApp {
         let copy = recovery_path(dir, doc.path.as_deref());
         let written = std::fs::create_dir_all(dir)
             .map_err(|e| e.to_string())
-            .and_then(|()| file::save(&doc.project, &copy).map_err(|e| e.to_string()))
+            .and_then(|()| file::save(doc.project(), &copy).map_err(|e| e.to_string()))
             .and_then(|()| {
                 let origin = doc
                     .path
@@ -741,72 +736,6 @@ impl LadderApp {
             (Question::Restore(copy), 0) => self.restore(&copy),
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
             _ => {}
-        }
-    }
-
-    /// File menu entries.
-    pub fn file_menu_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        let item = |ui: &mut egui::Ui, m: Msg, keys: &str| {
-            let b = egui::Button::new(t(m));
-            let b = if keys.is_empty() {
-                b
-            } else {
-                b.shortcut_text(keys)
-            };
-            ui.add(b).clicked()
-        };
-        if item(ui, Msg::New, "Ctrl+N") {
-            self.request(Action::New);
-            ui.close();
-        }
-        if item(ui, Msg::Open, "Ctrl+O") {
-            self.request(Action::OpenDialog);
-            ui.close();
-        }
-        let has_doc = self.doc.is_some();
-        ui.add_enabled_ui(has_doc, |ui| {
-            if item(ui, Msg::Save, "Ctrl+S") {
-                self.save();
-                ui.close();
-            }
-            if item(ui, Msg::SaveAs, "") {
-                self.start_dialog(DialogKind::SaveProjectAs);
-                ui.close();
-            }
-            if item(ui, Msg::Close, "") {
-                self.request(Action::Close);
-                ui.close();
-            }
-            ui.separator();
-            if item(ui, Msg::ExportIl, "") {
-                self.start_dialog(DialogKind::ExportIl);
-                ui.close();
-            }
-            if item(ui, Msg::ExportComments, "") {
-                self.start_dialog(DialogKind::ExportComments);
-                ui.close();
-            }
-            if item(ui, Msg::ImportComments, "") {
-                self.start_dialog(DialogKind::ImportComments);
-                ui.close();
-            }
-        });
-        let recent = self.settings.recent.clone();
-        if !recent.is_empty() {
-            ui.separator();
-            for (i, p) in recent.into_iter().enumerate() {
-                if ui.button(format!("{} {}", i + 1, p.display())).clicked() {
-                    self.request(Action::Open(p));
-                    ui.close();
-                }
-            }
-        }
-        ui.separator();
-        if item(ui, Msg::Exit, "Alt+F4") {
-            self.request(Action::Exit);
-            ui.close();
         }
     }
 

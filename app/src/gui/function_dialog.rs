@@ -709,7 +709,7 @@ impl LadderApp {
         let cell = self
             .doc
             .as_ref()
-            .and_then(|d| d.project.ladder.blocks.get(at.block))
+            .and_then(|d| d.project().ladder.blocks.get(at.block))
             .and_then(|b| b.networks.get(at.network))
             .and_then(|n| n.cell(at.row, at.col))
             .cloned();
@@ -732,7 +732,7 @@ impl LadderApp {
             return;
         }
         let lang = self.settings.lang;
-        let project = &doc.project;
+        let project = doc.project();
         let action = egui::Modal::new(egui::Id::unique("function_dialog"))
             .show(ctx, |ui| dialog.ui(ui, project, lang))
             .inner;
@@ -768,7 +768,7 @@ impl LadderApp {
         let ladder = self
             .doc
             .as_ref()
-            .map(|d| &d.project.ladder)
+            .map(|d| &d.project().ladder)
             .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
         let row_exists = ladder
             .blocks
@@ -786,26 +786,17 @@ impl LadderApp {
                 ..dialog.at
             }
         };
-        let editing = dialog.editing;
-        let ok = self.edit(|l| {
-            if editing {
-                l.apply(Edit::SetCell { at, cell })
-            } else {
-                let mut edits = LadderApp::wires_to_output(l, at);
-                edits.push(Edit::SetCell { at, cell });
-                l.apply(Edit::Batch(edits))
-            }
-        });
-        if ok {
-            self.cursor = at;
-            Ok(())
+        let edit = if dialog.editing {
+            Edit::SetCell { at, cell }
         } else {
-            // The refusal went to the output window too.
-            Err(self
-                .output
-                .last()
-                .map_or_else(String::new, |l| l.text.clone()))
-        }
+            ladder
+                .plan_output(at, cell)
+                .map_err(|e| super::errors::edit_error(&e, lang))?
+        };
+        // The refusal is shown in the dialog, once.
+        self.try_edit(edit)?;
+        self.cursor = at;
+        Ok(())
     }
 }
 
@@ -867,12 +858,12 @@ mod tests {
     }
 
     fn ladder(h: &H) -> Ladder {
-        h.state().doc.as_ref().unwrap().project.ladder.clone()
+        h.state().doc.as_ref().unwrap().project().ladder.clone()
     }
 
     /// The compiled instructions, without directives, spaces folded.
     fn il(h: &H) -> Vec<String> {
-        let project = &h.state().doc.as_ref().unwrap().project;
+        let project = h.state().doc.as_ref().unwrap().project();
         let text = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
         text.lines()
             .filter(|l| !matches!(*l, "LEVEL1" | "LEVEL2" | "NETWORK" | "END"))
@@ -933,7 +924,7 @@ mod tests {
             "T: not allowed here: allowed areas: T; no constants"
         ));
         let dialog = h.state().function_dialog.clone().unwrap();
-        let project = &h.state().doc.as_ref().unwrap().project;
+        let project = h.state().doc.as_ref().unwrap().project();
         assert!(matches!(dialog.checks(project, Lang::En)[0], Check::Bad(_)));
         let before = ladder(&h);
         h.get_by_role_and_label(Role::Button, "OK").click();

@@ -115,6 +115,16 @@ messages! {
     ToolWire => "横线", "Wire";
     ToolLink => "竖线", "Vertical link";
     ToolParallel => "并联触点", "Parallel contact";
+    ToolParallelNc => "并联常闭触点", "Parallel NC contact";
+    ClearSelection => "取消选择", "Clear selection";
+    CursorLeft => "光标左移", "Cursor left";
+    CursorRight => "光标右移", "Cursor right";
+    CursorUp => "光标上移", "Cursor up";
+    CursorDown => "光标下移", "Cursor down";
+    ExtendLeft => "向左扩展选择", "Extend selection left";
+    ExtendRight => "向右扩展选择", "Extend selection right";
+    ExtendUp => "向上扩展选择", "Extend selection up";
+    ExtendDown => "向下扩展选择", "Extend selection down";
     ToolDelete => "删除", "Delete";
     ToolRowBelow => "插入行", "Insert row";
     ToolNetworkBelow => "插入网络", "Insert network";

@@ -1,13 +1,18 @@
 //! The desktop editor (eframe/egui). All UI code is in this library so tests drive it without
 //! a window; `main.rs` only starts it.
 
+pub mod command;
+pub mod dispatch;
 pub mod document;
 pub mod editing;
+pub mod errors;
 pub mod files;
 pub mod fonts;
 pub mod function_dialog;
 pub mod i18n;
 pub mod ladder_view;
+pub mod menus;
+pub mod place;
 pub mod pointer;
 pub mod selection;
 pub mod settings;
@@ -15,11 +20,12 @@ pub mod tables;
 pub mod tree;
 pub mod xref_view;
 
+pub use command::HelpPage;
 use document::Document;
-use i18n::{Lang, Msg};
+use i18n::Msg;
 use ladder_engine::compiler::{Origin, Severity};
 use ladder_engine::model;
-use settings::{DisplayMode, Settings};
+use settings::Settings;
 use std::path::{Path, PathBuf};
 use tree::View;
 
@@ -89,25 +95,14 @@ pub struct LadderApp {
     pub xref_filter: String,
     /// The view tabs above the main area, in the order they were opened.
     pub tabs: Vec<View>,
-    /// The next recorded edit joins the last undo step (a network added for a gesture).
-    pub merge_next: bool,
     /// The last text searched for (Ctrl+F offers it again, to find the next match).
     pub last_find: String,
+    /// Commands asked for during this frame; they run after it.
+    pub pending: Vec<command::Command>,
 }
 
 /// Most view tabs kept open; the oldest closes first.
 const MAX_TABS: usize = 10;
-
-/// A Help window.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum HelpPage {
-    /// The keys.
-    Shortcuts,
-    /// Every instruction with its operands, from the catalogue.
-    Instructions,
-    /// Version and licence.
-    About,
-}
 
 impl LadderApp {
     /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").
@@ -143,8 +138,8 @@ impl LadderApp {
             xref: Default::default(),
             xref_filter: String::new(),
             tabs: Vec::new(),
-            merge_next: false,
             last_find: String::new(),
+            pending: Vec::new(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -245,7 +240,7 @@ impl LadderApp {
             self.drag_from = None;
             return;
         };
-        let p = &doc.project;
+        let p = doc.project();
         let blocks = &p.ladder.blocks;
         let tables = p.symbol_tables.len();
         let valid = |v: &View| match v {
@@ -294,131 +289,11 @@ impl LadderApp {
         }
     }
 
-    fn menu_ui(&mut self, ui: &mut egui::Ui) {
-        egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button(self.t(Msg::File), |ui| self.file_menu_ui(ui));
-            ui.menu_button(self.t(Msg::Edit), |ui| self.edit_menu_ui(ui));
-            ui.menu_button(self.t(Msg::View), |ui| {
-                ui.label(self.t(Msg::Language));
-                if ui.button(Msg::Chinese.text(self.settings.lang)).clicked() {
-                    self.settings.lang = Lang::Zh;
-                    ui.close();
-                }
-                if ui.button(Msg::English.text(self.settings.lang)).clicked() {
-                    self.settings.lang = Lang::En;
-                    ui.close();
-                }
-                ui.separator();
-                for (mode, msg) in [
-                    (DisplayMode::Address, Msg::DisplayAddress),
-                    (DisplayMode::Symbol, Msg::DisplaySymbol),
-                    (DisplayMode::Both, Msg::DisplayBoth),
-                ] {
-                    if ui
-                        .selectable_label(self.settings.display == mode, self.t(msg))
-                        .clicked()
-                    {
-                        self.settings.display = mode;
-                    }
-                }
-                let mut comments = self.settings.show_comments;
-                if ui
-                    .checkbox(&mut comments, self.t(Msg::ShowComments))
-                    .changed()
-                {
-                    self.settings.show_comments = comments;
-                }
-                ui.separator();
-                let lang = self.settings.lang;
-                let s = &mut self.settings;
-                ui.checkbox(&mut s.show_titles, Msg::ShowTitles.text(lang));
-                ui.checkbox(&mut s.show_tree, Msg::ProjectWindow.text(lang));
-                ui.checkbox(&mut s.show_output, Msg::OutputWindow.text(lang));
-                ui.checkbox(&mut s.show_toolbar, Msg::ToolbarView.text(lang));
-                ui.checkbox(&mut s.show_status, Msg::StatusBar.text(lang));
-                ui.separator();
-                if ui.button(self.t(Msg::ZoomIn)).clicked() {
-                    self.settings.step_zoom(true);
-                }
-                if ui.button(self.t(Msg::ZoomOut)).clicked() {
-                    self.settings.step_zoom(false);
-                }
-            });
-            ui.menu_button(self.t(Msg::Plc), |ui| {
-                if ui
-                    .add(egui::Button::new(self.t(Msg::Compile)).shortcut_text("F9"))
-                    .clicked()
-                {
-                    self.compile();
-                    ui.close();
-                }
-            });
-            ui.menu_button(self.t(Msg::Tools), |ui| self.tools_menu_ui(ui));
-            ui.menu_button(self.t(Msg::Help), |ui| {
-                for (page, msg) in [
-                    (HelpPage::Shortcuts, Msg::Shortcuts),
-                    (HelpPage::Instructions, Msg::InstructionHelp),
-                    (HelpPage::About, Msg::About),
-                ] {
-                    if ui.button(self.t(msg)).clicked() {
-                        self.help = Some(page);
-                        ui.close();
-                    }
-                }
-            });
-        });
-    }
-
-    /// Runs what the project tree's right-click menu asked for.
-    pub fn tree_action(&mut self, action: tree::TreeAction) {
-        use tree::TreeAction;
-        let prompt = |kind, text: String| {
-            Some(editing::Prompt {
-                kind,
-                text,
-                error: None,
-            })
-        };
-        let block = |i: usize| {
-            self.doc
-                .as_ref()
-                .and_then(|d| d.project.ladder.blocks.get(i))
-                .cloned()
-        };
-        match action {
-            TreeAction::NewSub => self.prompt = prompt(editing::PlaceKind::NewSub, String::new()),
-            TreeAction::RenameSub(i) => {
-                if let Some(b) = block(i)
-                    && let model::BlockKind::Sub { number, name } = &b.kind
-                {
-                    self.prompt = prompt(
-                        editing::PlaceKind::RenameSub(*number),
-                        format!("{number} {name}").trim().to_string(),
-                    );
-                }
-            }
-            TreeAction::DeleteSub(i) => {
-                if block(i).is_some_and(|b| b.kind.sub_number().is_some()) {
-                    self.delete_subprogram(i);
-                }
-            }
-            TreeAction::BlockInfo(i) => {
-                if let Some(b) = block(i) {
-                    self.prompt = prompt(
-                        editing::PlaceKind::BlockInfo(pointer::BlockKey::of(&b.kind)),
-                        b.info.clone(),
-                    );
-                }
-            }
-            TreeAction::ViewCalls(n) => self.view_calls(n),
-        }
-    }
-
     /// A view's name, for its tab.
     pub fn view_title(&self, view: View) -> String {
         let lang = self.settings.lang;
         let t = |m: Msg| m.text(lang).to_string();
-        let project = self.doc.as_ref().map(|d| &d.project);
+        let project = self.doc.as_ref().map(|d| d.project());
         match view {
             View::Block(0) => t(Msg::Level1),
             View::Block(1) => t(Msg::Level2),
@@ -451,7 +326,7 @@ impl LadderApp {
         let blocks = self
             .doc
             .as_ref()
-            .map_or(0, |d| d.project.ladder.blocks.len());
+            .map_or(0, |d| d.project().ladder.blocks.len());
         self.tabs
             .retain(|v| !matches!(v, View::Block(b) if *b >= blocks));
         if !self.tabs.contains(&self.view) {
@@ -495,175 +370,13 @@ impl LadderApp {
         ui.separator();
     }
 
-    fn edit_menu_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        let (can_undo, can_redo) = self.doc.as_ref().map_or((false, false), |d| {
-            (d.history.undo_len() > 0, d.history.redo_len() > 0)
-        });
-        if ui
-            .add_enabled(
-                can_undo,
-                egui::Button::new(t(Msg::Undo)).shortcut_text("Ctrl+Z"),
-            )
-            .clicked()
-        {
-            self.undo();
-            ui.close();
-        }
-        if ui
-            .add_enabled(
-                can_redo,
-                egui::Button::new(t(Msg::Redo)).shortcut_text("Ctrl+Y"),
-            )
-            .clicked()
-        {
-            self.redo();
-            ui.close();
-        }
-        ui.separator();
-        let open = |kind| {
-            Some(editing::Prompt {
-                kind,
-                text: String::new(),
-                error: None,
-            })
-        };
-        for (msg, keys, kind) in [
-            (Msg::Find, "Ctrl+F", editing::PlaceKind::Find),
-            (Msg::Replace, "Ctrl+H", editing::PlaceKind::Replace),
-            (Msg::GoTo, "Ctrl+G", editing::PlaceKind::GoTo),
-        ] {
-            if ui
-                .add(egui::Button::new(t(msg)).shortcut_text(keys))
-                .clicked()
-            {
-                self.prompt = open(kind);
-                ui.close();
-            }
-        }
-        if let View::Block(b) = self.view {
-            if let Some(number) = self
-                .doc
-                .as_ref()
-                .and_then(|d| d.project.ladder.blocks.get(b))
-                .and_then(|b| b.kind.sub_number())
-                && ui.button(t(Msg::ViewCalls)).clicked()
-            {
-                self.view_calls(number);
-                ui.close();
-            }
-            ui.separator();
-            self.commands_ui(ui);
-        }
-    }
-
-    fn tools_menu_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        for (view, msg) in [
-            (View::RefIndex, Msg::RefIndex),
-            (View::RefBits, Msg::RefBits),
-            (View::RefBytes, Msg::RefBytes),
-        ] {
-            if ui
-                .button(format!("{}: {}", t(Msg::Reference), t(msg)))
-                .clicked()
-            {
-                self.view = view;
-                ui.close();
-            }
-        }
-        ui.separator();
-        if ui.button(t(Msg::NewSub)).clicked() {
-            self.prompt = Some(editing::Prompt {
-                kind: editing::PlaceKind::NewSub,
-                text: String::new(),
-                error: None,
-            });
-            ui.close();
-        }
-    }
-
-    /// The Help windows.
-    fn help_ui(&mut self, ctx: &egui::Context) {
-        let Some(page) = self.help else { return };
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        let title = match page {
-            HelpPage::Shortcuts => t(Msg::Shortcuts),
-            HelpPage::Instructions => t(Msg::InstructionHelp),
-            HelpPage::About => t(Msg::About),
-        };
-        let mut open = true;
-        egui::Window::new(title)
-            .open(&mut open)
-            .default_size([520.0, 480.0])
-            .vscroll(true)
-            .show(ctx, |ui| match page {
-                HelpPage::About => {
-                    ui.heading(format!("Ladder Studio {}", env!("CARGO_PKG_VERSION")));
-                    ui.label(t(Msg::AboutText));
-                    ui.label(env!("CARGO_PKG_LICENSE"));
-                }
-                HelpPage::Shortcuts => {
-                    egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
-                        let mut row = |keys: &str, what: &str| {
-                            ui.monospace(keys);
-                            ui.label(what);
-                            ui.end_row();
-                        };
-                        for group in pointer::Command::GROUPS {
-                            for c in group {
-                                let (msg, keys) = c.label();
-                                if !keys.is_empty() {
-                                    row(keys, t(msg));
-                                }
-                            }
-                        }
-                        row("Ctrl+Z", t(Msg::Undo));
-                        row("Ctrl+Y", t(Msg::Redo));
-                        row("Ctrl+F", t(Msg::Find));
-                        row("Ctrl+H", t(Msg::Replace));
-                        row("Ctrl+G", t(Msg::GoTo));
-                        row("F9", t(Msg::Compile));
-                        row("Ctrl+N", t(Msg::New));
-                        row("Ctrl+O", t(Msg::Open));
-                        row("Ctrl+S", t(Msg::Save));
-                        row("Shift+←↑→↓", t(Msg::Selected));
-                    });
-                }
-                HelpPage::Instructions => {
-                    for spec in ladder_engine::catalog::CATALOG.iter() {
-                        let (help, cat) = match lang {
-                            Lang::Zh => (spec.help_zh, spec.category.name_zh()),
-                            Lang::En => (spec.help_en, spec.category.name_en()),
-                        };
-                        ui.collapsing(format!("{}  ({cat})", spec.name), |ui| {
-                            ui.label(help);
-                            for o in spec.operands {
-                                let h = match lang {
-                                    Lang::Zh => o.help_zh,
-                                    Lang::En => o.help_en,
-                                };
-                                ui.label(format!("{}: {h}", o.name));
-                            }
-                        });
-                    }
-                }
-            });
-        if !open {
-            self.help = None;
-        }
-    }
-
     fn main_ui(&mut self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_ref() else {
             ui.label(Msg::NoProject.text(lang));
             return;
         };
-        let project = &doc.project;
+        let project = doc.project();
         match self.view {
             View::Block(b) => {
                 let cursor = (self.cursor.block == b).then_some((
@@ -740,7 +453,7 @@ impl LadderApp {
             if let View::Block(b) = self.view {
                 let c = self.cursor;
                 let label = doc
-                    .project
+                    .project()
                     .ladder
                     .blocks
                     .get(b)
@@ -792,8 +505,6 @@ impl eframe::App for LadderApp {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
         self.clamp_ui_state();
-        // A network added for a gesture joins that gesture's step only within its frame.
-        self.merge_next = false;
         self.poll_dialogs();
         self.dropped_files(&ctx);
         self.close_requested(&ctx);
@@ -801,10 +512,7 @@ impl eframe::App for LadderApp {
         if self.question.is_some() {
             self.question_ui(&ctx);
         }
-        if ui.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::F9)) {
-            self.compile();
-        }
-        self.keys(&ui.ctx().clone());
+        self.keys(&ctx);
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
@@ -821,18 +529,18 @@ impl eframe::App for LadderApp {
                 .show(ui, |ui| self.output_ui(ui));
         }
         if self.settings.show_tree {
-            let mut action = None;
+            let mut asked = None;
             egui::Panel::left("tree").resizable(true).show(ui, |ui| {
                 let lang = self.settings.lang;
                 ui.heading(Msg::Project.text(lang));
                 if let Some(doc) = &self.doc {
                     egui::ScrollArea::vertical().show(ui, |ui| {
-                        action = tree::tree_ui(ui, &doc.project, lang, &mut self.view)
+                        asked = tree::tree_ui(ui, doc.project(), lang, self.view)
                     });
                 }
             });
-            if let Some(a) = action {
-                self.tree_action(a);
+            if let Some(c) = asked {
+                self.ask(c);
             }
         }
         egui::CentralPanel::default().show(ui, |ui| {
@@ -843,6 +551,7 @@ impl eframe::App for LadderApp {
             self.function_dialog_ui(&ctx);
         }
         self.help_ui(&ctx);
+        self.run_pending();
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {

@@ -2,9 +2,11 @@
 //! editing commands shared by the Edit menu and the right-click menu, and the subprogram
 //! commands of the project tree.
 
-use super::editing::{Cursor, PlaceKind, Prompt};
+use super::command::Command;
+use super::editing::{Cursor, PlaceKind};
 use super::i18n::Msg;
 use super::ladder_view::{Hit, ViewEvents};
+pub use super::place::BlockKey;
 use super::selection::Selection;
 use super::tree::View;
 use super::{LadderApp, OutputLine};
@@ -12,164 +14,13 @@ use ladder_engine::Op;
 use ladder_engine::address::Area;
 use ladder_engine::model::{Block, BlockKind, Cell, Edit, Operand};
 
-/// A block named by what it is rather than by its place in the list, which undo and
-/// subprogram edits change.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BlockKey {
-    /// Level 1.
-    Level1,
-    /// Level 2.
-    Level2,
-    /// Subprogram P`0`.
-    Sub(u16),
-}
-
-impl BlockKey {
-    /// The key of a block.
-    pub fn of(kind: &BlockKind) -> BlockKey {
-        match kind {
-            BlockKind::Level1 => BlockKey::Level1,
-            BlockKind::Level2 => BlockKey::Level2,
-            BlockKind::Sub { number, .. } => BlockKey::Sub(*number),
-        }
-    }
-
-    /// Where the block is now, if it still exists.
-    pub fn index(self, ladder: &ladder_engine::model::Ladder) -> Option<usize> {
-        match self {
-            BlockKey::Level1 => Some(0),
-            BlockKey::Level2 => Some(1),
-            BlockKey::Sub(n) => ladder.sub_index(n),
-        }
-    }
-}
-
-/// An editing command: one entry of the Edit menu and the right-click menu.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Command {
-    /// F1.
-    Contact,
-    /// Shift+F1.
-    ContactNc,
-    /// F2.
-    Coil,
-    /// Shift+F2.
-    CoilN,
-    /// F3.
-    Function,
-    /// F4.
-    Wire,
-    /// F5.
-    Link,
-    /// F6.
-    Parallel,
-    /// Ctrl+X.
-    Cut,
-    /// Ctrl+C.
-    Copy,
-    /// Ctrl+V.
-    Paste,
-    /// Ctrl+E.
-    CopyRow,
-    /// Delete: the element, or the selection.
-    Delete,
-    /// The vertical link left of the cursor.
-    DeleteLink,
-    /// Ctrl+T.
-    InsertRowAbove,
-    /// Ctrl+R.
-    InsertRowBelow,
-    /// The cursor's row.
-    DeleteRow,
-    /// Ctrl+U.
-    InsertNetworkAbove,
-    /// Ctrl+I.
-    InsertNetworkBelow,
-    /// The cursor's network.
-    DeleteNetwork,
-    /// The network's title.
-    NetworkTitle,
-    /// The network's comment.
-    NetworkComment,
-}
-
-impl Command {
-    /// The element commands, then the clipboard, then insert/delete.
-    pub const GROUPS: [&'static [Command]; 3] = [
-        &[
-            Command::Contact,
-            Command::ContactNc,
-            Command::Coil,
-            Command::CoilN,
-            Command::Function,
-            Command::Wire,
-            Command::Link,
-            Command::Parallel,
-        ],
-        &[
-            Command::Cut,
-            Command::Copy,
-            Command::Paste,
-            Command::CopyRow,
-        ],
-        &[
-            Command::Delete,
-            Command::DeleteLink,
-            Command::InsertRowAbove,
-            Command::InsertRowBelow,
-            Command::DeleteRow,
-            Command::InsertNetworkAbove,
-            Command::InsertNetworkBelow,
-            Command::DeleteNetwork,
-            Command::NetworkTitle,
-            Command::NetworkComment,
-        ],
-    ];
-
-    /// Its name and its keys.
-    pub fn label(self) -> (Msg, &'static str) {
-        match self {
-            Command::Contact => (Msg::ToolContact, "F1"),
-            Command::ContactNc => (Msg::ToolContactNc, "Shift+F1"),
-            Command::Coil => (Msg::ToolCoil, "F2"),
-            Command::CoilN => (Msg::ToolCoilN, "Shift+F2"),
-            Command::Function => (Msg::ToolFunction, "F3"),
-            Command::Wire => (Msg::ToolWire, "F4"),
-            Command::Link => (Msg::ToolLink, "F5"),
-            Command::Parallel => (Msg::ToolParallel, "F6"),
-            Command::Cut => (Msg::Cut, "Ctrl+X"),
-            Command::Copy => (Msg::Copy, "Ctrl+C"),
-            Command::Paste => (Msg::Paste, "Ctrl+V"),
-            Command::CopyRow => (Msg::CopyRow, "Ctrl+E"),
-            Command::Delete => (Msg::ToolDelete, "Delete"),
-            Command::DeleteLink => (Msg::DeleteLink, ""),
-            Command::InsertRowAbove => (Msg::InsertRowAbove, "Ctrl+T"),
-            Command::InsertRowBelow => (Msg::InsertRowBelow, "Ctrl+R"),
-            Command::DeleteRow => (Msg::DeleteRow, ""),
-            Command::InsertNetworkAbove => (Msg::InsertNetworkAbove, "Ctrl+U"),
-            Command::InsertNetworkBelow => (Msg::InsertNetworkBelow, "Ctrl+I"),
-            Command::DeleteNetwork => (Msg::DeleteNetwork, ""),
-            Command::NetworkTitle => (Msg::NetworkTitle, ""),
-            Command::NetworkComment => (Msg::NetworkComment, ""),
-        }
-    }
-}
-
 impl LadderApp {
-    fn open_prompt(&mut self, kind: PlaceKind, text: String) {
-        self.prompt = Some(Prompt {
-            kind,
-            text,
-            error: None,
-        });
-    }
-
     /// The cursor's cell when the shown block has it (deleting never adds a network first).
     pub fn existing_cursor(&mut self) -> Option<Cursor> {
         let View::Block(block) = self.view else {
             return None;
         };
-        let ladder = &self.doc.as_ref()?.project.ladder;
+        let ladder = &self.doc.as_ref()?.project().ladder;
         let n = ladder.blocks.get(block)?.networks.len();
         if n == 0 {
             return None;
@@ -177,120 +28,23 @@ impl LadderApp {
         self.ensure_network()
     }
 
-    /// Runs an editing command at the cursor.
-    pub fn run_command(&mut self, c: Command) {
-        match c {
-            Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
-            Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),
-            Command::Coil => self.open_prompt(PlaceKind::Coil { negated: false }, "".into()),
-            Command::CoilN => self.open_prompt(PlaceKind::Coil { negated: true }, "".into()),
-            Command::Function => self.open_function_dialog(),
-            Command::Wire => self.wire(),
-            Command::Link => self.link(),
-            Command::Parallel => {
-                self.open_prompt(PlaceKind::Parallel { negated: false }, "".into())
-            }
-            Command::Cut => self.cut(),
-            Command::Copy => {
-                self.copy();
-            }
-            Command::Paste => self.paste(),
-            Command::CopyRow => self.copy_row(),
-            Command::Delete => {
-                if self.selection.is_some() {
-                    self.delete_selection();
-                } else if let Some(at) = self.existing_cursor() {
-                    self.edit(|l| l.delete_element(at));
-                }
-            }
-            Command::DeleteLink => {
-                if let Some(at) = self.existing_cursor() {
-                    self.edit(|l| l.set_link(at, false));
-                }
-            }
-            Command::InsertRowAbove => self.insert_row(false),
-            Command::InsertRowBelow => self.insert_row(true),
-            Command::DeleteRow => {
-                if let Some(at) = self.existing_cursor() {
-                    self.selection = Some((
-                        at.block,
-                        Selection::Rows {
-                            network: at.network,
-                            rows: (at.row, at.row),
-                        },
-                    ));
-                    self.delete_selection();
-                }
-            }
-            Command::InsertNetworkAbove => self.insert_network(false),
-            Command::InsertNetworkBelow => self.insert_network(true),
-            Command::DeleteNetwork => {
-                if let Some(at) = self.existing_cursor() {
-                    self.selection = Some((
-                        at.block,
-                        Selection::Networks {
-                            networks: (at.network, at.network),
-                        },
-                    ));
-                    self.delete_selection();
-                }
-            }
-            Command::NetworkTitle | Command::NetworkComment => {
-                if let Some(at) = self.ensure_network() {
-                    let n = &self
-                        .doc
-                        .as_ref()
-                        .expect("a network was ensured")
-                        .project
-                        .ladder
-                        .blocks[at.block]
-                        .networks[at.network];
-                    let (kind, text) = if c == Command::NetworkTitle {
-                        (PlaceKind::NetworkTitle, n.title.clone())
-                    } else {
-                        (PlaceKind::NetworkComment, n.comment.clone())
-                    };
-                    self.open_prompt(kind, text);
-                }
-            }
-        }
-    }
-
-    /// The editing commands as menu entries (Edit menu, right-click menu).
-    pub fn commands_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        for (g, group) in Command::GROUPS.iter().enumerate() {
-            if g > 0 {
-                ui.separator();
-            }
-            for c in group.iter() {
-                let (msg, keys) = c.label();
-                let mut b = egui::Button::new(msg.text(lang));
-                if !keys.is_empty() {
-                    b = b.shortcut_text(keys);
-                }
-                let enabled = *c != Command::Paste || self.clipboard.is_some();
-                if ui.add_enabled(enabled, b).clicked() {
-                    self.run_command(*c);
-                    ui.close();
-                }
-            }
-        }
-    }
-
     /// Sets the net title or comment typed in the prompt.
     pub fn set_network_text(&mut self, title: Option<&str>, comment: Option<&str>) {
         if let Some(at) = self.ensure_network() {
-            self.edit(|l| {
-                let n = &l.blocks[at.block].networks[at.network];
-                let edit = Edit::SetNetworkText {
-                    block: at.block,
-                    network: at.network,
-                    title: title.map_or(n.title.clone(), str::to_string),
-                    comment: comment.map_or(n.comment.clone(), str::to_string),
-                };
-                l.apply(edit)
-            });
+            let Some(n) = self
+                .ladder()
+                .and_then(|l| l.blocks.get(at.block))
+                .and_then(|b| b.networks.get(at.network))
+            else {
+                return;
+            };
+            let edit = Edit::SetNetworkText {
+                block: at.block,
+                network: at.network,
+                title: title.map_or(n.title.clone(), str::to_string),
+                comment: comment.map_or(n.comment.clone(), str::to_string),
+            };
+            self.edit(edit);
         }
     }
 
@@ -370,7 +124,7 @@ impl LadderApp {
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {
                     self.cursor = cell(network, 0, 0);
-                    self.run_command(Command::NetworkTitle);
+                    self.ask(Command::NetworkTitle);
                 }
                 Hit::Margin { .. } => {}
             }
@@ -444,48 +198,22 @@ impl LadderApp {
         if network != n1 || (r0 == r1 && c0 == c1) {
             return;
         }
-        let width = self.doc.as_ref().map_or(0, |d| d.project.ladder.width);
-        // The drag began on this frame's drawing, but check: the ladder may have changed.
-        let exists = self.doc.as_ref().is_some_and(|d| {
-            d.project
-                .ladder
-                .blocks
-                .get(block)
-                .and_then(|b| b.networks.get(network))
-                .is_some_and(|n| r0.max(r1) < n.rows.len())
-        });
-        if !exists || width == 0 {
-            return;
+        let from = Cursor {
+            block,
+            network,
+            row: r0,
+            col: c0,
+        };
+        let to = Cursor {
+            row: r1,
+            col: c1,
+            ..from
+        };
+        // The drag began on this frame's drawing, but the ladder may have changed since: a
+        // line that no longer fits is not drawn.
+        if let Some(Ok(edit)) = self.ladder().map(|l| l.plan_line(from, to)) {
+            self.grouped(|app| app.edit(edit));
         }
-        self.edit(|l| {
-            let n = &l.blocks[block].networks[network];
-            let at = |row, col| Cursor {
-                block,
-                network,
-                row,
-                col,
-            };
-            let mut edits = Vec::new();
-            if r0.abs_diff(r1) <= c0.abs_diff(c1) {
-                for col in c0.min(c1)..=c0.max(c1).min(width - 1) {
-                    if n.rows[r0].cells[col] == Cell::Empty {
-                        edits.push(Edit::SetCell {
-                            at: at(r0, col),
-                            cell: Cell::Wire,
-                        });
-                    }
-                }
-            } else {
-                let col = c0.clamp(1, width);
-                for row in r0.min(r1)..r0.max(r1) {
-                    edits.push(Edit::SetLink {
-                        at: at(row, col),
-                        on: true,
-                    });
-                }
-            }
-            l.apply(Edit::Batch(edits))
-        });
     }
 
     /// Double-click: edit the element's operands (an empty cell takes a new contact, or a
@@ -496,14 +224,14 @@ impl LadderApp {
         let Some(cell) = self
             .doc
             .as_ref()
-            .and_then(|d| d.project.ladder.blocks.get(at.block))
+            .and_then(|d| d.project().ladder.blocks.get(at.block))
             .and_then(|b| b.networks.get(at.network))
             .and_then(|n| n.cell(at.row, at.col))
             .cloned()
         else {
             return;
         };
-        let width = self.doc.as_ref().map_or(0, |d| d.project.ladder.width);
+        let width = self.doc.as_ref().map_or(0, |d| d.project().ladder.width);
         match cell {
             Cell::Contact { negated, operand } => {
                 self.open_prompt(PlaceKind::Contact { negated }, operand.to_string())
@@ -525,7 +253,7 @@ impl LadderApp {
     pub fn view_calls(&mut self, number: u16) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_ref() else { return };
-        let project = &doc.project;
+        let project = doc.project();
         let mut lines = Vec::new();
         for (bi, b) in project.ladder.blocks.iter().enumerate() {
             for (ni, n) in b.networks.iter().enumerate() {
@@ -584,7 +312,7 @@ impl LadderApp {
             .doc
             .as_ref()
             .ok_or(Msg::NoProject.text(lang))?
-            .project
+            .project()
             .ladder;
         if ladder.sub_index(number).is_some() {
             return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
@@ -592,12 +320,10 @@ impl LadderApp {
         let index = ladder.sub_insert_index(number);
         let mut block = Block::new(BlockKind::Sub { number, name });
         block.networks.push(ladder.new_network());
-        if self.edit(|l| {
-            l.apply(Edit::InsertBlock {
-                index,
-                block: Box::new(block),
-            })
-        }) {
+        if self.try_edit(Edit::InsertBlock {
+            index,
+            block: Box::new(block),
+        })? {
             // Blocks from `index` on moved down one place: their tabs follow.
             for v in &mut self.tabs {
                 if let View::Block(b) = v
@@ -629,7 +355,7 @@ impl LadderApp {
         let profile = self
             .doc
             .as_ref()
-            .map(|d| d.project.profile())
+            .map(|d| d.project().profile())
             .ok_or(Msg::NoProject.text(lang))?;
         let (lo, hi) = profile.range(Area::P);
         match number {
@@ -650,7 +376,7 @@ impl LadderApp {
             .doc
             .as_ref()
             .ok_or(Msg::NoProject.text(lang))?
-            .project
+            .project()
             .ladder;
         let index = ladder
             .sub_index(old)
@@ -660,26 +386,24 @@ impl LadderApp {
         }
         let info = ladder.blocks[index].info.clone();
         let target = ladder.sub_insert_index(number);
-        let ok = self.edit(|l| {
-            // Renumbering keeps subprograms sorted: take the block out and put it back in
-            // its place, in the same undo step.
-            let mut block = l.blocks[index].clone();
-            block.kind = BlockKind::Sub { number, name };
-            block.info = info;
-            let to = if target > index { target - 1 } else { target };
-            l.apply(Edit::Batch(vec![
-                Edit::DeleteBlock { index },
-                Edit::InsertBlock {
-                    index: to,
-                    block: Box::new(block),
-                },
-            ]))
-        });
+        // Renumbering keeps subprograms sorted: take the block out and put it back in its
+        // place, in the same undo step.
+        let mut block = ladder.blocks[index].clone();
+        block.kind = BlockKind::Sub { number, name };
+        block.info = info;
+        let to = if target > index { target - 1 } else { target };
+        let ok = self.try_edit(Edit::Batch(vec![
+            Edit::DeleteBlock { index },
+            Edit::InsertBlock {
+                index: to,
+                block: Box::new(block),
+            },
+        ]))?;
         if ok
             && let Some(i) = self
                 .doc
                 .as_ref()
-                .and_then(|d| d.project.ladder.sub_index(number))
+                .and_then(|d| d.project().ladder.sub_index(number))
         {
             self.tabs.clear();
             self.view = View::Block(i);
@@ -689,7 +413,7 @@ impl LadderApp {
 
     /// Deletes subprogram block `index` (one undo step brings it back).
     pub fn delete_subprogram(&mut self, index: usize) {
-        if self.edit(|l| l.apply(Edit::DeleteBlock { index })) {
+        if self.edit(Edit::DeleteBlock { index }) {
             // Later blocks moved up one place: their tabs follow, the deleted one's closes.
             self.tabs.retain(|v| *v != View::Block(index));
             for v in &mut self.tabs {
@@ -716,16 +440,17 @@ impl LadderApp {
         let index = self
             .doc
             .as_ref()
-            .and_then(|d| key.index(&d.project.ladder))
+            .and_then(|d| key.index(&d.project().ladder))
             .ok_or_else(|| Msg::NoSuchSub.text(lang).to_string())?;
-        self.edit(|l| {
-            let kind = l.blocks[index].kind.clone();
-            l.apply(Edit::SetBlockHeader {
-                index,
-                kind,
-                info: info.to_string(),
-            })
-        });
+        let kind = self
+            .ladder()
+            .map(|l| l.blocks[index].kind.clone())
+            .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
+        self.try_edit(Edit::SetBlockHeader {
+            index,
+            kind,
+            info: info.to_string(),
+        })?;
         Ok(())
     }
 }

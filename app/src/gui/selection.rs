@@ -4,80 +4,10 @@
 
 use super::i18n::Msg;
 use super::{LadderApp, OutputLine};
-use ladder_engine::model::{Cell, CellRef, Edit, Ladder, Network, NetworkId, Row};
-
-/// What is selected in one block.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Selection {
-    /// A rectangle of cells in one network (inclusive bounds, any order).
-    Cells {
-        /// Network.
-        network: usize,
-        /// First and last row.
-        rows: (usize, usize),
-        /// First and last column.
-        cols: (usize, usize),
-    },
-    /// Whole rows of one network.
-    Rows {
-        /// Network.
-        network: usize,
-        /// First and last row.
-        rows: (usize, usize),
-    },
-    /// Whole networks.
-    Networks {
-        /// First and last network.
-        networks: (usize, usize),
-    },
-}
-
-fn span((a, b): (usize, usize)) -> std::ops::RangeInclusive<usize> {
-    a.min(b)..=a.max(b)
-}
-
-impl Selection {
-    /// Whether the selection covers cell (network, row, col).
-    pub fn contains(&self, network: usize, row: usize, col: usize) -> bool {
-        match *self {
-            Selection::Cells {
-                network: n,
-                rows,
-                cols,
-            } => n == network && span(rows).contains(&row) && span(cols).contains(&col),
-            Selection::Rows { network: n, rows } => n == network && span(rows).contains(&row),
-            Selection::Networks { networks } => span(networks).contains(&network),
-        }
-    }
-
-    /// Whether the selection covers all of network `n`.
-    pub fn covers_network(&self, n: usize) -> bool {
-        matches!(*self, Selection::Networks { networks } if span(networks).contains(&n))
-    }
-}
-
-/// What Ctrl+C or Ctrl+X put aside.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Clip {
-    /// A rectangle of cells; `links[r][j]` is the link at junction `col0 + j` from row `r`
-    /// down, for the junctions strictly inside the rectangle.
-    Cells {
-        /// The cells, row by row.
-        cells: Vec<Vec<Cell>>,
-        /// Links inside the rectangle.
-        links: Vec<Vec<bool>>,
-    },
-    /// Whole rows.
-    Rows(Vec<Row>),
-    /// Whole networks.
-    Networks(Vec<Network>),
-}
+pub use ladder_engine::model::region::{Clip, Region as Selection};
+use ladder_engine::model::{Cell, CellRef};
 
 impl LadderApp {
-    fn ladder(&self) -> Option<&Ladder> {
-        self.doc.as_ref().map(|d| &d.project.ladder)
-    }
-
     fn note(&mut self, text: String, error: bool) {
         self.output.push(OutputLine {
             text,
@@ -158,55 +88,12 @@ impl LadderApp {
         self.cursor = to;
     }
 
-    /// What the selection holds, for the clipboard.
-    fn clip_of(&self, block: usize, sel: Selection) -> Option<Clip> {
-        let b = self.ladder()?.blocks.get(block)?;
-        Some(match sel {
-            Selection::Cells {
-                network,
-                rows,
-                cols,
-            } => {
-                let n = b.networks.get(network)?;
-                let (rows, cols) = (span(rows), span(cols));
-                let rows: Vec<&Row> = rows.filter_map(|r| n.rows.get(r)).collect();
-                Clip::Cells {
-                    cells: rows
-                        .iter()
-                        .map(|r| {
-                            cols.clone()
-                                .filter_map(|c| r.cells.get(c).cloned())
-                                .collect()
-                        })
-                        .collect(),
-                    links: rows
-                        .iter()
-                        .map(|r| {
-                            cols.clone()
-                                .map(|c| r.links.get(c).copied().unwrap_or(false))
-                                .collect()
-                        })
-                        .collect(),
-                }
-            }
-            Selection::Rows { network, rows } => {
-                let n = b.networks.get(network)?;
-                Clip::Rows(span(rows).filter_map(|r| n.rows.get(r).cloned()).collect())
-            }
-            Selection::Networks { networks } => Clip::Networks(
-                span(networks)
-                    .filter_map(|i| b.networks.get(i).cloned())
-                    .collect(),
-            ),
-        })
-    }
-
     /// Ctrl+C: the selection (or the cursor's cell) to the clipboard.
     pub fn copy(&mut self) -> bool {
         let Some((block, sel)) = self.effective_selection() else {
             return false;
         };
-        match self.clip_of(block, sel) {
+        match self.ladder().and_then(|l| l.copy_region(block, sel)) {
             Some(clip) => {
                 self.clipboard = Some(clip);
                 true
@@ -227,13 +114,11 @@ impl LadderApp {
     /// Ctrl+E: the cursor's row to the clipboard.
     pub fn copy_row(&mut self) {
         let c = self.cursor;
-        if let Some(clip) = self.clip_of(
-            c.block,
-            Selection::Rows {
-                network: c.network,
-                rows: (c.row, c.row),
-            },
-        ) {
+        let row = Selection::Rows {
+            network: c.network,
+            rows: (c.row, c.row),
+        };
+        if let Some(clip) = self.ladder().and_then(|l| l.copy_region(c.block, row)) {
             self.clipboard = Some(clip);
         }
     }
@@ -251,10 +136,10 @@ impl LadderApp {
         let Some((block, sel)) = self.effective_selection() else {
             return;
         };
-        self.edit(|l| {
-            let edits = delete_edits(l, block, sel);
-            l.apply(Edit::Batch(edits))
-        });
+        let Some(edit) = self.ladder().map(|l| l.plan_delete_region(block, sel)) else {
+            return;
+        };
+        self.edit(edit);
         self.selection = None;
         // The cursor goes to where the deleted part began, so Ctrl+V puts it back.
         let networks = self.ladder().map_or(0, |l| l.blocks[block].networks.len());
@@ -292,10 +177,14 @@ impl LadderApp {
         let Some(at) = self.ensure_network() else {
             return;
         };
-        let ok = self.edit(|l| {
-            let edits = paste_edits(l, at, clip);
-            l.apply(Edit::Batch(edits))
-        });
+        let ok = match self.ladder().map(|l| l.plan_paste(at, clip)) {
+            Some(Ok(edit)) => self.edit(edit),
+            Some(Err(e)) => {
+                self.report_edit_error(&e);
+                false
+            }
+            None => false,
+        };
         if ok {
             self.selection = None;
         }
@@ -340,164 +229,4 @@ fn clip_text(clip: &Clip) -> String {
             .collect::<Vec<_>>()
             .join("\n\n"),
     }
-}
-
-/// The edits that delete a selection.
-fn delete_edits(l: &Ladder, block: usize, sel: Selection) -> Vec<Edit> {
-    let mut edits = Vec::new();
-    let Some(b) = l.blocks.get(block) else {
-        return edits;
-    };
-    match sel {
-        Selection::Cells {
-            network,
-            rows,
-            cols,
-        } => {
-            let Some(n) = b.networks.get(network) else {
-                return edits;
-            };
-            for r in span(rows).filter(|r| *r < n.rows.len()) {
-                for c in span(cols).filter(|c| *c <= l.width) {
-                    let at = CellRef {
-                        block,
-                        network,
-                        row: r,
-                        col: c,
-                    };
-                    if n.rows[r].cells[c] != Cell::Empty {
-                        edits.push(Edit::SetCell {
-                            at,
-                            cell: Cell::Empty,
-                        });
-                    }
-                    // A link at the left edge of a deleted cell goes with it.
-                    if n.link(r, c) {
-                        edits.push(Edit::SetLink { at, on: false });
-                    }
-                }
-            }
-        }
-        Selection::Rows { network, rows } => {
-            let Some(n) = b.networks.get(network) else {
-                return edits;
-            };
-            let doomed: Vec<usize> = span(rows).filter(|r| *r < n.rows.len()).collect();
-            if doomed.len() == n.rows.len() {
-                edits.push(Edit::InsertRow {
-                    block,
-                    network,
-                    row: n.rows.len(),
-                    content: Row::empty(l.width),
-                });
-            }
-            // The rows above the last deleted one lose links that led into it.
-            for r in doomed.iter().rev() {
-                if *r > 0 && *r + 1 == n.rows.len() {
-                    for (j, on) in n.rows[r - 1].links.iter().enumerate() {
-                        if *on {
-                            edits.push(Edit::SetLink {
-                                at: CellRef {
-                                    block,
-                                    network,
-                                    row: r - 1,
-                                    col: j,
-                                },
-                                on: false,
-                            });
-                        }
-                    }
-                }
-                edits.push(Edit::DeleteRow {
-                    block,
-                    network,
-                    row: *r,
-                });
-            }
-        }
-        Selection::Networks { networks } => {
-            let doomed: Vec<usize> = span(networks).filter(|i| *i < b.networks.len()).collect();
-            for i in doomed.iter().rev() {
-                edits.push(Edit::DeleteNetwork { block, index: *i });
-            }
-            if doomed.len() == b.networks.len() {
-                edits.push(Edit::InsertNetwork {
-                    block,
-                    index: 0,
-                    network: Box::new(l.new_network()),
-                });
-            }
-        }
-    }
-    edits
-}
-
-/// The edits that paste a clip at `at`.
-fn paste_edits(l: &Ladder, at: CellRef, clip: Clip) -> Vec<Edit> {
-    let mut edits = Vec::new();
-    let n = &l.blocks[at.block].networks[at.network];
-    match clip {
-        Clip::Cells { cells, links } => {
-            // Rows the paste needs beyond the network's end come first.
-            let need = at.row + cells.len();
-            for r in n.rows.len()..need {
-                edits.push(Edit::InsertRow {
-                    block: at.block,
-                    network: at.network,
-                    row: r,
-                    content: Row::empty(l.width),
-                });
-            }
-            for (dr, row) in cells.iter().enumerate() {
-                for (dc, cell) in row.iter().enumerate() {
-                    edits.push(Edit::SetCell {
-                        at: CellRef {
-                            row: at.row + dr,
-                            col: at.col + dc,
-                            ..at
-                        },
-                        cell: cell.clone(),
-                    });
-                }
-            }
-            for (dr, row) in links.iter().enumerate() {
-                for (dc, on) in row.iter().enumerate() {
-                    let col = at.col + dc;
-                    if *on && col > 0 && dr + 1 < cells.len() {
-                        edits.push(Edit::SetLink {
-                            at: CellRef {
-                                row: at.row + dr,
-                                col,
-                                ..at
-                            },
-                            on: true,
-                        });
-                    }
-                }
-            }
-        }
-        Clip::Rows(rows) => {
-            for (i, row) in rows.into_iter().enumerate() {
-                edits.push(Edit::InsertRow {
-                    block: at.block,
-                    network: at.network,
-                    row: at.row + 1 + i,
-                    content: row,
-                });
-            }
-        }
-        Clip::Networks(networks) => {
-            let first = l.new_network_id().0;
-            for (i, mut net) in networks.into_iter().enumerate() {
-                // Pasted networks are new networks: new identities.
-                net.id = NetworkId(first + i as u64);
-                edits.push(Edit::InsertNetwork {
-                    block: at.block,
-                    index: at.network + 1 + i,
-                    network: Box::new(net),
-                });
-            }
-        }
-    }
-    edits
 }

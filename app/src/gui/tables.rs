@@ -1305,7 +1305,7 @@ impl LadderApp {
                 let name = self
                     .doc
                     .as_ref()
-                    .and_then(|d| d.project.symbol_tables.get(t))
+                    .and_then(|d| d.project().symbol_tables.get(t))
                     .map(|t| t.name.clone());
                 match name {
                     Some(name) => {
@@ -1371,7 +1371,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return;
         };
-        let project = &doc.project;
+        let project = doc.project();
         let state = &mut self.tables;
         let len = sheet.len(project);
         // Growing tables end in an empty line: typing its address (or code) adds a row.
@@ -1463,7 +1463,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return;
         };
-        let project = &doc.project;
+        let project = doc.project();
         let data = &project.data;
         let (lo, hi) = project.profile().range(Area::K);
         let mut actions = Vec::new();
@@ -1530,7 +1530,7 @@ impl LadderApp {
     fn run_actions(&mut self, actions: Vec<Action>) {
         let lang = self.settings.lang;
         for action in actions {
-            let Some(project) = self.doc.as_ref().map(|d| &d.project) else {
+            let Some(project) = self.doc.as_ref().map(|d| d.project()) else {
                 return;
             };
             match action {
@@ -1590,7 +1590,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return;
         };
-        let current = doc.project.version.clone();
+        let current = doc.project().version.clone();
         ui.heading(t(Msg::VersionInfo));
         let mut commit = false;
         egui::Grid::new("version-info")
@@ -1754,7 +1754,7 @@ mod tests {
     }
 
     fn project<'a>(h: &'a Harness<'static, LadderApp>) -> &'a Project {
-        &h.state().doc.as_ref().unwrap().project
+        h.state().doc.as_ref().unwrap().project()
     }
 
     /// Clicks a cell, replaces its text and presses Enter, as a user does.
@@ -1779,7 +1779,7 @@ mod tests {
     }
 
     fn undo_all(h: &mut Harness<'static, LadderApp>) {
-        while h.state().doc.as_ref().unwrap().history.undo_len() > 0 {
+        while h.state().doc.as_ref().unwrap().history().undo_len() > 0 {
             h.state_mut().undo();
         }
         h.run();

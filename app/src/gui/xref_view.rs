@@ -32,7 +32,7 @@ impl LadderApp {
         if self.xref.key == Some(key) {
             return;
         }
-        let project = &doc.project;
+        let project = doc.project();
         let x = xref::build(project);
         self.xref.rows = x
             .refs

@@ -202,6 +202,38 @@ impl History {
     pub fn redo_len(&self) -> usize {
         self.redo.len()
     }
+
+    /// The step the next undo takes back (after a redo: what the redo did, inverted).
+    pub fn last_undo(&self) -> Option<&Change> {
+        self.undo.last()
+    }
+
+    /// The step the next redo does again (after an undo: what the undo did, inverted).
+    pub fn last_redo(&self) -> Option<&Change> {
+        self.redo.last()
+    }
+}
+
+impl Project {
+    /// Whether a change whose inverse is `inverse` changed nothing: applying the inverse would
+    /// leave the project as it is (Delete on an empty cell, a table value typed again). Such a
+    /// change is no undo step and does not make the project unsaved.
+    pub fn is_unchanged_by(&self, inverse: &Change) -> bool {
+        match inverse {
+            Change::Ladder(e) => self.ladder.is_unchanged_by(e),
+            Change::Batch(cs) => cs.iter().all(|c| self.is_unchanged_by(c)),
+            Change::Whole(p) => **p == *self,
+            Change::Table(t) => match t {
+                TableEdit::Symbols(t) => *t == self.symbol_tables,
+                TableEdit::Data(t) => **t == self.data,
+                TableEdit::Messages(t) => **t == self.messages,
+                TableEdit::Diagnosis(t) => *t == self.diagnosis,
+                TableEdit::Permissions(t) => *t == self.permissions,
+                TableEdit::MCodes(t) => *t == self.m_codes,
+                TableEdit::Version(t) => **t == self.version,
+            },
+        }
+    }
 }
 
 #[cfg(test)]

@@ -351,6 +351,38 @@ impl Ladder {
         }
     }
 
+    /// Whether an edit whose inverse is `inverse` changed nothing (see
+    /// [`Project::is_unchanged_by`](crate::model::Project::is_unchanged_by)).
+    pub fn is_unchanged_by(&self, inverse: &Edit) -> bool {
+        let net = |at: &CellRef| {
+            self.blocks
+                .get(at.block)
+                .and_then(|b| b.networks.get(at.network))
+        };
+        match inverse {
+            Edit::Batch(edits) => edits.iter().all(|e| self.is_unchanged_by(e)),
+            Edit::SetCell { at, cell } => {
+                net(at).and_then(|n| n.cell(at.row, at.col)) == Some(cell)
+            }
+            Edit::SetLink { at, on } => net(at).is_some_and(|n| n.link(at.row, at.col) == *on),
+            Edit::SetNetworkText {
+                block,
+                network,
+                title,
+                comment,
+            } => self
+                .blocks
+                .get(*block)
+                .and_then(|b| b.networks.get(*network))
+                .is_some_and(|n| n.title == *title && n.comment == *comment),
+            Edit::SetBlockHeader { index, kind, info } => self
+                .blocks
+                .get(*index)
+                .is_some_and(|b| b.kind == *kind && b.info == *info),
+            _ => false,
+        }
+    }
+
     /// Places an element (or clears a cell with [`Cell::Empty`]).
     pub fn place(&mut self, at: CellRef, cell: Cell) -> Result<Edit, EditError> {
         self.apply(Edit::SetCell { at, cell })
@@ -369,31 +401,11 @@ impl Ladder {
         self.apply(Edit::SetLink { at, on })
     }
 
-    /// F6: places a contact at `at` and links its two ends up to the row above, so that it is
-    /// in parallel with what stands above it.
+    /// F6: places a contact at `at` and links its two ends up to the row above (see
+    /// [`Ladder::plan_parallel_contact`]).
     pub fn parallel_contact(&mut self, at: CellRef, contact: Cell) -> Result<Edit, EditError> {
-        if at.row == 0 {
-            return Err(EditError::NothingAbove);
-        }
-        let above = CellRef {
-            row: at.row - 1,
-            ..at
-        };
-        let mut edits = vec![Edit::SetCell { at, cell: contact }];
-        if at.col > 0 {
-            edits.push(Edit::SetLink {
-                at: above,
-                on: true,
-            });
-        }
-        edits.push(Edit::SetLink {
-            at: CellRef {
-                col: at.col + 1,
-                ..above
-            },
-            on: true,
-        });
-        self.apply(Edit::Batch(edits))
+        let edit = Ladder::plan_parallel_contact(at, contact)?;
+        self.apply(edit)
     }
 
     /// Inserts an empty row before `row` (Ctrl+T above, Ctrl+R below the cursor).
@@ -403,61 +415,25 @@ impl Ladder {
         network: usize,
         row: usize,
     ) -> Result<Edit, EditError> {
-        let content = Row::empty(self.width);
-        self.apply(Edit::InsertRow {
-            block,
-            network,
-            row,
-            content,
-        })
+        let edit = self.plan_insert_row(block, network, row);
+        self.apply(edit)
     }
 
-    /// Deletes a row. Links from the row above into it are dropped with it.
+    /// Deletes a row (see [`Ladder::plan_delete_row`]).
     pub fn delete_row(
         &mut self,
         block: usize,
         network: usize,
         row: usize,
     ) -> Result<Edit, EditError> {
-        let mut edits = Vec::new();
-        let n = self
-            .blocks
-            .get(block)
-            .and_then(|b| b.networks.get(network))
-            .ok_or(EditError::NoSuchPlace("network"))?;
-        let last = row + 1 == n.rows.len();
-        if last && row > 0 {
-            // The row above loses the links that led into the deleted last row.
-            for (j, on) in n.rows[row - 1].links.iter().enumerate() {
-                if *on {
-                    edits.push(Edit::SetLink {
-                        at: CellRef {
-                            block,
-                            network,
-                            row: row - 1,
-                            col: j,
-                        },
-                        on: false,
-                    });
-                }
-            }
-        }
-        edits.push(Edit::DeleteRow {
-            block,
-            network,
-            row,
-        });
-        self.apply(Edit::Batch(edits))
+        let edit = self.plan_delete_row(block, network, row)?;
+        self.apply(edit)
     }
 
     /// Inserts an empty network before `index` (Ctrl+U above, Ctrl+I below).
     pub fn insert_network(&mut self, block: usize, index: usize) -> Result<Edit, EditError> {
-        let network = Box::new(self.new_network());
-        self.apply(Edit::InsertNetwork {
-            block,
-            index,
-            network,
-        })
+        let edit = self.plan_insert_network(block, index);
+        self.apply(edit)
     }
 
     /// Deletes a network.

@@ -7,7 +7,9 @@ pub mod edit;
 pub mod ladder;
 pub mod network;
 pub mod operand;
+pub mod plan;
 pub mod project;
+pub mod region;
 pub mod tables;
 
 pub use block::{Block, BlockKind};

@@ -1,0 +1,295 @@
+//! Where commands meet the application: whether a command can run now, the keys that ask
+//! for one, and the one place that runs it. Menus, toolbars and right-click menus only queue
+//! commands during the frame ([`LadderApp::ask`]); [`LadderApp::run_pending`] runs them after
+//! it, so a command never acts on half-drawn state.
+
+use super::LadderApp;
+use super::command::Command;
+use super::editing::{PlaceKind, Prompt};
+use super::files::{Action, DialogKind};
+use super::place::View;
+use super::selection::Selection;
+
+impl LadderApp {
+    /// Queues a command; it runs after the frame.
+    pub fn ask(&mut self, c: Command) {
+        self.pending.push(c);
+    }
+
+    /// Runs the commands queued during the frame, in order.
+    pub fn run_pending(&mut self) {
+        let pending = std::mem::take(&mut self.pending);
+        if !pending.is_empty()
+            && let Some(ctx) = &self.ctx
+        {
+            // The frame was drawn before the commands ran: draw what they changed.
+            ctx.request_repaint();
+        }
+        for c in pending {
+            if self.enabled(c) {
+                // One command, one undo step, however many edits it makes.
+                self.grouped(|app| app.execute(c));
+            }
+        }
+    }
+
+    fn in_ladder(&self) -> bool {
+        matches!(self.view, View::Block(_)) && self.doc.is_some()
+    }
+
+    /// Whether a command can run now (menus grey out the others, keys pass them by).
+    pub fn enabled(&self, c: Command) -> bool {
+        let doc = self.doc.as_ref();
+        match c {
+            Command::Undo => doc.is_some_and(|d| d.history().undo_len() > 0),
+            Command::Redo => doc.is_some_and(|d| d.history().redo_len() > 0),
+            Command::Paste => self.in_ladder() && self.clipboard.is_some(),
+            Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
+            Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
+            Command::ZoomIn | Command::ZoomOut | Command::ClearSelection | Command::Pen => true,
+            Command::ToggleComments
+            | Command::ToggleTitles
+            | Command::ToggleTree
+            | Command::ToggleOutput
+            | Command::ToggleToolbar
+            | Command::ToggleStatus => true,
+            c if c.edits_ladder() => self.in_ladder(),
+            _ => doc.is_some(),
+        }
+    }
+
+    /// For the switches among the commands: whether they are on now.
+    pub fn checked(&self, c: Command) -> Option<bool> {
+        let s = &self.settings;
+        Some(match c {
+            Command::Pen => self.pen,
+            Command::ToggleComments => s.show_comments,
+            Command::ToggleTitles => s.show_titles,
+            Command::ToggleTree => s.show_tree,
+            Command::ToggleOutput => s.show_output,
+            Command::ToggleToolbar => s.show_toolbar,
+            Command::ToggleStatus => s.show_status,
+            Command::Display(m) => s.display == m,
+            Command::Language(l) => s.lang == l,
+            _ => return None,
+        })
+    }
+
+    /// The keys of this frame, turned into commands. While a text field, a prompt or a dialog
+    /// has the keyboard only the global keys act (F9), so typing never edits the ladder.
+    pub fn keys(&mut self, ctx: &egui::Context) {
+        let typing = self.prompt.is_some()
+            || self.function_dialog.is_some()
+            || self.question.is_some()
+            || ctx.egui_wants_keyboard_input();
+        for c in Command::keyed() {
+            if (typing && !c.global()) || !self.enabled(c) {
+                continue;
+            }
+            let Some(shortcut) = c.shortcut() else {
+                continue;
+            };
+            if ctx.input_mut(|i| i.consume_shortcut(&shortcut)) {
+                self.ask(c);
+                return;
+            }
+        }
+        if typing {
+            return;
+        }
+        // The system's own cut, copy and paste (what Ctrl+X/C/V become on some platforms).
+        let event = ctx.input(|i| {
+            i.events.iter().find_map(|e| match e {
+                egui::Event::Cut => Some(Command::Cut),
+                egui::Event::Copy => Some(Command::Copy),
+                egui::Event::Paste(_) => Some(Command::Paste),
+                _ => None,
+            })
+        });
+        if let Some(c) = event.filter(|c| self.enabled(*c)) {
+            self.ask(c);
+        }
+    }
+
+    pub(super) fn open_prompt(&mut self, kind: PlaceKind, text: String) {
+        self.prompt = Some(Prompt {
+            kind,
+            text,
+            error: None,
+        });
+    }
+
+    /// Selects `what` in the cursor's block and deletes it (Delete row, Delete network).
+    fn delete_at_cursor(&mut self, what: impl FnOnce(super::place::Cursor) -> Selection) {
+        if let Some(at) = self.existing_cursor() {
+            self.selection = Some((at.block, what(at)));
+            self.delete_selection();
+        }
+    }
+
+    /// Runs a command now. Only [`LadderApp::run_pending`] calls this.
+    fn execute(&mut self, c: Command) {
+        let copy_to_system = |app: &mut LadderApp| {
+            if let Some(ctx) = app.ctx.clone() {
+                app.copy_to_system(&ctx);
+            }
+        };
+        match c {
+            Command::New => self.request(Action::New),
+            Command::Open => self.request(Action::OpenDialog),
+            Command::OpenRecent(i) => {
+                if let Some(p) = self.settings.recent.get(i).cloned() {
+                    self.request(Action::Open(p));
+                }
+            }
+            Command::Save => self.save(),
+            Command::SaveAs => self.start_dialog(DialogKind::SaveProjectAs),
+            Command::Close => self.request(Action::Close),
+            Command::ExportIl => self.start_dialog(DialogKind::ExportIl),
+            Command::ExportComments => self.start_dialog(DialogKind::ExportComments),
+            Command::ImportComments => self.start_dialog(DialogKind::ImportComments),
+            Command::Exit => self.request(Action::Exit),
+            Command::Undo => self.undo(),
+            Command::Redo => self.redo(),
+            Command::Find => self.open_prompt(PlaceKind::Find, self.last_find.clone()),
+            Command::Replace => self.open_prompt(PlaceKind::Replace, String::new()),
+            Command::GoTo => self.open_prompt(PlaceKind::GoTo, String::new()),
+            Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
+            Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),
+            Command::Coil => self.open_prompt(PlaceKind::Coil { negated: false }, "".into()),
+            Command::CoilN => self.open_prompt(PlaceKind::Coil { negated: true }, "".into()),
+            Command::Function => self.open_function_dialog(),
+            Command::Wire => self.wire(),
+            Command::Link => self.link(),
+            Command::Parallel => {
+                self.open_prompt(PlaceKind::Parallel { negated: false }, "".into())
+            }
+            Command::ParallelNc => {
+                self.open_prompt(PlaceKind::Parallel { negated: true }, "".into())
+            }
+            Command::Cut => {
+                self.cut();
+                copy_to_system(self);
+            }
+            Command::Copy => {
+                self.copy();
+                copy_to_system(self);
+            }
+            Command::Paste => self.paste(),
+            Command::CopyRow => {
+                self.copy_row();
+                copy_to_system(self);
+            }
+            Command::Delete => {
+                // The selection when there is one, else the element at the cursor; never a
+                // network added to an empty block only to delete nothing in it.
+                if self.selection.is_some() {
+                    self.delete_selection();
+                } else if let Some(at) = self.existing_cursor() {
+                    self.edit(ladder_engine::model::Edit::SetCell {
+                        at,
+                        cell: ladder_engine::model::Cell::Empty,
+                    });
+                }
+            }
+            Command::DeleteLink => {
+                if let Some(at) = self.existing_cursor() {
+                    self.edit(ladder_engine::model::Edit::SetLink { at, on: false });
+                }
+            }
+            Command::InsertRowAbove => self.insert_row(false),
+            Command::InsertRowBelow => self.insert_row(true),
+            Command::DeleteRow => self.delete_at_cursor(|at| Selection::Rows {
+                network: at.network,
+                rows: (at.row, at.row),
+            }),
+            Command::InsertNetworkAbove => self.insert_network(false),
+            Command::InsertNetworkBelow => self.insert_network(true),
+            Command::DeleteNetwork => self.delete_at_cursor(|at| Selection::Networks {
+                networks: (at.network, at.network),
+            }),
+            Command::NetworkTitle | Command::NetworkComment => {
+                if let Some(at) = self.ensure_network()
+                    && let Some(n) = self
+                        .doc
+                        .as_ref()
+                        .and_then(|d| d.project().ladder.blocks.get(at.block))
+                        .and_then(|b| b.networks.get(at.network))
+                {
+                    let (kind, text) = if c == Command::NetworkTitle {
+                        (PlaceKind::NetworkTitle, n.title.clone())
+                    } else {
+                        (PlaceKind::NetworkComment, n.comment.clone())
+                    };
+                    self.open_prompt(kind, text);
+                }
+            }
+            Command::ClearSelection => self.selection = None,
+            Command::Pen => self.pen = !self.pen,
+            Command::ToggleComments => self.settings.show_comments ^= true,
+            Command::ToggleTitles => self.settings.show_titles ^= true,
+            Command::ToggleTree => self.settings.show_tree ^= true,
+            Command::ToggleOutput => self.settings.show_output ^= true,
+            Command::ToggleToolbar => self.settings.show_toolbar ^= true,
+            Command::ToggleStatus => self.settings.show_status ^= true,
+            Command::ZoomIn => self.settings.step_zoom(true),
+            Command::ZoomOut => self.settings.step_zoom(false),
+            Command::Compile => self.compile(),
+            Command::NewSub => self.open_prompt(PlaceKind::NewSub, String::new()),
+            Command::ViewCalls(n) => self.view_calls(n),
+            Command::RenameSub(n) => {
+                let name = self.doc.as_ref().and_then(|d| {
+                    let l = &d.project().ladder;
+                    l.sub_index(n).map(|i| l.blocks[i].kind.clone())
+                });
+                if let Some(ladder_engine::model::BlockKind::Sub { number, name }) = name {
+                    let text = format!("{number} {name}").trim().to_string();
+                    self.open_prompt(PlaceKind::RenameSub(number), text);
+                }
+            }
+            Command::DeleteSub(n) => {
+                if let Some(i) = self
+                    .doc
+                    .as_ref()
+                    .and_then(|d| d.project().ladder.sub_index(n))
+                {
+                    self.delete_subprogram(i);
+                }
+            }
+            Command::BlockInfo(key) => {
+                let info = self.doc.as_ref().and_then(|d| {
+                    let l = &d.project().ladder;
+                    key.index(l).map(|i| l.blocks[i].info.clone())
+                });
+                if let Some(info) = info {
+                    self.open_prompt(PlaceKind::BlockInfo(key), info);
+                }
+            }
+            Command::Language(l) => self.settings.lang = l,
+            Command::Display(m) => self.settings.display = m,
+            Command::ShowView(v) => self.show_view(v),
+            Command::Help(p) => self.help = Some(p),
+            Command::Move(d) => {
+                let (dr, dc) = d.delta();
+                self.move_cursor(dr, dc);
+            }
+            Command::Extend(d) => {
+                let (dr, dc) = d.delta();
+                self.extend_by(dr, dc);
+            }
+        }
+    }
+
+    /// Shows a view (a click in the tree or on a tab, a Tools menu entry).
+    pub fn show_view(&mut self, v: View) {
+        self.view = v;
+    }
+}
+
+/// The Help page listing the keys, for tests and the Help window.
+pub fn shortcut_rows() -> Vec<(String, super::i18n::Msg)> {
+    Command::keyed()
+        .into_iter()
+        .filter_map(|c| Some((c.shortcut_text()?, c.text())))
+        .collect()
+}

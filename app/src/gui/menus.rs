@@ -1,0 +1,252 @@
+//! The menu bar, the toolbars, the ladder's right-click menu and the Help windows, all built
+//! from [`Command`]: an entry shows the command's text and key, is greyed out when the
+//! command cannot run, and only queues the command when clicked.
+
+use super::LadderApp;
+use super::command::{
+    BASIC_TOOLBAR, Command, DISPLAY_MODES, EDIT_GROUPS, FILE_MENU, HELP_PAGES, HelpPage,
+    LADDER_TOOLBAR, REFERENCE_VIEWS, VIEW_TOGGLES,
+};
+use super::i18n::{Lang, Msg};
+use super::place::View;
+
+impl LadderApp {
+    /// One menu entry: a switch shows a check mark, any other command a button with its key.
+    fn entry(&mut self, ui: &mut egui::Ui, c: Command) {
+        self.entry_text(ui, c, c.text().text(self.settings.lang).to_string());
+    }
+
+    fn entry_text(&mut self, ui: &mut egui::Ui, c: Command, text: String) {
+        let enabled = self.enabled(c);
+        let clicked = match (c, self.checked(c)) {
+            (Command::Display(_) | Command::Language(_), Some(on)) => ui
+                .add_enabled(enabled, egui::Button::selectable(on, text))
+                .clicked(),
+            (_, Some(on)) => {
+                let mut on = on;
+                ui.add_enabled(enabled, egui::Checkbox::new(&mut on, text))
+                    .changed()
+            }
+            (_, None) => {
+                let mut b = egui::Button::new(text);
+                if let Some(keys) = c.shortcut_text() {
+                    b = b.shortcut_text(keys);
+                }
+                ui.add_enabled(enabled, b).clicked()
+            }
+        };
+        if clicked {
+            self.ask(c);
+            if self.checked(c).is_none() || matches!(c, Command::Language(_)) {
+                ui.close();
+            }
+        }
+    }
+
+    /// The menu bar.
+    pub fn menu_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button(Msg::File.text(lang), |ui| self.file_menu_ui(ui));
+            ui.menu_button(Msg::Edit.text(lang), |ui| self.edit_menu_ui(ui));
+            ui.menu_button(Msg::View.text(lang), |ui| self.view_menu_ui(ui));
+            ui.menu_button(Msg::Plc.text(lang), |ui| self.entry(ui, Command::Compile));
+            ui.menu_button(Msg::Tools.text(lang), |ui| {
+                for v in REFERENCE_VIEWS {
+                    let c = Command::ShowView(v);
+                    let text = format!("{}: {}", Msg::Reference.text(lang), c.text().text(lang));
+                    self.entry_text(ui, c, text);
+                }
+                ui.separator();
+                self.entry(ui, Command::NewSub);
+            });
+            ui.menu_button(Msg::Help.text(lang), |ui| {
+                for p in HELP_PAGES {
+                    self.entry(ui, Command::Help(p));
+                }
+            });
+        });
+    }
+
+    fn file_menu_ui(&mut self, ui: &mut egui::Ui) {
+        for c in FILE_MENU {
+            match c {
+                Some(c) => self.entry(ui, *c),
+                None => {
+                    ui.separator();
+                }
+            }
+        }
+        let recent: Vec<String> = self
+            .settings
+            .recent
+            .iter()
+            .enumerate()
+            .map(|(i, p)| format!("{} {}", i + 1, p.display()))
+            .collect();
+        if !recent.is_empty() {
+            ui.separator();
+            for (i, text) in recent.into_iter().enumerate() {
+                self.entry_text(ui, Command::OpenRecent(i), text);
+            }
+        }
+        ui.separator();
+        self.entry(ui, Command::Exit);
+    }
+
+    fn edit_menu_ui(&mut self, ui: &mut egui::Ui) {
+        self.entry(ui, Command::Undo);
+        self.entry(ui, Command::Redo);
+        ui.separator();
+        for c in [Command::Find, Command::Replace, Command::GoTo] {
+            self.entry(ui, c);
+        }
+        if let View::Block(b) = self.view {
+            if let Some(number) = self
+                .doc
+                .as_ref()
+                .and_then(|d| d.project().ladder.blocks.get(b))
+                .and_then(|b| b.kind.sub_number())
+            {
+                self.entry(ui, Command::ViewCalls(number));
+            }
+            ui.separator();
+            self.commands_ui(ui);
+        }
+    }
+
+    fn view_menu_ui(&mut self, ui: &mut egui::Ui) {
+        ui.label(Msg::Language.text(self.settings.lang));
+        for l in [Lang::Zh, Lang::En] {
+            self.entry(ui, Command::Language(l));
+        }
+        ui.separator();
+        for m in DISPLAY_MODES {
+            self.entry(ui, Command::Display(m));
+        }
+        self.entry(ui, Command::ToggleComments);
+        ui.separator();
+        for c in VIEW_TOGGLES {
+            self.entry(ui, *c);
+        }
+        ui.separator();
+        self.entry(ui, Command::ZoomIn);
+        self.entry(ui, Command::ZoomOut);
+    }
+
+    /// The ladder editing commands as menu entries (Edit menu, right-click menu).
+    pub fn commands_ui(&mut self, ui: &mut egui::Ui) {
+        for (g, group) in EDIT_GROUPS.iter().enumerate() {
+            if g > 0 {
+                ui.separator();
+            }
+            for c in group.iter() {
+                self.entry(ui, *c);
+            }
+        }
+    }
+
+    /// The basic toolbar and the ladder toolbar: each button runs what its key runs.
+    pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let button = |app: &mut LadderApp, ui: &mut egui::Ui, c: Command| {
+            let r = ui.add_enabled(app.enabled(c), egui::Button::new(c.tool_text().text(lang)));
+            let r = match c.shortcut_text() {
+                Some(keys) => r.on_hover_text(keys),
+                None => r,
+            };
+            if r.clicked() {
+                app.ask(c);
+            }
+        };
+        ui.horizontal(|ui| {
+            for c in BASIC_TOOLBAR {
+                button(self, ui, *c);
+            }
+            ui.separator();
+            let mode = self.settings.display;
+            egui::ComboBox::new("display", Msg::DisplayModeLabel.text(lang))
+                .selected_text(Command::Display(mode).text().text(lang))
+                .show_ui(ui, |ui| {
+                    for m in DISPLAY_MODES {
+                        let c = Command::Display(m);
+                        if ui
+                            .selectable_label(mode == m, c.text().text(lang))
+                            .clicked()
+                        {
+                            self.ask(c);
+                        }
+                    }
+                });
+            egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
+                .selected_text(format!("{}%", self.settings.zoom))
+                .show_ui(ui, |ui| {
+                    for z in super::settings::ZOOMS {
+                        ui.selectable_value(&mut self.settings.zoom, z, format!("{z}%"));
+                    }
+                });
+        });
+        ui.horizontal(|ui| {
+            let mut pen = self.pen;
+            if ui
+                .toggle_value(&mut pen, Command::Pen.text().text(lang))
+                .on_hover_text(Msg::Pen.text(lang))
+                .clicked()
+            {
+                self.ask(Command::Pen);
+            }
+            for c in LADDER_TOOLBAR {
+                button(self, ui, *c);
+            }
+        });
+    }
+
+    /// The Help windows.
+    pub fn help_ui(&mut self, ctx: &egui::Context) {
+        let Some(page) = self.help else { return };
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let mut open = true;
+        egui::Window::new(t(Command::Help(page).text()))
+            .open(&mut open)
+            .default_size([520.0, 480.0])
+            .vscroll(true)
+            .show(ctx, |ui| match page {
+                HelpPage::About => {
+                    ui.heading(format!("Ladder Studio {}", env!("CARGO_PKG_VERSION")));
+                    ui.label(t(Msg::AboutText));
+                    ui.label(env!("CARGO_PKG_LICENSE"));
+                }
+                HelpPage::Shortcuts => {
+                    egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
+                        for (keys, what) in super::dispatch::shortcut_rows() {
+                            ui.monospace(keys);
+                            ui.label(t(what));
+                            ui.end_row();
+                        }
+                    });
+                }
+                HelpPage::Instructions => {
+                    for spec in ladder_engine::catalog::CATALOG.iter() {
+                        let (help, cat) = match lang {
+                            Lang::Zh => (spec.help_zh, spec.category.name_zh()),
+                            Lang::En => (spec.help_en, spec.category.name_en()),
+                        };
+                        ui.collapsing(format!("{}  ({cat})", spec.name), |ui| {
+                            ui.label(help);
+                            for o in spec.operands {
+                                let h = match lang {
+                                    Lang::Zh => o.help_zh,
+                                    Lang::En => o.help_en,
+                                };
+                                ui.label(format!("{}: {h}", o.name));
+                            }
+                        });
+                    }
+                }
+            });
+        if !open {
+            self.help = None;
+        }
+    }
+}
