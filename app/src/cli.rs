@@ -1,5 +1,6 @@
-//! The headless subcommands (README, "Command line"). Exit codes: 0 success, 1 valid input that fails
-//! (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad arguments).
+//! The headless subcommands (docs/files.md, "Command line"). Exit codes: 0 success, 1 valid
+//! input that fails (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad
+//! arguments).
 
 use crate::source::Source;
 use clap::{Parser, Subcommand};

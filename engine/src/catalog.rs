@@ -357,8 +357,9 @@ impl InstrSpec {
         matches!(self.class, InstrClass::Coil | InstrClass::Function)
     }
 
-    /// Steps the instruction costs with `operand_count` operands (§5 DECISION: a basic
-    /// instruction is 1 step, a function instruction 1 + its operands, CODB's table included).
+    /// Steps the instruction costs with `operand_count` operands (docs/plc.md, "Blocks and
+    /// steps": a basic instruction is 1 step, a function instruction 1 + its operands, CODB's
+    /// table included).
     pub fn steps(&self, operand_count: usize) -> u32 {
         match self.class {
             InstrClass::Function => 1 + operand_count as u32,

@@ -1,4 +1,4 @@
-//! Comments as CSV (README, `export-comments` / `import-comments`): symbols, network
+//! Comments as CSV (docs/files.md, "Comments CSV"): symbols, network
 //! comments, messages and the other tables' comments, one column per language.
 //!
 //! Columns: `kind,table,key,symbol,<lang>…`. `kind` is `symbol` (table: the symbol table),

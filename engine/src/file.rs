@@ -1,5 +1,6 @@
-//! Project files (`.ldp`, README "Projects"): a header line with the schema version and a CRC-32
-//! of the body, then the project serialized as RON. This is the engine's only I/O.
+//! Project files (`.ldp`, docs/files.md, "Project files (.ldp)"): a header line with the schema
+//! version and a CRC-32 of the body, then the project serialized as RON. This is the engine's
+//! only I/O.
 
 use crate::model::Project;
 use std::fs;

@@ -176,8 +176,8 @@ impl Diagnostic {
         self.code.severity()
     }
 
-    /// Formats the diagnostic as `check` prints it (README, "Command line"), with `path` in front:
-    /// `PATH:BLOCK:NETWORK:ROW:COL: error: MESSAGE` for ladder cells (1-based), or
+    /// Formats the diagnostic as `check` prints it (docs/files.md, "Diagnostics"), with `path`
+    /// in front: `PATH:BLOCK:NETWORK:ROW:COL: error: MESSAGE` for ladder cells (1-based), or
     /// `PATH:LINE: error: MESSAGE` for IL lines.
     pub fn render(&self, path: &str) -> String {
         let l = &self.location;

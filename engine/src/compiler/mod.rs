@@ -64,8 +64,8 @@ impl Program {
     }
 }
 
-/// Steps per part of the program (§5: a basic instruction is 1 step, a function instruction
-/// 1 + its operands).
+/// Steps per part of the program (docs/plc.md, "Blocks and steps": a basic instruction is 1
+/// step, a function instruction 1 + its operands).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct StepCounts {
     /// Level 1 plus every subprogram it reaches (each once).

@@ -14,7 +14,7 @@ use std::collections::HashMap;
 pub struct Project {
     /// The target controller.
     pub profile: ProfileId,
-    /// Level-2 division count n (§5: a project setting, default 1).
+    /// Level-2 division count n (docs/plc.md, "Level-2 slices": a project setting, default 1).
     pub level2_division: u32,
     /// The ladder program.
     pub ladder: Ladder,

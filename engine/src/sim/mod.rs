@@ -1,4 +1,4 @@
-//! Stimulus scripts (README, "Stimulus scripts"; docs/cnc.md for the `cnc` lines): parsed
+//! Stimulus scripts (docs/scripts.md; docs/cnc.md, "Script commands" for the `cnc` lines): parsed
 //! whole before anything runs, so a typo on line 40 is reported before line 1 executes;
 //! then run against a [`Machine`], counting `expect`s. Every line that acts on the machine
 //! becomes a [`MachineCommand`], the same commands the editor sends to a running machine.

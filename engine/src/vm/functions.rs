@@ -682,8 +682,9 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         let issuing = !st.prev_act;
         if issuing {
             // A new command: CMD to EC0–EC6, DT1 to EIF0–15, DT2 to EID0–31, EBUF inverted.
-            // ESBK from an earlier abandoned command is withdrawn (DECISION: §4.5 only says
-            // when it is set; left at 1 it would stop every later command).
+            // ESBK from an earlier abandoned command is withdrawn (docs/plc.md, "Choices where
+            // the manual is silent": the manual only says when it is set; left at 1 it would
+            // stop every later command).
             let cmd = uint(mem, a[1], 1) as u8 & 0x7F;
             if let Some(x) = mem.get_mut((base + 1) as usize) {
                 *x = (*x & 0x80) | cmd;
