@@ -8,6 +8,7 @@ pub mod ladder;
 pub mod network;
 pub mod operand;
 pub mod project;
+pub mod sheets;
 pub mod tables;
 
 pub use block::{Block, BlockKind};
