@@ -224,7 +224,11 @@ impl LadderApp {
                     self.open_prompt(kind, text);
                 }
             }
-            Command::ClearSelection => self.selection = None,
+            Command::ClearSelection => {
+                // Escape abandons what was typed in a table and not taken.
+                self.selection = None;
+                self.tables.forget_drafts();
+            }
             Command::Pen => self.pen = !self.pen,
             Command::ToggleComments => self.settings.show_comments ^= true,
             Command::ToggleTitles => self.settings.show_titles ^= true,

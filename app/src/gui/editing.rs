@@ -73,8 +73,13 @@ impl LadderApp {
     pub fn try_edit(&mut self, change: impl Into<Change>) -> Result<bool, String> {
         let lang = self.settings.lang;
         let doc = self.doc.as_mut().ok_or(Msg::NoProject.text(lang))?;
-        doc.apply(change)
-            .map_err(|e| super::errors::refused(&e, lang))
+        let changed = doc
+            .apply(change)
+            .map_err(|e| super::errors::refused(&e, lang))?;
+        if changed {
+            self.last_change = self.tables.mark();
+        }
+        Ok(changed)
     }
 
     /// Applies a change from a command; a refusal goes to the output window. True when the
@@ -514,29 +519,39 @@ impl LadderApp {
     /// Ctrl+Z: a draft being typed in a table goes first, as a text field would; else the last
     /// step of the project is taken back and shown where it changed.
     pub fn undo(&mut self) {
+        // A draft typed after the last change goes first, as a text field undoes its typing.
+        if self.tables.latest_draft() > Some(self.last_change) && self.tables.undo_draft() {
+            return;
+        }
         let Some(doc) = self.doc.as_mut() else { return };
-        let place = doc.undo().cloned();
-        let place = place.and_then(|c| super::place::place_of(&c, self.doc.as_ref()?.project()));
-        self.after_history(place);
+        let step = doc.undo().cloned();
+        self.after_history(step);
     }
 
     /// Ctrl+Y: the last undone step again, shown where it changed.
     pub fn redo(&mut self) {
         let Some(doc) = self.doc.as_mut() else { return };
-        let place = doc.redo().cloned();
-        let place = place.and_then(|c| super::place::place_of(&c, self.doc.as_ref()?.project()));
-        self.after_history(place);
+        let step = doc.redo().cloned();
+        self.after_history(step);
     }
 
-    fn after_history(&mut self, place: Option<super::place::Place>) {
+    /// After an undo or redo: the view and the place of the step (a table's row, a ladder
+    /// cell, a block), so a change never comes back unseen.
+    fn after_history(&mut self, step: Option<Change>) {
         self.clamp_ui_state();
-        match place {
+        let (Some(step), Some(doc)) = (step, self.doc.as_ref()) else {
+            return;
+        };
+        if let Change::Table(t) = &step {
+            self.view = self.tables.show_change(doc.project(), t);
+            return;
+        }
+        match super::place::place_of(&step, doc.project()) {
             Some(super::place::Place::Cell(at)) => self.jump(at),
             Some(super::place::Place::Block(b)) => {
                 self.view = View::Block(b);
                 self.clamp_ui_state();
             }
-            Some(super::place::Place::View(v)) => self.view = v,
             None => {}
         }
     }

@@ -99,6 +99,9 @@ pub struct LadderApp {
     pub last_find: String,
     /// Commands asked for during this frame; they run after it.
     pub pending: Vec<command::Command>,
+    /// When the project last changed, on the tables' draft clock (undo takes back the later
+    /// of a change and a draft).
+    pub last_change: u64,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -140,6 +143,7 @@ impl LadderApp {
             tabs: Vec::new(),
             last_find: String::new(),
             pending: Vec::new(),
+            last_change: 0,
         };
         let start = path
             .map(Path::to_path_buf)

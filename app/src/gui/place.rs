@@ -1,7 +1,7 @@
 //! Where the editor points in a project: the cell cursor and blocks named by what they are.
 //! A leaf module, so commands, views and the application can all name a place.
 
-use ladder_engine::model::{BlockKind, CellRef, Change, Edit, Ladder, Project, TableEdit};
+use ladder_engine::model::{BlockKind, CellRef, Change, Edit, Ladder, Project};
 
 /// What the main area shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -82,8 +82,6 @@ pub enum Place {
     Cell(CellRef),
     /// A block as a whole (a subprogram added, renamed or its information changed).
     Block(usize),
-    /// A table's view.
-    View(View),
 }
 
 /// Where `change` (a step of the history, applied or about to be) shows in `project`.
@@ -92,23 +90,8 @@ pub fn place_of(change: &Change, project: &Project) -> Option<Place> {
         Change::Batch(cs) => cs.iter().find_map(|c| place_of(c, project)),
         Change::Whole(_) => None,
         Change::Ladder(e) => edit_place(e, project),
-        Change::Table(t) => Some(Place::View(match t {
-            TableEdit::Symbols(old) => {
-                // The table whose rows differ from the other side of the step.
-                let now = &project.symbol_tables;
-                let i = (0..now.len().max(old.len()))
-                    .find(|i| now.get(*i) != old.get(*i))
-                    .unwrap_or(0)
-                    .min(now.len().saturating_sub(1));
-                View::Symbols(i)
-            }
-            TableEdit::Data(_) => View::Data,
-            TableEdit::Messages(_) => View::Messages,
-            TableEdit::Diagnosis(_) => View::Diagnosis,
-            TableEdit::Permissions(_) => View::Permissions,
-            TableEdit::MCodes(_) => View::MCodes,
-            TableEdit::Version(_) => View::Version,
-        })),
+        // A table shows its own changes (the tables view selects the row).
+        Change::Table(_) => None,
     }
 }
 

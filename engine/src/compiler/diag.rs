@@ -92,12 +92,15 @@ pub enum Code {
     T004DataValue,
     T005MessageNumber,
     T006TableName,
+    T007SymbolArea,
+    T008TableKey,
     W001CoilTwice,
     W002TimerTwice,
     W003BitsSpill,
     W004AddressTwice,
     W005MessageHalf,
     W006VersionLength,
+    W007CommentLength,
 }
 
 impl Code {
@@ -140,9 +143,12 @@ impl Code {
             Code::T004DataValue => "T004",
             Code::T005MessageNumber => "T005",
             Code::T006TableName => "T006",
+            Code::T007SymbolArea => "T007",
+            Code::T008TableKey => "T008",
             Code::W004AddressTwice => "W004",
             Code::W005MessageHalf => "W005",
             Code::W006VersionLength => "W006",
+            Code::W007CommentLength => "W007",
             Code::W001CoilTwice => "W001",
             Code::W002TimerTwice => "W002",
             Code::W003BitsSpill => "W003",

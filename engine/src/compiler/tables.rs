@@ -1,12 +1,85 @@
 //! Checks of the project's tables (manual §3.4.3–§3.4.7), reported like compile diagnostics:
-//! the "block" is the table (`SYMBOLS`, `DATA`, `MESSAGES`, `VERSION`), the "network" the
-//! table's number, the row and column the cell.
+//! the "block" is the table (`SYMBOLS`, `DATA`, `MESSAGES`, `DIAGNOSIS`, `PERMISSIONS`,
+//! `MCODES`, `VERSION`), the "network" the table's number, the row and column the cell. The
+//! rules are the table editor's ([`crate::model::sheets`]), so a file holds no row that the
+//! editor would refuse without `check` saying so.
 
 use super::diag::{Code, Origin, Sink};
 use crate::address::{Address, Area};
-use crate::model::tables::{DESIGNER_MAX, MessageTable, REMARKS_MAX, VALUE_LIMIT, VERSION_MAX};
-use crate::model::{Operand, Project, is_symbol_name};
+use crate::model::Project;
+use crate::model::sheets::{
+    Sheet, TableError, check_comment, check_data_symbol, check_m_code, check_symbol_area,
+    check_symbol_form, check_value_area,
+};
+use crate::model::tables::{
+    AddressRow, Comments, DESIGNER_MAX, MessageTable, REMARKS_MAX, VALUE_LIMIT, VERSION_MAX,
+};
 use std::collections::HashMap;
+
+/// The "block" numbers of the tables, after every ladder block, in the tree's order.
+const SYMBOLS: usize = usize::MAX - 6;
+const DATA: usize = usize::MAX - 5;
+const MESSAGES: usize = usize::MAX - 4;
+const DIAGNOSIS: usize = usize::MAX - 3;
+const PERMISSIONS: usize = usize::MAX - 2;
+const MCODES: usize = usize::MAX - 1;
+const VERSION: usize = usize::MAX;
+
+/// Reports every comment of a row longer than the CNC keeps (W007).
+fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
+    for (lang, text) in comments {
+        if let Err(e) = check_comment(text) {
+            sink.report(
+                origin,
+                Code::W007CommentLength,
+                format!("the `{lang}` comment: {e}; shorten it"),
+            );
+        }
+    }
+}
+
+/// A data row's symbol: a valid name (T001) that no symbol table gives another address (T002).
+fn data_symbol(sink: &mut Sink, project: &Project, origin: Origin, name: &str, address: Address) {
+    match check_data_symbol(project, name, address) {
+        Err(e @ TableError::SymbolName { .. }) => {
+            sink.report(origin, Code::T001SymbolName, e.to_string())
+        }
+        Err(e) => sink.report(
+            origin,
+            Code::T002SymbolTwice,
+            format!("{address}: {e}; use another symbol or none"),
+        ),
+        Ok(()) => {}
+    }
+}
+
+/// The diagnosis or permission table: memory areas in range, each address once (T008).
+fn address_table(sink: &mut Sink, project: &Project, rows: &[AddressRow]) {
+    let mut seen: HashMap<Address, usize> = HashMap::new();
+    for (r, row) in rows.iter().enumerate() {
+        if let Err(e) = check_value_area(row.address) {
+            sink.report(
+                at(r, 0),
+                Code::T008TableKey,
+                format!("{e}; this table lists memory addresses"),
+            );
+        } else if let Err(e) = row.address.check_range(project.profile()) {
+            sink.report(at(r, 0), Code::T008TableKey, e.to_string());
+        }
+        if let Some(prev) = seen.insert(row.address, r) {
+            sink.report(
+                at(r, 0),
+                Code::T008TableKey,
+                format!(
+                    "{} is also in row {}; keep one row per address",
+                    row.address,
+                    prev + 1
+                ),
+            );
+        }
+        comments(sink, at(r, 1), &row.comments);
+    }
+}
 
 fn at(row: usize, col: u32) -> Origin {
     Origin::Cell {
@@ -23,7 +96,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
     let mut addresses: HashMap<Address, (usize, usize)> = HashMap::new();
     let mut table_names: HashMap<&str, usize> = HashMap::new();
     for (t, table) in project.symbol_tables.iter().enumerate() {
-        sink.at(usize::MAX - 3, "SYMBOLS", t);
+        sink.at(SYMBOLS, "SYMBOLS", t);
         if table.name.is_empty()
             || table.name == crate::model::tables::BLOCK_SYMBOLS
             || table_names.insert(&table.name, t).is_some()
@@ -38,9 +111,16 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             );
         }
         for (r, s) in table.rows.iter().enumerate() {
-            if let Err(e) = s.address.check_range(profile) {
+            if let Err(e) = check_symbol_area(s.address) {
+                sink.report(
+                    at(r, 0),
+                    Code::T007SymbolArea,
+                    format!("{e} (labels have no symbols; a subprogram is named in its block)"),
+                );
+            } else if let Err(e) = s.address.check_range(profile) {
                 sink.report(at(r, 0), Code::T003DataAddress, e.to_string());
             }
+            comments(sink, at(r, 2), &s.comments);
             if let Some((pt, pr)) = addresses.insert(s.address, (t, r)) {
                 sink.report(
                     at(r, 0),
@@ -56,8 +136,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             if s.name.is_empty() {
                 continue;
             }
-            let looks_like_address = matches!(Operand::parse(&s.name), Ok(Operand::Addr(_)));
-            if !is_symbol_name(&s.name) || looks_like_address {
+            if check_symbol_form(&s.name).is_err() {
                 sink.report(
                     at(r, 1),
                     Code::T001SymbolName,
@@ -80,16 +159,34 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             }
         }
     }
-    // Data tables: each row's area, and its value inside its limits.
+    // Data tables: each row's area, listed once (D and D_FLOAT share the D addresses), its
+    // value inside its limits, its symbol and comments.
     let data = &project.data;
+    let mut listed: HashMap<Address, (&str, usize)> = HashMap::new();
+    let mut twice = |sink: &mut Sink, name: &'static str, r: usize, a: Address| {
+        if let Some((pname, pr)) = listed.insert(a, (name, r)) {
+            sink.report(
+                at(r, 0),
+                Code::T003DataAddress,
+                format!(
+                    "{a} is also in the {pname} table row {}; keep one row per address",
+                    pr + 1
+                ),
+            );
+        }
+    };
     let tables = [
-        ("D", Area::D, &data.d),
-        ("DT", Area::Dt, &data.dt),
-        ("DC", Area::Dc, &data.dc),
+        (Sheet::D, Area::D, &data.d),
+        (Sheet::Dt, Area::Dt, &data.dt),
+        (Sheet::Dc, Area::Dc, &data.dc),
     ];
-    for (t, (name, area, rows)) in tables.into_iter().enumerate() {
-        sink.at(usize::MAX - 2, "DATA", t);
+    for (t, (sheet, area, rows)) in tables.into_iter().enumerate() {
+        let name = sheet.data_name().unwrap_or("D");
+        sink.at(DATA, "DATA", t);
         for (r, row) in rows.iter().enumerate() {
+            twice(sink, name, r, row.address);
+            data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
+            comments(sink, at(r, 5), &row.comments);
             if row.address.area != area || row.address.bit.is_some() {
                 sink.report(
                     at(r, 0),
@@ -123,8 +220,11 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             }
         }
     }
-    sink.at(usize::MAX - 2, "DATA", 3);
+    sink.at(DATA, "DATA", 3);
     for (r, row) in data.d_float.iter().enumerate() {
+        twice(sink, "D_FLOAT", r, row.address);
+        data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
+        comments(sink, at(r, 5), &row.comments);
         if row.address.area != Area::D
             || row.address.bit.is_some()
             || row.address.check_range(profile).is_err()
@@ -147,7 +247,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
         }
     }
     // Messages: numbers 1000–9999, unique, number and text together.
-    sink.at(usize::MAX - 1, "MESSAGES", 0);
+    sink.at(MESSAGES, "MESSAGES", 0);
     let mut numbers: HashMap<u16, usize> = HashMap::new();
     for (r, m) in project.messages.rows.iter().enumerate() {
         let has_text = m.texts.values().any(|t| !t.is_empty());
@@ -207,8 +307,33 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             );
         }
     }
+    // Diagnosis and permissions: memory addresses, each once.
+    sink.at(DIAGNOSIS, "DIAGNOSIS", 0);
+    address_table(sink, project, &project.diagnosis);
+    sink.at(PERMISSIONS, "PERMISSIONS", 0);
+    address_table(sink, project, &project.permissions);
+    // M codes: in range, each once.
+    sink.at(MCODES, "MCODES", 0);
+    let mut codes: HashMap<u32, usize> = HashMap::new();
+    for (r, row) in project.m_codes.iter().enumerate() {
+        if let Err(e) = check_m_code(row.code) {
+            sink.report(at(r, 0), Code::T008TableKey, e.to_string());
+        }
+        if let Some(prev) = codes.insert(row.code, r) {
+            sink.report(
+                at(r, 0),
+                Code::T008TableKey,
+                format!(
+                    "M{:02} is also in row {}; keep one row per M code",
+                    row.code,
+                    prev + 1
+                ),
+            );
+        }
+        comments(sink, at(r, 1), &row.comments);
+    }
     // Version information.
-    sink.at(usize::MAX, "VERSION", 0);
+    sink.at(VERSION, "VERSION", 0);
     let v = &project.version;
     for (field, text, max) in [
         ("designer", &v.designer, DESIGNER_MAX),

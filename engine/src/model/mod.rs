@@ -10,6 +10,7 @@ pub mod operand;
 pub mod plan;
 pub mod project;
 pub mod region;
+pub mod sheets;
 pub mod tables;
 
 pub use block::{Block, BlockKind};

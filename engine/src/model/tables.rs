@@ -123,6 +123,39 @@ pub struct RealRow {
 }
 
 impl RealRow {
+    /// A row with a value and no limits (a value that is no number becomes 0).
+    pub fn new(address: Address, value: f32) -> RealRow {
+        RealRow {
+            address,
+            value: if value.is_finite() { value } else { 0.0 },
+            min: None,
+            max: None,
+            symbol: String::new(),
+            comments: Comments::new(),
+        }
+    }
+
+    /// Enters a minimum, with the rule [`DataRow::set_min`] applies to integers (§3.4.4.2):
+    /// limited to the maximum, and the value raised to it.
+    pub fn set_min(&mut self, m: Option<f32>) {
+        self.min = m.map(|m| self.max.map_or(m, |x| m.min(x)));
+        if let Some(m) = self.min
+            && self.value < m
+        {
+            self.value = m;
+        }
+    }
+
+    /// Enters a maximum: limited to the minimum, and the value lowered to it.
+    pub fn set_max(&mut self, m: Option<f32>) {
+        self.max = m.map(|m| self.min.map_or(m, |x| m.max(x)));
+        if let Some(m) = self.max
+            && self.value > m
+        {
+            self.value = m;
+        }
+    }
+
     /// Enters a value, limited to min…max when set.
     pub fn set_value(&mut self, v: f32) {
         let mut v = if v.is_finite() { v } else { 0.0 };

@@ -1,0 +1,293 @@
+//! The row tables: the row toolbar, then the grid with a row header (click selects,
+//! right-click opens the row menu), the cells, and why the row's input was refused.
+
+use super::super::i18n::{Lang, Msg};
+use super::error_text::table_error;
+use super::{CellKey, ERROR_RED, Pending, TableEvent, TableState, row_height};
+use egui::{Key, Sense};
+use egui_extras::{Column, TableBuilder};
+use ladder_engine::model::Project;
+use ladder_engine::model::sheets::{Col, RowOp, Sheet, cell_text, commit, k_bit, row_op};
+
+/// What the user did in a frame, carried out once the frame no longer borrows the state.
+pub(super) enum Action {
+    /// Text typed into a cell, to commit.
+    Commit(CellKey, String),
+    /// A row-menu action on a row.
+    Op(Sheet, RowOp, usize),
+    /// A bit of the K page clicked.
+    KBit { number: usize, bit: u8, on: bool },
+}
+
+fn op_msg(op: RowOp) -> Msg {
+    match op {
+        RowOp::Clear => Msg::TblClear,
+        RowOp::InsertAbove => Msg::TblInsertAbove,
+        RowOp::InsertBelow => Msg::TblInsertBelow,
+        RowOp::Delete => Msg::TblDelete,
+    }
+}
+
+fn col_title(col: Col) -> Msg {
+    match col {
+        Col::Address => Msg::TblAddress,
+        Col::Symbol => Msg::TblSymbol,
+        Col::Comment => Msg::TblComment,
+        Col::Value => Msg::TblValue,
+        Col::Min => Msg::TblMin,
+        Col::Max => Msg::TblMax,
+        Col::Number => Msg::TblAlarmNumber,
+        Col::Text => Msg::TblMessageText,
+        Col::Code => Msg::TblMCode,
+    }
+}
+
+fn col_column(col: Col) -> Column {
+    let width = match col {
+        Col::Address | Col::Code | Col::Number => 100.0,
+        Col::Value | Col::Min | Col::Max => 110.0,
+        Col::Symbol => 170.0,
+        Col::Comment => 280.0,
+        Col::Text => 360.0,
+    };
+    Column::initial(width).at_least(50.0).clip(true)
+}
+
+/// Carries out what the user did this frame: one table edit per action, each judged against
+/// the tables as the actions before it left them (the caller applies the edits in order).
+pub(super) fn run_actions(
+    project: &Project,
+    state: &mut TableState,
+    actions: Vec<Action>,
+    lang: Lang,
+    events: &mut Vec<TableEvent>,
+) {
+    let last = actions.len().saturating_sub(1);
+    // Only a frame with several actions needs the tables as the earlier ones left them.
+    let mut working: Option<Project> = None;
+    for (i, action) in actions.into_iter().enumerate() {
+        let now = working.as_ref().unwrap_or(project);
+        let edit = match action {
+            Action::Commit(key, text) => {
+                let (sheet, row, col) = key;
+                match commit(now, sheet, row, col, &text, lang.code()) {
+                    Ok(edit) => {
+                        state.pending.remove(&key);
+                        edit
+                    }
+                    Err(e) => {
+                        let stamp = state.next_stamp();
+                        state.pending.insert(
+                            key,
+                            Pending {
+                                text,
+                                error: Some(e),
+                                stamp,
+                            },
+                        );
+                        None
+                    }
+                }
+            }
+            Action::Op(sheet, op, row) => match row_op(now, sheet, op, row) {
+                Ok((edit, select)) => {
+                    // Rows moved: what was typed in this table's rows no longer matches.
+                    state
+                        .pending
+                        .retain(|k, _| k.0 != sheet || (op == RowOp::Clear && k.1 != row));
+                    state.op_error = None;
+                    state.selected.insert(sheet, select);
+                    state.scroll_to = Some((sheet, select));
+                    edit
+                }
+                Err(e) => {
+                    state.op_error = Some((sheet, e));
+                    None
+                }
+            },
+            Action::KBit { number, bit, on } => k_bit(now, number, bit, on),
+        };
+        if let Some(edit) = edit {
+            if i < last {
+                working
+                    .get_or_insert_with(|| project.clone())
+                    .apply_table(edit.clone());
+            }
+            events.push(TableEvent::Apply(edit));
+        }
+    }
+}
+
+/// Draws one row-menu button, disabled with the reason when it cannot act; true when clicked.
+fn row_op_button(
+    ui: &mut egui::Ui,
+    sheet: Sheet,
+    op: RowOp,
+    row: Option<usize>,
+    len: usize,
+    lang: Lang,
+) -> bool {
+    let on_a_row = row.is_some_and(|r| r < len);
+    let (enabled, why) = match op {
+        RowOp::Clear => (on_a_row, Msg::TblSelectRowFirst),
+        RowOp::Delete if sheet.fixed() => (false, Msg::TblFixedRows),
+        RowOp::Delete => (on_a_row, Msg::TblSelectRowFirst),
+        RowOp::InsertAbove | RowOp::InsertBelow => (!sheet.fixed(), Msg::TblFixedRows),
+    };
+    ui.add_enabled(enabled, egui::Button::new(op_msg(op).text(lang)))
+        .on_disabled_hover_text(why.text(lang))
+        .clicked()
+}
+
+/// One editable cell: shows the typed text while there is some, commits it when the field
+/// loses focus (Enter included), drops it on Escape.
+fn cell_ui(
+    ui: &mut egui::Ui,
+    state: &mut TableState,
+    project: &Project,
+    (sheet, row, col): CellKey,
+    len: usize,
+    lang: Lang,
+    actions: &mut Vec<Action>,
+) {
+    let fresh = row >= len;
+    if !sheet.editable(col) || (fresh && col != sheet.key_col()) {
+        if !fresh {
+            ui.label(cell_text(project, sheet, row, col, lang.code()));
+        }
+        return;
+    }
+    let key = (sheet, row, col);
+    let pending = state.pending.get(&key);
+    let refused = pending.is_some_and(|p| p.error.is_some());
+    let mut text = match pending {
+        Some(p) => p.text.clone(),
+        None => cell_text(project, sheet, row, col, lang.code()),
+    };
+    let mut edit = egui::TextEdit::singleline(&mut text).desired_width(f32::INFINITY);
+    if refused {
+        edit = edit.text_color(ERROR_RED);
+    }
+    if fresh {
+        let hint = if sheet == Sheet::MCodes {
+            Msg::TblNewRowCode
+        } else {
+            Msg::TblNewRowAddress
+        };
+        edit = edit.hint_text(hint.text(lang));
+    }
+    let r = ui
+        .add(edit)
+        .accessible_name(format!("{} {}", col_title(col).text(lang), row + 1));
+    if r.gained_focus() {
+        state.selected.insert(sheet, row);
+    }
+    if r.changed() {
+        let stamp = state.next_stamp();
+        let p = state.pending.entry(key).or_default();
+        p.text = text.clone();
+        p.stamp = stamp;
+    }
+    if r.lost_focus() {
+        if ui.input(|i| i.key_pressed(Key::Escape)) {
+            state.pending.remove(&key);
+        } else if state.pending.contains_key(&key) {
+            actions.push(Action::Commit(key, text));
+        }
+    }
+}
+
+/// A row table: the row toolbar, then the grid with a row header (click selects,
+/// right-click opens the row menu), the cells, and why the row's input was refused.
+pub(super) fn sheet_ui(
+    ui: &mut egui::Ui,
+    project: &Project,
+    state: &mut TableState,
+    sheet: Sheet,
+    lang: Lang,
+    events: &mut Vec<TableEvent>,
+) {
+    let t = |m: Msg| m.text(lang);
+    let profile = project.profile();
+    let len = sheet.rows(project);
+    // Growing tables end in an empty line: typing its address (or code) adds a row.
+    let shown = if sheet.fixed() { len } else { len + 1 };
+    let selected = state.selected.get(&sheet).copied().filter(|r| *r < shown);
+    let mut actions = Vec::new();
+    ui.horizontal(|ui| {
+        for op in RowOp::ALL {
+            if row_op_button(ui, sheet, op, selected, len, lang) {
+                actions.push(Action::Op(sheet, op, selected.unwrap_or(len)));
+            }
+        }
+        if let Some((s, e)) = &state.op_error
+            && *s == sheet
+        {
+            ui.colored_label(ERROR_RED, table_error(e, profile, lang));
+        }
+    });
+    let row_height = row_height(ui);
+    let mut builder = TableBuilder::new(ui)
+        .id_salt(sheet)
+        .striped(true)
+        .resizable(true)
+        .cell_layout(egui::Layout::left_to_right(egui::Align::Center))
+        .column(Column::exact(48.0));
+    for col in sheet.columns() {
+        builder = builder.column(col_column(*col));
+    }
+    builder = builder.column(Column::remainder().at_least(160.0).clip(true));
+    if let Some((_, row)) = state.scroll_to.take_if(|(s, _)| *s == sheet) {
+        builder = builder.scroll_to_row(row, None);
+    }
+    builder
+        .header(row_height, |mut header| {
+            header.col(|ui| {
+                ui.strong(t(Msg::TblRow));
+            });
+            for col in sheet.columns() {
+                header.col(|ui| {
+                    ui.strong(t(col_title(*col)));
+                });
+            }
+            header.col(|ui| {
+                ui.strong(t(Msg::TblProblem));
+            });
+        })
+        .body(|body| {
+            body.rows(row_height, shown, |mut row| {
+                let i = row.index();
+                row.set_selected(selected == Some(i));
+                row.col(|ui| {
+                    let r = ui.add(
+                        egui::Label::new((i + 1).to_string())
+                            .sense(Sense::click())
+                            .selectable(false),
+                    );
+                    if r.clicked() || r.secondary_clicked() {
+                        state.selected.insert(sheet, i);
+                    }
+                    r.context_menu(|ui| {
+                        for op in RowOp::ALL {
+                            if row_op_button(ui, sheet, op, Some(i), len, lang) {
+                                actions.push(Action::Op(sheet, op, i));
+                                ui.close();
+                            }
+                        }
+                    });
+                });
+                for &col in sheet.columns() {
+                    row.col(|ui| {
+                        cell_ui(ui, state, project, (sheet, i, col), len, lang, &mut actions)
+                    });
+                }
+                row.col(|ui| {
+                    if let Some(e) = state.row_error(sheet, i) {
+                        let e = table_error(e, profile, lang);
+                        ui.colored_label(ERROR_RED, &e).on_hover_text(e);
+                    }
+                });
+            });
+        });
+    run_actions(project, state, actions, lang, events);
+}

@@ -1,0 +1,168 @@
+//! The version information (§3.4.7): designer, version and remarks with their lengths, and
+//! the ladder password, kept only as a salted hash.
+
+use super::super::document::Document;
+use super::super::i18n::{Lang, Msg};
+use super::{ERROR_RED, OK_GREEN, PasswordDraft, TableEvent, TableState};
+use egui::Key;
+use ladder_engine::model::sheets::{TableError, set_password};
+use ladder_engine::model::tables::{DESIGNER_MAX, REMARKS_MAX, VERSION_MAX};
+use ladder_engine::model::{TableEdit, VersionInfo};
+
+/// Draws the version view.
+pub(super) fn version_ui(
+    ui: &mut egui::Ui,
+    doc: &Document,
+    state: &mut TableState,
+    lang: Lang,
+    events: &mut Vec<TableEvent>,
+) {
+    let t = |m: Msg| m.text(lang);
+    let current = &doc.project().version;
+    ui.heading(t(Msg::VersionInfo));
+    let mut commit = false;
+    egui::Grid::new("version-info")
+        .num_columns(3)
+        .spacing([12.0, 8.0])
+        .show(ui, |ui| {
+            let fields = [
+                (Msg::TblDesigner, DESIGNER_MAX, &current.designer),
+                (Msg::TblVersion, VERSION_MAX, &current.version),
+                (Msg::TblRemarks, REMARKS_MAX, &current.remarks),
+            ];
+            for (i, (msg, max, saved)) in fields.into_iter().enumerate() {
+                let label = ui.label(t(msg));
+                let mut text = state.version[i]
+                    .as_ref()
+                    .map_or_else(|| saved.clone(), |(d, _)| d.clone());
+                let edit = if i == 2 {
+                    egui::TextEdit::multiline(&mut text).desired_rows(6)
+                } else {
+                    egui::TextEdit::singleline(&mut text)
+                };
+                let r = ui
+                    .add(edit.char_limit(max).desired_width(480.0))
+                    .labelled_by(label.id);
+                if r.changed() {
+                    let stamp = state.next_stamp();
+                    state.version[i] = Some((text.clone(), stamp));
+                }
+                if r.lost_focus() {
+                    if ui.input(|i| i.key_pressed(Key::Escape)) {
+                        state.version[i] = None;
+                    } else if state.version[i].is_some() {
+                        commit = true;
+                    }
+                }
+                ui.label(format!("{}/{max}", text.chars().count()));
+                ui.end_row();
+            }
+        });
+    if commit {
+        let [d, v, r] = std::mem::take(&mut state.version).map(|f| f.map(|(text, _)| text));
+        let mut next = current.clone();
+        next.set(
+            &d.unwrap_or(current.designer.clone()),
+            &v.unwrap_or(current.version.clone()),
+            &r.unwrap_or(current.remarks.clone()),
+        );
+        if next != *current {
+            events.push(TableEvent::Apply(TableEdit::Version(Box::new(next))));
+        }
+    }
+    ui.separator();
+    password_ui(ui, current, doc.read_only, state, lang, events);
+}
+
+fn password_ui(
+    ui: &mut egui::Ui,
+    current: &VersionInfo,
+    read_only: bool,
+    state: &mut TableState,
+    lang: Lang,
+    events: &mut Vec<TableEvent>,
+) {
+    let t = |m: Msg| m.text(lang);
+    let is_set = current.password.is_some();
+    ui.strong(t(Msg::TblPassword));
+    ui.label(t(if is_set {
+        Msg::TblPasswordIsSet
+    } else {
+        Msg::TblPasswordNone
+    }));
+    let draft = &mut state.password;
+    egui::Grid::new("version-password")
+        .num_columns(2)
+        .spacing([12.0, 8.0])
+        .show(ui, |ui| {
+            let field = |ui: &mut egui::Ui, msg: Msg, text: &mut String| {
+                let label = ui.label(t(msg));
+                ui.add(egui::TextEdit::singleline(text).password(true))
+                    .labelled_by(label.id);
+                ui.end_row();
+            };
+            if is_set {
+                field(ui, Msg::TblPasswordCurrent, &mut draft.current);
+            }
+            field(ui, Msg::TblPasswordNew, &mut draft.new);
+            field(ui, Msg::TblPasswordConfirm, &mut draft.confirm);
+        });
+    let mut set = false;
+    let mut clear = false;
+    ui.horizontal(|ui| {
+        set = ui.button(t(Msg::TblSetPassword)).clicked();
+        clear = ui
+            .add_enabled(is_set, egui::Button::new(t(Msg::TblClearPassword)))
+            .clicked();
+    });
+    if set || clear {
+        let new = set.then_some((draft.new.as_str(), draft.confirm.as_str()));
+        match set_password(current, &draft.current, new, &new_salt()) {
+            Err(e) => draft.note = Some((true, refusal(&e))),
+            Ok(_) if read_only => draft.note = Some((true, Msg::ReadOnly)),
+            Ok(next) => {
+                *draft = PasswordDraft {
+                    note: Some((
+                        false,
+                        if set {
+                            Msg::TblPasswordSaved
+                        } else {
+                            Msg::TblPasswordCleared
+                        },
+                    )),
+                    ..PasswordDraft::default()
+                };
+                events.push(TableEvent::Apply(TableEdit::Version(Box::new(next))));
+            }
+        }
+    }
+    if let Some((error, m)) = state.password.note {
+        ui.colored_label(if error { ERROR_RED } else { OK_GREEN }, t(m));
+    }
+}
+
+/// The note for a refused password change.
+fn refusal(e: &TableError) -> Msg {
+    match e {
+        TableError::PasswordEmpty => Msg::TblPasswordEmpty,
+        TableError::PasswordMismatch => Msg::TblPasswordMismatch,
+        _ => Msg::TblPasswordWrong,
+    }
+}
+
+/// A salt for a password hash: random per call (std's hasher keys come from the OS), so two
+/// projects with the same password get different hashes.
+pub(super) fn new_salt() -> String {
+    use std::hash::{BuildHasher, Hasher};
+    let nanos = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_nanos());
+    (0..2u8)
+        .map(|i| {
+            let mut h = std::collections::hash_map::RandomState::new().build_hasher();
+            h.write_u128(nanos);
+            h.write_u8(i);
+            format!("{:016x}", h.finish())
+        })
+        .collect()
+}
