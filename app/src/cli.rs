@@ -4,7 +4,7 @@
 
 use crate::source::Source;
 use clap::{Parser, Subcommand};
-use ladder_engine::compiler::{Code, Compiled, compile};
+use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Script};
 use ladder_engine::vm::cnc::Cnc;
@@ -216,28 +216,6 @@ fn check(path: &Path, out: &mut dyn Write) -> anyhow::Result<i32> {
     Ok(i32::from(compiled.errors() > 0))
 }
 
-/// Codes that leave a network without a valid instruction list.
-pub(crate) fn is_structural(code: Code) -> bool {
-    matches!(
-        code,
-        Code::L001NotConnected
-            | Code::L002OpenBranch
-            | Code::L003ShortCircuit
-            | Code::L004Bridge
-            | Code::L005WrongColumn
-            | Code::L006NoContact
-            | Code::L007NotStandalone
-            | Code::L010UnknownInstruction
-            | Code::L011OperandCount
-            | Code::L012Syntax
-            | Code::L013BlockStack
-            | Code::L014BranchStack
-            | Code::L015LoadAfterOutput
-            | Code::L016NoOutput
-            | Code::L017NotDrawable
-    )
-}
-
 fn export_il(
     path: &Path,
     output: Option<&Path>,
@@ -253,7 +231,7 @@ fn export_il(
             None => imported.compiled.clone(),
         },
     };
-    if compiled.diagnostics.iter().any(|d| is_structural(d.code)) {
+    if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
         print_diagnostics(path, &compiled, err);
         let _ = writeln!(err, "{}; no instruction list written", summary(&compiled));
         return Ok(1);

@@ -7,7 +7,7 @@ use super::LadderApp;
 use super::command::Command;
 use super::editing::{PlaceKind, Prompt};
 use super::files::{Action, DialogKind};
-use super::place::View;
+use super::place::{BlockKey, View};
 use super::selection::Selection;
 
 impl LadderApp {
@@ -285,7 +285,25 @@ impl LadderApp {
     }
 
     /// Shows a view (a click in the tree or on a tab, a Tools menu entry).
+    /// A block shown again gets its cursor back where it was left (its first cell the first
+    /// time), so the status bar and Ctrl+G speak of the block on screen.
     pub fn show_view(&mut self, v: View) {
+        if let View::Block(b) = v
+            && b != self.cursor.block
+            && let Some(ladder) = self.ladder()
+        {
+            let key = |i: usize| ladder.blocks.get(i).map(|bl| BlockKey::of(&bl.kind));
+            let (from, to) = (key(self.cursor.block), key(b));
+            if let Some(from) = from {
+                self.block_cursors.insert(from, self.cursor);
+            }
+            let back = to.and_then(|k| self.block_cursors.get(&k)).copied();
+            self.cursor = match back {
+                Some(c) => super::place::Cursor { block: b, ..c },
+                None => super::place::block_start(b),
+            };
+            self.clamp_ui_state();
+        }
         self.view = v;
     }
 }

@@ -345,7 +345,13 @@ impl LadderApp {
         self.selection = None;
         self.drag_from = None;
         self.tabs.clear();
-        self.output.retain(|l| l.target.is_none());
+        self.block_cursors.clear();
+        if self.doc.is_none() {
+            // Closed: the old project's messages go with it.
+            self.output.clear();
+        } else {
+            self.output.retain(|l| l.target.is_none());
+        }
     }
 
     pub(super) fn start_dialog(&mut self, kind: DialogKind) {
@@ -525,11 +531,7 @@ impl LadderApp {
         let Some(compiled) = doc.compiled.as_ref() else {
             return;
         };
-        if compiled
-            .diagnostics
-            .iter()
-            .any(|d| crate::cli::is_structural(d.code))
-        {
+        if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
             self.say(Msg::IlNotWritten.text(lang).into(), true);
             return;
         }

@@ -383,6 +383,9 @@ pub struct ViewOptions {
     pub cursor: Option<(usize, usize, usize)>,
     /// The selection in this block.
     pub selection: Option<Selection>,
+    /// Tells the open documents apart, so each document's blocks keep their own scroll
+    /// position and a project never opens where the last one was scrolled to.
+    pub document: u64,
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
@@ -526,6 +529,7 @@ pub fn block_ui(
         titles: opts.titles,
     };
     egui::ScrollArea::both()
+        .id_salt(("ladder", opts.document, block))
         .auto_shrink([false, false])
         .show_viewport(ui, |ui, viewport| {
             let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());

@@ -99,6 +99,8 @@ pub struct LadderApp {
     pub last_find: String,
     /// Commands asked for during this frame; they run after it.
     pub pending: Vec<command::Command>,
+    /// Where the cursor was left in each block not shown now: the cursor goes with its block.
+    pub block_cursors: std::collections::HashMap<place::BlockKey, place::Cursor>,
     /// When the project last changed, on the tables' draft clock (undo takes back the later
     /// of a change and a draft).
     pub last_change: u64,
@@ -144,6 +146,7 @@ impl LadderApp {
             last_find: String::new(),
             pending: Vec::new(),
             last_change: 0,
+            block_cursors: Default::default(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -326,6 +329,11 @@ impl LadderApp {
 
     /// The view tabs (manual §3.1 视图切换标签): every view opened, one click away.
     fn tabs_ui(&mut self, ui: &mut egui::Ui) {
+        if self.doc.is_none() {
+            // No project, no views: nothing of a closed project stays on screen.
+            self.tabs.clear();
+            return;
+        }
         // Tabs of blocks that no longer exist (a deleted subprogram) close themselves.
         let blocks = self
             .doc
@@ -351,7 +359,7 @@ impl LadderApp {
                     egui::WidgetInfo::selected(egui::Role::Tab, true, selected, &name)
                 });
                 if r.clicked() {
-                    self.view = v;
+                    self.ask(command::Command::ShowView(v));
                 }
                 if ui
                     .small_button("×")
@@ -400,6 +408,7 @@ impl LadderApp {
                         titles: self.settings.show_titles,
                         cursor,
                         selection,
+                        document: doc.serial,
                     },
                     &mut self.jump_to,
                     &mut self.geometry,
@@ -454,7 +463,9 @@ impl LadderApp {
             } else {
                 t(Msg::ModeEdit)
             });
-            if let View::Block(b) = self.view {
+            if let View::Block(b) = self.view
+                && self.cursor.block == b
+            {
                 let c = self.cursor;
                 let label = doc
                     .project()
@@ -534,15 +545,19 @@ impl eframe::App for LadderApp {
         }
         if self.settings.show_tree {
             let mut asked = None;
-            egui::Panel::left("tree").resizable(true).show(ui, |ui| {
-                let lang = self.settings.lang;
-                ui.heading(Msg::Project.text(lang));
-                if let Some(doc) = &self.doc {
-                    egui::ScrollArea::vertical().show(ui, |ui| {
-                        asked = tree::tree_ui(ui, doc.project(), lang, self.view)
-                    });
-                }
-            });
+            egui::Panel::left("tree")
+                .resizable(true)
+                .default_size(220.0)
+                .min_size(160.0)
+                .show(ui, |ui| {
+                    let lang = self.settings.lang;
+                    ui.heading(Msg::Project.text(lang));
+                    if let Some(doc) = &self.doc {
+                        egui::ScrollArea::vertical().show(ui, |ui| {
+                            asked = tree::tree_ui(ui, doc.project(), lang, self.view)
+                        });
+                    }
+                });
             if let Some(c) = asked {
                 self.ask(c);
             }

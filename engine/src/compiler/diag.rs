@@ -155,6 +155,29 @@ impl Code {
         }
     }
 
+    /// Whether the problem leaves a network without a valid instruction list (export is
+    /// refused: the list would not be what the ladder says).
+    pub fn is_structural(self) -> bool {
+        matches!(
+            self,
+            Code::L001NotConnected
+                | Code::L002OpenBranch
+                | Code::L003ShortCircuit
+                | Code::L004Bridge
+                | Code::L005WrongColumn
+                | Code::L006NoContact
+                | Code::L007NotStandalone
+                | Code::L010UnknownInstruction
+                | Code::L011OperandCount
+                | Code::L012Syntax
+                | Code::L013BlockStack
+                | Code::L014BranchStack
+                | Code::L015LoadAfterOutput
+                | Code::L016NoOutput
+                | Code::L017NotDrawable
+        )
+    }
+
     /// Warnings start with `W`, errors with `L`.
     pub fn severity(self) -> Severity {
         if self.as_str().starts_with('W') {

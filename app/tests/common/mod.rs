@@ -1,0 +1,187 @@
+//! The one harness of the editor's UI tests: the app driven headless through egui_kittest, on
+//! projects saved in fresh temporary folders, and the gestures the tests share.
+#![allow(dead_code, unused_imports)] // Each test file uses some of the helpers.
+
+pub use egui_kittest::Harness;
+pub use egui_kittest::kittest::Queryable;
+pub use ladder_studio::gui::LadderApp;
+pub use ladder_studio::gui::i18n::Lang;
+pub use ladder_studio::gui::tree::View;
+pub use std::path::PathBuf;
+
+pub fn harness(path: Option<PathBuf>, lang: Lang) -> Harness<'static, LadderApp> {
+    // Frames 1/60 s apart, as on a screen: two clicks a few frames apart are a double-click.
+    Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .with_step_dt(1.0 / 60.0)
+        .build_eframe(move |cc| {
+            let mut app = LadderApp::from_creation(cc, path);
+            app.settings.lang = lang;
+            app
+        })
+}
+
+/// The instructions of a saved project's exported IL, without directives, spaces folded.
+pub fn il_of_saved(path: &std::path::Path) -> Vec<String> {
+    let reopened = ladder_engine::file::load(path).unwrap();
+    let il = ladder_engine::il::print(&ladder_engine::compiler::compile(&reopened).program);
+    il.lines()
+        .filter(|l| !matches!(*l, "LEVEL1" | "LEVEL2" | "NETWORK" | "END"))
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect()
+}
+
+/// A fresh temporary folder for one test's files. It is kept: a harness may still write
+/// recovery copies into it after the test's last line.
+pub fn tempfile_dir() -> PathBuf {
+    tempfile::Builder::new()
+        .prefix("ladder-gui-")
+        .tempdir()
+        .expect("a temporary folder")
+        .keep()
+}
+
+/// Types into the operand prompt and presses Enter.
+pub fn enter_operand(h: &mut Harness<'static, LadderApp>, text: &str) {
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Operand")
+        .type_text(text);
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+}
+
+/// A left click at a screen position.
+pub fn click_at(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+}
+
+/// Clicks the ladder cell (network, row, column) where the view drew it.
+pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
+    let p = h
+        .state()
+        .geometry
+        .cell_center(network, row, col)
+        .expect("the cell is on screen");
+    click_at(h, p);
+    let c = h.state().cursor;
+    assert_eq!(
+        (c.network, c.row, c.col),
+        (network, row, col),
+        "the click moved the cursor"
+    );
+}
+
+/// The app's state of a document: (path, dirty, networks in level 2).
+pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bool, usize)> {
+    h.state().doc.as_ref().map(|d| {
+        (
+            d.path.clone(),
+            d.dirty,
+            d.project().ladder.blocks[1].networks.len(),
+        )
+    })
+}
+
+pub fn scripted(h: &mut Harness<'static, LadderApp>, answers: Vec<Option<PathBuf>>) {
+    h.state_mut().dialogs = Box::new(ladder_studio::gui::files::ScriptedDialogs::new(answers));
+}
+
+/// A project saved in a fresh file, opened in the editor (English).
+pub fn editor_on(il: &str, name: &str) -> (Harness<'static, LadderApp>, PathBuf) {
+    let dir = tempfile_dir();
+    let path = dir.join(name);
+    let p = ladder_engine::il::import(il).project.unwrap();
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path.clone()), Lang::En);
+    h.run();
+    (h, path)
+}
+
+/// The instructions the editor's project compiles to (directives kept, spaces folded).
+pub fn il_now(h: &Harness<'static, LadderApp>) -> Vec<String> {
+    let project = h.state().doc.as_ref().unwrap().project();
+    ladder_engine::il::print(&ladder_engine::compiler::compile(project).program)
+        .lines()
+        .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
+        .collect()
+}
+
+pub fn pointer(h: &mut Harness<'static, LadderApp>, p: egui::Pos2, button: egui::PointerButton) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+    }
+    h.run();
+}
+
+pub fn cell_pos(
+    h: &Harness<'static, LadderApp>,
+    network: usize,
+    row: usize,
+    col: usize,
+) -> egui::Pos2 {
+    h.state()
+        .geometry
+        .cell_center(network, row, col)
+        .expect("the cell is on screen")
+}
+
+/// Drags from one cell to another with the primary button.
+pub fn drag(h: &mut Harness<'static, LadderApp>, from: egui::Pos2, to: egui::Pos2) {
+    h.hover_at(from);
+    h.run();
+    h.event(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.step();
+    for i in 1..=6 {
+        let t = i as f32 / 6.0;
+        h.event(egui::Event::PointerMoved(from + (to - from) * t));
+        h.step();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::NONE,
+    });
+    h.run();
+}
+
+pub const TWO_NETWORKS: &str =
+    "LEVEL2\nNETWORK\nLD X0002.1\nOUT Y0003.7\nNETWORK\nLD X0002.2\nOUT Y0003.6\n";
+
+pub fn double_click(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
+    h.hover_at(p);
+    h.run();
+    for pressed in [true, false, true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    h.run();
+}

@@ -1,0 +1,266 @@
+//! The editor's views driven headless: the project tree, languages, compiling, the cross-reference, tabs, go to, and undo going to what it changes.
+
+mod common;
+
+use common::*;
+
+#[test]
+fn starts_on_the_bundled_sample_with_the_project_tree() {
+    let mut h = harness(None, Lang::Zh);
+    h.run();
+    for label in [
+        "梯形图",
+        "一级程序",
+        "二级程序",
+        "子程序",
+        "符号表",
+        "数据设置表",
+        "显示信息表",
+        "引用索引表",
+        "诊断信息表",
+        "权限表",
+        "M 代码注释表",
+        "梯形图版本信息",
+    ] {
+        h.get_by_label(label);
+    }
+    h.get_by_label_contains("P0001");
+    assert_eq!(h.state().view, View::Block(1), "level 2 is shown first");
+}
+
+#[test]
+fn the_language_switches_at_run_time() {
+    let mut h = harness(None, Lang::Zh);
+    h.run();
+    h.get_by_label("查看").click();
+    h.run();
+    h.get_by_label("English (英文)").click();
+    h.run();
+    assert_eq!(h.state().settings.lang, Lang::En);
+    h.get_by_label("Level 2");
+    h.get_by_label("Cross-reference");
+    assert!(h.query_by_label("二级程序").is_none());
+}
+
+#[test]
+fn f9_compiles_into_the_output_window() {
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.key_press(egui::Key::F9);
+    h.run();
+    let last = h
+        .state()
+        .output
+        .last()
+        .expect("a summary line")
+        .text
+        .clone();
+    assert_eq!(last, "Compiled without errors (716 steps)");
+    h.get_by_label_contains("Compiled without errors");
+}
+
+#[test]
+fn a_compile_error_jumps_to_its_network() {
+    let dir = tempfile_dir();
+    let path = dir.join("err.ldp");
+    let project = ladder_engine::il::import(
+        "LEVEL2\nNETWORK\nLD X0001.0\nOUT Y0001.0\nNETWORK\nLD X0001.1\nAND NOWHERE\nOUT Y0001.1\n",
+    )
+    .project
+    .unwrap();
+    ladder_engine::file::save(&project, &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    h.get_by_label("Level 1").click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(0));
+    h.key_press(egui::Key::F9);
+    h.run();
+    let diag = h.state().output[0].clone();
+    let at = diag.target.expect("the diagnostic has a cell");
+    assert_eq!((at.block, at.network), (1, 1), "{}", diag.text);
+    h.get_by_label_contains("undefined symbol `NOWHERE`")
+        .click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(1), "the error's block is shown");
+    assert_eq!(h.state().cursor, at, "the cursor is on the cell");
+    assert_eq!(h.state().jump_to, None, "and its network was scrolled to");
+}
+
+#[test]
+fn the_cross_reference_view_lists_addresses() {
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.get_by_label("Cross-reference").click();
+    h.run();
+    h.get_by_label("Bit usage").click();
+    h.run();
+    assert_eq!(h.state().view, View::RefBits);
+    h.get_by_label_contains("BIT     7 6 5 4 3 2 1 0");
+}
+
+#[test]
+fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
+    let (mut h, _) = editor_on(TWO_NETWORKS, "xref.ldp");
+    h.get_by_label("Cross-reference").click();
+    h.run();
+    h.get_by_label("Index").click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
+        .click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
+        .type_text("y3.6");
+    h.run();
+    assert_eq!(h.state().xref_filter, "y3.6");
+    assert!(
+        h.query_by_label_contains("Y0003.7").is_none(),
+        "the filter leaves only Y3.6"
+    );
+    let place = h.get_by_label("N0002 1:11").rect().center();
+    double_click(&mut h, place);
+    assert_eq!(h.state().view, View::Block(1));
+    let c = h.state().cursor;
+    assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
+}
+
+#[test]
+fn every_view_opened_gets_a_tab_that_switches_back_to_it() {
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.get_by_label("Level 1").click();
+    h.run();
+    h.get_by_label("Display messages").click();
+    h.run();
+    assert_eq!(
+        h.state().tabs,
+        [View::Block(1), View::Block(0), View::Messages]
+    );
+    h.get_by_label("Tab: Level 2").click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(1));
+}
+
+#[test]
+fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
+    use egui::{Key, Modifiers};
+    let mut h = harness(None, Lang::En);
+    h.run();
+    h.state_mut().view = View::Symbols(0);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "25");
+    assert!(h.state().prompt.is_none());
+    let sheet = ladder_studio::gui::tables::Sheet::Symbols(0);
+    assert_eq!(h.state().tables.selected.get(&sheet), Some(&24));
+    assert!(
+        h.query_all_by_value("KEY_SP_CCW").next().is_some(),
+        "row 25 was scrolled into view (only visible rows are laid out)"
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    enter_operand(&mut h, "9999");
+    let err = h.state().prompt.clone().unwrap().error.unwrap();
+    assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
+}
+
+#[test]
+fn undo_goes_to_the_view_and_the_place_it_changes() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(TWO_NETWORKS, "undoview.ldp");
+    // A change in a table, then the ladder view and a change in its second network.
+    let mut tables = h
+        .state()
+        .doc
+        .as_ref()
+        .unwrap()
+        .project()
+        .symbol_tables
+        .clone();
+    tables[0].rows.push(ladder_engine::model::Symbol {
+        name: "START".into(),
+        address: ladder_engine::Address::parse("X0002.1").unwrap(),
+        comments: Default::default(),
+    });
+    h.state_mut()
+        .edit_table(ladder_engine::model::TableEdit::Symbols(tables));
+    h.state_mut().view = View::Messages;
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(
+        h.state().view,
+        View::Symbols(0),
+        "the undone rename is shown"
+    );
+    assert!(
+        h.state().doc.as_ref().unwrap().project().symbol_tables[0]
+            .rows
+            .is_empty()
+    );
+    h.state_mut().view = View::Block(1);
+    h.state_mut().cursor.network = 1;
+    h.run();
+    h.key_press(Key::Delete);
+    h.run();
+    h.state_mut().cursor.network = 0;
+    h.state_mut().view = View::Data;
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    assert_eq!(h.state().view, View::Block(1));
+    assert_eq!(
+        h.state().cursor.network,
+        1,
+        "the cursor is on the contact brought back"
+    );
+}
+
+/// A level 2 of `level2` networks and a subprogram P0001 of two.
+fn long_level2(level2: usize) -> String {
+    let mut il = String::from("LEVEL2\n");
+    for i in 0..level2 {
+        il.push_str(&format!("NETWORK\nLD X0001.{}\nOUT Y0001.{}\n", i % 8, i % 8));
+    }
+    il.push_str("SUB P0001 \"SHORT\"\nNETWORK\nLD X0002.0\nOUT Y0002.0\nNETWORK\nLD X0002.1\nOUT Y0002.1\nEND\n");
+    il
+}
+
+#[test]
+fn each_block_keeps_its_own_cursor_and_the_status_bar_speaks_of_the_block_shown() {
+    use egui::{Key, Modifiers};
+    let (mut h, _) = editor_on(&long_level2(45), "cursor.ldp");
+    h.key_press_modifiers(Modifiers::COMMAND, Key::G);
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Operand")
+        .type_text("43");
+    h.run();
+    h.key_press(Key::Enter);
+    h.run();
+    assert_eq!(h.state().cursor.network, 42);
+    h.get_by_label_contains("P0001").click();
+    h.run();
+    assert_eq!(h.state().view, View::Block(2));
+    assert_eq!((h.state().cursor.block, h.state().cursor.network), (2, 0));
+    h.get_by_label_contains("Cursor: P0001 Network 1 ");
+    assert!(h.query_by_label_contains("Network 43").is_none());
+    // Back in level 2 the cursor is where it was left.
+    h.get_by_label("Level 2").click();
+    h.run();
+    assert_eq!((h.state().cursor.block, h.state().cursor.network), (1, 42));
+}
+
+#[test]
+fn closing_the_project_leaves_no_tab_and_no_output_behind() {
+    let (mut h, _) = editor_on(&long_level2(2), "close.ldp");
+    h.key_press(egui::Key::F9);
+    h.run();
+    assert!(!h.state().output.is_empty());
+    h.get_by_label("File").click();
+    h.run();
+    h.get_by_label("Close").click();
+    h.run();
+    assert!(h.state().doc.is_none());
+    assert!(h.state().tabs.is_empty(), "{:?}", h.state().tabs);
+    assert!(h.state().output.is_empty());
+    assert!(h.query_by_label_contains("Tab:").is_none());
+}
