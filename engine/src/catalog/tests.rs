@@ -1,0 +1,42 @@
+use super::*;
+
+#[test]
+fn the_catalogue_has_13_basic_and_48_function_instructions() {
+    let basic = CATALOG
+        .iter()
+        .filter(|s| s.class != InstrClass::Function)
+        .count();
+    let function = CATALOG
+        .iter()
+        .filter(|s| s.class == InstrClass::Function)
+        .count();
+    assert_eq!((basic, function), (13, 48));
+}
+
+#[test]
+fn each_entry_sits_at_its_opcode_and_names_are_unique() {
+    for (i, s) in CATALOG.iter().enumerate() {
+        assert_eq!(s.op as usize, i, "{}", s.name);
+        assert_eq!(Op::from_name(&s.name.to_lowercase()), Some(s.op));
+        assert!(!s.help_zh.is_empty() && !s.help_en.is_empty(), "{}", s.name);
+        for o in s.operands {
+            assert!(
+                !o.help_zh.is_empty() && !o.help_en.is_empty(),
+                "{} {}",
+                s.name,
+                o.name
+            );
+            assert!(o.min <= o.max);
+            if let Width::SizeOf(i) = o.width {
+                assert_eq!(s.operands[i as usize].kind, OperandKind::Size, "{}", s.name);
+            }
+        }
+    }
+}
+
+#[test]
+fn step_cost_follows_the_operand_count() {
+    assert_eq!(Op::Ld.spec().steps(1), 1);
+    assert_eq!(Op::Tmrb.spec().steps(3), 4);
+    assert_eq!(Op::Codb.spec().steps(8), 9);
+}
