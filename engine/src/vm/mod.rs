@@ -149,7 +149,7 @@ impl Vm {
             frames: Vec::with_capacity(program.blocks.len() + 1),
             window: vec![0; d.len() / 4],
             watched: vec![false; code.networks.len()],
-            trace: vec![0; code.words.len()],
+            trace: vec![0; code.words().len()],
             watch_count: 0,
             mem: vec![0; size],
             force_mask: vec![0; size],
