@@ -13,7 +13,7 @@ mod tests;
 
 pub use areas::{BITS_READ, BITS_WRITE, BYTES_READ, BYTES_WRITE};
 pub use operands::CODB_TABLE_ENTRY;
-pub use table::{CATALOG, Op};
+pub use table::{CATALOG, FnOp, Op};
 
 use crate::address::AreaSet;
 

@@ -40,3 +40,21 @@ fn step_cost_follows_the_operand_count() {
     assert_eq!(Op::Tmrb.spec().steps(3), 4);
     assert_eq!(Op::Codb.spec().steps(8), 9);
 }
+
+#[test]
+fn function_opcodes_are_exactly_the_function_rows() {
+    for s in CATALOG {
+        let function = s.op.function();
+        assert_eq!(
+            function.is_some(),
+            s.class == InstrClass::Function,
+            "{}",
+            s.name
+        );
+        if let Some(f) = function {
+            assert_eq!(f.op(), s.op);
+            assert_eq!(f as u8, s.op as u8, "{}", s.name);
+        }
+    }
+    assert_eq!(FnOp::ALL.len(), 48);
+}

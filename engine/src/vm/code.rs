@@ -4,7 +4,7 @@
 
 use super::memory::{Layout, Loc};
 use crate::address::{Address, Area};
-use crate::catalog::{InstrClass, Op, OperandKind};
+use crate::catalog::{FnOp, InstrClass, Op, OperandKind};
 use crate::compiler::{Instr, Program};
 use crate::model::{BlockKind, Operand};
 use thiserror::Error;
@@ -181,7 +181,7 @@ pub const MAX_ARGS: usize = 8;
 #[derive(Clone, Debug)]
 pub struct FnCall {
     /// Which instruction.
-    pub op: Op,
+    pub op: FnOp,
     /// Its operands in IL order.
     pub args: [Arg; MAX_ARGS],
     /// CODB's table: a range of [`Code::consts`].
@@ -514,13 +514,16 @@ impl Lowerer<'_> {
                 word(vm, 0)
             }
             _ => {
+                let Some(function) = op.function() else {
+                    unreachable!("every basic instruction has its own arm above");
+                };
                 let next = self.code.states;
                 let state = *self.states.entry(src.unwrap_or_default()).or_insert(next);
                 if state == next {
                     self.code.states += 1;
                 }
                 let mut call = FnCall {
-                    op,
+                    op: function,
                     args: [Arg::None; MAX_ARGS],
                     table: (0, 0),
                     state,

@@ -139,7 +139,7 @@ impl Vm {
         let d = layout.area_range(Area::D);
         let mut latches = vec![Vec::new(); code.states as usize];
         for f in &code.fns {
-            if f.op == crate::catalog::Op::Windr {
+            if f.op == crate::catalog::FnOp::Windr {
                 latches[f.state as usize] = vec![0; d.len() / 4];
             }
         }
