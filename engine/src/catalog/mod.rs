@@ -15,7 +15,7 @@ pub use areas::{BITS_READ, BITS_WRITE, BYTES_READ, BYTES_WRITE};
 pub use operands::CODB_TABLE_ENTRY;
 pub use table::{CATALOG, FnOp, Op};
 
-use crate::address::AreaSet;
+use crate::address::{Area, AreaSet};
 
 /// Largest magnitude of a constant (§1.2: D holds −2147483647…2147483647).
 pub const CONST_MAX: i64 = 2_147_483_647;
@@ -100,6 +100,8 @@ pub struct OperandSpec {
     pub width: Width,
     /// Read, written, or both.
     pub access: Access,
+    /// What the operand stands for beyond its kind, where other code needs to find it.
+    pub role: Role,
     /// Smallest constant accepted.
     pub min: i64,
     /// Largest constant accepted.
@@ -127,6 +129,44 @@ impl OperandSpec {
                 | OperandKind::RealOrD
         )
     }
+}
+
+/// What an operand stands for, for the code that looks for it rather than for its position:
+/// the compiler's shared-timer warning, the instruction reference.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Role {
+    /// Nothing beyond its kind.
+    Plain,
+    /// The timer the instruction runs (TMRB's and TMRC's T).
+    TimerNumber,
+    /// The counter the instruction runs (CTRC's C).
+    CounterNumber,
+    /// The preset a timer or counter reaches (PT, N).
+    Preset,
+}
+
+impl Role {
+    /// The area of the memory a timer or counter number names.
+    pub fn memory_area(self) -> Option<Area> {
+        match self {
+            Role::TimerNumber => Some(Area::T),
+            Role::CounterNumber => Some(Area::C),
+            Role::Plain | Role::Preset => None,
+        }
+    }
+}
+
+/// Where the table of a variadic instruction is (CODB, manual §1.4.11): its entries follow the
+/// fixed operands, and a constant operand says how many there are.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TableShape {
+    /// Index of the first entry (the number of fixed operands).
+    pub first: usize,
+    /// Index of the constant operand that gives the number of entries; its range is the
+    /// range of the count.
+    pub count_from: usize,
+    /// What each entry is.
+    pub entry: &'static OperandSpec,
 }
 
 /// Basic instructions are one step and carry the rung's logic; function instructions are boxes.
@@ -231,8 +271,11 @@ pub struct InstrSpec {
     pub class: InstrClass,
     /// Menu category.
     pub category: Category,
-    /// Operands in IL order (CODB's table entries follow its fixed operands, see [`Op::Codb`]).
+    /// Operands in IL order (CODB's table entries follow its fixed operands, see
+    /// [`InstrSpec::table`]).
     pub operands: &'static [OperandSpec],
+    /// The table of constants after the fixed operands, for the one variadic instruction.
+    pub table: Option<TableShape>,
     /// Help text in Chinese.
     pub help_zh: &'static str,
     /// Help text in English.
@@ -259,17 +302,41 @@ impl InstrSpec {
         }
     }
 
-    /// The index of the first CODB table entry, for the one variadic instruction.
+    /// The index of the first table entry, for the one variadic instruction.
     pub fn table_start(&self) -> Option<usize> {
-        (self.op == Op::Codb).then_some(4)
+        self.table.map(|t| t.first)
+    }
+
+    /// The number of table entries a count operand of `value` asks for, when it is in the
+    /// count operand's range; `None` without a table.
+    pub fn table_len(&self, value: i64) -> Option<usize> {
+        let t = self.table?;
+        let count = &self.operands[t.count_from];
+        (count.min..=count.max)
+            .contains(&value)
+            .then_some(value as usize)
     }
 
     /// The operand spec for operand `i`, including CODB's table entries.
     pub fn operand(&self, i: usize) -> Option<&'static OperandSpec> {
-        match self.table_start() {
-            Some(start) if i >= start => Some(&CODB_TABLE_ENTRY),
+        match self.table {
+            Some(t) if i >= t.first => Some(t.entry),
             _ => self.operands.get(i),
         }
+    }
+
+    /// The index of the first fixed operand with `role`.
+    pub fn operand_with(&self, role: Role) -> Option<usize> {
+        self.operands.iter().position(|o| o.role == role)
+    }
+
+    /// The operand that names the timer or counter this instruction runs, and its area (T or
+    /// C): two instructions on one number disturb each other.
+    pub fn memory_operand(&self) -> Option<(usize, Area)> {
+        self.operands
+            .iter()
+            .enumerate()
+            .find_map(|(i, o)| o.role.memory_area().map(|area| (i, area)))
     }
 }
 

@@ -2,7 +2,7 @@
 //! instructions share, so each operand is described once.
 
 use super::areas::*;
-use super::{Access, CONST_MAX, OperandKind, OperandSpec, Width};
+use super::{Access, CONST_MAX, OperandKind, OperandSpec, Role, Width};
 use crate::address::AreaSet;
 
 pub(super) const fn spec(
@@ -20,6 +20,7 @@ pub(super) const fn spec(
         areas,
         width,
         access,
+        role: Role::Plain,
         min: -CONST_MAX,
         max: CONST_MAX,
         help_zh,
@@ -30,6 +31,12 @@ pub(super) const fn spec(
 /// The same operand with the manual's own list of areas.
 pub(super) const fn only(mut s: OperandSpec, areas: AreaSet) -> OperandSpec {
     s.areas = areas;
+    s
+}
+
+/// The same operand in a role other code looks for.
+pub(super) const fn with_role(mut s: OperandSpec, role: Role) -> OperandSpec {
+    s.role = role;
     s
 }
 
@@ -388,23 +395,29 @@ pub(super) const SHIFT: &[OperandSpec] = &[
     ),
 ];
 pub(super) const TIMER: &[OperandSpec] = &[
-    spec(
-        "T",
-        OperandKind::Timer,
-        T_ONLY,
-        Width::Bytes(4),
-        Access::ReadWrite,
-        "定时器号 T0–T199",
-        "Timer number T0–T199",
+    with_role(
+        spec(
+            "T",
+            OperandKind::Timer,
+            T_ONLY,
+            Width::Bytes(4),
+            Access::ReadWrite,
+            "定时器号 T0–T199",
+            "Timer number T0–T199",
+        ),
+        Role::TimerNumber,
     ),
-    spec(
-        "PT",
-        OperandKind::ConstOrByte,
-        DT_ONLY,
-        Width::Bytes(4),
-        Access::Read,
-        "设定时间（ms）：常数或 DT 地址",
-        "Preset time (ms): constant or DT address",
+    with_role(
+        spec(
+            "PT",
+            OperandKind::ConstOrByte,
+            DT_ONLY,
+            Width::Bytes(4),
+            Access::Read,
+            "设定时间（ms）：常数或 DT 地址",
+            "Preset time (ms): constant or DT address",
+        ),
+        Role::Preset,
     ),
     bit_out(
         "OUT",

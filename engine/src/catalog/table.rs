@@ -3,7 +3,9 @@
 
 use super::areas::*;
 use super::operands::*;
-use super::{Access, CONST_MAX, Category, InstrClass, InstrSpec, OperandKind, Width};
+use super::{
+    Access, CONST_MAX, Category, InstrClass, InstrSpec, OperandKind, Role, TableShape, Width,
+};
 
 macro_rules! catalog {
     (
@@ -11,7 +13,11 @@ macro_rules! catalog {
             $( $bv:ident $bname:literal $bclass:ident $bcat:ident [$($bo:expr),* $(,)?] $bops:ident? $bzh:literal $ben:literal; )*
         }
         function {
-            $( $fv:ident $fname:literal Function $fcat:ident [$($fo:expr),* $(,)?] $fops:ident? $fzh:literal $fen:literal; )*
+            $(
+                $fv:ident $fname:literal Function $fcat:ident
+                $(table { first: $first:literal, count: $count:literal, entry: $entry:ident })?
+                [$($fo:expr),* $(,)?] $fops:ident? $fzh:literal $fen:literal;
+            )*
         }
     ) => {
         /// An opcode: the identity of an instruction; [`Op::spec`] describes it.
@@ -69,6 +75,7 @@ macro_rules! catalog {
                 class: InstrClass::$bclass,
                 category: Category::$bcat,
                 operands: catalog!(@ops $bops [$($bo),*]),
+                table: None,
                 help_zh: $bzh,
                 help_en: $ben,
             },)*
@@ -78,10 +85,15 @@ macro_rules! catalog {
                 class: InstrClass::Function,
                 category: Category::$fcat,
                 operands: catalog!(@ops $fops [$($fo),*]),
+                table: catalog!(@table $($first $count $entry)?),
                 help_zh: $fzh,
                 help_en: $fen,
             },)*
         ];
+    };
+    (@table) => { None };
+    (@table $first:literal $count:literal $entry:ident) => {
+        Some(TableShape { first: $first, count_from: $count, entry: &$entry })
     };
     (@ops none []) => { &[] };
     (@ops list [$($operand:expr),*]) => { &[$($operand),*] };
@@ -140,8 +152,8 @@ catalog! {
         Ctrc "CTRC" Function TimerCounter [
             digits("FMT", 1, "格式 00ab：b=0 加计数/1 减计数，a=初始值 0/1", "Format 00ab: b = 0 up / 1 down, a = initial value 0 / 1"),
             rst("复位：为 1 时 C 回到起始值，OUT := 0", "Reset: 1 returns C to its start value, OUT := 0"),
-            spec("C", OperandKind::Counter, C_ONLY, Width::Bytes(4), Access::ReadWrite, "计数器号 C0–C199", "Counter number C0–C199"),
-            with_range(spec("N", OperandKind::ConstOrByte, DC_ONLY, Width::Bytes(4), Access::Read, "计数预置值：0–2147483647 的常数或 DC 地址", "Preset: constant 0–2147483647 or DC address"), 0, CONST_MAX),
+            with_role(spec("C", OperandKind::Counter, C_ONLY, Width::Bytes(4), Access::ReadWrite, "计数器号 C0–C199", "Counter number C0–C199"), Role::CounterNumber),
+            with_role(with_range(spec("N", OperandKind::ConstOrByte, DC_ONLY, Width::Bytes(4), Access::Read, "计数预置值：0–2147483647 的常数或 DC 地址", "Preset: constant 0–2147483647 or DC address"), 0, CONST_MAX), Role::Preset),
             bit_out("OUT", BITS_WRITE, "计数到输出", "Output when the count is reached"),
         ] list? "二进制计数器：ACT 每次上升沿计数一次" "Binary counter: counts each rising edge of ACT";
         Movn "MOVN" Function DataTransfer [
@@ -159,7 +171,7 @@ catalog! {
             konst("BASE", -CONST_MAX, CONST_MAX, "译码基数", "Base of the decoded range"),
             byte_out("OUT", RELAYS_WRITE, Width::Bytes(1), "译码结果字节：IN=BASE+k 时位 k 为 1", "Result byte: bit k is 1 when IN = BASE+k"),
         ] list? "二进制译码：判断 IN 是否为 BASE…BASE+7" "Decode binary: tests IN against BASE…BASE+7";
-        Codb "CODB" Function DataTransfer [
+        Codb "CODB" Function DataTransfer table { first: 4, count: 1, entry: CODB_TABLE_ENTRY } [
             size("SIZE1：输出数据长度 1、2 或 4 字节", "SIZE1: output size 1, 2 or 4 bytes"),
             konst("SIZE2", 1, 256, "转换表数据个数 1–256", "Number of table entries, 1–256"),
             spec("IN", OperandKind::Byte, RELAYS_AND_D, Width::Bytes(1), Access::Read, "表内序号地址（1 字节，无符号）", "Table index address (1 byte, unsigned)"),

@@ -1,4 +1,5 @@
 use super::*;
+use crate::address::Area;
 
 #[test]
 fn the_catalogue_has_13_basic_and_48_function_instructions() {
@@ -57,4 +58,50 @@ fn function_opcodes_are_exactly_the_function_rows() {
         }
     }
     assert_eq!(FnOp::ALL.len(), 48);
+}
+
+#[test]
+fn codb_alone_has_a_table_after_its_fixed_operands() {
+    for s in CATALOG {
+        let Some(t) = s.table else { continue };
+        assert_eq!(s.op, Op::Codb);
+        assert_eq!(
+            t.first,
+            s.operands.len(),
+            "the entries follow the fixed operands"
+        );
+        assert_eq!(s.operands[t.count_from].name, "SIZE2");
+        assert_eq!(s.table_len(256), Some(256));
+        assert_eq!(s.table_len(0), None);
+        assert_eq!(s.operand(t.first + 3), Some(&CODB_TABLE_ENTRY));
+    }
+    assert_eq!(Op::Codb.spec().table_start(), Some(4));
+    assert_eq!(Op::Movn.spec().table_len(1), None);
+}
+
+#[test]
+fn timers_and_counters_name_their_number_and_preset() {
+    assert_eq!(Op::Tmrb.spec().memory_operand(), Some((0, Area::T)));
+    assert_eq!(Op::Tmrc.spec().memory_operand(), Some((0, Area::T)));
+    assert_eq!(Op::Ctrc.spec().memory_operand(), Some((2, Area::C)));
+    assert_eq!(Op::Tmrb.spec().operand_with(Role::Preset), Some(1));
+    assert_eq!(Op::Ctrc.spec().operand_with(Role::Preset), Some(3));
+    let numbered: Vec<&str> = CATALOG
+        .iter()
+        .filter(|s| s.memory_operand().is_some())
+        .map(|s| s.name)
+        .collect();
+    assert_eq!(numbered, ["TMRB", "TMRC", "CTRC"]);
+    for s in CATALOG {
+        for o in s.operands {
+            let number = matches!(o.kind, OperandKind::Timer | OperandKind::Counter);
+            assert_eq!(
+                number,
+                o.role.memory_area().is_some(),
+                "{} {}",
+                s.name,
+                o.name
+            );
+        }
+    }
 }

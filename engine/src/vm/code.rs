@@ -534,9 +534,9 @@ impl Lowerer<'_> {
                 for (i, o) in instr.operands.iter().enumerate().take(fixed.min(MAX_ARGS)) {
                     call.args[i] = self.arg(op, i, o, latched)?;
                 }
-                if op == Op::Codb {
+                if let Some(table) = op.spec().table {
                     let start = self.code.consts.len() as u32;
-                    for o in &instr.operands[fixed..] {
+                    for o in instr.operands.iter().skip(table.first) {
                         if let Operand::Int(v) = o {
                             self.code.consts.push(*v as i32);
                         }
