@@ -7,12 +7,14 @@
 
 mod areas;
 mod operands;
+mod reference;
 mod table;
 #[cfg(test)]
 mod tests;
 
 pub use areas::{BITS_READ, BITS_WRITE, BYTES_READ, BYTES_WRITE};
 pub use operands::CODB_TABLE_ENTRY;
+pub use reference::reference_markdown;
 pub use table::{CATALOG, FnOp, Op};
 
 use crate::address::{Area, AreaSet};
