@@ -219,7 +219,11 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
 fn long_level2(level2: usize) -> String {
     let mut il = String::from("LEVEL2\n");
     for i in 0..level2 {
-        il.push_str(&format!("NETWORK\nLD X0001.{}\nOUT Y0001.{}\n", i % 8, i % 8));
+        il.push_str(&format!(
+            "NETWORK\nLD X0001.{}\nOUT Y0001.{}\n",
+            i % 8,
+            i % 8
+        ));
     }
     il.push_str("SUB P0001 \"SHORT\"\nNETWORK\nLD X0002.0\nOUT Y0002.0\nNETWORK\nLD X0002.1\nOUT Y0002.1\nEND\n");
     il

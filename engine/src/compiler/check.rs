@@ -114,12 +114,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                             }
                         }
                     }
-                    Op::Tmrb | Op::Tmrc | Op::Ctrc => {
-                        let (i, area) = if instr.op == Op::Ctrc {
-                            (2, Area::C)
-                        } else {
-                            (0, Area::T)
-                        };
+                    _ if let Some((i, area)) = instr.op.spec().memory_operand() => {
                         let number = instr.operands.get(i).and_then(Operand::address);
                         if let Some(a) = number.filter(|a| a.area == area) {
                             if let Some(prev) = timers.get(&a) {
@@ -373,11 +368,11 @@ fn covered(a: Address, bytes: u32, count: u32) -> u32 {
 fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, sink: &mut Sink) {
     let spec = instr.op.spec();
     let fixed = spec.operands.len();
-    let expected = match instr.op {
-        Op::Codb => const_value(instr.operands.get(1))
-            .filter(|v| (1..=256).contains(v))
-            .map(|v| fixed + v as usize),
-        _ => Some(fixed),
+    let expected = match spec.table {
+        Some(t) => const_value(instr.operands.get(t.count_from))
+            .and_then(|v| spec.table_len(v))
+            .map(|n| t.first + n),
+        None => Some(fixed),
     };
     let names = || {
         spec.operands
@@ -388,11 +383,9 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
     };
     match expected {
         Some(n) if n != instr.operands.len() => {
-            let extra = if instr.op == Op::Codb {
-                " and SIZE2 table entries"
-            } else {
-                ""
-            };
+            let extra = spec.table.map_or(String::new(), |t| {
+                format!(" and {} table entries", spec.operands[t.count_from].name)
+            });
             sink.report(
                 instr.origin,
                 Code::L011OperandCount,
@@ -410,7 +403,12 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
             sink.report(
                 instr.origin,
                 Code::L011OperandCount,
-                format!("{} takes {} and SIZE2 table entries", spec.name, names()),
+                format!(
+                    "{} takes {} and {} table entries",
+                    spec.name,
+                    names(),
+                    spec.table.map_or("", |t| spec.operands[t.count_from].name)
+                ),
             );
             return;
         }

@@ -4,12 +4,12 @@
 
 use super::memory::{Layout, Loc};
 use crate::address::{Address, Area};
-use crate::catalog::{InstrClass, Op, OperandKind};
+use crate::catalog::{FnOp, InstrClass, Op, OperandKind};
 use crate::compiler::{Instr, Program};
 use crate::model::{BlockKind, Operand};
 use thiserror::Error;
 
-/// Flag bits of a contact opcode (opcodes 0–31): the opcode *is* its flags, so the loop runs
+/// Flag bits of a contact opcode: the opcode *is* its flags, so the loop runs
 /// every contact form with one straight-line body: `v = bit ^ INVERT`, then
 /// `acc = (acc & (v | OR)) | (v & LOAD_OR)`, pushing the old accumulator when PUSH and
 /// emptying the stacks when START.
@@ -22,88 +22,132 @@ pub const C_LOAD_OR: u32 = 4;
 pub const C_PUSH: u32 = 8;
 /// Start of a rung: both stacks are emptied.
 pub const C_START: u32 = 16;
+/// Opcodes below this are contacts (every combination of the `C_*` flags fits).
+pub const CONTACT_END: u32 = 32;
 
-/// VM opcodes. Contacts and coils carry a bit index (byte offset × 8 + bit).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[repr(u8)]
-#[allow(missing_docs)] // One per basic instruction; see the catalogue.
-pub enum VmOp {
-    And = 0,
-    Ani = C_INVERT as u8,
-    Or = (C_OR | C_LOAD_OR) as u8,
-    Ori = (C_OR | C_LOAD_OR | C_INVERT) as u8,
-    Ld = (C_LOAD_OR | C_PUSH) as u8,
-    Ldi = (C_LOAD_OR | C_PUSH | C_INVERT) as u8,
-    /// LD at the start of a rung: no block to push.
-    LdStart = (C_LOAD_OR | C_START) as u8,
-    /// LDI at the start of a rung.
-    LdiStart = (C_LOAD_OR | C_START | C_INVERT) as u8,
-    // Opcodes 0–31 are contacts; the rest follow.
-    Orb = 32,
-    Anb,
-    Out,
-    Outn,
-    Mps,
-    Mrd,
-    Mpp,
-    Set,
-    Rst,
-    /// Jump to the word index in the argument when ACT = 1.
-    Jmpb,
-    Lbl,
-    /// Call the code at the word index in the argument when ACT = 1.
-    Call,
-    Callu,
-    /// Start of a network: the argument indexes [`Code::networks`].
-    Net,
-    /// A function instruction: the argument indexes [`Code::fns`].
-    Fn,
-    /// End of a block or subprogram.
-    Ret,
+/// Declares the VM's opcodes once: [`VmOp`], its byte constants in [`byte`] (the hot loop's
+/// match patterns) and the decoding table all come from one line per opcode, so they cannot
+/// disagree. Contacts come first; the build stops if one lies outside `0..CONTACT_END` or
+/// another opcode inside it.
+macro_rules! vm_ops {
+    (
+        contacts { $( $(#[doc = $cdoc:literal])* $cop:ident $cbyte:ident = $cvalue:expr; )* }
+        others { $( $(#[doc = $doc:literal])* $op:ident $byte:ident = $value:expr; )* }
+    ) => {
+        /// VM opcodes. Contacts and coils carry a bit index (byte offset × 8 + bit).
+        #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+        #[repr(u8)]
+        pub enum VmOp {
+            $( $(#[doc = $cdoc])* $cop = $cvalue, )*
+            $( $(#[doc = $doc])* $op = $value, )*
+        }
+
+        /// The opcode bytes as `u32`, for matching the low byte of a word without decoding it.
+        pub mod byte {
+            $(
+                #[doc = concat!("The byte of [`VmOp::", stringify!($cop), "`](super::VmOp::", stringify!($cop), ").")]
+                pub const $cbyte: u32 = super::VmOp::$cop as u32;
+            )*
+            $(
+                #[doc = concat!("The byte of [`VmOp::", stringify!($op), "`](super::VmOp::", stringify!($op), ").")]
+                pub const $byte: u32 = super::VmOp::$op as u32;
+            )*
+        }
+
+        impl VmOp {
+            /// Every opcode, in the order of the table.
+            pub const ALL: &[VmOp] = &[$(VmOp::$cop,)* $(VmOp::$op),*];
+
+            /// Whether the opcode is a contact, whose byte is its `C_*` flags.
+            pub const fn is_contact(self) -> bool {
+                matches!(self, $(VmOp::$cop)|*)
+            }
+        }
+
+        const _: () = {
+            $( assert!(($cvalue as u32) < CONTACT_END, "a contact's byte is its flags"); )*
+            $( assert!(($value as u32) >= CONTACT_END, "bytes below CONTACT_END are contacts"); )*
+        };
+    };
 }
 
-const OPS: [VmOp; 24] = [
-    VmOp::And,
-    VmOp::Ani,
-    VmOp::Or,
-    VmOp::Ori,
-    VmOp::Ld,
-    VmOp::Ldi,
-    VmOp::LdStart,
-    VmOp::LdiStart,
-    VmOp::Orb,
-    VmOp::Anb,
-    VmOp::Out,
-    VmOp::Outn,
-    VmOp::Mps,
-    VmOp::Mrd,
-    VmOp::Mpp,
-    VmOp::Set,
-    VmOp::Rst,
-    VmOp::Jmpb,
-    VmOp::Lbl,
-    VmOp::Call,
-    VmOp::Callu,
-    VmOp::Net,
-    VmOp::Fn,
-    VmOp::Ret,
-];
+vm_ops! {
+    contacts {
+        /// AND: a contact in series.
+        And AND = 0;
+        /// ANI: a normally-closed contact in series.
+        Ani ANI = C_INVERT as u8;
+        /// OR: a contact in parallel.
+        Or OR = (C_OR | C_LOAD_OR) as u8;
+        /// ORI: a normally-closed contact in parallel.
+        Ori ORI = (C_OR | C_LOAD_OR | C_INVERT) as u8;
+        /// LD inside a rung: the old result is pushed on the block stack.
+        Ld LD = (C_LOAD_OR | C_PUSH) as u8;
+        /// LDI inside a rung.
+        Ldi LDI = (C_LOAD_OR | C_PUSH | C_INVERT) as u8;
+        /// LD at the start of a rung: no block to push.
+        LdStart LD_START = (C_LOAD_OR | C_START) as u8;
+        /// LDI at the start of a rung.
+        LdiStart LDI_START = (C_LOAD_OR | C_START | C_INVERT) as u8;
+    }
+    others {
+        /// ORB: or of the two last blocks.
+        Orb ORB = 32;
+        /// ANB: and of the two last blocks.
+        Anb ANB = 33;
+        /// OUT: a coil.
+        Out OUT = 34;
+        /// OUTN: an inverted coil.
+        Outn OUTN = 35;
+        /// MPS: push the branch point.
+        Mps MPS = 36;
+        /// MRD: read the branch point.
+        Mrd MRD = 37;
+        /// MPP: pop the branch point.
+        Mpp MPP = 38;
+        /// SET: the bit := 1 while the result is 1.
+        Set SET = 39;
+        /// RST: the bit := 0 while the result is 1.
+        Rst RST = 40;
+        /// Jump to the word index in the argument when ACT = 1.
+        Jmpb JMPB = 41;
+        /// A label: costs its steps, does nothing.
+        Lbl LBL = 42;
+        /// Call the code at the word index in the argument when ACT = 1.
+        Call CALL = 43;
+        /// Call the code at the word index in the argument whatever ACT is.
+        Callu CALLU = 44;
+        /// Start of a network: the argument indexes [`Code::networks`].
+        Net NET = 45;
+        /// A function instruction: the argument indexes [`Code::fns`].
+        Fn FN = 46;
+        /// End of a block or subprogram.
+        Ret RET = 47;
+    }
+}
 
-/// Opcode byte → opcode (unknown bytes decode as `Ret`; lowering never writes them).
-static DECODE: [VmOp; 256] = {
-    let mut table = [VmOp::Ret; 256];
+// OUT and OUTN differ in their low bit only: the hot loop writes `result ^ (opcode & 1)`.
+const _: () = assert!(VmOp::Out as u8 & 1 == 0 && VmOp::Outn as u8 == VmOp::Out as u8 | 1);
+
+/// Opcode byte → opcode, `None` for a byte that is no opcode. Built from [`VmOp::ALL`]; two
+/// opcodes on one byte stop the build.
+static DECODE: [Option<VmOp>; 256] = {
+    let mut table = [None; 256];
     let mut i = 0;
-    while i < OPS.len() {
-        table[OPS[i] as usize] = OPS[i];
+    while i < VmOp::ALL.len() {
+        let op = VmOp::ALL[i];
+        assert!(table[op as usize].is_none(), "two opcodes share a byte");
+        table[op as usize] = Some(op);
         i += 1;
     }
     table
 };
 
 impl VmOp {
-    /// Decodes the low byte of a word.
+    /// Decodes the low byte of a word; `None` when it is no opcode ([`Code`] refuses such
+    /// words when it is built, so the loop never meets one).
     #[inline(always)]
-    pub fn decode(word: u32) -> VmOp {
+    pub fn decode(word: u32) -> Option<VmOp> {
         DECODE[(word & 0xFF) as usize]
     }
 }
@@ -137,7 +181,7 @@ pub const MAX_ARGS: usize = 8;
 #[derive(Clone, Debug)]
 pub struct FnCall {
     /// Which instruction.
-    pub op: Op,
+    pub op: FnOp,
     /// Its operands in IL order.
     pub args: [Arg; MAX_ARGS],
     /// CODB's table: a range of [`Code::consts`].
@@ -165,11 +209,12 @@ pub struct NetworkInfo {
     pub end: u32,
 }
 
-/// The executable program.
+/// The executable program. Only lowering builds one, and [`Code::checked`] sees every word
+/// on the way out: the scan loop then takes each opcode and index as valid without testing it.
 #[derive(Clone, Debug)]
 pub struct Code {
-    /// Instruction words.
-    pub words: Vec<u32>,
+    /// Instruction words (read through [`Code::words`]: nothing may change them once checked).
+    words: Vec<u32>,
     /// Function-instruction instances.
     pub fns: Vec<FnCall>,
     /// CODB tables.
@@ -189,6 +234,84 @@ pub struct Code {
     pub source: Vec<Option<(u16, u32, u32)>>,
 }
 
+/// A word the scan loop could not run.
+#[derive(Clone, Debug, Error, PartialEq, Eq)]
+pub enum CodeError {
+    /// The low byte is no opcode of [`VmOp`].
+    #[error("word {at}: {byte:#04x} is not an opcode of the VM")]
+    UnknownOpcode {
+        /// Index of the word.
+        at: usize,
+        /// Its low byte.
+        byte: u8,
+    },
+    /// A jump or call target, network or function-instruction index past what it indexes.
+    #[error("word {at}: {op:?} {index} is past the {len} {what}")]
+    OutOfRange {
+        /// Index of the word.
+        at: usize,
+        /// Its opcode.
+        op: VmOp,
+        /// Its argument.
+        index: u32,
+        /// How many there are.
+        len: usize,
+        /// What it indexes.
+        what: &'static str,
+    },
+    /// A level's entry past the code.
+    #[error("level entry {entry} is past the {len} words")]
+    Entry {
+        /// The entry word.
+        entry: u32,
+        /// Number of words.
+        len: usize,
+    },
+}
+
+impl Code {
+    /// The instruction words.
+    pub fn words(&self) -> &[u32] {
+        &self.words
+    }
+
+    /// The code, once every word has an opcode of [`VmOp`] and every jump, call, network and
+    /// function-instruction argument is inside what it indexes. Checked here once rather than
+    /// at every word of every scan.
+    fn checked(self) -> Result<Code, CodeError> {
+        let len = self.words.len();
+        for (at, &w) in self.words.iter().enumerate() {
+            let Some(op) = VmOp::decode(w) else {
+                return Err(CodeError::UnknownOpcode { at, byte: w as u8 });
+            };
+            let index = w >> 8;
+            let limit = match op {
+                VmOp::Jmpb | VmOp::Call | VmOp::Callu => Some((len, "words")),
+                VmOp::Net => Some((self.networks.len(), "networks")),
+                VmOp::Fn => Some((self.fns.len(), "function instructions")),
+                _ => None,
+            };
+            if let Some((len, what)) = limit
+                && index as usize >= len
+            {
+                return Err(CodeError::OutOfRange {
+                    at,
+                    op,
+                    index,
+                    len,
+                    what,
+                });
+            }
+        }
+        for entry in [self.level1, self.level2] {
+            if entry as usize >= len {
+                return Err(CodeError::Entry { entry, len });
+            }
+        }
+        Ok(self)
+    }
+}
+
 /// Why a program cannot be run.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum LowerError {
@@ -198,6 +321,9 @@ pub enum LowerError {
     /// An operand the compiler should have resolved.
     #[error("{0}")]
     Unresolved(String),
+    /// Lowering made a word the loop could not run.
+    #[error("invalid code: {0}")]
+    Code(#[from] CodeError),
 }
 
 struct Lowerer<'a> {
@@ -208,8 +334,8 @@ struct Lowerer<'a> {
     entries: Vec<[Option<u32>; 2]>,
     /// Jumps to patch: (word index, block, label number, context).
     jumps: Vec<(usize, usize, u16)>,
-    /// Calls to patch: (word index, target block, context).
-    calls: Vec<(usize, usize, usize)>,
+    /// Calls to patch: (word index, its opcode, target block, context).
+    calls: Vec<(usize, VmOp, usize, usize)>,
     /// Label word per (block, context): label number → word.
     labels: Vec<(usize, usize, u16, u32)>,
     /// The memory slot of each function instruction in the program text: a subprogram lowered
@@ -378,25 +504,26 @@ impl Lowerer<'_> {
                         |bl| matches!(bl.kind, BlockKind::Sub { number, .. } if number == a.number),
                     )
                     .ok_or_else(|| LowerError::Unresolved(format!("no subprogram {a}")))?;
-                self.calls.push((at, target, ctx));
+                let vm = if op == Op::Call {
+                    VmOp::Call
+                } else {
+                    VmOp::Callu
+                };
+                self.calls.push((at, vm, target, ctx));
                 pending_subs.push(target);
-                word(
-                    if op == Op::Call {
-                        VmOp::Call
-                    } else {
-                        VmOp::Callu
-                    },
-                    0,
-                )
+                word(vm, 0)
             }
             _ => {
+                let Some(function) = op.function() else {
+                    unreachable!("every basic instruction has its own arm above");
+                };
                 let next = self.code.states;
                 let state = *self.states.entry(src.unwrap_or_default()).or_insert(next);
                 if state == next {
                     self.code.states += 1;
                 }
                 let mut call = FnCall {
-                    op,
+                    op: function,
                     args: [Arg::None; MAX_ARGS],
                     table: (0, 0),
                     state,
@@ -407,9 +534,9 @@ impl Lowerer<'_> {
                 for (i, o) in instr.operands.iter().enumerate().take(fixed.min(MAX_ARGS)) {
                     call.args[i] = self.arg(op, i, o, latched)?;
                 }
-                if op == Op::Codb {
+                if let Some(table) = op.spec().table {
                     let start = self.code.consts.len() as u32;
-                    for o in &instr.operands[fixed..] {
+                    for o in instr.operands.iter().skip(table.first) {
                         if let Operand::Int(v) = o {
                             self.code.consts.push(*v as i32);
                         }
@@ -471,9 +598,8 @@ pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
             .ok_or_else(|| LowerError::Unresolved(format!("no label L{number:04} in the block")))?;
         l.code.words[at] = word(VmOp::Jmpb, target);
     }
-    for (at, target, ctx) in std::mem::take(&mut l.calls) {
+    for (at, op, target, ctx) in std::mem::take(&mut l.calls) {
         let entry = l.entries[target][ctx].expect("every called block was lowered");
-        let op = VmOp::decode(l.code.words[at]);
         l.code.words[at] = word(op, entry);
     }
     l.code.level2_steps = program.blocks[1]
@@ -482,5 +608,82 @@ pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
         .flat_map(|n| &n.instrs)
         .map(|i| i.op.spec().steps(i.operands.len()))
         .sum();
-    Ok(l.code)
+    Ok(l.code.checked()?)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn code(words: Vec<u32>) -> Code {
+        Code {
+            source: vec![None; words.len()],
+            words,
+            fns: Vec::new(),
+            consts: Vec::new(),
+            networks: Vec::new(),
+            level1: 0,
+            level2: 0,
+            level2_steps: 0,
+            states: 0,
+        }
+    }
+
+    #[test]
+    fn a_word_with_an_unknown_opcode_is_refused() {
+        assert!(
+            code(vec![word(VmOp::Orb, 0), word(VmOp::Ret, 0)])
+                .checked()
+                .is_ok()
+        );
+        let bad = code(vec![word(VmOp::Ld, 9), 0xFF | 3 << 8, word(VmOp::Ret, 0)]);
+        assert_eq!(
+            bad.checked().err(),
+            Some(CodeError::UnknownOpcode { at: 1, byte: 0xFF })
+        );
+        // A contact byte that is no contact of the table (OR without LOAD_OR) is refused too.
+        let bad = code(vec![C_OR | 5 << 8, word(VmOp::Ret, 0)]);
+        assert_eq!(
+            bad.checked().err(),
+            Some(CodeError::UnknownOpcode {
+                at: 0,
+                byte: C_OR as u8
+            })
+        );
+    }
+
+    #[test]
+    fn every_byte_decodes_to_its_opcode_or_to_none() {
+        for byte in 0..=255u32 {
+            let op = VmOp::ALL.iter().find(|op| **op as u32 == byte).copied();
+            assert_eq!(VmOp::decode(byte | 7 << 8), op, "byte {byte}");
+            if let Some(op) = op {
+                assert_eq!(op.is_contact(), byte < CONTACT_END, "{op:?}");
+            }
+        }
+        assert_eq!(VmOp::ALL.len(), 24);
+    }
+
+    #[test]
+    fn indices_past_what_they_index_are_refused() {
+        let ret = word(VmOp::Ret, 0);
+        for (w, what) in [
+            (word(VmOp::Jmpb, 2), "words"),
+            (word(VmOp::Callu, 5), "words"),
+            (word(VmOp::Net, 0), "networks"),
+            (word(VmOp::Fn, 0), "function instructions"),
+        ] {
+            let err = code(vec![w, ret]).checked().err();
+            assert!(
+                matches!(err, Some(CodeError::OutOfRange { at: 0, what: w, .. }) if w == what),
+                "{err:?}"
+            );
+        }
+        let mut entry = code(vec![ret]);
+        entry.level2 = 1;
+        assert_eq!(
+            entry.checked().err(),
+            Some(CodeError::Entry { entry: 1, len: 1 })
+        );
+    }
 }

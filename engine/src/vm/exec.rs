@@ -4,19 +4,7 @@
 //! normal case, no extra work) and with tracing for watched networks; a `Net` word switches.
 
 use super::cnc::Cnc;
-use super::code::{Arg, C_INVERT, VmOp};
-
-// Opcodes of the other basic bit instructions as match patterns.
-const OP_ORB: u32 = VmOp::Orb as u32;
-const OP_ANB: u32 = VmOp::Anb as u32;
-const OP_MPS: u32 = VmOp::Mps as u32;
-const OP_MRD: u32 = VmOp::Mrd as u32;
-const OP_MPP: u32 = VmOp::Mpp as u32;
-const OP_OUT: u32 = VmOp::Out as u32;
-const OP_OUTN: u32 = VmOp::Outn as u32;
-const OP_NET: u32 = VmOp::Net as u32;
-const OP_SET: u32 = VmOp::Set as u32;
-const OP_RST: u32 = VmOp::Rst as u32;
+use super::code::{Arg, C_INVERT, CONTACT_END, VmOp, byte};
 use super::functions::{self, Ctx};
 use super::{Frame, Halt, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
 
@@ -143,7 +131,7 @@ impl Vm {
                 .try_into()
                 .expect("the image is IMAGE_BYTES long");
             let at = hot::<TRACE>(
-                &self.code.words,
+                self.code.words(),
                 image,
                 &mut self.trace,
                 &mut r,
@@ -154,10 +142,13 @@ impl Vm {
                     forcing,
                 },
             );
-            let w = self.code.words[at as usize];
+            let w = self.code.words()[at as usize];
             let arg = w >> 8;
             r.pc = at + 1;
-            match VmOp::decode(w) {
+            let Some(op) = VmOp::decode(w) else {
+                unreachable!("Code::checked refused every word without an opcode");
+            };
+            match op {
                 VmOp::Net => {
                     if level == Level::Two && self.frames.is_empty() && r.steps >= quota {
                         *steps_out = r.steps;
@@ -173,7 +164,7 @@ impl Vm {
                     if TRACE {
                         self.trace[at as usize] = r.acc as u8;
                     }
-                    let v = r.acc ^ u32::from(w & 0xFF == VmOp::Outn as u32);
+                    let v = r.acc ^ u32::from(op == VmOp::Outn);
                     write_bit(&mut self.mem, arg, v);
                     self.apply_forces();
                     r.steps += 1;
@@ -183,7 +174,7 @@ impl Vm {
                         self.trace[at as usize] = r.acc as u8;
                     }
                     if r.acc != 0 {
-                        write_bit(&mut self.mem, arg, u32::from(w & 0xFF == VmOp::Set as u32));
+                        write_bit(&mut self.mem, arg, u32::from(op == VmOp::Set));
                         self.apply_forces();
                     }
                     r.steps += 2;
@@ -203,7 +194,7 @@ impl Vm {
                     }
                 }
                 VmOp::Call | VmOp::Callu => {
-                    let unconditional = w & 0xFF == VmOp::Callu as u32;
+                    let unconditional = op == VmOp::Callu;
                     if TRACE {
                         self.trace[at as usize] = r.acc as u8;
                     }
@@ -260,7 +251,19 @@ impl Vm {
                         r.branches = fr.branches;
                     }
                 },
-                _ => unreachable!("the hot loop runs every other basic word"),
+                VmOp::And
+                | VmOp::Ani
+                | VmOp::Or
+                | VmOp::Ori
+                | VmOp::Ld
+                | VmOp::Ldi
+                | VmOp::LdStart
+                | VmOp::LdiStart
+                | VmOp::Orb
+                | VmOp::Anb
+                | VmOp::Mps
+                | VmOp::Mrd
+                | VmOp::Mpp => unreachable!("the hot loop runs every other basic word"),
             }
         }
     }
@@ -320,7 +323,7 @@ fn hot<const TRACE: bool>(
         pc += 1;
         let op = w & 0xFF;
         match op {
-            0..=31 => {
+            0..CONTACT_END => {
                 // Every contact form: the opcode's bits are its flags (see `code::C_*`).
                 let raw = u32::from(mem[index] >> shift) & 1;
                 if TRACE {
@@ -333,21 +336,21 @@ fn hot<const TRACE: bool>(
                 branches &= keep;
                 acc = (acc & (v | (op >> 1 & 1))) | (v & (op >> 2 & 1));
             }
-            OP_ORB => {
+            byte::ORB => {
                 acc |= (blocks & 1) as u32;
                 blocks >>= 1;
             }
-            OP_ANB => {
+            byte::ANB => {
                 acc &= (blocks & 1) as u32;
                 blocks >>= 1;
             }
-            OP_MPS => branches = branches << 1 | u64::from(acc),
-            OP_MRD => acc = (branches & 1) as u32,
-            OP_MPP => {
+            byte::MPS => branches = branches << 1 | u64::from(acc),
+            byte::MRD => acc = (branches & 1) as u32,
+            byte::MPP => {
                 acc = (branches & 1) as u32;
                 branches >>= 1;
             }
-            OP_OUT | OP_OUTN => {
+            byte::OUT | byte::OUTN => {
                 if forcing {
                     break at;
                 }
@@ -357,7 +360,7 @@ fn hot<const TRACE: bool>(
                 let byte = &mut mem[index];
                 *byte = (*byte & !(1 << shift)) | (((acc ^ (op & 1)) as u8) << shift);
             }
-            OP_SET | OP_RST => {
+            byte::SET | byte::RST => {
                 // As the coils: here unless forces must follow the write. Two steps.
                 if forcing {
                     break at;
@@ -367,11 +370,11 @@ fn hot<const TRACE: bool>(
                 }
                 if acc != 0 {
                     let byte = &mut mem[index];
-                    *byte = (*byte & !(1 << shift)) | (u8::from(op == OP_SET) << shift);
+                    *byte = (*byte & !(1 << shift)) | (u8::from(op == byte::SET) << shift);
                 }
                 steps += 1;
             }
-            OP_NET => {
+            byte::NET => {
                 // Leave only to suspend level 2, or where recording starts or stops.
                 if steps >= quota || ((TRACE || watching) && watched[arg as usize] != TRACE) {
                     break at;

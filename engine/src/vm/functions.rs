@@ -1,4 +1,6 @@
-//! The function instructions' semantics (docs/plc.md, "Function instructions"), one arm per instruction.
+//! The function instructions' semantics (docs/plc.md, "Function instructions"), one arm per
+//! instruction: the match is over [`FnOp`], so an instruction added to the catalogue without
+//! semantics here does not compile.
 //!
 //! Common rules: ACT=0 leaves outputs unchanged unless the row says otherwise; where an
 //! instruction has RST (AXCTL aside) RST=1 is served whatever ACT is and the operation is not
@@ -13,7 +15,7 @@ use super::cnc::Cnc;
 use super::code::{Arg, FnCall};
 use super::exec::{bit, int, set_bit, uint};
 use super::memory::{self, Loc};
-use crate::catalog::{Op, xmov_format};
+use crate::catalog::{FnOp, xmov_format};
 use std::ops::Range;
 
 /// What a function instruction may touch besides its own operands.
@@ -101,7 +103,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
     let a = &f.args;
     let mem = &mut *cx.mem;
     match f.op {
-        Op::Cmp => {
+        FnOp::Cmp => {
             if act {
                 let n = size(a[0]);
                 let (x, y) = (int(mem, a[1], n), int(mem, a[2], n));
@@ -118,7 +120,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 );
             }
         }
-        Op::Cmpr => {
+        FnOp::Cmpr => {
             if act {
                 let (x, y) = (real(mem, a[0]), real(mem, a[1]));
                 // A NaN compares as "less" (docs/plc.md, function instructions).
@@ -135,7 +137,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 );
             }
         }
-        Op::Tmrb | Op::Tmrc => {
+        FnOp::Tmrb | FnOp::Tmrc => {
             let Arg::Loc(t) = a[0] else { return };
             if act {
                 let pt = int(mem, a[1], 4).max(0);
@@ -145,19 +147,19 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                         let elapsed = (cx.now - st.last_ms).min(i32::MAX as u64) as i32;
                         value = value.saturating_add(elapsed).min(pt);
                     }
-                } else if f.op == Op::Tmrb {
+                } else if f.op == FnOp::Tmrb {
                     value = 0;
                 }
                 memory::write(mem, t, 4, value);
                 set_bit(mem, a[2], value >= pt);
-            } else if f.op == Op::Tmrb {
+            } else if f.op == FnOp::Tmrb {
                 memory::write(mem, t, 4, 0);
                 set_bit(mem, a[2], false);
             }
             st.prev_act = act;
             st.last_ms = cx.now;
         }
-        Op::Ctrc => {
+        FnOp::Ctrc => {
             let Arg::Loc(c) = a[2] else { return };
             let fmt = match a[0] {
                 Arg::Int(v) => v,
@@ -191,20 +193,20 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             }
             st.prev_act = act;
         }
-        Op::Movn => {
+        FnOp::Movn => {
             if act {
                 let n = size(a[0]);
                 let v = int(mem, a[1], n);
                 put(mem, a[2], n, v);
             }
         }
-        Op::Movr => {
+        FnOp::Movr => {
             if act {
                 let v = real(mem, a[0]);
                 put_real(mem, a[1], v);
             }
         }
-        Op::Decb => {
+        FnOp::Decb => {
             let n = size(a[0]);
             let mut out = 0u8;
             if act {
@@ -223,7 +225,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             }
             put(mem, a[3], 1, i32::from(out));
         }
-        Op::Codb => {
+        FnOp::Codb => {
             if act {
                 let index = uint(mem, a[2], 1);
                 let (start, end) = f.table;
@@ -236,8 +238,8 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Rotb => rotb(f, act, mem),
-        Op::Pari => {
+        FnOp::Rotb => rotb(f, act, mem),
+        FnOp::Pari => {
             let oe = matches!(a[0], Arg::Int(1));
             let out = if bit(mem, a[1]) || !act {
                 false
@@ -246,13 +248,13 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             };
             set_bit(mem, a[3], out);
         }
-        Op::Addb | Op::Subb => {
+        FnOp::Addb | FnOp::Subb => {
             if bit(mem, a[3]) {
                 set_bit(mem, a[5], false);
             } else if act {
                 let n = size(a[0]);
                 let (x, y) = (i64::from(int(mem, a[1], n)), i64::from(int(mem, a[2], n)));
-                let r = if f.op == Op::Addb { x + y } else { x - y };
+                let r = if f.op == FnOp::Addb { x + y } else { x - y };
                 if fits(r, n) {
                     put(mem, a[4], n, r as i32);
                     set_bit(mem, a[5], false);
@@ -261,12 +263,12 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Addr | Op::Subr => {
+        FnOp::Addr | FnOp::Subr => {
             if bit(mem, a[2]) {
                 set_bit(mem, a[4], false);
             } else if act {
                 let (x, y) = (real(mem, a[0]), real(mem, a[1]));
-                let r = if f.op == Op::Addr { x + y } else { x - y };
+                let r = if f.op == FnOp::Addr { x + y } else { x - y };
                 if r.is_finite() {
                     put_real(mem, a[3], r);
                     set_bit(mem, a[4], false);
@@ -275,8 +277,8 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Difu | Op::Difd => {
-            let edge = if f.op == Op::Difu {
+        FnOp::Difu | FnOp::Difd => {
+            let edge = if f.op == FnOp::Difu {
                 act && !st.prev_act
             } else {
                 !act && st.prev_act
@@ -284,14 +286,14 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             set_bit(mem, a[0], edge);
             st.prev_act = act;
         }
-        Op::Alt => {
+        FnOp::Alt => {
             if act && !st.prev_act {
                 let v = bit(mem, a[0]);
                 set_bit(mem, a[0], !v);
             }
             st.prev_act = act;
         }
-        Op::Move => {
+        FnOp::Move => {
             if act {
                 let (h, l) = match (a[0], a[1]) {
                     (Arg::Int(h), Arg::Int(l)) => (binary_digits(h), binary_digits(l)),
@@ -301,26 +303,26 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 put(mem, a[3], 1, v as i32);
             }
         }
-        Op::Wand | Op::Wor | Op::Wxor => {
+        FnOp::Wand | FnOp::Wor | FnOp::Wxor => {
             if act {
                 let n = size(a[0]);
                 let (x, y) = (int(mem, a[1], n), int(mem, a[2], n));
                 let r = match f.op {
-                    Op::Wand => x & y,
-                    Op::Wor => x | y,
+                    FnOp::Wand => x & y,
+                    FnOp::Wor => x | y,
                     _ => x ^ y,
                 };
                 put(mem, a[3], n, r);
             }
         }
-        Op::Winv => {
+        FnOp::Winv => {
             if act {
                 let n = size(a[0]);
                 let v = !int(mem, a[1], n);
                 put(mem, a[2], n, v);
             }
         }
-        Op::Wshl | Op::Wshr => {
+        FnOp::Wshl | FnOp::Wshr => {
             if act {
                 let n = size(a[0]);
                 let by = uint(mem, a[1], 1);
@@ -330,7 +332,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                     int(mem, a[2], n) as u32 & if n == 4 { u32::MAX } else { (1 << (8 * n)) - 1 };
                 let r = if by >= 8 * n {
                     0
-                } else if f.op == Op::Wshl {
+                } else if f.op == FnOp::Wshl {
                     v << by
                 } else {
                     v >> by
@@ -338,13 +340,13 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 put(mem, a[3], n, r as i32);
             }
         }
-        Op::Mulb | Op::Divb => {
+        FnOp::Mulb | FnOp::Divb => {
             if bit(mem, a[2]) {
                 put(mem, a[3], 4, 0);
                 set_bit(mem, a[4], false);
             } else if act {
                 let (x, y) = (uint(mem, a[0], 2) & 0xFFFF, uint(mem, a[1], 2) & 0xFFFF);
-                if f.op == Op::Mulb {
+                if f.op == FnOp::Mulb {
                     let p = u64::from(x) * u64::from(y);
                     if p > 2_147_483_647 {
                         set_bit(mem, a[4], true);
@@ -359,24 +361,24 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Mulr | Op::Divr => {
+        FnOp::Mulr | FnOp::Divr => {
             if bit(mem, a[2]) {
                 put(mem, a[3], 4, 0);
                 set_bit(mem, a[4], false);
             } else if act {
                 let (x, y) = (real(mem, a[0]), real(mem, a[1]));
-                let r = if f.op == Op::Mulr { x * y } else { x / y };
-                if r.is_finite() && !(f.op == Op::Divr && y == 0.0) {
+                let r = if f.op == FnOp::Mulr { x * y } else { x / y };
+                if r.is_finite() && !(f.op == FnOp::Divr && y == 0.0) {
                     put_real(mem, a[3], r);
                 } else {
                     set_bit(mem, a[4], true);
                 }
             }
         }
-        Op::Windr => windr(f, act, st, cx),
-        Op::Axctl => axctl(f, act, st, cx),
-        Op::Xmov => xmov(f, act, mem),
-        Op::Dschb => {
+        FnOp::Windr => windr(f, act, st, cx),
+        FnOp::Axctl => axctl(f, act, st, cx),
+        FnOp::Xmov => xmov(f, act, mem),
+        FnOp::Dschb => {
             if act {
                 let n = size(a[0]);
                 let count = uint(mem, a[2], 2);
@@ -398,7 +400,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Psgnl => {
+        FnOp::Psgnl => {
             if act {
                 let axis = uint(mem, a[0], 1);
                 let Arg::Loc(area) = a[1] else { return };
@@ -421,7 +423,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Psgn2 => {
+        FnOp::Psgn2 => {
             if act {
                 let axis = uint(mem, a[0], 1);
                 let (lo, hi) = (i64::from(int(mem, a[1], 4)), i64::from(int(mem, a[2], 4)));
@@ -437,7 +439,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 }
             }
         }
-        Op::Zcp => {
+        FnOp::Zcp => {
             if act {
                 let n = size(a[0]);
                 let (lo, hi, v) = (int(mem, a[1], n), int(mem, a[2], n), int(mem, a[3], n));
@@ -454,7 +456,7 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 );
             }
         }
-        Op::Sin | Op::Cos | Op::Tan | Op::Sqrt | Op::Dtr | Op::Round => {
+        FnOp::Sin | FnOp::Cos | FnOp::Tan | FnOp::Sqrt | FnOp::Dtr | FnOp::Round => {
             // Operands: IN, OUT, RST, ERR.
             if bit(mem, a[2]) {
                 set_bit(mem, a[3], false);
@@ -463,13 +465,13 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
             if !act {
                 return;
             }
-            if f.op == Op::Dtr {
+            if f.op == FnOp::Dtr {
                 let v = int(mem, a[0], 4);
                 put_real(mem, a[1], v as f32);
                 return;
             }
             let x = real(mem, a[0]);
-            if f.op == Op::Round {
+            if f.op == FnOp::Round {
                 let r = x.round();
                 // Compared in f64: 2147483647 is not representable in f32 (it rounds to 2^31).
                 if r.is_nan() || f64::from(r).abs() > 2_147_483_647.0 {
@@ -480,9 +482,9 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 return;
             }
             let r = match f.op {
-                Op::Sin => (f64::from(x)).sin() as f32,
-                Op::Cos => (f64::from(x)).cos() as f32,
-                Op::Tan => (f64::from(x)).tan() as f32,
+                FnOp::Sin => (f64::from(x)).sin() as f32,
+                FnOp::Cos => (f64::from(x)).cos() as f32,
+                FnOp::Tan => (f64::from(x)).tan() as f32,
                 _ if x < 0.0 => f32::NAN,
                 _ => x.sqrt(),
             };
@@ -492,8 +494,10 @@ pub(super) fn exec(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) 
                 set_bit(mem, a[3], true);
             }
         }
-        // Basic instructions, SET/RST, jumps and calls are words of their own.
-        _ => {}
+        // Lowering gives these words of their own (vm/code.rs): they never reach a FnCall.
+        FnOp::Set | FnOp::Rst | FnOp::Jmpb | FnOp::Lbl | FnOp::Call | FnOp::Callu => {
+            unreachable!("{:?} runs as a VM word, not as a function call", f.op)
+        }
     }
 }
 

@@ -139,7 +139,7 @@ impl Vm {
         let d = layout.area_range(Area::D);
         let mut latches = vec![Vec::new(); code.states as usize];
         for f in &code.fns {
-            if f.op == crate::catalog::Op::Windr {
+            if f.op == crate::catalog::FnOp::Windr {
                 latches[f.state as usize] = vec![0; d.len() / 4];
             }
         }
@@ -149,7 +149,7 @@ impl Vm {
             frames: Vec::with_capacity(program.blocks.len() + 1),
             window: vec![0; d.len() / 4],
             watched: vec![false; code.networks.len()],
-            trace: vec![0; code.words.len()],
+            trace: vec![0; code.words().len()],
             watch_count: 0,
             mem: vec![0; size],
             force_mask: vec![0; size],

@@ -23,11 +23,6 @@ use ladder_engine::{Op, Profile};
 const RED: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
 /// Orange of operands that are usable but will not compile yet (an undefined symbol).
 const ORANGE: Color32 = Color32::from_rgb(0xb0, 0x60, 0x00);
-/// CODB's SIZE2: the number of table entries after its fixed operands (as the compiler's
-/// operand-count check reads it).
-const TABLE_COUNT: usize = 1;
-/// Most table entries CODB takes (SIZE2 ≤ 256).
-const TABLE_MAX: usize = 256;
 /// The dialog's width.
 const DIALOG_WIDTH: f32 = 1000.0;
 /// The height of the lists and the operand grid.
@@ -264,13 +259,15 @@ impl FunctionDialog {
 
     /// The number of table entries in use (CODB: SIZE2 when it is a valid count).
     fn table_len(&self) -> usize {
-        let Some(start) = self.op.and_then(|op| op.spec().table_start()) else {
+        // The table's shape is the catalogue's: where it starts, which operand counts it.
+        let Some((spec, table)) = self.op.and_then(|op| Some((op.spec(), op.spec().table?))) else {
             return 0;
         };
-        match self.fields.get(TABLE_COUNT).map(|t| Operand::parse(t)) {
-            Some(Ok(Operand::Int(n))) if (1..=TABLE_MAX as i64).contains(&n) => n as usize,
-            _ => self.fields.len().saturating_sub(start),
-        }
+        let counted = match self.fields.get(table.count_from).map(|t| Operand::parse(t)) {
+            Some(Ok(Operand::Int(n))) => spec.table_len(n),
+            _ => None,
+        };
+        counted.unwrap_or_else(|| self.fields.len().saturating_sub(table.first))
     }
 
     /// How many operands the instruction takes as the fields stand.
@@ -293,11 +290,11 @@ impl FunctionDialog {
 
     /// Sets the number of table entries (and SIZE2 with it).
     fn set_table_len(&mut self, n: usize) {
-        if let Some(start) = self.op.and_then(|op| op.spec().table_start()) {
-            if self.fields.len() < start {
-                self.fields.resize(start, String::new());
+        if let Some(table) = self.op.and_then(|op| op.spec().table) {
+            if self.fields.len() < table.first {
+                self.fields.resize(table.first, String::new());
             }
-            self.fields[TABLE_COUNT] = n.to_string();
+            self.fields[table.count_from] = n.to_string();
             self.pad();
         }
     }
@@ -628,6 +625,15 @@ impl FunctionDialog {
     /// CODB's table size with the buttons that add and remove an entry.
     fn table_ui(&mut self, ui: &mut egui::Ui, start: usize, lang: Lang) {
         let n = self.table_len();
+        // Most entries the table takes: the top of its count operand's range.
+        let most = self
+            .op
+            .and_then(|op| {
+                op.spec()
+                    .table
+                    .map(|t| op.spec().operands[t.count_from].max)
+            })
+            .unwrap_or(0);
         ui.horizontal(|ui| {
             ui.label(format!(
                 "{}: {n} {}",
@@ -635,7 +641,10 @@ impl FunctionDialog {
                 Msg::FnEntries.text(lang)
             ));
             if ui
-                .add_enabled(n < TABLE_MAX, egui::Button::new(Msg::FnAddEntry.text(lang)))
+                .add_enabled(
+                    (n as i64) < most,
+                    egui::Button::new(Msg::FnAddEntry.text(lang)),
+                )
                 .clicked()
             {
                 self.set_table_len(n + 1);
