@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the system packages Ladder Studio needs on a fresh Debian machine (run as root, or
-# it uses sudo). Rust itself comes from rustup (https://rustup.rs), version 1.95 or newer.
+# it uses sudo). Rust itself comes from rustup (https://rustup.rs): the release rust-toolchain.toml pins.
 #   scripts/setup-debian.sh          build tools and the libraries the editor's window needs
 #   scripts/setup-debian.sh --build  build tools only (enough for the tests, which need no display)
 #   scripts/setup-debian.sh --xvfb   the window libraries plus a virtual X server and the tools
@@ -26,4 +26,15 @@ done
 if [ -n "$missing" ]; then
   $SUDO apt-get update
   $SUDO apt-get install -y --no-install-recommends $missing
+fi
+# rust-toolchain.toml pins Rust 1.95.0. Where rustup has that release only as "stable" (a
+# machine set up before the pin), the name is linked to it instead of downloading it again.
+if command -v rustup >/dev/null 2>&1 && ! rustup toolchain list | grep -q '^1\.95\.0-'; then
+  stable="$(rustup run stable rustc --version 2>/dev/null || true)"
+  case "$stable" in
+    "rustc 1.95.0 "*)
+      host="$(rustup run stable rustc -vV | sed -n 's/^host: //p')"
+      ln -s "$(rustup run stable rustc --print sysroot)" "$(rustup show home)/toolchains/1.95.0-$host"
+      ;;
+  esac
 fi

@@ -594,7 +594,7 @@ impl LadderApp {
                 .labelled_by(label.id);
             r.request_focus();
             if let Some(e) = &prompt.error {
-                ui.colored_label(egui::Color32::from_rgb(0xc0, 0x10, 0x10), e);
+                ui.colored_label(super::theme::ERROR, e);
             }
             if ui.input(|i| i.key_pressed(Key::Escape)) {
                 close = true;

@@ -71,25 +71,31 @@ impl FileDialogs for NativeDialogs {
         self.answer = Some(rx);
         let ctx = ctx.clone();
         // rfd blocks until the user answers: a thread keeps the editor drawing meanwhile.
-        std::thread::spawn(move || {
-            let (name, exts) = kind.filter();
-            let mut d = rfd::FileDialog::new().add_filter(name, exts);
-            if let Some(s) = &suggested {
-                if let Some(dir) = s.parent().filter(|d| d.is_dir()) {
-                    d = d.set_directory(dir);
+        let spawned = std::thread::Builder::new()
+            .name("file-dialog".into())
+            .spawn(move || {
+                let (name, exts) = kind.filter();
+                let mut d = rfd::FileDialog::new().add_filter(name, exts);
+                if let Some(s) = &suggested {
+                    if let Some(dir) = s.parent().filter(|d| d.is_dir()) {
+                        d = d.set_directory(dir);
+                    }
+                    if let Some(f) = s.file_name() {
+                        d = d.set_file_name(f.to_string_lossy());
+                    }
                 }
-                if let Some(f) = s.file_name() {
-                    d = d.set_file_name(f.to_string_lossy());
-                }
-            }
-            let path = if kind.saves() {
-                d.save_file()
-            } else {
-                d.pick_file()
-            };
-            let _ = tx.send((kind, path));
-            ctx.request_repaint();
-        });
+                let path = if kind.saves() {
+                    d.save_file()
+                } else {
+                    d.pick_file()
+                };
+                let _ = tx.send((kind, path));
+                ctx.request_repaint();
+            });
+        if spawned.is_err() {
+            // No thread, no dialog: the editor is not left waiting for an answer.
+            self.answer = None;
+        }
     }
 
     fn poll(&mut self) -> Option<(DialogKind, Option<PathBuf>)> {

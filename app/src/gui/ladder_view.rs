@@ -4,18 +4,12 @@
 
 use super::selection::Selection;
 use super::settings::DisplayMode;
+use super::theme;
 use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, StrokeKind, pos2, vec2};
 use ladder_engine::model::{Cell, Network, Operand, Project};
 
-/// Operand colours (manual §3.4.3.3): a symbol mapped to an address is blue, an undefined one
-/// red, an operand of the wrong type for its place (a byte address on a contact, an area the
-/// instruction does not take) orange.
-const MAPPED: Color32 = Color32::from_rgb(0x1f, 0x4f, 0xd0);
-const UNDEFINED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x20);
-/// Wrong type (see [`MAPPED`]).
-pub const WRONG_TYPE: Color32 = Color32::from_rgb(0xe0, 0x80, 0x00);
-/// The fill of selected cells, rows and networks.
-const SELECTED: Color32 = Color32::from_rgb(0xcc, 0xe0, 0xff);
+pub use super::theme::WRONG_TYPE;
+use super::theme::{MAPPED, SELECTED, UNDEFINED};
 
 /// Where an operand stands, for its type check.
 #[derive(Clone, Copy, Debug)]
@@ -127,20 +121,20 @@ fn plain_operand_text(project: &Project, o: &Operand, mode: DisplayMode) -> (Str
         Operand::Symbol(name) => match project.resolve_symbol(name) {
             Some(a) => match mode {
                 DisplayMode::Address => (a.to_string(), MAPPED),
-                DisplayMode::Symbol => (name.clone(), Color32::BLACK),
-                DisplayMode::Both => (format!("{a}:{name}"), Color32::BLACK),
+                DisplayMode::Symbol => (name.clone(), theme::INK),
+                DisplayMode::Both => (format!("{a}:{name}"), theme::INK),
             },
             None => (name.clone(), UNDEFINED),
         },
         Operand::Addr(a) => {
             let symbol = project.symbol_of(*a);
             match (mode, symbol) {
-                (DisplayMode::Symbol, Some(s)) => (s.to_string(), Color32::BLACK),
-                (DisplayMode::Both, Some(s)) => (format!("{a}:{s}"), Color32::BLACK),
-                _ => (a.to_string(), Color32::BLACK),
+                (DisplayMode::Symbol, Some(s)) => (s.to_string(), theme::INK),
+                (DisplayMode::Both, Some(s)) => (format!("{a}:{s}"), theme::INK),
+                _ => (a.to_string(), theme::INK),
             }
         }
-        other => (other.to_string(), Color32::BLACK),
+        other => (other.to_string(), theme::INK),
     }
 }
 
@@ -169,7 +163,7 @@ fn network_ui(
     } = style;
     let (mode, comments) = (*mode, *comments);
     let width = project.ladder.width;
-    let wire = Stroke::new(1.5, Color32::from_gray(40));
+    let wire = Stroke::new(1.5, theme::WIRE);
     let font = FontId::proportional(m.font);
     let title = if net.title.is_empty() || !titles {
         format!("N{:04}", index + 1)
@@ -181,7 +175,7 @@ fn network_ui(
         Align2::LEFT_TOP,
         title,
         FontId::proportional(m.font * 1.1),
-        Color32::from_rgb(0, 100, 0),
+        theme::TITLE,
     );
     let mut y = origin.y + m.header;
     if comments && !net.comment.is_empty() {
@@ -190,7 +184,7 @@ fn network_ui(
             Align2::LEFT_TOP,
             net.comment.lines().next().unwrap_or(""),
             font.clone(),
-            Color32::DARK_GREEN,
+            theme::COMMENT,
         );
         y += m.header;
     }
@@ -206,11 +200,11 @@ fn network_ui(
     // Rails.
     painter.line_segment(
         [pos2(rail_x, top), pos2(rail_x, y)],
-        Stroke::new(3.0, Color32::from_gray(30)),
+        Stroke::new(3.0, theme::RAIL),
     );
     painter.line_segment(
         [pos2(right_rail, top), pos2(right_rail, y)],
-        Stroke::new(3.0, Color32::from_gray(30)),
+        Stroke::new(3.0, theme::RAIL),
     );
     for (r, row) in net.rows.iter().enumerate() {
         let mid = row_tops[r] + m.row * 0.5;
@@ -299,7 +293,7 @@ fn network_ui(
                         Align2::CENTER_TOP,
                         op.name(),
                         FontId::proportional(m.font * 1.1),
-                        Color32::BLACK,
+                        theme::INK,
                     );
                     for (i, o) in operands.iter().enumerate() {
                         let name = op.spec().operand(i).map_or("", |s| s.name);
@@ -577,7 +571,7 @@ pub fn block_ui(
             painter.rect_filled(
                 rect.intersect(viewport.translate(rect.min.to_vec2())),
                 0.0,
-                Color32::WHITE,
+                theme::PAPER,
             );
             if let Some(target) = jump_to.take()
                 && let Some(p) = placed.get(target)
@@ -621,7 +615,7 @@ pub fn block_ui(
                 let sep = origin.y + p.height - 2.0;
                 painter.line_segment(
                     [pos2(rect.left(), sep), pos2(rect.right(), sep)],
-                    Stroke::new(0.5, Color32::from_gray(200)),
+                    Stroke::new(0.5, theme::NETWORK_RULE),
                 );
             }
             events.response = Some(response);
@@ -695,7 +689,7 @@ fn cursor_ui(
     painter.rect_stroke(
         rect,
         2.0,
-        Stroke::new(2.0, Color32::from_rgb(0x20, 0x60, 0xff)),
+        Stroke::new(2.0, theme::CURSOR),
         StrokeKind::Inside,
     );
 }
@@ -721,7 +715,7 @@ mod tests {
         let bit = |t: &str| operand_text(&p, &o(t), DisplayMode::Address, Place::Bit, &[o(t)]);
         assert_eq!(bit("START"), ("X0002.1".into(), MAPPED));
         assert_eq!(bit("NOWHERE"), ("NOWHERE".into(), UNDEFINED));
-        assert_eq!(bit("X0002.1").1, Color32::BLACK);
+        assert_eq!(bit("X0002.1").1, theme::INK);
         assert_eq!(bit("R0010").1, WRONG_TYPE, "a byte on a contact");
         assert_eq!(
             bit("SPEED").1,
@@ -739,7 +733,7 @@ mod tests {
             )
             .1
         };
-        assert_eq!(boxed(0, &tmrb), Color32::BLACK);
+        assert_eq!(boxed(0, &tmrb), theme::INK);
         let wrong = [o("Y0001.0"), o("DT0004"), o("R0300.0")];
         assert_eq!(boxed(0, &wrong), WRONG_TYPE, "TMRB takes a T address first");
     }

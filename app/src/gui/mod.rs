@@ -17,6 +17,7 @@ pub mod pointer;
 pub mod selection;
 pub mod settings;
 pub mod tables;
+pub mod theme;
 pub mod tree;
 pub mod xref_view;
 
@@ -428,7 +429,7 @@ impl LadderApp {
             .show(ui, |ui| {
                 for line in &self.output {
                     let color = if line.error {
-                        egui::Color32::from_rgb(0xc0, 0x10, 0x10)
+                        theme::ERROR
                     } else {
                         ui.visuals().text_color()
                     };

@@ -11,7 +11,7 @@ mod apply;
 #[cfg(test)]
 mod tests;
 
-use egui::{Color32, Key, RichText};
+use egui::{Key, RichText};
 use ladder_engine::catalog::{
     Access, CATALOG, Category, InstrClass, InstrSpec, OperandKind, OperandSpec, check_digit_group,
 };
@@ -19,10 +19,7 @@ use ladder_engine::compiler::check::operand_ok;
 use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 
-/// Red of invalid operands (as the operand prompt uses).
-const RED: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
-/// Orange of operands that are usable but will not compile yet (an undefined symbol).
-const ORANGE: Color32 = Color32::from_rgb(0xb0, 0x60, 0x00);
+use super::theme::{CAUTION as ORANGE, ERROR as RED};
 /// The dialog's width.
 const DIALOG_WIDTH: f32 = 1000.0;
 /// The height of the lists and the operand grid.

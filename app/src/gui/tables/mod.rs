@@ -27,13 +27,11 @@ use super::LadderApp;
 use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::tree::View;
-use egui::Color32;
 use ladder_engine::model::sheets::{TableError, changed_row};
 use ladder_engine::model::{Project, TableEdit};
 use std::collections::HashMap;
 
-const ERROR_RED: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
-const OK_GREEN: Color32 = Color32::from_rgb(0x10, 0x80, 0x10);
+use super::theme::{ERROR as ERROR_RED, OK as OK_GREEN};
 
 /// The tab of the data-setting view (§3.4.4).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -1,0 +1,39 @@
+//! The editor's colours as named tokens. Every colour the editor paints is one of these, so
+//! a change of scheme is made here once; `clippy.toml` refuses colour constructors elsewhere.
+#![allow(clippy::disallowed_methods)] // The one place colours are made.
+
+use egui::Color32;
+
+/// Text of a refusal or an error (the output window, prompts, dialogs, tables).
+pub const ERROR: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
+/// Text of an accepted value (a table's check mark).
+pub const OK: Color32 = Color32::from_rgb(0x10, 0x80, 0x10);
+/// An operand that can be used but will not compile yet (an undefined symbol).
+pub const CAUTION: Color32 = Color32::from_rgb(0xb0, 0x60, 0x00);
+
+/// The ladder's paper: black on white like a printed ladder, whatever the UI theme.
+pub const PAPER: Color32 = Color32::WHITE;
+/// Ink of elements, operands and box names.
+pub const INK: Color32 = Color32::BLACK;
+/// Wires and element outlines.
+pub const WIRE: Color32 = Color32::from_gray(40);
+/// The power rails.
+pub const RAIL: Color32 = Color32::from_gray(30);
+/// The line between networks.
+pub const NETWORK_RULE: Color32 = Color32::from_gray(200);
+/// A network's number and title.
+pub const TITLE: Color32 = Color32::from_rgb(0, 100, 0);
+/// A network's comment.
+pub const COMMENT: Color32 = Color32::DARK_GREEN;
+/// The cell cursor's frame.
+pub const CURSOR: Color32 = Color32::from_rgb(0x20, 0x60, 0xff);
+/// The fill of selected cells, rows and networks.
+pub const SELECTED: Color32 = Color32::from_rgb(0xcc, 0xe0, 0xff);
+
+/// Operand colours (manual §3.4.3.3): a symbol mapped to an address is blue.
+pub const MAPPED: Color32 = Color32::from_rgb(0x1f, 0x4f, 0xd0);
+/// An undefined symbol is red.
+pub const UNDEFINED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x20);
+/// An operand of the wrong type for its place (a byte address on a contact, an area the
+/// instruction does not take) is orange.
+pub const WRONG_TYPE: Color32 = Color32::from_rgb(0xe0, 0x80, 0x00);
