@@ -2,13 +2,11 @@
 //! limits, and the warnings about doubly driven coils and shared timers.
 
 use super::diag::{Code, Origin, Sink};
+pub use super::operands::{Refusal, operand_error, operand_ok};
 use super::rung::Instr;
 use super::{Program, StepCounts};
 use crate::address::{Address, Area};
-use crate::catalog::{
-    Access, CONST_MAX, InstrClass, Op, OperandKind, OperandSpec, Width, check_digit_group,
-    xmov_format,
-};
+use crate::catalog::{InstrClass, Op, Width};
 use crate::model::{BlockKind, Operand, Project, SymbolIndex};
 use crate::profile::Profile;
 use std::collections::{BTreeMap, BTreeSet, HashMap};
@@ -327,44 +325,6 @@ fn const_value(o: Option<&Operand>) -> Option<i64> {
     }
 }
 
-/// Bytes of one access of this operand, if known from constants.
-fn access_bytes(instr: &Instr, spec: &OperandSpec) -> Option<u32> {
-    match spec.width {
-        Width::Bytes(n) => Some(u32::from(n)),
-        Width::SizeOf(i) => const_value(instr.operands.get(i as usize))
-            .filter(|v| matches!(v, 1 | 2 | 4))
-            .map(|v| v as u32),
-        _ => None,
-    }
-}
-
-/// (element bytes, element count) of a table operand, if known from constants.
-fn table_shape(instr: &Instr, name: &str) -> Option<(u32, u32)> {
-    let c = |i: usize| const_value(instr.operands.get(i));
-    match (instr.op, name) {
-        (Op::Xmov, "DS") => {
-            let (x, _) = xmov_format(c(1)?);
-            Some((u32::from(x), c(2)?.max(1) as u32))
-        }
-        (Op::Xmov, "DD" | "DI") => {
-            let (x, nn) = xmov_format(c(1)?);
-            Some((u32::from(x), nn))
-        }
-        (Op::Dschb, "IN1") => Some((c(0)? as u32, c(2)?.max(1) as u32)),
-        (Op::Windr, "IN") => Some((4, 6)),
-        _ => None,
-    }
-}
-
-/// Addresses covered from `a` by `count` elements of `bytes` (element rule, docs/plc.md).
-fn covered(a: Address, bytes: u32, count: u32) -> u32 {
-    if a.area.element_bytes() == 1 {
-        bytes * count
-    } else {
-        count
-    }
-}
-
 fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, sink: &mut Sink) {
     let spec = instr.op.spec();
     let fixed = spec.operands.len();
@@ -434,8 +394,8 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
         let Some(ospec) = spec.operand(i) else {
             continue;
         };
-        if let Err(msg) = check_operand(instr, i, ospec, profile) {
-            let (code, text) = msg;
+        if let Err(refusal) = operand_error(instr.op, &instr.operands, i, profile) {
+            let (code, text) = (refusal.code(), refusal.to_string());
             sink.report(
                 instr.origin,
                 code,
@@ -456,151 +416,5 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                 ),
             );
         }
-    }
-}
-
-/// Whether operand `i` of an instruction is acceptable as written (kind, area, range), for
-/// editors that must not produce an invalid operand (replace).
-pub fn operand_ok(op: Op, operands: &[Operand], i: usize, profile: &Profile) -> bool {
-    let instr = Instr {
-        op,
-        operands: operands.to_vec(),
-        origin: Origin::None,
-    };
-    match op.spec().operand(i) {
-        Some(spec) => check_operand(&instr, i, spec, profile).is_ok(),
-        None => false,
-    }
-}
-
-fn check_operand(
-    instr: &Instr,
-    i: usize,
-    spec: &OperandSpec,
-    profile: &Profile,
-) -> Result<(), (Code, String)> {
-    let operand = &instr.operands[i];
-    let kind_error = |what: &str| {
-        Err((
-            Code::L021OperandKind,
-            format!("expects {what}, found `{operand}`"),
-        ))
-    };
-    match operand {
-        Operand::Int(v) => {
-            if !spec.accepts_const() {
-                return kind_error(expected_text(spec));
-            }
-            let v = *v;
-            match spec.kind {
-                OperandKind::Size if !matches!(v, 1 | 2 | 4) => Err((
-                    Code::L024ConstRange,
-                    format!("the size is 1, 2 or 4, not {v}"),
-                )),
-                OperandKind::Digits { max_digit } => {
-                    let digits_ok = (0..=9999).contains(&v)
-                        && v.to_string().bytes().all(|d| d - b'0' <= max_digit);
-                    if !digits_ok {
-                        return Err((
-                            Code::L024ConstRange,
-                            format!(
-                                "write 4 {} digits, not `{v}`",
-                                if max_digit == 1 { "binary" } else { "decimal" }
-                            ),
-                        ));
-                    }
-                    check_digit_group(instr.op, spec.name, v).map_err(|m| (Code::L024ConstRange, m))
-                }
-                _ if v < spec.min || v > spec.max => Err((
-                    Code::L024ConstRange,
-                    format!("{v} is out of range ({}–{})", spec.min, spec.max),
-                )),
-                _ if v.abs() > CONST_MAX => Err((
-                    Code::L024ConstRange,
-                    format!("{v} is out of range (−2147483647–2147483647)"),
-                )),
-                _ => Ok(()),
-            }
-        }
-        Operand::Real(_) => {
-            if spec.kind == OperandKind::RealOrD {
-                Ok(())
-            } else {
-                kind_error(expected_text(spec))
-            }
-        }
-        Operand::Symbol(_) => Ok(()), // resolved before, or already reported
-        Operand::Addr(a) => {
-            let a = *a;
-            let wants_bit = match spec.kind {
-                OperandKind::Bit => Some(true),
-                OperandKind::BitOrByte => None,
-                OperandKind::Size | OperandKind::Const | OperandKind::Digits { .. } => {
-                    return kind_error(expected_text(spec));
-                }
-                _ => Some(false),
-            };
-            match (wants_bit, a.bit.is_some()) {
-                (Some(true), false) => return kind_error("a bit address such as R0010.0"),
-                (Some(false), true) => {
-                    return kind_error("a byte address without a bit, such as R0010");
-                }
-                _ => {}
-            }
-            let writes = match spec.access {
-                Access::Read => false,
-                Access::Write | Access::ReadWrite => true,
-                Access::WriteWhen { operand, value } => {
-                    const_value(instr.operands.get(operand as usize)) == Some(i64::from(value))
-                }
-            };
-            if writes && matches!(a.area, Area::X | Area::F) {
-                return Err((
-                    Code::L025ReadOnly,
-                    format!("{a} cannot be written: X and F are inputs, read-only to the program"),
-                ));
-            }
-            if !spec.areas.contains(a.area) {
-                return Err((
-                    Code::L022Area,
-                    format!("{a} is not allowed here; use {}", spec.areas.describe()),
-                ));
-            }
-            let count = match spec.width {
-                Width::Bits3 => {
-                    if a.bit.is_some_and(|b| b > 5) {
-                        2
-                    } else {
-                        1
-                    }
-                }
-                Width::Elements4(k) => covered(a, 4, u32::from(k)),
-                Width::Table => table_shape(instr, spec.name)
-                    .map(|(bytes, n)| covered(a, bytes, n))
-                    .unwrap_or(1),
-                _ => access_bytes(instr, spec)
-                    .map(|bytes| covered(a, bytes, 1))
-                    .unwrap_or(1),
-            };
-            a.check_span(profile, count)
-                .map_err(|e| (Code::L023AddressRange, e.to_string()))
-        }
-    }
-}
-
-fn expected_text(spec: &OperandSpec) -> &'static str {
-    match spec.kind {
-        OperandKind::Size => "a size 1, 2 or 4",
-        OperandKind::Const => "a constant",
-        OperandKind::Digits { .. } => "a 4-digit group such as 0000",
-        OperandKind::Bit => "a bit address such as R0010.0",
-        OperandKind::Byte => "an address such as R0010 or D0004",
-        OperandKind::ConstOrByte => "an integer constant or an address",
-        OperandKind::RealOrD => "a real constant or a D address",
-        OperandKind::BitOrByte => "a bit or byte address",
-        OperandKind::Label => "a label such as L0001",
-        OperandKind::Subprogram => "a subprogram such as P0001",
-        OperandKind::Timer => "a timer such as T0001",
-        OperandKind::Counter => "a counter such as C0001",
     }
 }

@@ -11,6 +11,7 @@ pub mod decompile;
 pub mod diag;
 pub mod layout;
 pub mod lower;
+pub mod operands;
 pub mod rung;
 pub mod tables;
 

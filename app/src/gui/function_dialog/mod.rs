@@ -12,10 +12,8 @@ mod apply;
 mod tests;
 
 use egui::{Key, RichText};
-use ladder_engine::catalog::{
-    Access, CATALOG, Category, InstrClass, InstrSpec, OperandKind, OperandSpec, check_digit_group,
-};
-use ladder_engine::compiler::check::operand_ok;
+use ladder_engine::catalog::{CATALOG, Category, InstrClass, InstrSpec, OperandKind, OperandSpec};
+use ladder_engine::compiler::operands::{Refusal, operand_error, operand_ok};
 use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 
@@ -138,7 +136,8 @@ fn allowed_text(spec: &OperandSpec, lang: Lang) -> String {
     parts.join("; ")
 }
 
-/// Why operand `i` (symbols already resolved) is refused, in words.
+/// Why operand `i` (symbols already resolved) is refused, in words: the engine's one
+/// operand check decides, this only says it in the user's language.
 fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang) -> String {
     let Some(spec) = op.spec().operand(i) else {
         return Msg::FnTooMany.text(lang).into();
@@ -150,44 +149,26 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
             allowed_text(spec, lang)
         )
     };
-    match &operands[i] {
-        Operand::Addr(a) => {
-            let wants_bit = match spec.kind {
-                OperandKind::Bit => Some(true),
-                OperandKind::BitOrByte
-                | OperandKind::Size
-                | OperandKind::Const
-                | OperandKind::Digits { .. } => None,
-                _ => Some(false),
-            };
-            let writes = match spec.access {
-                Access::Read => false,
-                Access::Write | Access::ReadWrite => true,
-                Access::WriteWhen { operand, value } => {
-                    operands.get(usize::from(operand)) == Some(&Operand::Int(i64::from(value)))
-                }
-            };
-            if !spec.areas.contains(a.area) {
-                not_allowed()
-            } else if wants_bit == Some(true) && a.bit.is_none() {
-                Msg::FnWantsBit.text(lang).into()
-            } else if wants_bit == Some(false) && a.bit.is_some() {
-                Msg::FnWantsByte.text(lang).into()
-            } else if writes && !a.area.writable() {
-                Msg::FnReadOnly.text(lang).into()
-            } else if let Err(e) = a.check_span(profile, 1) {
-                e.to_string()
-            } else {
-                Msg::FnOutOfRange.text(lang).into()
-            }
+    let Err(refusal) = operand_error(op, operands, i, profile) else {
+        return Msg::FnOutOfRange.text(lang).into();
+    };
+    match refusal {
+        Refusal::TooMany => Msg::FnTooMany.text(lang).into(),
+        Refusal::WantsBit(_) => Msg::FnWantsBit.text(lang).into(),
+        Refusal::WantsByte(_) => Msg::FnWantsByte.text(lang).into(),
+        // An input outside the operand's areas is first of all not allowed there.
+        Refusal::ReadOnly { address, allowed } if allowed.contains(address.area) => {
+            Msg::FnReadOnly.text(lang).into()
         }
-        Operand::Int(v) if matches!(spec.kind, OperandKind::Digits { .. }) => {
-            match check_digit_group(op, spec.name, *v) {
-                Err(e) if spec.accepts_const() && (0..=9999).contains(v) => e,
-                _ => not_allowed(),
-            }
-        }
-        _ => not_allowed(),
+        Refusal::DigitGroup(why) => why,
+        Refusal::Range(e) => super::tables::address_error(&e, profile, lang),
+        Refusal::ReadOnly { .. }
+        | Refusal::Area { .. }
+        | Refusal::Kind { .. }
+        | Refusal::Size(_)
+        | Refusal::Digits { .. }
+        | Refusal::ConstRange { .. }
+        | Refusal::ConstTooBig(_) => not_allowed(),
     }
 }
 
