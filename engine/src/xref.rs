@@ -5,7 +5,7 @@
 use crate::address::{Address, Area};
 use crate::catalog::{Access, Op};
 use crate::il::instr_text;
-use crate::model::{Cell, Operand, Project};
+use crate::model::{Cell, CellRef, Operand, Project};
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
@@ -120,6 +120,52 @@ pub fn build(project: &Project) -> Xref {
     }
     refs.sort_unstable();
     Xref { refs }
+}
+
+/// A CALL or CALLU of a subprogram, where it stands.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Call {
+    /// The calling box's cell.
+    pub at: CellRef,
+    /// CALL or CALLU.
+    pub op: Op,
+}
+
+/// Every CALL and CALLU of subprogram P`number`, in ladder order ("view calls"); a call
+/// written with the subprogram's symbol counts.
+pub fn calls_of(project: &Project, number: u16) -> Vec<Call> {
+    let mut out = Vec::new();
+    for (bi, b) in project.ladder.blocks.iter().enumerate() {
+        for (ni, n) in b.networks.iter().enumerate() {
+            for (ri, row) in n.rows.iter().enumerate() {
+                for (ci, cell) in row.cells.iter().enumerate() {
+                    let Cell::Box { op, operands } = cell else {
+                        continue;
+                    };
+                    if !matches!(op, Op::Call | Op::Callu) {
+                        continue;
+                    }
+                    let target = match operands.first() {
+                        Some(Operand::Addr(a)) => Some(*a),
+                        Some(Operand::Symbol(s)) => project.resolve_symbol(s),
+                        _ => None,
+                    };
+                    if target.is_some_and(|a| a.area == Area::P && a.number == number) {
+                        out.push(Call {
+                            at: CellRef {
+                                block: bi,
+                                network: ni,
+                                row: ri,
+                                col: ci,
+                            },
+                            op: *op,
+                        });
+                    }
+                }
+            }
+        }
+    }
+    out
 }
 
 /// The element a reference points at, as text (`LD X0002.1`, `TMRB T0000 DT0004 R0300.0`).

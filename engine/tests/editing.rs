@@ -272,3 +272,19 @@ fn an_operand_is_refused_with_its_reason_and_the_compiler_code() {
         Err(Refusal::TooMany)
     );
 }
+
+#[test]
+fn view_calls_finds_every_call_and_callu_of_a_subprogram() {
+    let p = ladder_engine::il::import(
+        "LEVEL1\nNETWORK\nLD X0000.0\nOUT R0000.0\nLEVEL2\nNETWORK\nLD X0001.0\nCALL P0007\nNETWORK\nCALLU P0007\nNETWORK\nLD X0001.2\nCALL P0008\nSUB P0007 \"LUBE\"\nNETWORK\nLD X0002.0\nOUT Y0002.0\nSUB P0008 \"OTHER\"\nNETWORK\nLD X0002.1\nOUT Y0002.1\nEND\n",
+    )
+    .project
+    .unwrap();
+    let calls = ladder_engine::xref::calls_of(&p, 7);
+    let found: Vec<(usize, usize, Op)> = calls
+        .iter()
+        .map(|c| (c.at.block, c.at.network, c.op))
+        .collect();
+    assert_eq!(found, [(1, 0, Op::Call), (1, 1, Op::Callu)]);
+    assert!(ladder_engine::xref::calls_of(&p, 9).is_empty());
+}

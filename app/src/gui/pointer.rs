@@ -10,9 +10,8 @@ pub use super::place::BlockKey;
 use super::selection::Selection;
 use super::tree::View;
 use super::{LadderApp, OutputLine};
-use ladder_engine::Op;
 use ladder_engine::address::Area;
-use ladder_engine::model::{Block, BlockKind, Cell, Edit, Operand};
+use ladder_engine::model::{Block, BlockKind, Cell, Edit};
 
 impl LadderApp {
     /// The cursor's cell when the shown block has it (deleting never adds a network first).
@@ -254,44 +253,20 @@ impl LadderApp {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_ref() else { return };
         let project = doc.project();
-        let mut lines = Vec::new();
-        for (bi, b) in project.ladder.blocks.iter().enumerate() {
-            for (ni, n) in b.networks.iter().enumerate() {
-                for (ri, row) in n.rows.iter().enumerate() {
-                    for (ci, cell) in row.cells.iter().enumerate() {
-                        let Cell::Box { op, operands } = cell else {
-                            continue;
-                        };
-                        if !matches!(op, Op::Call | Op::Callu) {
-                            continue;
-                        }
-                        let target = match operands.first() {
-                            Some(Operand::Addr(a)) => Some(*a),
-                            Some(Operand::Symbol(s)) => project.resolve_symbol(s),
-                            _ => None,
-                        };
-                        if target.is_some_and(|a| a.area == Area::P && a.number == number) {
-                            lines.push(OutputLine {
-                                text: format!(
-                                    "{} N{:04} {}:  {} P{number:04}",
-                                    b.kind.label(),
-                                    ni + 1,
-                                    ri + 1,
-                                    op.name()
-                                ),
-                                error: false,
-                                target: Some(Cursor {
-                                    block: bi,
-                                    network: ni,
-                                    row: ri,
-                                    col: ci,
-                                }),
-                            });
-                        }
-                    }
-                }
-            }
-        }
+        let mut lines: Vec<OutputLine> = ladder_engine::xref::calls_of(project, number)
+            .into_iter()
+            .map(|c| OutputLine {
+                text: format!(
+                    "{} N{:04} {}:  {} P{number:04}",
+                    project.ladder.blocks[c.at.block].kind.label(),
+                    c.at.network + 1,
+                    c.at.row + 1,
+                    c.op.name()
+                ),
+                error: false,
+                target: Some(c.at),
+            })
+            .collect();
         lines.push(OutputLine {
             text: format!(
                 "P{number:04}: {} {}",
