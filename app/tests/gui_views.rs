@@ -112,7 +112,7 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
     h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
         .type_text("y3.6");
     h.run();
-    assert_eq!(h.state().xref_filter, "y3.6");
+    assert_eq!(h.state().xref.filter, "y3.6");
     assert!(
         h.query_by_label_contains("Y0003.7").is_none(),
         "the filter leaves only Y3.6"

@@ -90,10 +90,8 @@ pub struct LadderApp {
     pub help: Option<HelpPage>,
     /// Where the drag in progress in the ladder view started.
     pub drag_from: Option<ladder_view::Hit>,
-    /// The cross-reference, derived once per change of the project.
-    pub xref: xref_view::XrefCache,
-    /// What the reference index is filtered by.
-    pub xref_filter: String,
+    /// The cross-reference views: the index filter and what was derived from the project.
+    pub xref: xref_view::XrefState,
     /// The view tabs above the main area, in the order they were opened.
     pub tabs: Vec<View>,
     /// The last text searched for (Ctrl+F offers it again, to find the next match).
@@ -142,7 +140,6 @@ impl LadderApp {
             help: None,
             drag_from: None,
             xref: Default::default(),
-            xref_filter: String::new(),
             tabs: Vec::new(),
             last_find: String::new(),
             pending: Vec::new(),
@@ -416,7 +413,7 @@ impl LadderApp {
                 );
                 self.pointer_events(b, events);
             }
-            View::RefIndex | View::RefBits | View::RefBytes => self.xref_ui(ui),
+            View::RefIndex | View::RefBits | View::RefBytes => self.xref_view_ui(ui),
             _ => self.tables_ui(ui),
         }
     }

@@ -1,17 +1,37 @@
 //! The cross-reference views (manual §3.4.6): the reference index as a table that jumps to
 //! the element on a double-click, and the bit- and byte-usage tables. What they show is
 //! derived from the project once per change, not every frame.
+//!
+//! A widget: [`xref_ui`] takes the document and its own state and returns what the user
+//! asked for; the application does it.
 
 use super::LadderApp;
-use super::i18n::Msg;
+use super::document::Document;
+use super::i18n::{Lang, Msg};
 use super::tree::View;
 use egui_extras::{Column, TableBuilder};
 use ladder_engine::model::CellRef;
 use ladder_engine::xref::{self, Xref};
 
+/// What a double-click in the reference index asks for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum XrefEvent {
+    /// Show this element in its ladder.
+    Jump(CellRef),
+}
+
+/// The cross-reference views' own state: what the index is filtered by, and what was derived
+/// from the project (rebuilt when the document changes).
+#[derive(Clone, Debug, Default)]
+pub struct XrefState {
+    /// What the reference index is filtered by.
+    pub filter: String,
+    cache: XrefCache,
+}
+
 /// The derived views of one project state.
 #[derive(Clone, Debug, Default)]
-pub struct XrefCache {
+struct XrefCache {
     /// Which document and change it was built for.
     key: Option<(u64, u64)>,
     /// The references.
@@ -24,17 +44,16 @@ pub struct XrefCache {
     bytes: String,
 }
 
-impl LadderApp {
-    /// Rebuilds the cross-reference when the project changed since it was built.
-    fn refresh_xref(&mut self) {
-        let Some(doc) = self.doc.as_ref() else { return };
+impl XrefCache {
+    /// Rebuilds the cross-reference when the document changed since it was built.
+    fn refresh(&mut self, doc: &Document) {
         let key = (doc.serial, doc.generation);
-        if self.xref.key == Some(key) {
+        if self.key == Some(key) {
             return;
         }
         let project = doc.project();
         let x = xref::build(project);
-        self.xref.rows = x
+        self.rows = x
             .refs
             .iter()
             .map(|r| {
@@ -45,34 +64,42 @@ impl LadderApp {
                 )
             })
             .collect();
-        self.xref.bits = xref::bits_text(&x);
-        self.xref.bytes = xref::bytes_text(&x);
-        self.xref.xref = x;
-        self.xref.key = Some(key);
+        self.bits = xref::bits_text(&x);
+        self.bytes = xref::bytes_text(&x);
+        self.xref = x;
+        self.key = Some(key);
     }
+}
 
-    /// Draws the view the tree selected among the three cross-reference views.
-    pub fn xref_ui(&mut self, ui: &mut egui::Ui) {
-        self.refresh_xref();
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        match self.view {
+/// Draws `view`, one of the three cross-reference views, of `doc`.
+pub fn xref_ui(
+    ui: &mut egui::Ui,
+    doc: &Document,
+    view: View,
+    state: &mut XrefState,
+    lang: Lang,
+) -> Option<XrefEvent> {
+    state.cache.refresh(doc);
+    let cache = &state.cache;
+    let t = |m: Msg| m.text(lang);
+    {
+        match view {
             View::RefBits => {
-                let text = &self.xref.bits;
+                let text = &cache.bits;
                 egui::ScrollArea::both().show(ui, |ui| ui.monospace(text.as_str()));
-                return;
+                return None;
             }
             View::RefBytes => {
-                let text = &self.xref.bytes;
+                let text = &cache.bytes;
                 egui::ScrollArea::both().show(ui, |ui| ui.monospace(text.as_str()));
-                return;
+                return None;
             }
             _ => {}
         }
         ui.horizontal(|ui| {
             let label = ui.label(t(Msg::XrefFilter));
             ui.add(
-                egui::TextEdit::singleline(&mut self.xref_filter)
+                egui::TextEdit::singleline(&mut state.filter)
                     .hint_text("X0002.1 / TOOL_T1")
                     .desired_width(200.0),
             )
@@ -80,12 +107,12 @@ impl LadderApp {
             ui.label(t(Msg::XrefHint));
         });
         // The filter matches an address in any spelling, or a symbol or text it contains.
-        let filter = self.xref_filter.trim().to_lowercase();
+        let filter = state.filter.trim().to_lowercase();
         let wanted = ladder_engine::Address::parse(&filter).ok();
-        let shown: Vec<usize> = (0..self.xref.xref.refs.len())
+        let shown: Vec<usize> = (0..cache.xref.refs.len())
             .filter(|i| {
-                let r = &self.xref.xref.refs[*i];
-                let (sym, _, ctx) = &self.xref.rows[*i];
+                let r = &cache.xref.refs[*i];
+                let (sym, _, ctx) = &cache.rows[*i];
                 filter.is_empty()
                     || wanted == Some(r.address)
                     || (wanted.is_none()
@@ -123,8 +150,8 @@ impl LadderApp {
             .body(|body| {
                 body.rows(18.0, shown.len(), |mut row| {
                     let i = shown[row.index()];
-                    let r = self.xref.xref.refs[i];
-                    let (sym, block, ctx) = &self.xref.rows[i];
+                    let r = cache.xref.refs[i];
+                    let (sym, block, ctx) = &cache.rows[i];
                     let texts = [
                         r.address.to_string(),
                         sym.clone(),
@@ -153,8 +180,18 @@ impl LadderApp {
                     }
                 });
             });
-        if let Some(at) = jump {
-            self.jump(at);
+        jump.map(XrefEvent::Jump)
+    }
+}
+
+impl LadderApp {
+    /// The cross-reference view shown now; a double-click jumps to the element.
+    pub fn xref_view_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(doc) = self.doc.as_ref() else { return };
+        let event = xref_ui(ui, doc, self.view, &mut self.xref, self.settings.lang);
+        match event {
+            Some(XrefEvent::Jump(at)) => self.jump(at),
+            None => {}
         }
     }
 }
