@@ -25,7 +25,7 @@ fn main() {
         .map_or(0, |d| d.project().ladder.blocks[1].networks.len());
     let mut times = Vec::new();
     for k in 0..300 {
-        h.state_mut().jump_to = Some(k * 7 % networks.max(1));
+        h.state_mut().edit.jump_to = Some(k * 7 % networks.max(1));
         let t = Instant::now();
         h.step();
         h.step();

@@ -71,7 +71,7 @@ fn find_and_replace_an_address() {
     let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
     assert_eq!(out.last().unwrap(), "3 found", "{out:?}");
     let at = |h: &Harness<'static, LadderApp>| {
-        let c = h.state().cursor;
+        let c = h.state().edit.cursor;
         (c.network, c.row, c.col)
     };
     assert_eq!(at(&h), (0, 0, 10), "the cursor went to the first match");
@@ -139,7 +139,7 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "30 2");
-    let c = h.state().cursor;
+    let c = h.state().edit.cursor;
     assert_eq!((c.block, c.network, c.row, c.col), (1, 29, 1, 0));
     assert!(h.state().prompt.is_none());
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
@@ -162,14 +162,14 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     pointer(&mut h, header, egui::PointerButton::Primary);
     assert!(
         matches!(
-            h.state().selection,
+            h.state().edit.selection,
             Some((
                 1,
                 ladder_studio::gui::selection::Selection::Networks { networks: (0, 0) }
             ))
         ),
         "{:?}",
-        h.state().selection
+        h.state().edit.selection
     );
     h.get_by_label_contains("selected 1 Network");
     h.key_press_modifiers(Modifiers::COMMAND, Key::C);
@@ -227,7 +227,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.key_press_modifiers(Modifiers::SHIFT, Key::ArrowRight);
     h.run();
     assert!(matches!(
-        h.state().selection,
+        h.state().edit.selection,
         Some((
             1,
             ladder_studio::gui::selection::Selection::Cells {
@@ -272,7 +272,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     h.run();
     h.get_by_label("Draw lines").click();
     h.run();
-    assert!(h.state().pen);
+    assert!(h.state().edit.pen);
     // A contact in the second row, first column, then a wire and a link to join it.
     let c = cell_pos(&h, 0, 1, 0);
     pointer(&mut h, c, egui::PointerButton::Primary);
@@ -305,7 +305,7 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
     let p = cell_pos(&h, 1, 0, 0);
     pointer(&mut h, p, egui::PointerButton::Secondary);
     assert_eq!(
-        h.state().cursor.network,
+        h.state().edit.cursor.network,
         1,
         "the right click moved the cursor"
     );
@@ -466,7 +466,7 @@ fn typing_after_f1_completes_from_the_symbol_table() {
     assert_eq!(h.state().prompt.as_ref().unwrap().text, "TOOL_T1");
     h.key_press(egui::Key::Enter);
     h.run();
-    let c = h.state().cursor;
+    let c = h.state().edit.cursor;
     let cell = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[c.network].rows
         [0]
     .cells[0]

@@ -64,11 +64,14 @@ fn closing_the_window_with_unsaved_changes_saves_them_first_when_asked() {
         .events
         .clear();
     h.run();
-    assert!(!h.state().exit_confirmed, "the window stays while asking");
+    assert!(
+        !h.state().files.exit_confirmed,
+        "the window stays while asking"
+    );
     h.get_by_label_contains("Save the changes to");
     h.get_by_label("Save changes").click();
     h.run();
-    assert!(h.state().exit_confirmed, "saved, then closed");
+    assert!(h.state().files.exit_confirmed, "saved, then closed");
     let saved = ladder_engine::file::load(&path).unwrap();
     assert_eq!(
         saved.ladder.blocks[1].networks.len(),
@@ -169,7 +172,7 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     {
         let mut h = harness(Some(path.clone()), Lang::En);
-        h.state_mut().recovery_dir = Some(rec.clone());
+        h.state_mut().files.recovery_dir = Some(rec.clone());
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
@@ -180,7 +183,7 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     assert_eq!(copies.len(), 1);
     assert_eq!(copies[0].original.as_ref(), Some(&path));
     let mut h = harness(None, Lang::En);
-    h.state_mut().recovery_dir = Some(rec.clone());
+    h.state_mut().files.recovery_dir = Some(rec.clone());
     h.state_mut().offer_restore();
     h.run();
     h.get_by_label_contains("did not end normally");
@@ -238,19 +241,19 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     {
         let mut h = harness(Some(path.clone()), Lang::En);
-        h.state_mut().recovery_dir = Some(rec.clone());
+        h.state_mut().files.recovery_dir = Some(rec.clone());
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
         h.state_mut().autosave_now();
     }
     let mut h = harness(None, Lang::En);
-    h.state_mut().recovery_dir = Some(rec.clone());
+    h.state_mut().files.recovery_dir = Some(rec.clone());
     h.state_mut().offer_restore();
     h.run();
     h.key_press(Key::Escape);
     h.run();
-    assert!(h.state().question.is_none());
+    assert!(h.state().files.question.is_none());
     assert_eq!(
         ladder_studio::gui::files::recovery_copies(&rec).len(),
         1,
@@ -264,7 +267,7 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     h.run();
     assert!(
         matches!(
-            h.state().question,
+            h.state().files.question,
             Some(ladder_studio::gui::files::Question::Unsaved { .. })
         ),
         "the edit made meanwhile is not dropped without asking"

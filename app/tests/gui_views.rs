@@ -83,8 +83,12 @@ fn a_compile_error_jumps_to_its_network() {
         .click();
     h.run();
     assert_eq!(h.state().view, View::Block(1), "the error's block is shown");
-    assert_eq!(h.state().cursor, at, "the cursor is on the cell");
-    assert_eq!(h.state().jump_to, None, "and its network was scrolled to");
+    assert_eq!(h.state().edit.cursor, at, "the cursor is on the cell");
+    assert_eq!(
+        h.state().edit.jump_to,
+        None,
+        "and its network was scrolled to"
+    );
 }
 
 #[test]
@@ -120,7 +124,7 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
     let place = h.get_by_label("N0002 1:11").rect().center();
     double_click(&mut h, place);
     assert_eq!(h.state().view, View::Block(1));
-    let c = h.state().cursor;
+    let c = h.state().edit.cursor;
     assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
 }
 
@@ -198,18 +202,18 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
             .is_empty()
     );
     h.state_mut().view = View::Block(1);
-    h.state_mut().cursor.network = 1;
+    h.state_mut().edit.cursor.network = 1;
     h.run();
     h.key_press(Key::Delete);
     h.run();
-    h.state_mut().cursor.network = 0;
+    h.state_mut().edit.cursor.network = 0;
     h.state_mut().view = View::Data;
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
     assert_eq!(h.state().view, View::Block(1));
     assert_eq!(
-        h.state().cursor.network,
+        h.state().edit.cursor.network,
         1,
         "the cursor is on the contact brought back"
     );
@@ -240,17 +244,23 @@ fn each_block_keeps_its_own_cursor_and_the_status_bar_speaks_of_the_block_shown(
     h.run();
     h.key_press(Key::Enter);
     h.run();
-    assert_eq!(h.state().cursor.network, 42);
+    assert_eq!(h.state().edit.cursor.network, 42);
     h.get_by_label_contains("P0001").click();
     h.run();
     assert_eq!(h.state().view, View::Block(2));
-    assert_eq!((h.state().cursor.block, h.state().cursor.network), (2, 0));
+    assert_eq!(
+        (h.state().edit.cursor.block, h.state().edit.cursor.network),
+        (2, 0)
+    );
     h.get_by_label_contains("Cursor: P0001 Network 1 ");
     assert!(h.query_by_label_contains("Network 43").is_none());
     // Back in level 2 the cursor is where it was left.
     h.get_by_label("Level 2").click();
     h.run();
-    assert_eq!((h.state().cursor.block, h.state().cursor.network), (1, 42));
+    assert_eq!(
+        (h.state().edit.cursor.block, h.state().edit.cursor.network),
+        (1, 42)
+    );
 }
 
 #[test]

@@ -43,7 +43,7 @@ impl LadderApp {
         match c {
             Command::Undo => doc.is_some_and(|d| d.history().undo_len() > 0),
             Command::Redo => doc.is_some_and(|d| d.history().redo_len() > 0),
-            Command::Paste => self.in_ladder() && self.clipboard.is_some(),
+            Command::Paste => self.in_ladder() && self.edit.clipboard.is_some(),
             Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
             Command::ZoomIn | Command::ZoomOut | Command::ClearSelection | Command::Pen => true,
@@ -62,7 +62,7 @@ impl LadderApp {
     pub fn checked(&self, c: Command) -> Option<bool> {
         let s = &self.settings;
         Some(match c {
-            Command::Pen => self.pen,
+            Command::Pen => self.edit.pen,
             Command::ToggleComments => s.show_comments,
             Command::ToggleTitles => s.show_titles,
             Command::ToggleTree => s.show_tree,
@@ -80,7 +80,7 @@ impl LadderApp {
     pub fn keys(&mut self, ctx: &egui::Context) {
         let typing = self.prompt.is_some()
             || self.function_dialog.is_some()
-            || self.question.is_some()
+            || self.files.question.is_some()
             || ctx.egui_wants_keyboard_input();
         for c in Command::keyed() {
             if (typing && !c.global()) || !self.enabled(c) {
@@ -122,7 +122,7 @@ impl LadderApp {
     /// Selects `what` in the cursor's block and deletes it (Delete row, Delete network).
     fn delete_at_cursor(&mut self, what: impl FnOnce(super::place::Cursor) -> Selection) {
         if let Some(at) = self.existing_cursor() {
-            self.selection = Some((at.block, what(at)));
+            self.edit.selection = Some((at.block, what(at)));
             self.delete_selection();
         }
     }
@@ -151,7 +151,7 @@ impl LadderApp {
             Command::Exit => self.request(Action::Exit),
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
-            Command::Find => self.open_prompt(PlaceKind::Find, self.last_find.clone()),
+            Command::Find => self.open_prompt(PlaceKind::Find, self.edit.last_find.clone()),
             Command::Replace => self.open_prompt(PlaceKind::Replace, String::new()),
             Command::GoTo => self.open_prompt(PlaceKind::GoTo, String::new()),
             Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
@@ -183,7 +183,7 @@ impl LadderApp {
             Command::Delete => {
                 // The selection when there is one, else the element at the cursor; never a
                 // network added to an empty block only to delete nothing in it.
-                if self.selection.is_some() {
+                if self.edit.selection.is_some() {
                     self.delete_selection();
                 } else if let Some(at) = self.existing_cursor() {
                     self.edit(ladder_engine::model::Edit::SetCell {
@@ -226,10 +226,10 @@ impl LadderApp {
             }
             Command::ClearSelection => {
                 // Escape abandons what was typed in a table and not taken.
-                self.selection = None;
+                self.edit.selection = None;
                 self.tables.forget_drafts();
             }
-            Command::Pen => self.pen = !self.pen,
+            Command::Pen => self.edit.pen = !self.edit.pen,
             Command::ToggleComments => self.settings.show_comments ^= true,
             Command::ToggleTitles => self.settings.show_titles ^= true,
             Command::ToggleTree => self.settings.show_tree ^= true,
@@ -289,16 +289,16 @@ impl LadderApp {
     /// time), so the status bar and Ctrl+G speak of the block on screen.
     pub fn show_view(&mut self, v: View) {
         if let View::Block(b) = v
-            && b != self.cursor.block
+            && b != self.edit.cursor.block
             && let Some(ladder) = self.ladder()
         {
             let key = |i: usize| ladder.blocks.get(i).map(|bl| BlockKey::of(&bl.kind));
-            let (from, to) = (key(self.cursor.block), key(b));
+            let (from, to) = (key(self.edit.cursor.block), key(b));
             if let Some(from) = from {
-                self.block_cursors.insert(from, self.cursor);
+                self.edit.block_cursors.insert(from, self.edit.cursor);
             }
-            let back = to.and_then(|k| self.block_cursors.get(&k)).copied();
-            self.cursor = match back {
+            let back = to.and_then(|k| self.edit.block_cursors.get(&k)).copied();
+            self.edit.cursor = match back {
                 Some(c) => super::place::Cursor { block: b, ..c },
                 None => super::place::block_start(b),
             };

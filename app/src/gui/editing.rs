@@ -148,12 +148,12 @@ impl LadderApp {
         if networks == 0 {
             return None;
         }
-        let mut c = self.cursor;
+        let mut c = self.edit.cursor;
         c.block = block;
         c.network = c.network.min(networks - 1);
         c.row = c.row.min(self.rows_of(block, c.network).saturating_sub(1));
         c.col = c.col.min(self.width());
-        self.cursor = c;
+        self.edit.cursor = c;
         Some(c)
     }
 
@@ -202,14 +202,14 @@ impl LadderApp {
         });
         self.output = lines;
         // The same search again steps past the cursor; a new one may start on it.
-        let again = self.last_find == text;
-        let c = self.cursor;
+        let again = self.edit.last_find == text;
+        let c = self.edit.cursor;
         let next = hits
             .iter()
             .find(|h| if again { **h > c } else { **h >= c })
             .or(hits.first())
             .copied();
-        self.last_find = text.to_string();
+        self.edit.last_find = text.to_string();
         if let Some(at) = next {
             self.jump(at);
         }
@@ -256,13 +256,13 @@ impl LadderApp {
         if row == 0 || row > rows {
             return Err(format!("{}: 1–{rows}", Msg::NoSuchRow.text(lang)));
         }
-        self.cursor = Cursor {
+        self.edit.cursor = Cursor {
             block,
             network: network - 1,
             row: row - 1,
             col: 0,
         };
-        self.jump_to = Some(network - 1);
+        self.edit.jump_to = Some(network - 1);
         Ok(())
     }
 
@@ -343,7 +343,7 @@ impl LadderApp {
                     Edit::SetCell { at, cell }
                 };
                 if self.try_edit(edit)? {
-                    self.cursor = Cursor {
+                    self.edit.cursor = Cursor {
                         col: at.col + 1,
                         ..at
                     };
@@ -384,7 +384,7 @@ impl LadderApp {
                 if let Some(edit) = edit
                     && self.try_edit(edit)?
                 {
-                    self.cursor = at;
+                    self.edit.cursor = at;
                 }
             }
         }
@@ -393,23 +393,23 @@ impl LadderApp {
 
     /// Shift+arrow: the selection grows from where it started to the moved cursor.
     pub(super) fn extend_by(&mut self, dr: i32, dc: i32) {
-        let selection = self.selection;
-        let from = self.cursor;
+        let selection = self.edit.selection;
+        let from = self.edit.cursor;
         self.move_cursor(dr, dc);
-        let to = self.cursor;
-        self.selection = selection;
+        let to = self.edit.cursor;
+        self.edit.selection = selection;
         if selection.is_none() {
-            self.cursor = from;
+            self.edit.cursor = from;
         }
-        self.extend_selection(to);
+        self.edit.extend_selection(to);
     }
 
     pub(super) fn move_cursor(&mut self, dr: i32, dc: i32) {
         let Some(block) = self.block() else { return };
-        let mut c = self.cursor;
+        let mut c = self.edit.cursor;
         c.block = block;
         let width = self.width() as i32;
-        self.selection = None;
+        self.edit.selection = None;
         c.col = (c.col as i32 + dc).clamp(0, width) as usize;
         let rows = self.rows_of(block, c.network) as i32;
         let row = c.row as i32 + dr;
@@ -422,8 +422,8 @@ impl LadderApp {
         } else {
             c.row = row.clamp(0, (rows - 1).max(0)) as usize;
         }
-        self.cursor = c;
-        self.jump_to = Some(c.network);
+        self.edit.cursor = c;
+        self.edit.jump_to = Some(c.network);
     }
 
     /// F4: a wire at the cursor.
@@ -437,7 +437,7 @@ impl LadderApp {
                 at,
                 cell: Cell::Wire,
             }) {
-                self.cursor = Cursor {
+                self.edit.cursor = Cursor {
                     col: at.col + 1,
                     ..at
                 };
@@ -472,7 +472,7 @@ impl LadderApp {
                 return;
             };
             if self.edit(insert) {
-                self.cursor = Cursor { row, ..at };
+                self.edit.cursor = Cursor { row, ..at };
             }
         }
     }
@@ -484,19 +484,19 @@ impl LadderApp {
         let index = if n == 0 {
             0
         } else {
-            (self.cursor.network + usize::from(below)).min(n)
+            (self.edit.cursor.network + usize::from(below)).min(n)
         };
         let Some(insert) = self.ladder().map(|l| l.plan_insert_network(block, index)) else {
             return;
         };
         if self.edit(insert) {
-            self.cursor = Cursor {
+            self.edit.cursor = Cursor {
                 block,
                 network: index,
                 row: 0,
                 col: 0,
             };
-            self.jump_to = Some(index);
+            self.edit.jump_to = Some(index);
         }
     }
 

@@ -300,7 +300,7 @@ impl LadderApp {
     /// question.
     pub fn request(&mut self, action: Action) {
         if self.doc.as_ref().is_some_and(|d| d.dirty) {
-            self.question = Some(Question::Unsaved { then: action });
+            self.files.question = Some(Question::Unsaved { then: action });
         } else {
             self.perform(action);
         }
@@ -318,7 +318,7 @@ impl LadderApp {
                 return;
             }
             Action::Exit => {
-                self.exit_confirmed = true;
+                self.files.exit_confirmed = true;
                 self.drop_recovery_copy();
                 if let Some(ctx) = &self.ctx {
                     ctx.send_viewport_cmd(egui::ViewportCommand::Close);
@@ -335,23 +335,18 @@ impl LadderApp {
     /// Back to level 2 at its first cell, with nothing pending from the old project.
     pub fn reset_view(&mut self) {
         self.view = View::Block(1);
-        self.cursor = super::editing::Cursor {
-            block: 1,
-            network: 0,
-            row: 0,
-            col: 0,
-        };
         self.prompt = None;
         self.function_dialog = None;
-        self.jump_to = None;
         self.tables = Default::default();
-        // Nothing of the old project stays pointed at: selection, drag, tabs, and output
-        // lines whose targets were its cells. (The clipboard stays: copying between
+        // Nothing of the old project stays pointed at: cursor, selection, drag, tabs, and
+        // output lines whose targets were its cells. (The clipboard stays: copying between
         // projects is how networks move from one machine's ladder to another's.)
-        self.selection = None;
-        self.drag_from = None;
+        self.edit = super::state::EditState {
+            clipboard: self.edit.clipboard.take(),
+            pen: self.edit.pen,
+            ..Default::default()
+        };
         self.tabs.clear();
-        self.block_cursors.clear();
         if self.doc.is_none() {
             // Closed: the old project's messages go with it.
             self.output.clear();
@@ -377,24 +372,24 @@ impl LadderApp {
             let name = format!("{stem}.{e}");
             dir.map_or(PathBuf::from(&name), |d| d.join(&name))
         });
-        if self.dialogs.busy() {
+        if self.files.dialogs.busy() {
             // One dialog at a time; what was waiting for this one is dropped with it.
-            self.after_save = None;
+            self.files.after_save = None;
             return;
         }
         if let Some(ctx) = self.ctx.clone() {
-            self.dialogs.start(&ctx, kind, suggested);
+            self.files.dialogs.start(&ctx, kind, suggested);
         }
     }
 
     /// Handles a dialog's answer.
     pub fn poll_dialogs(&mut self) {
-        let Some((kind, answer)) = self.dialogs.poll() else {
+        let Some((kind, answer)) = self.files.dialogs.poll() else {
             return;
         };
         let Some(path) = answer else {
             // Cancelled: a Save As asked for by the unsaved-changes question cancels its action.
-            self.after_save = None;
+            self.files.after_save = None;
             return;
         };
         match kind {
@@ -426,7 +421,7 @@ impl LadderApp {
                     true,
                 );
                 if !matches!(e, FileError::Io { .. }) {
-                    self.question = Some(Question::Damaged {
+                    self.files.question = Some(Question::Damaged {
                         path: path.to_path_buf(),
                         error: e.to_string(),
                     });
@@ -482,12 +477,12 @@ impl LadderApp {
         match doc.save() {
             Ok(()) => {
                 self.drop_recovery_copy();
-                if let Some(then) = self.after_save.take() {
+                if let Some(then) = self.files.after_save.take() {
                     self.perform(then);
                 }
             }
             Err(e) => {
-                self.after_save = None;
+                self.files.after_save = None;
                 self.say(e.to_string(), true);
             }
         }
@@ -499,11 +494,12 @@ impl LadderApp {
         let Some(doc) = self.doc.as_mut() else { return };
         let path = &canonical(path);
         if doc.recovered_from.as_deref() == Some(path.as_path()) {
-            self.after_save = None;
+            self.files.after_save = None;
             self.say(Msg::NotOverDamaged.text(lang).into(), true);
             return;
         }
         let old_copy = self
+            .files
             .recovery_dir
             .as_ref()
             .map(|d| recovery_path(d, doc.path.as_deref()));
@@ -517,12 +513,12 @@ impl LadderApp {
                     remove_copy(&c);
                 }
                 self.settings.remember(path.to_path_buf());
-                if let Some(then) = self.after_save.take() {
+                if let Some(then) = self.files.after_save.take() {
                     self.perform(then);
                 }
             }
             Err(e) => {
-                self.after_save = None;
+                self.files.after_save = None;
                 self.say(e.to_string(), true);
             }
         }
@@ -592,8 +588,8 @@ impl LadderApp {
 
     /// Writes the recovery copy of an unsaved project now.
     pub fn autosave_now(&mut self) {
-        self.last_autosave = Some(Instant::now());
-        let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), self.doc.as_ref()) else {
+        self.files.last_autosave = Some(Instant::now());
+        let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) else {
             return;
         };
         if !doc.dirty || doc.read_only {
@@ -619,11 +615,12 @@ impl LadderApp {
     /// Autosaves when the interval has passed.
     pub fn autosave_tick(&mut self) {
         let due = self
+            .files
             .last_autosave
             .is_none_or(|t| t.elapsed() >= Duration::from_secs(AUTOSAVE_MINUTES * 60));
-        if self.last_autosave.is_none() {
+        if self.files.last_autosave.is_none() {
             // The clock starts with the session: the first copy a full interval later.
-            self.last_autosave = Some(Instant::now());
+            self.files.last_autosave = Some(Instant::now());
         } else if due {
             self.autosave_now();
         }
@@ -631,20 +628,20 @@ impl LadderApp {
 
     /// The current project's recovery copy is no longer needed (saved, closed, replaced).
     pub fn drop_recovery_copy(&mut self) {
-        if let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), self.doc.as_ref()) {
+        if let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) {
             remove_copy(&recovery_path(dir, doc.path.as_deref()));
         }
     }
 
     /// At start: a recovery copy left by a session that did not end is offered back.
     pub fn offer_restore(&mut self) {
-        let Some(dir) = self.recovery_dir.as_ref() else {
+        let Some(dir) = self.files.recovery_dir.as_ref() else {
             return;
         };
         if let Some(copy) = recovery_copies(dir).into_iter().next()
-            && self.question.is_none()
+            && self.files.question.is_none()
         {
-            self.question = Some(Question::Restore(copy));
+            self.files.question = Some(Question::Restore(copy));
         }
     }
 
@@ -668,7 +665,7 @@ impl LadderApp {
 
     /// The open question, as a modal window.
     pub fn question_ui(&mut self, ctx: &egui::Context) {
-        let Some(q) = self.question.clone() else {
+        let Some(q) = self.files.question.clone() else {
             return;
         };
         let lang = self.settings.lang;
@@ -731,10 +728,10 @@ impl LadderApp {
             }
         });
         let Some(answer) = answer else { return };
-        self.question = None;
+        self.files.question = None;
         match (q, answer) {
             (Question::Unsaved { then }, 0) => {
-                self.after_save = Some(then);
+                self.files.after_save = Some(then);
                 self.save();
             }
             (Question::Unsaved { then }, 1) => self.perform(then),
@@ -764,10 +761,10 @@ impl LadderApp {
 
     /// The window's close button: asks about unsaved changes first.
     pub fn close_requested(&mut self, ctx: &egui::Context) {
-        if !self.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
+        if !self.files.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
             if self.doc.as_ref().is_some_and(|d| d.dirty) {
                 ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
-                self.question = Some(Question::Unsaved { then: Action::Exit });
+                self.files.question = Some(Question::Unsaved { then: Action::Exit });
             } else {
                 self.drop_recovery_copy();
             }

@@ -187,7 +187,7 @@ impl LadderApp {
                 });
         });
         ui.horizontal(|ui| {
-            let mut pen = self.pen;
+            let mut pen = self.edit.pen;
             if ui
                 .toggle_value(&mut pen, Command::Pen.text().text(lang))
                 .on_hover_text(Msg::Pen.text(lang))

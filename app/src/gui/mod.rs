@@ -16,6 +16,7 @@ pub mod place;
 pub mod pointer;
 pub mod selection;
 pub mod settings;
+pub mod state;
 pub mod tables;
 pub mod theme;
 pub mod tree;
@@ -44,7 +45,8 @@ pub struct OutputLine {
     pub target: Option<model::CellRef>,
 }
 
-/// The application: persisted settings, the open document and the UI state around it.
+/// The application: persisted settings, the open document and the UI state around it, in
+/// groups (see `state.rs`).
 pub struct LadderApp {
     /// Persisted settings.
     pub settings: Settings,
@@ -52,54 +54,28 @@ pub struct LadderApp {
     pub doc: Option<Document>,
     /// What the main area shows.
     pub view: View,
-    /// The output window.
-    pub output: Vec<OutputLine>,
-    /// A network to scroll into view at the next frame.
-    pub jump_to: Option<usize>,
-    /// The cell cursor.
-    pub cursor: editing::Cursor,
-    /// The open operand prompt (F1, F2, F3, F6).
-    pub prompt: Option<editing::Prompt>,
-    /// Where the ladder view was drawn last frame.
-    pub geometry: ladder_view::Geometry,
-    /// The table editors' UI state (selected row, text being typed, caches).
-    pub tables: tables::TableState,
-    /// The open function-instruction dialog (F3, or a double-click on a box).
-    pub function_dialog: Option<function_dialog::FunctionDialog>,
-    /// File dialogs (native, or scripted in tests).
-    pub dialogs: Box<dyn files::FileDialogs>,
-    /// The question the editor waits on (unsaved changes, damaged file, restore).
-    pub question: Option<files::Question>,
-    /// What to do once the pending Save or Save As succeeds.
-    pub after_save: Option<files::Action>,
-    /// The user agreed to quit.
-    pub exit_confirmed: bool,
-    /// Where recovery copies are autosaved; `None` turns autosave off.
-    pub recovery_dir: Option<PathBuf>,
-    /// When the recovery copy was last written.
-    pub last_autosave: Option<std::time::Instant>,
-    /// The egui context, for starting dialogs outside a frame's closures.
-    pub ctx: Option<egui::Context>,
-    /// The selection (block, what), if any.
-    pub selection: Option<(usize, selection::Selection)>,
-    /// What Ctrl+C, Ctrl+X or Ctrl+E put aside.
-    pub clipboard: Option<selection::Clip>,
-    /// Dragging draws wires and links instead of selecting cells.
-    pub pen: bool,
-    /// The open Help window.
-    pub help: Option<HelpPage>,
-    /// Where the drag in progress in the ladder view started.
-    pub drag_from: Option<ladder_view::Hit>,
-    /// The cross-reference views: the index filter and what was derived from the project.
-    pub xref: xref_view::XrefState,
     /// The view tabs above the main area, in the order they were opened.
     pub tabs: Vec<View>,
-    /// The last text searched for (Ctrl+F offers it again, to find the next match).
-    pub last_find: String,
+    /// The output window.
+    pub output: Vec<OutputLine>,
+    /// The ladder editor: cursor, selection, clipboard, gestures.
+    pub edit: state::EditState,
+    /// Files: dialogs, the question waited on, recovery copies.
+    pub files: state::FileState,
+    /// The open operand prompt (F1, F2, F3, F6).
+    pub prompt: Option<editing::Prompt>,
+    /// The open function-instruction dialog (F3, or a double-click on a box).
+    pub function_dialog: Option<function_dialog::FunctionDialog>,
+    /// The open Help window.
+    pub help: Option<HelpPage>,
+    /// The table editors' UI state (selected row, text being typed, caches).
+    pub tables: tables::TableState,
+    /// The cross-reference views: the index filter and what was derived from the project.
+    pub xref: xref_view::XrefState,
+    /// The egui context, for starting dialogs outside a frame's closures.
+    pub ctx: Option<egui::Context>,
     /// Commands asked for during this frame; they run after it.
     pub pending: Vec<command::Command>,
-    /// Where the cursor was left in each block not shown now: the cursor goes with its block.
-    pub block_cursors: std::collections::HashMap<place::BlockKey, place::Cursor>,
     /// When the project last changed, on the tables' draft clock (undo takes back the later
     /// of a change and a draft).
     pub last_change: u64,
@@ -115,36 +91,18 @@ impl LadderApp {
             settings,
             doc: None,
             view: View::Block(1),
-            output: Vec::new(),
-            jump_to: None,
-            cursor: editing::Cursor {
-                block: 1,
-                network: 0,
-                row: 0,
-                col: 0,
-            },
-            prompt: None,
-            geometry: ladder_view::Geometry::default(),
-            tables: tables::TableState::default(),
-            function_dialog: None,
-            dialogs: Box::new(files::NativeDialogs::default()),
-            question: None,
-            after_save: None,
-            exit_confirmed: false,
-            recovery_dir: None,
-            last_autosave: None,
-            ctx: None,
-            selection: None,
-            clipboard: None,
-            pen: false,
-            help: None,
-            drag_from: None,
-            xref: Default::default(),
             tabs: Vec::new(),
-            last_find: String::new(),
+            output: Vec::new(),
+            edit: Default::default(),
+            files: Default::default(),
+            prompt: None,
+            function_dialog: None,
+            help: None,
+            tables: tables::TableState::default(),
+            xref: Default::default(),
+            ctx: None,
             pending: Vec::new(),
             last_change: 0,
-            block_cursors: Default::default(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -167,7 +125,7 @@ impl LadderApp {
         app.ctx = Some(cc.egui_ctx.clone());
         // Only a real run (with eframe's storage) autosaves into the user's data folder.
         if cc.storage.is_some() {
-            app.recovery_dir = eframe::storage_dir(APP_ID).map(|d| d.join("recovery"));
+            app.files.recovery_dir = eframe::storage_dir(APP_ID).map(|d| d.join("recovery"));
             app.offer_restore();
         }
         app
@@ -230,9 +188,9 @@ impl LadderApp {
     /// network, with the cursor on it. A place that no longer exists is clamped.
     pub fn jump(&mut self, at: model::CellRef) {
         self.view = View::Block(at.block);
-        self.jump_to = Some(at.network);
-        self.selection = None;
-        self.cursor = at;
+        self.edit.jump_to = Some(at.network);
+        self.edit.selection = None;
+        self.edit.cursor = at;
         self.clamp_ui_state();
     }
 
@@ -241,8 +199,8 @@ impl LadderApp {
     /// selection, the drag and the tabs never point past the end.
     pub fn clamp_ui_state(&mut self) {
         let Some(doc) = self.doc.as_ref() else {
-            self.selection = None;
-            self.drag_from = None;
+            self.edit.selection = None;
+            self.edit.drag_from = None;
             return;
         };
         let p = doc.project();
@@ -255,10 +213,10 @@ impl LadderApp {
         };
         if !valid(&self.view) {
             self.view = View::Block(1);
-            self.drag_from = None;
+            self.edit.drag_from = None;
         }
         self.tabs.retain(valid);
-        let c = &mut self.cursor;
+        let c = &mut self.edit.cursor;
         if c.block >= blocks.len() {
             *c = model::CellRef {
                 block: 1,
@@ -272,7 +230,7 @@ impl LadderApp {
         let rows = networks.get(c.network).map_or(1, |n| n.rows.len());
         c.row = c.row.min(rows.saturating_sub(1));
         c.col = c.col.min(p.ladder.width);
-        if let Some((b, sel)) = self.selection {
+        if let Some((b, sel)) = self.edit.selection {
             let fits = |n: usize, r: usize| {
                 blocks
                     .get(b)
@@ -289,7 +247,7 @@ impl LadderApp {
                 selection::Selection::Networks { networks } => fits(networks.0.max(networks.1), 0),
             };
             if !ok {
-                self.selection = None;
+                self.edit.selection = None;
             }
         }
     }
@@ -389,12 +347,15 @@ impl LadderApp {
         let project = doc.project();
         match self.view {
             View::Block(b) => {
-                let cursor = (self.cursor.block == b).then_some((
-                    self.cursor.network,
-                    self.cursor.row,
-                    self.cursor.col,
+                let cursor = (self.edit.cursor.block == b).then_some((
+                    self.edit.cursor.network,
+                    self.edit.cursor.row,
+                    self.edit.cursor.col,
                 ));
-                let selection = self.selection.and_then(|(sb, s)| (sb == b).then_some(s));
+                let selection = self
+                    .edit
+                    .selection
+                    .and_then(|(sb, s)| (sb == b).then_some(s));
                 let events = ladder_view::block_ui(
                     ui,
                     project,
@@ -408,8 +369,8 @@ impl LadderApp {
                         selection,
                         document: doc.serial,
                     },
-                    &mut self.jump_to,
-                    &mut self.geometry,
+                    &mut self.edit.jump_to,
+                    &mut self.edit.geometry,
                 );
                 self.pointer_events(b, events);
             }
@@ -462,9 +423,9 @@ impl LadderApp {
                 t(Msg::ModeEdit)
             });
             if let View::Block(b) = self.view
-                && self.cursor.block == b
+                && self.edit.cursor.block == b
             {
-                let c = self.cursor;
+                let c = self.edit.cursor;
                 let label = doc
                     .project()
                     .ladder
@@ -482,7 +443,7 @@ impl LadderApp {
                     t(Msg::Column),
                     c.col + 1
                 ));
-                if let Some((sb, sel)) = self.selection
+                if let Some((sb, sel)) = self.edit.selection
                     && sb == b
                 {
                     let what = match sel {
@@ -522,7 +483,7 @@ impl eframe::App for LadderApp {
         self.dropped_files(&ctx);
         self.close_requested(&ctx);
         self.autosave_tick();
-        if self.question.is_some() {
+        if self.files.question.is_some() {
             self.question_ui(&ctx);
         }
         self.keys(&ctx);

@@ -56,10 +56,10 @@ impl LadderApp {
             col,
         };
         if let Some(start) = ev.drag_start {
-            self.drag_from = Some(start);
+            self.edit.drag_from = Some(start);
         }
-        if let (Some(a), Some(z)) = (self.drag_from, ev.drag_now) {
-            if self.pen {
+        if let (Some(a), Some(z)) = (self.edit.drag_from, ev.drag_now) {
+            if self.edit.pen {
                 if ev.drag_done {
                     self.draw_line(block, a, z);
                 }
@@ -68,7 +68,7 @@ impl LadderApp {
             }
         }
         if ev.drag_done {
-            self.drag_from = None;
+            self.edit.drag_from = None;
         }
         if ev.drag_now.is_some() {
             // A drag is not also a click.
@@ -76,30 +76,32 @@ impl LadderApp {
             match hit {
                 Hit::Cell { network, row, col } => {
                     if mods.shift {
-                        self.extend_selection(cell(network, row, col));
+                        self.edit.extend_selection(cell(network, row, col));
                     } else {
-                        self.selection = None;
-                        self.cursor = cell(network, row, col);
+                        self.edit.selection = None;
+                        self.edit.cursor = cell(network, row, col);
                     }
                 }
                 Hit::Header { network } => {
-                    let first = match self.selection {
+                    let first = match self.edit.selection {
                         Some((b, Selection::Networks { networks })) if b == block && mods.shift => {
                             networks.0
                         }
-                        _ if mods.shift && self.cursor.block == block => self.cursor.network,
+                        _ if mods.shift && self.edit.cursor.block == block => {
+                            self.edit.cursor.network
+                        }
                         _ => network,
                     };
-                    self.selection = Some((
+                    self.edit.selection = Some((
                         block,
                         Selection::Networks {
                             networks: (first, network),
                         },
                     ));
-                    self.cursor = cell(network, 0, 0);
+                    self.edit.cursor = cell(network, 0, 0);
                 }
                 Hit::Margin { network, row } => {
-                    let first = match self.selection {
+                    let first = match self.edit.selection {
                         Some((b, Selection::Rows { network: n, rows }))
                             if b == block && n == network && mods.shift =>
                         {
@@ -107,14 +109,14 @@ impl LadderApp {
                         }
                         _ => row,
                     };
-                    self.selection = Some((
+                    self.edit.selection = Some((
                         block,
                         Selection::Rows {
                             network,
                             rows: (first, row),
                         },
                     ));
-                    self.cursor = cell(network, row, 0);
+                    self.edit.cursor = cell(network, row, 0);
                 }
             }
         }
@@ -122,7 +124,7 @@ impl LadderApp {
             match hit {
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {
-                    self.cursor = cell(network, 0, 0);
+                    self.edit.cursor = cell(network, 0, 0);
                     self.ask(Command::NetworkTitle);
                 }
                 Hit::Margin { .. } => {}
@@ -130,11 +132,12 @@ impl LadderApp {
         }
         if let Some(Hit::Cell { network, row, col }) = ev.secondary {
             let inside = self
+                .edit
                 .selection
                 .is_some_and(|(b, s)| b == block && s.contains(network, row, col));
             if !inside {
-                self.selection = None;
-                self.cursor = cell(network, row, col);
+                self.edit.selection = None;
+                self.edit.cursor = cell(network, row, col);
             }
         }
         if let Some(response) = ev.response {
@@ -165,9 +168,9 @@ impl LadderApp {
                 networks: (a.network(), z.network()),
             },
         };
-        self.selection = Some((block, sel));
+        self.edit.selection = Some((block, sel));
         if let Hit::Cell { network, row, col } = z {
-            self.cursor = Cursor {
+            self.edit.cursor = Cursor {
                 block,
                 network,
                 row,
@@ -218,8 +221,8 @@ impl LadderApp {
     /// Double-click: edit the element's operands (an empty cell takes a new contact, or a
     /// coil in the output column).
     pub fn edit_element(&mut self, at: Cursor) {
-        self.selection = None;
-        self.cursor = at;
+        self.edit.selection = None;
+        self.edit.cursor = at;
         let Some(cell) = self
             .doc
             .as_ref()
@@ -307,9 +310,9 @@ impl LadderApp {
                     *b += 1;
                 }
             }
-            self.selection = None;
+            self.edit.selection = None;
             self.view = View::Block(index);
-            self.cursor = Cursor {
+            self.edit.cursor = Cursor {
                 block: index,
                 network: 0,
                 row: 0,
@@ -398,9 +401,9 @@ impl LadderApp {
                     *b -= 1;
                 }
             }
-            self.selection = None;
+            self.edit.selection = None;
             self.view = View::Block(1);
-            self.cursor = Cursor {
+            self.edit.cursor = Cursor {
                 block: 1,
                 network: 0,
                 row: 0,

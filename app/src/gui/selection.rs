@@ -3,6 +3,7 @@
 //! and every change they make goes through the engine's edits as one undo step.
 
 use super::i18n::Msg;
+use super::state::EditState;
 use super::{LadderApp, OutputLine};
 pub use ladder_engine::model::region::{Clip, Region as Selection};
 use ladder_engine::model::{Cell, CellRef};
@@ -22,10 +23,10 @@ impl LadderApp {
             super::tree::View::Block(b) => b,
             _ => return None,
         };
-        match self.selection {
+        match self.edit.selection {
             Some((b, s)) if b == block => Some((b, s)),
             _ => {
-                let c = self.cursor;
+                let c = self.edit.cursor;
                 (c.block == block).then_some((
                     block,
                     Selection::Cells {
@@ -38,6 +39,150 @@ impl LadderApp {
         }
     }
 
+    /// Ctrl+C: the selection (or the cursor's cell) to the clipboard.
+    pub fn copy(&mut self) -> bool {
+        let Some((block, sel)) = self.effective_selection() else {
+            return false;
+        };
+        match self.ladder().and_then(|l| l.copy_region(block, sel)) {
+            Some(clip) => {
+                self.edit.clipboard = Some(clip);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Puts the clipboard's text on the system clipboard too: other programs get readable
+    /// text, and the window system then sends Ctrl+V back to the editor (it only does so
+    /// when the system clipboard holds text).
+    pub fn copy_to_system(&self, ctx: &egui::Context) {
+        if let Some(clip) = &self.edit.clipboard {
+            ctx.copy_text(clip_text(clip));
+        }
+    }
+
+    /// Ctrl+E: the cursor's row to the clipboard.
+    pub fn copy_row(&mut self) {
+        let c = self.edit.cursor;
+        let row = Selection::Rows {
+            network: c.network,
+            rows: (c.row, c.row),
+        };
+        if let Some(clip) = self.ladder().and_then(|l| l.copy_region(c.block, row)) {
+            self.edit.clipboard = Some(clip);
+        }
+    }
+
+    /// Ctrl+X: copy, then delete the selection.
+    pub fn cut(&mut self) {
+        if self.copy() {
+            self.delete_selection();
+        }
+    }
+
+    /// Delete with a selection: cells emptied, rows or networks removed, as one undo step. A
+    /// network keeps at least one (empty) row, a block at least one network (manual §3.2.2).
+    pub fn delete_selection(&mut self) {
+        let Some((block, sel)) = self.effective_selection() else {
+            return;
+        };
+        let Some(edit) = self.ladder().map(|l| l.plan_delete_region(block, sel)) else {
+            return;
+        };
+        self.edit(edit);
+        self.edit.selection = None;
+        // The cursor goes to where the deleted part began, so Ctrl+V puts it back.
+        let networks = self.ladder().map_or(0, |l| l.blocks[block].networks.len());
+        let c = &mut self.edit.cursor;
+        match sel {
+            Selection::Cells {
+                network,
+                rows,
+                cols,
+            } => {
+                c.network = network;
+                c.row = rows.0.min(rows.1);
+                c.col = cols.0.min(cols.1);
+            }
+            Selection::Rows { network, rows } => {
+                c.network = network;
+                c.row = rows.0.min(rows.1).saturating_sub(1);
+            }
+            Selection::Networks { networks: ns } => {
+                c.network = ns.0.min(ns.1).saturating_sub(1);
+                c.row = 0;
+            }
+        }
+        c.network = c.network.min(networks.saturating_sub(1));
+    }
+
+    /// Ctrl+V: cells over the cursor's rectangle, rows below the cursor's row, networks below
+    /// the cursor's network.
+    pub fn paste(&mut self) {
+        let lang = self.settings.lang;
+        let Some(clip) = self.edit.clipboard.clone() else {
+            self.note(Msg::ClipboardEmpty.text(lang).into(), false);
+            return;
+        };
+        let Some(at) = self.ensure_network() else {
+            return;
+        };
+        let ok = match self.ladder().map(|l| l.plan_paste(at, clip)) {
+            Some(Ok(edit)) => self.edit(edit),
+            Some(Err(e)) => {
+                self.report_edit_error(&e);
+                false
+            }
+            None => false,
+        };
+        if ok {
+            self.edit.selection = None;
+        }
+    }
+}
+
+/// A clip as text: one line per row, cells separated by tabs.
+fn clip_text(clip: &Clip) -> String {
+    fn cell_text(c: &Cell) -> String {
+        match c {
+            Cell::Empty => String::new(),
+            Cell::Wire => "—".into(),
+            Cell::Contact { negated, operand } => {
+                format!("{}{operand}", if *negated { "NC " } else { "NO " })
+            }
+            Cell::Coil { negated, operand } => {
+                format!("{}{operand}", if *negated { "OUTN " } else { "OUT " })
+            }
+            Cell::Box { op, operands } => ladder_engine::il::instr_text(*op, operands),
+        }
+    }
+    fn row_text(cells: &[Cell]) -> String {
+        cells.iter().map(cell_text).collect::<Vec<_>>().join("\t")
+    }
+    match clip {
+        Clip::Cells { cells, .. } => cells
+            .iter()
+            .map(|r| row_text(r))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        Clip::Rows(rows) => rows
+            .iter()
+            .map(|r| row_text(&r.cells))
+            .collect::<Vec<_>>()
+            .join("\n"),
+        Clip::Networks(ns) => ns
+            .iter()
+            .map(|n| {
+                let rows: Vec<String> = n.rows.iter().map(|r| row_text(&r.cells)).collect();
+                format!("{}\n{}", n.title, rows.join("\n"))
+            })
+            .collect::<Vec<_>>()
+            .join("\n\n"),
+    }
+}
+
+impl EditState {
     /// Extends the selection from the cursor to `to` (Shift+click, Shift+arrows): cells within
     /// one network, whole networks across networks.
     pub fn extend_selection(&mut self, to: CellRef) {
@@ -86,147 +231,5 @@ impl LadderApp {
         };
         self.selection = Some((to.block, sel));
         self.cursor = to;
-    }
-
-    /// Ctrl+C: the selection (or the cursor's cell) to the clipboard.
-    pub fn copy(&mut self) -> bool {
-        let Some((block, sel)) = self.effective_selection() else {
-            return false;
-        };
-        match self.ladder().and_then(|l| l.copy_region(block, sel)) {
-            Some(clip) => {
-                self.clipboard = Some(clip);
-                true
-            }
-            None => false,
-        }
-    }
-
-    /// Puts the clipboard's text on the system clipboard too: other programs get readable
-    /// text, and the window system then sends Ctrl+V back to the editor (it only does so
-    /// when the system clipboard holds text).
-    pub fn copy_to_system(&self, ctx: &egui::Context) {
-        if let Some(clip) = &self.clipboard {
-            ctx.copy_text(clip_text(clip));
-        }
-    }
-
-    /// Ctrl+E: the cursor's row to the clipboard.
-    pub fn copy_row(&mut self) {
-        let c = self.cursor;
-        let row = Selection::Rows {
-            network: c.network,
-            rows: (c.row, c.row),
-        };
-        if let Some(clip) = self.ladder().and_then(|l| l.copy_region(c.block, row)) {
-            self.clipboard = Some(clip);
-        }
-    }
-
-    /// Ctrl+X: copy, then delete the selection.
-    pub fn cut(&mut self) {
-        if self.copy() {
-            self.delete_selection();
-        }
-    }
-
-    /// Delete with a selection: cells emptied, rows or networks removed, as one undo step. A
-    /// network keeps at least one (empty) row, a block at least one network (manual §3.2.2).
-    pub fn delete_selection(&mut self) {
-        let Some((block, sel)) = self.effective_selection() else {
-            return;
-        };
-        let Some(edit) = self.ladder().map(|l| l.plan_delete_region(block, sel)) else {
-            return;
-        };
-        self.edit(edit);
-        self.selection = None;
-        // The cursor goes to where the deleted part began, so Ctrl+V puts it back.
-        let networks = self.ladder().map_or(0, |l| l.blocks[block].networks.len());
-        let c = &mut self.cursor;
-        match sel {
-            Selection::Cells {
-                network,
-                rows,
-                cols,
-            } => {
-                c.network = network;
-                c.row = rows.0.min(rows.1);
-                c.col = cols.0.min(cols.1);
-            }
-            Selection::Rows { network, rows } => {
-                c.network = network;
-                c.row = rows.0.min(rows.1).saturating_sub(1);
-            }
-            Selection::Networks { networks: ns } => {
-                c.network = ns.0.min(ns.1).saturating_sub(1);
-                c.row = 0;
-            }
-        }
-        c.network = c.network.min(networks.saturating_sub(1));
-    }
-
-    /// Ctrl+V: cells over the cursor's rectangle, rows below the cursor's row, networks below
-    /// the cursor's network.
-    pub fn paste(&mut self) {
-        let lang = self.settings.lang;
-        let Some(clip) = self.clipboard.clone() else {
-            self.note(Msg::ClipboardEmpty.text(lang).into(), false);
-            return;
-        };
-        let Some(at) = self.ensure_network() else {
-            return;
-        };
-        let ok = match self.ladder().map(|l| l.plan_paste(at, clip)) {
-            Some(Ok(edit)) => self.edit(edit),
-            Some(Err(e)) => {
-                self.report_edit_error(&e);
-                false
-            }
-            None => false,
-        };
-        if ok {
-            self.selection = None;
-        }
-    }
-}
-
-/// A clip as text: one line per row, cells separated by tabs.
-fn clip_text(clip: &Clip) -> String {
-    fn cell_text(c: &Cell) -> String {
-        match c {
-            Cell::Empty => String::new(),
-            Cell::Wire => "—".into(),
-            Cell::Contact { negated, operand } => {
-                format!("{}{operand}", if *negated { "NC " } else { "NO " })
-            }
-            Cell::Coil { negated, operand } => {
-                format!("{}{operand}", if *negated { "OUTN " } else { "OUT " })
-            }
-            Cell::Box { op, operands } => ladder_engine::il::instr_text(*op, operands),
-        }
-    }
-    fn row_text(cells: &[Cell]) -> String {
-        cells.iter().map(cell_text).collect::<Vec<_>>().join("\t")
-    }
-    match clip {
-        Clip::Cells { cells, .. } => cells
-            .iter()
-            .map(|r| row_text(r))
-            .collect::<Vec<_>>()
-            .join("\n"),
-        Clip::Rows(rows) => rows
-            .iter()
-            .map(|r| row_text(&r.cells))
-            .collect::<Vec<_>>()
-            .join("\n"),
-        Clip::Networks(ns) => ns
-            .iter()
-            .map(|n| {
-                let rows: Vec<String> = n.rows.iter().map(|r| row_text(&r.cells)).collect();
-                format!("{}\n{}", n.title, rows.join("\n"))
-            })
-            .collect::<Vec<_>>()
-            .join("\n\n"),
     }
 }

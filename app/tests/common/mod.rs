@@ -70,11 +70,12 @@ pub fn click_at(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
 pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
     let p = h
         .state()
+        .edit
         .geometry
         .cell_center(network, row, col)
         .expect("the cell is on screen");
     click_at(h, p);
-    let c = h.state().cursor;
+    let c = h.state().edit.cursor;
     assert_eq!(
         (c.network, c.row, c.col),
         (network, row, col),
@@ -94,7 +95,8 @@ pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bo
 }
 
 pub fn scripted(h: &mut Harness<'static, LadderApp>, answers: Vec<Option<PathBuf>>) {
-    h.state_mut().dialogs = Box::new(ladder_studio::gui::files::ScriptedDialogs::new(answers));
+    h.state_mut().files.dialogs =
+        Box::new(ladder_studio::gui::files::ScriptedDialogs::new(answers));
 }
 
 /// A project saved in a fresh file, opened in the editor (English).
@@ -138,6 +140,7 @@ pub fn cell_pos(
     col: usize,
 ) -> egui::Pos2 {
     h.state()
+        .edit
         .geometry
         .cell_center(network, row, col)
         .expect("the cell is on screen")

@@ -15,7 +15,7 @@ impl LadderApp {
         if let crate::gui::place::View::Block(block) = self.view {
             let at = CellRef {
                 block,
-                ..self.cursor
+                ..self.edit.cursor
             };
             self.function_dialog = Some(FunctionDialog::new(at));
         }
@@ -75,9 +75,9 @@ impl LadderApp {
         let mut dialog = dialog.clone();
         if !dialog.editing {
             // The cursor's row; in an empty block, a new network (folded into this step).
-            self.cursor = CellRef {
+            self.edit.cursor = CellRef {
                 block: dialog.at.block,
-                ..self.cursor
+                ..self.edit.cursor
             };
             dialog.at = self
                 .ensure_network()
@@ -113,7 +113,7 @@ impl LadderApp {
         };
         // The refusal is shown in the dialog, once.
         self.try_edit(edit)?;
-        self.cursor = at;
+        self.edit.cursor = at;
         Ok(())
     }
 }

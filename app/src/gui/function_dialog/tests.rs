@@ -102,7 +102,7 @@ fn f3_search_pick_fill_and_ok_places_the_tmrb_box() {
     assert_eq!(il(&h), ["LD X0002.1", "TMRB T0000 DT0004 R0300.0"]);
     let width = ladder(&h).width;
     assert_eq!(
-        h.state().cursor.col,
+        h.state().edit.cursor.col,
         width,
         "the box is in the output column"
     );

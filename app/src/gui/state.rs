@@ -1,0 +1,81 @@
+//! The application's state in groups, each with what one part of the editor owns: the
+//! ladder editor's place and gestures, and the file side (dialogs, questions, recovery). A
+//! function that needs one group borrows that group, not the whole application.
+
+use super::files::{Action, FileDialogs, NativeDialogs, Question};
+use super::ladder_view::{Geometry, Hit};
+use super::place::{BlockKey, Cursor, block_start};
+use super::selection::{Clip, Selection};
+use std::collections::HashMap;
+use std::path::PathBuf;
+use std::time::Instant;
+
+/// The ladder editor's state: where the user is and what their gestures hold. UI state only,
+/// never saved in the project.
+#[derive(Debug)]
+pub struct EditState {
+    /// The cell cursor.
+    pub cursor: Cursor,
+    /// Where the cursor was left in each block not shown now: the cursor goes with its block.
+    pub block_cursors: HashMap<BlockKey, Cursor>,
+    /// The selection (block, what), if any.
+    pub selection: Option<(usize, Selection)>,
+    /// What Ctrl+C, Ctrl+X or Ctrl+E put aside (kept across projects: copying between
+    /// projects is how networks move from one machine's ladder to another's).
+    pub clipboard: Option<Clip>,
+    /// Dragging draws wires and links instead of selecting cells.
+    pub pen: bool,
+    /// Where the drag in progress in the ladder view started.
+    pub drag_from: Option<Hit>,
+    /// A network to scroll into view at the next frame.
+    pub jump_to: Option<usize>,
+    /// Where the ladder view was drawn last frame.
+    pub geometry: Geometry,
+    /// The last text searched for (Ctrl+F offers it again, to find the next match).
+    pub last_find: String,
+}
+
+impl Default for EditState {
+    fn default() -> EditState {
+        EditState {
+            cursor: block_start(1),
+            block_cursors: HashMap::new(),
+            selection: None,
+            clipboard: None,
+            pen: false,
+            drag_from: None,
+            jump_to: None,
+            geometry: Geometry::default(),
+            last_find: String::new(),
+        }
+    }
+}
+
+/// The file side: the file dialogs, the question the editor waits on and the recovery copies.
+pub struct FileState {
+    /// File dialogs (native, or scripted in tests).
+    pub dialogs: Box<dyn FileDialogs>,
+    /// The question the editor waits on (unsaved changes, damaged file, restore).
+    pub question: Option<Question>,
+    /// What to do once the pending Save or Save As succeeds.
+    pub after_save: Option<Action>,
+    /// The user agreed to quit.
+    pub exit_confirmed: bool,
+    /// Where recovery copies are autosaved; `None` turns autosave off.
+    pub recovery_dir: Option<PathBuf>,
+    /// When the recovery copy was last written.
+    pub last_autosave: Option<Instant>,
+}
+
+impl Default for FileState {
+    fn default() -> FileState {
+        FileState {
+            dialogs: Box::new(NativeDialogs::default()),
+            question: None,
+            after_save: None,
+            exit_confirmed: false,
+            recovery_dir: None,
+            last_autosave: None,
+        }
+    }
+}
