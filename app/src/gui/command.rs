@@ -6,8 +6,8 @@
 
 use super::i18n::{Lang, Msg};
 use super::place::BlockKey;
+use super::place::View;
 use super::settings::DisplayMode;
-use super::tree::View;
 use egui::{Key, KeyboardShortcut, ModifierNames, Modifiers};
 
 /// A Help window.

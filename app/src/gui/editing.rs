@@ -2,7 +2,7 @@
 //! the engine's edit operations and the document's history, so undo is exact.
 
 use super::i18n::Msg;
-use super::tree::View;
+use super::place::View;
 use super::{LadderApp, OutputLine};
 use egui::{Key, Modifiers};
 use ladder_engine::Op;
@@ -44,7 +44,7 @@ pub enum PlaceKind {
     /// Renumber or rename subprogram P`0`: `NUMBER [NAME]`.
     RenameSub(u16),
     /// A block's information text.
-    BlockInfo(super::pointer::BlockKey),
+    BlockInfo(super::place::BlockKey),
 }
 
 /// The open operand prompt.

@@ -2,10 +2,10 @@
 //! and function boxes. Only the networks inside the visible part are laid out and painted, so
 //! a 5000-step program scrolls as smoothly as a small one.
 
-use super::selection::Selection;
 use super::settings::DisplayMode;
 use super::theme;
 use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, StrokeKind, pos2, vec2};
+use ladder_engine::model::region::Region as Selection;
 use ladder_engine::model::{Cell, Network, Operand, Project};
 
 pub use super::theme::WRONG_TYPE;

@@ -2,6 +2,7 @@
 //! a window; `main.rs` only starts it.
 
 pub mod command;
+pub mod dialogs;
 pub mod dispatch;
 pub mod document;
 pub mod editing;

@@ -3,10 +3,9 @@
 //! and every change they make goes through the engine's edits as one undo step.
 
 use super::i18n::Msg;
-use super::state::EditState;
 use super::{LadderApp, OutputLine};
+use ladder_engine::model::Cell;
 pub use ladder_engine::model::region::{Clip, Region as Selection};
-use ladder_engine::model::{Cell, CellRef};
 
 impl LadderApp {
     fn note(&mut self, text: String, error: bool) {
@@ -20,7 +19,7 @@ impl LadderApp {
     /// The selection in the shown block, or the cursor's cell when nothing is selected.
     pub fn effective_selection(&self) -> Option<(usize, Selection)> {
         let block = match self.view {
-            super::tree::View::Block(b) => b,
+            super::place::View::Block(b) => b,
             _ => return None,
         };
         match self.edit.selection {
@@ -179,57 +178,5 @@ fn clip_text(clip: &Clip) -> String {
             })
             .collect::<Vec<_>>()
             .join("\n\n"),
-    }
-}
-
-impl EditState {
-    /// Extends the selection from the cursor to `to` (Shift+click, Shift+arrows): cells within
-    /// one network, whole networks across networks.
-    pub fn extend_selection(&mut self, to: CellRef) {
-        let from = match self.selection {
-            Some((b, s)) if b == to.block => match s {
-                Selection::Cells {
-                    network,
-                    rows,
-                    cols,
-                } => CellRef {
-                    block: b,
-                    network,
-                    row: rows.0,
-                    col: cols.0,
-                },
-                Selection::Rows { network, rows } => CellRef {
-                    block: b,
-                    network,
-                    row: rows.0,
-                    col: 0,
-                },
-                Selection::Networks { networks } => CellRef {
-                    block: b,
-                    network: networks.0,
-                    row: 0,
-                    col: 0,
-                },
-            },
-            _ => self.cursor,
-        };
-        let sel = if from.network != to.network {
-            Selection::Networks {
-                networks: (from.network, to.network),
-            }
-        } else if matches!(self.selection, Some((_, Selection::Rows { .. }))) {
-            Selection::Rows {
-                network: to.network,
-                rows: (from.row, to.row),
-            }
-        } else {
-            Selection::Cells {
-                network: to.network,
-                rows: (from.row, to.row),
-                cols: (from.col, to.col),
-            }
-        };
-        self.selection = Some((to.block, sel));
-        self.cursor = to;
     }
 }

@@ -3,7 +3,7 @@
 
 use super::i18n::Lang;
 use serde::{Deserialize, Serialize};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// How operands are shown in the ladder (manual §3.2.3).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -69,7 +69,7 @@ impl Default for Settings {
 impl Settings {
     /// Puts a path first in the recent list.
     pub fn remember(&mut self, path: PathBuf) {
-        let path = super::files::canonical(&path);
+        let path = canonical(&path);
         self.recent.retain(|p| *p != path);
         self.recent.insert(0, path);
         self.recent.truncate(RECENT_FILES);
@@ -84,5 +84,24 @@ impl Settings {
             i.saturating_sub(1)
         };
         self.zoom = ZOOMS[i];
+    }
+}
+
+/// The path with `.`, `..` and links resolved, so that two spellings of one file compare
+/// equal; a file that does not exist yet gets its folder resolved.
+pub fn canonical(path: &Path) -> PathBuf {
+    if let Ok(p) = std::fs::canonicalize(path) {
+        return p;
+    }
+    match (path.parent(), path.file_name()) {
+        (Some(dir), Some(name)) => {
+            let dir = if dir.as_os_str().is_empty() {
+                Path::new(".")
+            } else {
+                dir
+            };
+            std::fs::canonicalize(dir).map_or_else(|_| path.to_path_buf(), |d| d.join(name))
+        }
+        _ => path.to_path_buf(),
     }
 }

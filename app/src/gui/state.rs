@@ -2,10 +2,11 @@
 //! ladder editor's place and gestures, and the file side (dialogs, questions, recovery). A
 //! function that needs one group borrows that group, not the whole application.
 
-use super::files::{Action, FileDialogs, NativeDialogs, Question};
+use super::dialogs::{Action, FileDialogs, NativeDialogs, Question};
 use super::ladder_view::{Geometry, Hit};
 use super::place::{BlockKey, Cursor, block_start};
-use super::selection::{Clip, Selection};
+use ladder_engine::model::CellRef;
+use ladder_engine::model::region::{Clip, Region as Selection};
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::time::Instant;
@@ -51,6 +52,19 @@ impl Default for EditState {
     }
 }
 
+impl EditState {
+    /// Another project: nothing of the old one stays pointed at (cursor, selection, drag,
+    /// saved cursors, search). The clipboard and the pen stay: copying between projects is
+    /// how networks move from one machine's ladder to another's.
+    pub fn start_over(&mut self) {
+        *self = EditState {
+            clipboard: self.clipboard.take(),
+            pen: self.pen,
+            ..Default::default()
+        };
+    }
+}
+
 /// The file side: the file dialogs, the question the editor waits on and the recovery copies.
 pub struct FileState {
     /// File dialogs (native, or scripted in tests).
@@ -77,5 +91,57 @@ impl Default for FileState {
             recovery_dir: None,
             last_autosave: None,
         }
+    }
+}
+
+impl EditState {
+    /// Extends the selection from the cursor to `to` (Shift+click, Shift+arrows): cells within
+    /// one network, whole networks across networks.
+    pub fn extend_selection(&mut self, to: CellRef) {
+        let from = match self.selection {
+            Some((b, s)) if b == to.block => match s {
+                Selection::Cells {
+                    network,
+                    rows,
+                    cols,
+                } => CellRef {
+                    block: b,
+                    network,
+                    row: rows.0,
+                    col: cols.0,
+                },
+                Selection::Rows { network, rows } => CellRef {
+                    block: b,
+                    network,
+                    row: rows.0,
+                    col: 0,
+                },
+                Selection::Networks { networks } => CellRef {
+                    block: b,
+                    network: networks.0,
+                    row: 0,
+                    col: 0,
+                },
+            },
+            _ => self.cursor,
+        };
+        let sel = if from.network != to.network {
+            Selection::Networks {
+                networks: (from.network, to.network),
+            }
+        } else if matches!(self.selection, Some((_, Selection::Rows { .. }))) {
+            Selection::Rows {
+                network: to.network,
+                rows: (from.row, to.row),
+            }
+        } else {
+            Selection::Cells {
+                network: to.network,
+                rows: (from.row, to.row),
+                cols: (from.col, to.col),
+            }
+        };
+        self.selection = Some((to.block, sel));
+        self.cursor = to;
     }
 }
