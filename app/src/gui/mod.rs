@@ -19,6 +19,8 @@ pub mod selection;
 pub mod settings;
 pub mod state;
 pub mod tables;
+#[cfg(test)]
+mod test_harness;
 pub mod theme;
 pub mod tree;
 pub mod xref_view;

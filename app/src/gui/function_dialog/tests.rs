@@ -12,23 +12,8 @@ use ladder_engine::model::Ladder;
 type H = Harness<'static, LadderApp>;
 
 /// The app on `project`, saved first into a fresh temporary folder.
-fn harness(project: &Project, name: &str, lang: Lang) -> H {
-    let dir = std::env::temp_dir().join(format!(
-        "ladder-function-dialog-{}-{name}",
-        std::process::id()
-    ));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join("project.ldp");
-    ladder_engine::file::save(project, &path).unwrap();
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_eframe(move |cc| {
-            let mut app = LadderApp::from_creation(cc, Some(path));
-            app.settings.lang = lang;
-            app
-        });
-    h.run();
-    h
+fn harness(project: &Project, _name: &str, lang: Lang) -> H {
+    crate::gui::test_harness::on_project(project, lang)
 }
 
 /// An empty project with one network holding the contact X2.1; the cursor after it.

@@ -7,23 +7,10 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT, Queryable};
 use ladder_engine::model::{Comments, DataRow, Message, Symbol, SymbolTable};
 use ladder_engine::{Address, Area};
-use std::path::PathBuf;
 
 /// The editor on a saved copy of `project`, in English, showing `view`.
-fn harness(project: &Project, name: &str, view: View) -> Harness<'static, LadderApp> {
-    let dir: PathBuf =
-        std::env::temp_dir().join(format!("ladder-tables-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(format!("{name}.ldp"));
-    ladder_engine::file::save(project, &path).unwrap();
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
-        .build_eframe(move |cc| {
-            let mut app = LadderApp::from_creation(cc, Some(path));
-            app.settings.lang = Lang::En;
-            app
-        });
-    h.run();
+fn harness(project: &Project, _name: &str, view: View) -> Harness<'static, LadderApp> {
+    let mut h = crate::gui::test_harness::on_project(project, Lang::En);
     h.state_mut().view = view;
     h.run();
     h
