@@ -4,8 +4,9 @@
 //! normal case, no extra work) and with tracing for watched networks; a `Net` word switches.
 
 use super::cnc::Cnc;
-use super::code::{Arg, C_INVERT, CONTACT_END, VmOp, byte};
+use super::code::{C_INVERT, CONTACT_END, VmOp, byte};
 use super::functions::{self, Ctx};
+use super::memory::write_bit;
 use super::{Frame, Halt, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
 
 use crate::address::Area;
@@ -26,18 +27,6 @@ enum Exit {
     Switch(u32),
     /// The watchdog stopped the PLC at this word.
     Watchdog(u32),
-}
-
-#[inline(always)]
-fn read_bit(mem: &[u8], arg: u32) -> u32 {
-    u32::from(mem[(arg >> 3) as usize] >> (arg & 7)) & 1
-}
-
-#[inline(always)]
-fn write_bit(mem: &mut [u8], arg: u32, v: u32) {
-    let byte = &mut mem[(arg >> 3) as usize];
-    let sh = arg & 7;
-    *byte = (*byte & !(1 << sh)) | ((v as u8) << sh);
 }
 
 impl Vm {
@@ -391,47 +380,4 @@ fn hot<const TRACE: bool>(
     r.branches = branches;
     r.steps = steps;
     stop
-}
-
-/// Reads a signed operand of `bytes` (a constant is taken modulo its width).
-#[inline]
-pub(super) fn int(mem: &[u8], a: Arg, bytes: u32) -> i32 {
-    match a {
-        Arg::Int(c) => super::memory::sign_extend(c as u32, bytes),
-        Arg::Loc(l) => super::memory::read(mem, l, bytes),
-        Arg::Real(r) => r as i32,
-        Arg::Bit(b) => read_bit(mem, b) as i32,
-        Arg::None => 0,
-    }
-}
-
-/// Reads an unsigned operand (a constant as written).
-#[inline]
-pub(super) fn uint(mem: &[u8], a: Arg, bytes: u32) -> u32 {
-    match a {
-        Arg::Int(c) => c as u32,
-        Arg::Loc(l) => super::memory::read_unsigned(mem, l, bytes),
-        Arg::Real(r) => r as u32,
-        Arg::Bit(b) => read_bit(mem, b),
-        Arg::None => 0,
-    }
-}
-
-/// Reads a bit operand.
-#[inline]
-pub(super) fn bit(mem: &[u8], a: Arg) -> bool {
-    match a {
-        Arg::Bit(b) => read_bit(mem, b) == 1,
-        _ => false,
-    }
-}
-
-/// Writes a bit operand (a byte operand receives 0 or 1, as WINDR's ERR may be).
-#[inline]
-pub(super) fn set_bit(mem: &mut [u8], a: Arg, v: bool) {
-    match a {
-        Arg::Bit(b) => write_bit(mem, b, u32::from(v)),
-        Arg::Loc(l) => super::memory::write(mem, l, if l.wide { 4 } else { 1 }, i32::from(v)),
-        _ => {}
-    }
 }

@@ -13,8 +13,7 @@
 use super::InstState;
 use super::cnc::Cnc;
 use super::code::{Arg, FnCall};
-use super::exec::{bit, int, set_bit, uint};
-use super::memory::{self, Loc};
+use super::memory::{self, Loc, read_bit, write_bit};
 use crate::catalog::{FnOp, xmov_format};
 use std::ops::Range;
 
@@ -727,4 +726,47 @@ fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
         st.phase = 0;
     }
     st.prev_act = act;
+}
+
+/// Reads a signed operand of `bytes` (a constant is taken modulo its width).
+#[inline]
+pub(super) fn int(mem: &[u8], a: Arg, bytes: u32) -> i32 {
+    match a {
+        Arg::Int(c) => memory::sign_extend(c as u32, bytes),
+        Arg::Loc(l) => memory::read(mem, l, bytes),
+        Arg::Real(r) => r as i32,
+        Arg::Bit(b) => read_bit(mem, b) as i32,
+        Arg::None => 0,
+    }
+}
+
+/// Reads an unsigned operand (a constant as written).
+#[inline]
+pub(super) fn uint(mem: &[u8], a: Arg, bytes: u32) -> u32 {
+    match a {
+        Arg::Int(c) => c as u32,
+        Arg::Loc(l) => memory::read_unsigned(mem, l, bytes),
+        Arg::Real(r) => r as u32,
+        Arg::Bit(b) => read_bit(mem, b),
+        Arg::None => 0,
+    }
+}
+
+/// Reads a bit operand.
+#[inline]
+pub(super) fn bit(mem: &[u8], a: Arg) -> bool {
+    match a {
+        Arg::Bit(b) => read_bit(mem, b) == 1,
+        _ => false,
+    }
+}
+
+/// Writes a bit operand (a byte operand receives 0 or 1, as WINDR's ERR may be).
+#[inline]
+pub(super) fn set_bit(mem: &mut [u8], a: Arg, v: bool) {
+    match a {
+        Arg::Bit(b) => write_bit(mem, b, u32::from(v)),
+        Arg::Loc(l) => memory::write(mem, l, if l.wide { 4 } else { 1 }, i32::from(v)),
+        _ => {}
+    }
 }

@@ -158,3 +158,15 @@ pub fn read_real(mem: &[u8], loc: Loc) -> f32 {
 pub fn write_real(mem: &mut [u8], loc: Loc, v: f32) {
     write(mem, loc, 4, v.to_bits() as i32);
 }
+
+#[inline(always)]
+pub(super) fn read_bit(mem: &[u8], arg: u32) -> u32 {
+    u32::from(mem[(arg >> 3) as usize] >> (arg & 7)) & 1
+}
+
+#[inline(always)]
+pub(super) fn write_bit(mem: &mut [u8], arg: u32, v: u32) {
+    let byte = &mut mem[(arg >> 3) as usize];
+    let sh = arg & 7;
+    *byte = (*byte & !(1 << sh)) | ((v as u8) << sh);
+}
