@@ -92,6 +92,36 @@ fn a_compile_error_jumps_to_its_network() {
 }
 
 #[test]
+fn a_compile_error_reads_in_chinese_in_a_chinese_ui() {
+    let dir = tempfile_dir();
+    let path = dir.join("err.ldp");
+    let project = ladder_engine::il::import(
+        "LEVEL2\nNETWORK\nLD X0001.0\nOUT Y0001.0\nNETWORK\nLD X0001.1\nAND NOWHERE\nOUT Y0001.1\n",
+    )
+    .project
+    .unwrap();
+    ladder_engine::file::save(&project, &path).unwrap();
+    let mut h = harness(Some(path), Lang::Zh);
+    h.run();
+    h.key_press(egui::Key::F9);
+    h.run();
+    let diag = h.state().output[0].clone();
+    assert!(
+        diag.text
+            .starts_with("err.ldp 二级程序 网络 2 行 1 列 2：错误：[L020] 符号未定义（"),
+        "{}",
+        diag.text
+    );
+    assert!(
+        diag.text.contains("`NOWHERE`"),
+        "the specifics are kept: {}",
+        diag.text
+    );
+    assert!(diag.target.is_some(), "it still jumps to its cell");
+    h.get_by_label_contains("[L020] 符号未定义");
+}
+
+#[test]
 fn the_cross_reference_view_lists_addresses() {
     let mut h = harness(None, Lang::En);
     h.run();

@@ -275,7 +275,7 @@ impl LadderApp {
         };
         let query = Query::parse(from)
             .ok_or_else(|| format!("`{from}`: {}", Msg::NothingToFind.text(lang)))?;
-        let to = Operand::parse(to).map_err(|e| e.to_string())?;
+        let to = Operand::parse(to).map_err(|e| super::errors::operand_error(&e, lang))?;
         let Some(doc) = self.doc.as_ref() else {
             return Ok(());
         };
@@ -314,7 +314,9 @@ impl LadderApp {
             PlaceKind::BlockInfo(key) => return self.set_block_info(key, text),
             _ => {}
         }
-        let operand = |t: &str| Operand::parse(t).map_err(|e| e.to_string());
+        let lang = self.settings.lang;
+        let operand =
+            |t: &str| Operand::parse(t).map_err(|e| super::errors::operand_error(&e, lang));
         // A typing error refuses before anything changes (no network added for nothing).
         if matches!(
             kind,

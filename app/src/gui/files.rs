@@ -211,13 +211,18 @@ impl LadderApp {
             Err(e) => {
                 let lang = self.settings.lang;
                 self.say(
-                    format!("{} {}: {e}", Msg::OpenFailed.text(lang), path.display()),
+                    format!(
+                        "{} {}: {}",
+                        Msg::OpenFailed.text(lang),
+                        path.display(),
+                        super::errors::file_error(&e, lang)
+                    ),
                     true,
                 );
                 if !matches!(e, FileError::Io { .. }) {
                     self.files.question = Some(Question::Damaged {
                         path: path.to_path_buf(),
-                        error: e.to_string(),
+                        error: super::errors::file_error(&e, lang),
                     });
                 }
                 false
@@ -232,7 +237,7 @@ impl LadderApp {
         let lang = self.settings.lang;
         let result = std::fs::read(path)
             .map_err(|e| e.to_string())
-            .and_then(|b| file::recover(&b).map_err(|e| e.to_string()));
+            .and_then(|b| file::recover(&b).map_err(|e| super::errors::file_error(&e, lang)));
         match result {
             Ok(project) => {
                 let mut doc = Document::new(project, None);
@@ -277,7 +282,7 @@ impl LadderApp {
             }
             Err(e) => {
                 self.files.after_save = None;
-                self.say(e.to_string(), true);
+                self.say(super::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -313,7 +318,7 @@ impl LadderApp {
             }
             Err(e) => {
                 self.files.after_save = None;
-                self.say(e.to_string(), true);
+                self.say(super::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -392,7 +397,10 @@ impl LadderApp {
         let copy = recovery_path(dir, doc.path.as_deref());
         let written = std::fs::create_dir_all(dir)
             .map_err(|e| e.to_string())
-            .and_then(|()| file::save(doc.project(), &copy).map_err(|e| e.to_string()))
+            .and_then(|()| {
+                file::save(doc.project(), &copy)
+                    .map_err(|e| super::errors::file_error(&e, self.settings.lang))
+            })
             .and_then(|()| {
                 let origin = doc
                     .path
@@ -452,6 +460,7 @@ impl LadderApp {
             }
             Err(e) => {
                 remove_copy(&copy.copy);
+                let e = super::errors::file_error(&e, lang);
                 self.say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
             }
         }

@@ -145,11 +145,17 @@ impl LadderApp {
             .name()
             .unwrap_or_else(|| Msg::Untitled.text(self.settings.lang).to_string());
         let compiled = doc.compile();
+        let lang = self.settings.lang;
         let mut lines: Vec<OutputLine> = compiled
             .diagnostics
             .iter()
             .map(|d| OutputLine {
-                text: d.render(&name),
+                // The Chinese rendering keeps the English message for its specifics
+                // (docs/diagnostics.md lists each code's meaning, which the title gives).
+                text: match lang {
+                    i18n::Lang::Zh => d.render_zh(&name),
+                    i18n::Lang::En => d.render(&name),
+                },
                 error: d.severity() == Severity::Error,
                 target: match d.location.origin {
                     Origin::Cell { row, col } => Some(model::CellRef {
@@ -162,7 +168,6 @@ impl LadderApp {
                 },
             })
             .collect();
-        let lang = self.settings.lang;
         let summary = if compiled.errors() + compiled.warnings() == 0 {
             format!(
                 "{} ({} {})",

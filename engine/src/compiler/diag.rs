@@ -104,6 +104,183 @@ pub enum Code {
 }
 
 impl Code {
+    /// Every code, in the order of docs/diagnostics.md.
+    pub const ALL: &'static [Code] = &[
+        Code::L001NotConnected,
+        Code::L002OpenBranch,
+        Code::L003ShortCircuit,
+        Code::L004Bridge,
+        Code::L005WrongColumn,
+        Code::L006NoContact,
+        Code::L007NotStandalone,
+        Code::L010UnknownInstruction,
+        Code::L011OperandCount,
+        Code::L012Syntax,
+        Code::L013BlockStack,
+        Code::L014BranchStack,
+        Code::L015LoadAfterOutput,
+        Code::L016NoOutput,
+        Code::L017NotDrawable,
+        Code::L018StackDepth,
+        Code::L020UndefinedSymbol,
+        Code::L021OperandKind,
+        Code::L022Area,
+        Code::L023AddressRange,
+        Code::L024ConstRange,
+        Code::L025ReadOnly,
+        Code::L030LabelTwice,
+        Code::L031UndefinedLabel,
+        Code::L032JumpOutOfBlock,
+        Code::L033UndefinedSub,
+        Code::L034Recursion,
+        Code::L035Level1Steps,
+        Code::L036ProgramSteps,
+        Code::L038SubNumber,
+        Code::T001SymbolName,
+        Code::T002SymbolTwice,
+        Code::T003DataAddress,
+        Code::T004DataValue,
+        Code::T005MessageNumber,
+        Code::T006TableName,
+        Code::T007SymbolArea,
+        Code::T008TableKey,
+        Code::W001CoilTwice,
+        Code::W002TimerTwice,
+        Code::W003BitsSpill,
+        Code::W004AddressTwice,
+        Code::W005MessageHalf,
+        Code::W006VersionLength,
+        Code::W007CommentLength,
+    ];
+
+    /// What is wrong, in one Chinese phrase in the words of the GSK manual (docs/diagnostics.md
+    /// gives each code's meaning): `未知指令`.
+    pub fn title_zh(self) -> &'static str {
+        self.titles().0
+    }
+
+    /// What is wrong, in one English phrase (docs/diagnostics.md): `unknown instruction`.
+    pub fn title_en(self) -> &'static str {
+        self.titles().1
+    }
+
+    /// Both titles in one exhaustive match, so a new code cannot go without either.
+    fn titles(self) -> (&'static str, &'static str) {
+        match self {
+            Code::L001NotConnected => (
+                "元件未连接到左母线",
+                "element not connected to the left rail",
+            ),
+            Code::L002OpenBranch => (
+                "开路分支：其后没有线圈或功能指令",
+                "open branch: no coil or box after it",
+            ),
+            Code::L003ShortCircuit => ("分支被并联的导线短路", "branch short-circuited by a wire"),
+            Code::L004Bridge => (
+                "分支在分支点后重新汇合或形成桥接",
+                "branches rejoin or form a bridge",
+            ),
+            Code::L005WrongColumn => ("元件所在的列不对", "element in the wrong column"),
+            Code::L006NoContact => ("输出之前没有触点", "output with no contact before it"),
+            Code::L007NotStandalone => (
+                "标号或子程序调用未单独成网络",
+                "LBL/CALLU not standing alone",
+            ),
+            Code::L010UnknownInstruction => ("未知指令", "unknown instruction"),
+            Code::L011OperandCount => ("操作数个数不对", "wrong operand count"),
+            Code::L012Syntax => ("语法错误", "syntax error"),
+            Code::L013BlockStack => (
+                "ORB/ANB 没有可连接的逻辑块，或逻辑块未闭合",
+                "no block for ORB/ANB, or a block left open",
+            ),
+            Code::L014BranchStack => (
+                "MRD/MPP 没有对应的 MPS，或 MPS 未闭合",
+                "MRD/MPP without MPS, or MPS left open",
+            ),
+            Code::L015LoadAfterOutput => (
+                "MPS 未闭合时在输出之后直接取（LD）",
+                "LD after an output while MPS is open",
+            ),
+            Code::L016NoOutput => ("网络没有输出", "network without an output"),
+            Code::L017NotDrawable => (
+                "指令序列无法画成梯形图",
+                "instructions with no ladder drawing",
+            ),
+            Code::L018StackDepth => (
+                "堆栈嵌套过深（超过 32 个逻辑块或 16 个分支点）",
+                "stack too deep",
+            ),
+            Code::L020UndefinedSymbol => ("符号未定义", "undefined symbol"),
+            Code::L021OperandKind => ("操作数类型不对", "wrong operand kind"),
+            Code::L022Area => (
+                "操作数不允许使用该地址区",
+                "area not allowed for the operand",
+            ),
+            Code::L023AddressRange => ("地址或访问范围超出", "address or access out of range"),
+            Code::L024ConstRange => (
+                "常数超出范围或数字组格式不对",
+                "constant out of range or malformed",
+            ),
+            Code::L025ReadOnly => ("写入只读地址区", "write to a read-only area"),
+            Code::L030LabelTwice => ("标号重复定义", "label defined twice"),
+            Code::L031UndefinedLabel => ("跳转到未定义的标号", "jump to an undefined label"),
+            Code::L032JumpOutOfBlock => ("跳转超出所在程序块", "jump out of its block"),
+            Code::L033UndefinedSub => ("调用未定义的子程序", "call of an undefined subprogram"),
+            Code::L034Recursion => ("子程序递归调用", "recursive call"),
+            Code::L035Level1Steps => (
+                "一级程序步数过多（含所调用的子程序）",
+                "too many steps in level 1",
+            ),
+            Code::L036ProgramSteps => ("程序总步数超出 PLC 容量", "too many steps in the program"),
+            Code::L038SubNumber => (
+                "子程序号重复或超出范围",
+                "subprogram number twice or out of range",
+            ),
+            Code::T001SymbolName => ("符号名称无效", "invalid symbol name"),
+            Code::T002SymbolTwice => ("符号重复定义", "symbol defined twice"),
+            Code::T003DataAddress => (
+                "数据表地址不对：地址区不符、超出范围或重复",
+                "wrong data-table address",
+            ),
+            Code::T004DataValue => (
+                "数据表的值超出上下限",
+                "data-table value outside its limits",
+            ),
+            Code::T005MessageNumber => (
+                "报警号超出范围或重复，或信息行超出 A 地址范围",
+                "invalid or repeated alarm number",
+            ),
+            Code::T006TableName => (
+                "符号表名称为空或已被占用",
+                "symbol table name empty or taken",
+            ),
+            Code::T007SymbolArea => (
+                "该地址区不能定义符号（标号、子程序号）",
+                "no symbols for this area",
+            ),
+            Code::T008TableKey => (
+                "诊断、权限或 M 代码表的地址或代码无效或重复",
+                "invalid or repeated table key",
+            ),
+            Code::W001CoilTwice => ("线圈重复输出", "coil driven twice"),
+            Code::W002TimerTwice => ("定时器或计数器号重复使用", "timer or counter used twice"),
+            Code::W003BitsSpill => (
+                "比较结果位延续到下一个字节",
+                "result bits continue into the next byte",
+            ),
+            Code::W004AddressTwice => ("地址在多个符号行中出现", "address in two symbol rows"),
+            Code::W005MessageHalf => (
+                "报警号没有信息文本，或文本没有报警号",
+                "alarm number or text missing",
+            ),
+            Code::W006VersionLength => ("版本信息超出长度限制", "version information too long"),
+            Code::W007CommentLength => (
+                "注释超过 CNC 保存的 127 字节",
+                "comment longer than 127 bytes",
+            ),
+        }
+    }
+
     /// The code as printed: `L012`, `W001`.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -228,6 +405,57 @@ impl Diagnostic {
             self.code.as_str()
         )
     }
+
+    /// The diagnostic for a Chinese reader, with `name` (the file) in front:
+    /// `NAME 二级程序 网络 3 行 1 列 2：错误：[L020] 符号未定义（MESSAGE）`. The title says what is
+    /// wrong in Chinese; the English message follows in parentheses because it carries the
+    /// specifics (the address, the instruction, the numbers) that the title leaves out.
+    pub fn render_zh(&self, name: &str) -> String {
+        let severity = match self.severity() {
+            Severity::Error => "错误",
+            Severity::Warning => "警告",
+        };
+        format!(
+            "{name} {}：{severity}：[{}] {}（{}）",
+            self.location.describe_zh(),
+            self.code.as_str(),
+            self.code.title_zh(),
+            self.message
+        )
+    }
+}
+
+impl Location {
+    /// Where, in Chinese: `二级程序 网络 3 行 1 列 2`, `符号表 1 行 2 列 1`, `第 5 行` for an IL
+    /// line. Rows and columns count from 1, as `render` prints them (docs/diagnostics.md).
+    pub fn describe_zh(&self) -> String {
+        let network = self.network + 1;
+        let place = match self.block_label.as_str() {
+            "LEVEL1" => format!("一级程序 网络 {network}"),
+            "LEVEL2" => format!("二级程序 网络 {network}"),
+            "SYMBOLS" => format!("符号表 {network}"),
+            // The data tables' numbers (1 D, 2 DT, 3 DC, 4 D_FLOAT) as their names.
+            "DATA" => match self.network {
+                0 => "数据表 D".to_string(),
+                1 => "数据表 DT".to_string(),
+                2 => "数据表 DC".to_string(),
+                3 => "数据表 D_FLOAT".to_string(),
+                _ => format!("数据表 {network}"),
+            },
+            "MESSAGES" => "显示信息表".to_string(),
+            "DIAGNOSIS" => "诊断信息表".to_string(),
+            "PERMISSIONS" => "权限表".to_string(),
+            "MCODES" => "M 代码表".to_string(),
+            "VERSION" => "梯形图版本信息".to_string(),
+            sub if sub.starts_with('P') => format!("子程序 {sub} 网络 {network}"),
+            other => format!("{other} 网络 {network}"),
+        };
+        match self.origin {
+            Origin::Line(line) => format!("第 {line} 行"),
+            Origin::Cell { row, col } => format!("{place} 行 {} 列 {}", row + 1, col + 1),
+            Origin::None => place,
+        }
+    }
 }
 
 /// Collects diagnostics for one block and network at a time.
@@ -270,5 +498,76 @@ impl Sink {
             .iter()
             .filter(|d| d.severity() == Severity::Error)
             .count()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn is_cjk(c: char) -> bool {
+        ('\u{4e00}'..='\u{9fff}').contains(&c)
+    }
+
+    #[test]
+    fn every_code_has_a_chinese_and_an_english_title() {
+        for code in Code::ALL {
+            let zh = code.title_zh();
+            assert!(zh.chars().any(is_cjk), "{code:?}: {zh}");
+            assert!(!code.title_en().is_empty(), "{code:?}");
+            assert!(code.title_en().is_ascii(), "{code:?}");
+        }
+    }
+
+    #[test]
+    fn the_list_of_codes_is_the_documented_list() {
+        let doc = include_str!("../../../docs/diagnostics.md");
+        let documented: Vec<&str> = doc
+            .lines()
+            .filter_map(|l| l.strip_prefix("| "))
+            .filter_map(|l| l.split(' ').next())
+            .filter(|c| c.len() == 4 && c[1..].bytes().all(|b| b.is_ascii_digit()))
+            .collect();
+        let listed: Vec<&str> = Code::ALL.iter().map(|c| c.as_str()).collect();
+        assert_eq!(listed, documented);
+    }
+
+    fn diagnostic(block_label: &str, network: usize, origin: Origin, code: Code) -> Diagnostic {
+        Diagnostic {
+            location: Location {
+                block: 1,
+                block_label: block_label.into(),
+                network,
+                origin,
+            },
+            code,
+            message: "undefined symbol `NOWHERE`".into(),
+        }
+    }
+
+    #[test]
+    fn the_chinese_rendering_names_the_place_and_keeps_the_specifics() {
+        let cell = Origin::Cell { row: 0, col: 1 };
+        let d = diagnostic("LEVEL2", 2, cell, Code::L020UndefinedSymbol);
+        assert_eq!(
+            d.render_zh("err.ldp"),
+            "err.ldp 二级程序 网络 3 行 1 列 2：错误：[L020] 符号未定义（undefined symbol `NOWHERE`）"
+        );
+        let w = diagnostic("P0001", 0, Origin::None, Code::W001CoilTwice);
+        assert!(
+            w.render_zh("a")
+                .starts_with("a 子程序 P0001 网络 1：警告：[W001] 线圈重复输出")
+        );
+        let t = diagnostic("DATA", 1, cell, Code::T004DataValue);
+        assert!(t.render_zh("a").starts_with("a 数据表 DT 行 1 列 2："));
+        let il = diagnostic("LEVEL1", 0, Origin::Line(5), Code::L012Syntax);
+        assert!(
+            il.render_zh("a.il")
+                .starts_with("a.il 第 5 行：错误：[L012] 语法错误")
+        );
+        assert_eq!(
+            d.render("err.ldp"),
+            "err.ldp:LEVEL2:3:1:2: error: undefined symbol `NOWHERE` [L020]"
+        );
     }
 }
