@@ -137,6 +137,23 @@ impl AreaSet {
     /// The empty set.
     pub const EMPTY: AreaSet = AreaSet(0);
 
+    /// Every memory area: every area but labels (L) and subprogram numbers (P), which hold
+    /// no value to read or write.
+    pub const MEMORY: AreaSet = AreaSet::of(&[
+        Area::X,
+        Area::Y,
+        Area::F,
+        Area::G,
+        Area::R,
+        Area::A,
+        Area::K,
+        Area::T,
+        Area::C,
+        Area::Dt,
+        Area::Dc,
+        Area::D,
+    ]);
+
     /// A set of the given areas.
     pub const fn of(areas: &[Area]) -> AreaSet {
         let mut bits = 0u16;

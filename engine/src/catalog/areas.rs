@@ -16,20 +16,7 @@ pub const BITS_READ: AreaSet = AreaSet::of(&[
 /// Bit addresses a coil may write.
 pub const BITS_WRITE: AreaSet = AreaSet::of(&[Area::Y, Area::G, Area::R, Area::A, Area::K]);
 /// Every data area a byte or word operand may read.
-pub const BYTES_READ: AreaSet = AreaSet::of(&[
-    Area::X,
-    Area::Y,
-    Area::F,
-    Area::G,
-    Area::R,
-    Area::A,
-    Area::K,
-    Area::T,
-    Area::C,
-    Area::Dt,
-    Area::Dc,
-    Area::D,
-]);
+pub const BYTES_READ: AreaSet = AreaSet::MEMORY;
 /// Every data area a byte or word operand may write.
 pub const BYTES_WRITE: AreaSet = AreaSet::of(&[
     Area::Y,

@@ -41,20 +41,7 @@ pub const SYMBOL_AREAS: AreaSet = AreaSet::of(&[
 
 /// Areas the diagnosis and permission tables take: every memory area, not labels or
 /// subprogram numbers, which hold no value to show or to change.
-pub const VALUE_AREAS: AreaSet = AreaSet::of(&[
-    Area::X,
-    Area::Y,
-    Area::F,
-    Area::G,
-    Area::R,
-    Area::A,
-    Area::K,
-    Area::T,
-    Area::C,
-    Area::Dt,
-    Area::Dc,
-    Area::D,
-]);
+pub const VALUE_AREAS: AreaSet = AreaSet::MEMORY;
 
 fn area_in(address: Address, allowed: AreaSet) -> Result<(), TableError> {
     if allowed.contains(address.area) {
