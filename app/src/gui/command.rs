@@ -371,21 +371,27 @@ impl Command {
     }
 
     /// Every command that has a key, the most specific combination first (Shift+F1 before
-    /// F1: egui matches a key without Shift also when Shift is held).
-    pub fn keyed() -> Vec<Command> {
-        let mut all: Vec<Command> = Command::UNITS
-            .iter()
-            .copied()
-            .chain(DIRS.iter().map(|d| Command::Extend(*d)))
-            .chain(DIRS.iter().map(|d| Command::Move(*d)))
-            .filter(|c| c.shortcut().is_some())
-            .collect();
-        let weight = |c: &Command| {
-            let m = c.shortcut().map_or(Modifiers::NONE, |s| s.modifiers);
-            std::cmp::Reverse(u8::from(m.shift) + u8::from(m.alt) + u8::from(m.command || m.ctrl))
-        };
-        all.sort_by_key(weight);
-        all
+    /// F1: egui matches a key without Shift also when Shift is held). Worked out once; the
+    /// keys are looked up every frame.
+    pub fn keyed() -> &'static [Command] {
+        static KEYED: std::sync::LazyLock<Vec<Command>> = std::sync::LazyLock::new(|| {
+            let mut all: Vec<Command> = Command::UNITS
+                .iter()
+                .copied()
+                .chain(DIRS.iter().map(|d| Command::Extend(*d)))
+                .chain(DIRS.iter().map(|d| Command::Move(*d)))
+                .filter(|c| c.shortcut().is_some())
+                .collect();
+            let weight = |c: &Command| {
+                let m = c.shortcut().map_or(Modifiers::NONE, |s| s.modifiers);
+                std::cmp::Reverse(
+                    u8::from(m.shift) + u8::from(m.alt) + u8::from(m.command || m.ctrl),
+                )
+            };
+            all.sort_by_key(weight);
+            all
+        });
+        &KEYED
     }
 
     /// Whether it changes the ladder at the cursor (refused outside a ladder view).
@@ -404,7 +410,7 @@ mod tests {
     fn no_two_commands_share_a_key_and_every_entry_has_a_text() {
         let keyed = Command::keyed();
         let mut seen = HashSet::new();
-        for c in &keyed {
+        for c in keyed {
             let s = c.shortcut().expect("keyed commands have a key");
             assert!(
                 seen.insert((s.modifiers, s.logical_key)),

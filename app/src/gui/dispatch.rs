@@ -82,7 +82,7 @@ impl LadderApp {
             || self.function_dialog.is_some()
             || self.files.question.is_some()
             || ctx.egui_wants_keyboard_input();
-        for c in Command::keyed() {
+        for &c in Command::keyed() {
             if (typing && !c.global()) || !self.enabled(c) {
                 continue;
             }
@@ -311,7 +311,7 @@ impl LadderApp {
 /// The Help page listing the keys, for tests and the Help window.
 pub fn shortcut_rows() -> Vec<(String, super::i18n::Msg)> {
     Command::keyed()
-        .into_iter()
+        .iter()
         .filter_map(|c| Some((c.shortcut_text()?, c.text())))
         .collect()
 }
