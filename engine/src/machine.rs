@@ -8,6 +8,7 @@ use crate::cnc::command::{CncCommand, CncKey, CncValue};
 use crate::cnc::{CncStatus, SimCnc};
 use crate::model::Project;
 use crate::vm::cnc::NoCnc;
+use crate::vm::swap::{SwapError, Swapped};
 use crate::vm::{BuildError, Halt, Vm};
 use std::fmt;
 
@@ -124,6 +125,8 @@ pub struct Snapshot {
     pub halt: Option<Halt>,
     /// Recorded power flow of watched networks (per code word).
     pub trace: Vec<u8>,
+    /// Which code networks `trace` covers.
+    pub watched: Vec<bool>,
     /// Whether the runner is running.
     pub running: bool,
     /// The CNC's screen.
@@ -162,6 +165,15 @@ impl Machine {
             self.tick();
             each(self);
         }
+    }
+
+    /// Online edit: `plc` (a newly compiled program) takes over the running PLC's memory,
+    /// forces and clock between two ticks, and runs from the next tick on. The CNC is not
+    /// touched. On an error nothing changes.
+    pub fn swap(&mut self, mut plc: Vm) -> Result<Swapped, SwapError> {
+        let swapped = plc.take_over(&self.plc)?;
+        self.plc = plc;
+        Ok(swapped)
     }
 
     /// Whether the runner should be ticking.
@@ -229,6 +241,8 @@ impl Machine {
         s.halt = self.plc.halt().cloned();
         s.trace.clear();
         s.trace.extend_from_slice(self.plc.trace());
+        s.watched.clear();
+        s.watched.extend_from_slice(self.plc.watched());
         s.running = self.running;
         s.cnc = self.cnc.as_ref().map(SimCnc::status);
     }

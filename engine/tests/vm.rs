@@ -218,7 +218,14 @@ fn a_watched_network_shows_contacts_power_and_box_values() {
     vm.write(a("R10"), 1, 42);
     vm.tick(&mut NoCnc);
     let grid = &p.ladder.blocks[1].networks[0];
-    let view = network_view(&vm, &program, 1, 0, grid, p.ladder.width);
+    let view = network_view(
+        &vm.source(vm.watched()),
+        &program,
+        1,
+        0,
+        grid,
+        p.ladder.width,
+    );
     let w = p.ladder.width;
     assert_eq!(view.cells[0][0].closed, Some(true), "X2.1 closed");
     assert!(view.cells[0][0].power_out);
@@ -237,7 +244,7 @@ fn a_watched_network_shows_contacts_power_and_box_values() {
     // Press stop: the contact opens and no power reaches the coil.
     vm.write(a("X2.2"), 1, 1);
     vm.tick(&mut NoCnc);
-    let view = network_view(&vm, &program, 1, 0, grid, w);
+    let view = network_view(&vm.source(vm.watched()), &program, 1, 0, grid, w);
     assert_eq!(view.cells[0][1].closed, Some(false));
     assert!(!view.cells[0][w].power_in);
 }

@@ -11,6 +11,8 @@ mod exec;
 mod functions;
 pub mod memory;
 pub mod monitor;
+pub mod swap;
+pub mod why;
 
 use crate::address::{Address, Area};
 use crate::compiler::{Program, compile};

@@ -4,10 +4,80 @@
 //! output received ([`Vm::watch`], [`Vm::trace`]). This module maps those records back to the
 //! network's cells and computes the power flowing into and out of every cell over the grid,
 //! the way the rung was evaluated; function boxes also get their operands' current values.
+//!
+//! It reads a [`Source`], not a [`Vm`]: the editor monitors a machine running on another
+//! thread from the snapshots it publishes, and a recorded past state from an image the scan
+//! recorder rebuilt, so the view must not need the VM itself.
 
 use super::Vm;
+use super::code::Code;
+use super::memory::{self, Layout};
+use crate::address::Address;
 use crate::compiler::{Origin, Program};
 use crate::model::{Cell, Network, Operand};
+
+/// What a monitor reads: the code that runs, its memory image and, when live, the scan's
+/// record of watched networks.
+#[derive(Clone, Copy)]
+pub struct Source<'a> {
+    /// The running code (networks and word sources).
+    pub code: &'a Code,
+    /// Where each area is in the image.
+    pub layout: &'a Layout,
+    /// The memory image.
+    pub memory: &'a [u8],
+    /// Per code word, what the last scan recorded ([`Vm::trace`]), with per code network
+    /// whether it was recorded. `None` shows everything from memory (a recorded past state).
+    pub trace: Option<(&'a [u8], &'a [bool])>,
+}
+
+impl Source<'_> {
+    /// Reads a bit of the image.
+    pub fn bit(&self, a: Address) -> bool {
+        let loc = self.layout.loc(a, false);
+        self.memory
+            .get(loc.off as usize)
+            .is_some_and(|b| b >> a.bit.unwrap_or(0) & 1 == 1)
+    }
+
+    /// Reads `bytes` at an address, signed (a bit address reads 0 or 1).
+    pub fn value(&self, a: Address, bytes: u32) -> i64 {
+        if a.bit.is_some() {
+            return i64::from(self.bit(a));
+        }
+        let loc = self.layout.loc(a, false);
+        if (loc.off + bytes) as usize > self.memory.len() {
+            return 0;
+        }
+        i64::from(memory::read(self.memory, loc, bytes))
+    }
+
+    fn watched(&self, network: usize) -> Option<&[u8]> {
+        let (trace, watched) = self.trace?;
+        watched
+            .get(network)
+            .copied()
+            .unwrap_or(false)
+            .then_some(trace)
+    }
+}
+
+impl Vm {
+    /// The VM as a monitor [`Source`], with its scan record.
+    pub fn source<'a>(&'a self, watched: &'a [bool]) -> Source<'a> {
+        Source {
+            code: &self.code,
+            layout: &self.layout,
+            memory: &self.mem,
+            trace: Some((&self.trace, watched)),
+        }
+    }
+
+    /// Which code networks are recorded, one flag per [`Code::networks`] entry.
+    pub fn watched(&self) -> &[bool] {
+        &self.watched
+    }
+}
 
 /// What one cell shows.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -31,8 +101,12 @@ pub struct NetworkView {
 
 /// The code network (see [`super::code::Code::networks`]) of a ladder network.
 pub fn code_network(vm: &Vm, block: usize, network: usize) -> Option<usize> {
-    vm.code()
-        .networks
+    code_network_of(vm.code(), block, network)
+}
+
+/// The code network of a ladder network, in given code.
+pub fn code_network_of(code: &Code, block: usize, network: usize) -> Option<usize> {
+    code.networks
         .iter()
         .position(|n| n.block == block && n.network == network)
 }
@@ -40,7 +114,7 @@ pub fn code_network(vm: &Vm, block: usize, network: usize) -> Option<usize> {
 /// The view of ladder network `network` of block `block`, from the last scan. Call
 /// [`Vm::watch`] for it first; an unwatched network shows its contacts from memory.
 pub fn network_view(
-    vm: &Vm,
+    src: &Source<'_>,
     program: &Program,
     block: usize,
     network: usize,
@@ -54,16 +128,16 @@ pub fn network_view(
     // Contact bits and output ACTs recorded by the VM, by cell.
     let mut recorded: Vec<Vec<Option<bool>>> = vec![vec![None; width + 1]; rows];
     if let (Some(code_net), Some(net)) = (
-        code_network(vm, block, network),
+        code_network_of(src.code, block, network),
         program
             .blocks
             .get(block)
             .and_then(|b| b.networks.get(network)),
     ) {
-        let info = &vm.code().networks[code_net];
-        if vm.is_watched(code_net) {
+        let info = &src.code.networks[code_net];
+        if let Some(trace) = src.watched(code_net) {
             for word in info.start..info.end {
-                let Some((_, _, k)) = vm.code().source[word as usize] else {
+                let Some((_, _, k)) = src.code.source[word as usize] else {
                     continue;
                 };
                 if let Some(Origin::Cell { row, col }) =
@@ -72,7 +146,7 @@ pub fn network_view(
                         .get_mut(row as usize)
                         .and_then(|r| r.get_mut(col as usize))
                 {
-                    *slot = Some(vm.trace()[word as usize] == 1);
+                    *slot = trace.get(word as usize).map(|t| *t == 1);
                 }
             }
         }
@@ -82,7 +156,7 @@ pub fn network_view(
         for (c, cell) in row.cells.iter().enumerate().take(width) {
             if let Cell::Contact { negated, operand } = cell {
                 let bit = recorded[r][c].or_else(|| match operand {
-                    Operand::Addr(a) if a.bit.is_some() => Some(vm.read_bit(*a)),
+                    Operand::Addr(a) if a.bit.is_some() => Some(src.bit(*a)),
                     _ => None,
                 });
                 view.cells[r][c].closed = bit.map(|b| b != *negated);
@@ -136,7 +210,7 @@ pub fn network_view(
                         .iter()
                         .map(|o| match o {
                             Operand::Addr(a) if a.area.element_bytes() > 0 => {
-                                Some(vm.read(*a, u32::from(a.area.element_bytes()).max(1)))
+                                Some(src.value(*a, u32::from(a.area.element_bytes()).max(1)))
                             }
                             _ => None,
                         })
