@@ -362,3 +362,20 @@ fn comments_export_and_import_all_or_nothing() {
     );
     assert_eq!(read(&ldp), before, "nothing changed");
 }
+
+#[test]
+fn the_editor_online_options_refuse_what_cannot_work() {
+    let lathe = here().join("../projects/lathe-988ta.ldp");
+    let lathe = lathe.to_str().unwrap();
+    let r = run(&["--nc", "part.nc", lathe]);
+    assert_eq!(r.code, 2, "{r:?}");
+    assert!(r.stderr.contains("--run"), "{}", r.stderr);
+    let r = run(&["--run", "--nc", "/no/such/part.nc", lathe]);
+    assert_eq!(r.code, 2, "{r:?}");
+    assert!(
+        r.stderr
+            .contains("cannot read the NC program /no/such/part.nc"),
+        "{}",
+        r.stderr
+    );
+}

@@ -20,6 +20,13 @@ use std::path::{Path, PathBuf};
 pub struct Cli {
     /// A project to open in the editor (without a subcommand).
     pub project: Option<PathBuf>,
+    /// Start the editor online: the PLC and the simulated CNC running at real time.
+    #[arg(long)]
+    pub run: bool,
+    /// With --run: load this NC program into the CNC and start it from the operator panel
+    /// (its AUTO key, then Cycle start).
+    #[arg(long, value_name = "FILE", requires = "run")]
+    pub nc: Option<PathBuf>,
     /// What to do.
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -145,6 +152,18 @@ where
                 );
                 return 2;
             }
+            let nc = match cli.nc.as_deref().map(std::fs::read_to_string) {
+                Some(Ok(text)) => Some(text),
+                Some(Err(e)) => {
+                    let _ = writeln!(
+                        err,
+                        "ladder-studio: cannot read the NC program {}: {e}",
+                        cli.nc.as_deref().unwrap_or(Path::new("")).display()
+                    );
+                    return 2;
+                }
+                None => None,
+            };
             // winit aborts without a display; say so instead.
             let display = ["DISPLAY", "WAYLAND_DISPLAY"]
                 .iter()
@@ -156,7 +175,12 @@ where
                 );
                 return 2;
             }
-            crate::gui::run(cli.project).map(|()| 0)
+            let start = crate::gui::Start {
+                project: cli.project,
+                run: cli.run,
+                nc,
+            };
+            crate::gui::run(start).map(|()| 0)
         }
         Some(Command::Check { path }) => check(&path, out),
         Some(Command::ExportIl { path, output }) => export_il(&path, output.as_deref(), out, err),

@@ -14,6 +14,7 @@ pub mod il;
 pub mod machine;
 pub mod model;
 pub mod profile;
+pub mod recorder;
 pub mod runner;
 pub mod sim;
 pub mod vm;

@@ -340,3 +340,25 @@ fn constants_are_read_at_their_width_and_counters_stay_non_negative() {
     assert_eq!(vm.read(a("D1"), 4), 32767);
     assert_eq!(vm.read(a("C1"), 4), 0, "a negative preset loads 0");
 }
+
+#[test]
+fn an_image_offset_names_its_address_again() {
+    let p = project("LEVEL2\nNETWORK\nLD X0000.0\nOUT Y0000.0\n");
+    let vm = Vm::new(&p).unwrap();
+    let layout = vm.layout();
+    for text in [
+        "X0002.3", "Y0001.7", "G0043.0", "R0100.5", "A0000.1", "F0003.6",
+    ] {
+        let addr = a(text);
+        let off = layout.loc(addr, false).off;
+        assert_eq!(layout.address_at(off, addr.bit), Some(addr), "{text}");
+    }
+    let d = a("D0010");
+    let off = layout.loc(d, false).off;
+    assert_eq!(
+        layout.address_at(off + 3, None),
+        Some(d),
+        "any byte of a D value"
+    );
+    assert_eq!(layout.address_at(layout.size + 10, None), None);
+}

@@ -76,6 +76,8 @@ macro_rules! commands {
             Move(Dir),
             /// Grow the selection.
             Extend(Dir),
+            /// The online pace.
+            Speed(ladder_engine::runner::Speed),
         }
 
         impl Command {
@@ -200,7 +202,62 @@ commands! {
     Compile => Compile, NONE F9;
     /// A new subprogram.
     NewSub => NewSub;
+    /// Compile and run the PLC with the simulated CNC (online).
+    Run => Run, COMMAND F9;
+    /// Stop scanning; the machine keeps its state.
+    Stop => StopRun, COMMAND F2;
+    /// Run one 8 ms tick.
+    StepTick => StepTick, NONE F8;
+    /// Run N ticks (N in the online toolbar).
+    StepN => StepN, SHIFT F8;
+    /// Power off and on: PLC and CNC restart, retained data kept.
+    PowerCycle => PowerCycle, ALT F8;
+    /// Leave online mode: the machine is discarded.
+    GoOffline => GoOffline;
+    /// Write the opposite value to the bit at the cursor, once.
+    ToggleBit => ToggleBit, NONE F7;
+    /// Force the bit at the cursor to the opposite value, or release its force.
+    ForceBit => ForceBit, SHIFT F7;
+    /// Release the force of the element at the cursor.
+    Unforce => Unforce, COMMAND F7;
+    /// Release every force.
+    UnforceAll => UnforceAll;
+    /// Which contacts decide the output at the cursor, and when the deciding one last changed.
+    Why => Why, ALT Y;
+    /// Back from a recorded tick to the present.
+    LiveView => LiveView;
+    /// The online panel shown (on/off).
+    ToggleOnline => OnlineWindow;
 }
+
+/// The PLC menu: compiling and the online commands (`None` is a separator).
+pub const PLC_MENU: &[Option<Command>] = &[
+    Some(Command::Compile),
+    None,
+    Some(Command::Run),
+    Some(Command::Stop),
+    Some(Command::StepTick),
+    Some(Command::StepN),
+    Some(Command::PowerCycle),
+    Some(Command::GoOffline),
+    None,
+    Some(Command::ToggleBit),
+    Some(Command::ForceBit),
+    Some(Command::Unforce),
+    Some(Command::UnforceAll),
+    Some(Command::Why),
+    Some(Command::LiveView),
+];
+
+/// The online toolbar.
+pub const ONLINE_TOOLBAR: &[Command] = &[
+    Command::Run,
+    Command::Stop,
+    Command::StepTick,
+    Command::StepN,
+    Command::PowerCycle,
+    Command::GoOffline,
+];
 
 /// The ladder editing commands in the groups the Edit and right-click menus show them.
 pub const EDIT_GROUPS: [&[Command]; 3] = [
@@ -330,6 +387,10 @@ impl Command {
             Command::Extend(Dir::Right) => Msg::ExtendRight,
             Command::Extend(Dir::Up) => Msg::ExtendUp,
             Command::Extend(Dir::Down) => Msg::ExtendDown,
+            Command::Speed(ladder_engine::runner::Speed::RealTime) => Msg::SpeedReal,
+            Command::Speed(ladder_engine::runner::Speed::Times10) => Msg::Speed10,
+            Command::Speed(ladder_engine::runner::Speed::Times100) => Msg::Speed100,
+            Command::Speed(ladder_engine::runner::Speed::Max) => Msg::SpeedMax,
             _ => Msg::Untitled,
         }
     }
@@ -365,9 +426,12 @@ impl Command {
     }
 
     /// Whether its key acts even while a text field or a prompt has the keyboard: compiling
-    /// never changes what is being typed.
+    /// and running never change what is being typed.
     pub fn global(self) -> bool {
-        self == Command::Compile
+        matches!(
+            self,
+            Command::Compile | Command::Run | Command::Stop | Command::StepTick | Command::StepN
+        )
     }
 
     /// Every command that has a key, the most specific combination first (Shift+F1 before

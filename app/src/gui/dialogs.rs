@@ -22,13 +22,18 @@ pub enum DialogKind {
     ExportComments,
     /// Pick a comments CSV to import.
     ImportComments,
+    /// Pick where to write the signal trace (CSV, the `sim --trace` format).
+    ExportTrace,
 }
 
 impl DialogKind {
     fn saves(self) -> bool {
         matches!(
             self,
-            DialogKind::SaveProjectAs | DialogKind::ExportIl | DialogKind::ExportComments
+            DialogKind::SaveProjectAs
+                | DialogKind::ExportIl
+                | DialogKind::ExportComments
+                | DialogKind::ExportTrace
         )
     }
 
@@ -36,7 +41,9 @@ impl DialogKind {
         match self {
             DialogKind::OpenProject | DialogKind::SaveProjectAs => ("Ladder project", &["ldp"]),
             DialogKind::ExportIl => ("Instruction list", &["il", "txt"]),
-            DialogKind::ExportComments | DialogKind::ImportComments => ("CSV", &["csv"]),
+            DialogKind::ExportComments | DialogKind::ImportComments | DialogKind::ExportTrace => {
+                ("CSV", &["csv"])
+            }
         }
     }
 }

@@ -53,7 +53,23 @@ impl LadderApp {
             | Command::ToggleOutput
             | Command::ToggleToolbar
             | Command::ToggleStatus => true,
-            c if c.edits_ladder() => self.in_ladder(),
+            Command::Run => {
+                doc.is_some() && !self.online.session.as_ref().is_some_and(|s| s.is_running())
+            }
+            Command::Stop => self.online.session.as_ref().is_some_and(|s| s.is_running()),
+            Command::StepTick | Command::StepN => {
+                doc.is_some() && !self.online.session.as_ref().is_some_and(|s| s.is_running())
+            }
+            Command::PowerCycle | Command::GoOffline | Command::UnforceAll => self.online(),
+            Command::ToggleBit | Command::ForceBit | Command::Unforce => {
+                self.online() && self.in_ladder() && !self.scrubbing()
+            }
+            Command::Why => self.online() && self.in_ladder(),
+            Command::LiveView => self.scrubbing(),
+            Command::Speed(_) | Command::ToggleOnline => true,
+            Command::Move(_) | Command::Extend(_) => self.in_ladder(),
+            // A recorded past is read-only: no edits while the view shows one.
+            c if c.edits_ladder() => self.in_ladder() && !self.scrubbing(),
             _ => doc.is_some(),
         }
     }
@@ -69,6 +85,8 @@ impl LadderApp {
             Command::ToggleOutput => s.show_output,
             Command::ToggleToolbar => s.show_toolbar,
             Command::ToggleStatus => s.show_status,
+            Command::ToggleOnline => s.show_online,
+            Command::Speed(sp) => self.online.speed == sp,
             Command::Display(m) => s.display == m,
             Command::Language(l) => s.lang == l,
             _ => return None,
@@ -239,6 +257,20 @@ impl LadderApp {
             Command::ZoomIn => self.settings.step_zoom(true),
             Command::ZoomOut => self.settings.step_zoom(false),
             Command::Compile => self.compile(),
+            Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
+            Command::Run
+            | Command::Stop
+            | Command::StepTick
+            | Command::StepN
+            | Command::PowerCycle
+            | Command::GoOffline
+            | Command::ToggleBit
+            | Command::ForceBit
+            | Command::Unforce
+            | Command::UnforceAll
+            | Command::Why
+            | Command::LiveView
+            | Command::Speed(_) => self.execute_online(c),
             Command::NewSub => self.open_prompt(PlaceKind::NewSub, String::new()),
             Command::ViewCalls(n) => self.view_calls(n),
             Command::RenameSub(n) => {

@@ -545,7 +545,9 @@ impl LadderApp {
             return;
         };
         if let Change::Table(t) = &step {
-            self.view = self.tables.show_change(doc.project(), t);
+            if let Some(view) = self.tables.show_change(doc.project(), t) {
+                self.view = view;
+            }
             return;
         }
         match super::place::place_of(&step, doc.project()) {

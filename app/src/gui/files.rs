@@ -86,7 +86,7 @@ fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
 }
 
 impl LadderApp {
-    fn say(&mut self, text: String, error: bool) {
+    pub(crate) fn say(&mut self, text: String, error: bool) {
         self.output.push(OutputLine {
             text,
             error,
@@ -132,6 +132,8 @@ impl LadderApp {
 
     /// Back to level 2 at its first cell, with nothing pending from the old project.
     pub fn reset_view(&mut self) {
+        // Another project (or none): the old one's machine stops with it.
+        self.go_offline();
         self.view = View::Block(1);
         self.prompt = None;
         self.function_dialog = None;
@@ -159,7 +161,7 @@ impl LadderApp {
             DialogKind::OpenProject | DialogKind::ImportComments => None,
             DialogKind::SaveProjectAs => Some("ldp"),
             DialogKind::ExportIl => Some("il"),
-            DialogKind::ExportComments => Some("csv"),
+            DialogKind::ExportComments | DialogKind::ExportTrace => Some("csv"),
         };
         let dir = doc.and_then(|d| d.path.as_ref()).and_then(|p| p.parent());
         let suggested = ext.map(|e| {
@@ -194,6 +196,7 @@ impl LadderApp {
             DialogKind::ExportIl => self.export_il(&path),
             DialogKind::ExportComments => self.export_comments(&path),
             DialogKind::ImportComments => self.import_comments(&path),
+            DialogKind::ExportTrace => self.export_trace(&path),
         }
     }
 
@@ -320,6 +323,21 @@ impl LadderApp {
                 self.files.after_save = None;
                 self.say(super::errors::file_error(&e, lang), true);
             }
+        }
+    }
+
+    /// Writes the signal trace taken when Export CSV was pressed.
+    pub fn export_trace(&mut self, path: &Path) {
+        let lang = self.settings.lang;
+        let Some(text) = self.online.trace.csv.take() else {
+            return;
+        };
+        match write_atomic(path, &text) {
+            Ok(()) => self.say(
+                format!("{} {}", Msg::Written.text(lang), path.display()),
+                false,
+            ),
+            Err(e) => self.say(format!("{}: {e}", path.display()), true),
         }
     }
 

@@ -19,7 +19,7 @@ impl LadderApp {
     fn entry_text(&mut self, ui: &mut egui::Ui, c: Command, text: String) {
         let enabled = self.enabled(c);
         let clicked = match (c, self.checked(c)) {
-            (Command::Display(_) | Command::Language(_), Some(on)) => ui
+            (Command::Display(_) | Command::Language(_) | Command::Speed(_), Some(on)) => ui
                 .add_enabled(enabled, egui::Button::selectable(on, text))
                 .clicked(),
             (_, Some(on)) => {
@@ -37,7 +37,7 @@ impl LadderApp {
         };
         if clicked {
             self.ask(c);
-            if self.checked(c).is_none() || matches!(c, Command::Language(_)) {
+            if self.checked(c).is_none() || matches!(c, Command::Language(_) | Command::Speed(_)) {
                 ui.close();
             }
         }
@@ -50,7 +50,20 @@ impl LadderApp {
             ui.menu_button(Msg::File.text(lang), |ui| self.file_menu_ui(ui));
             ui.menu_button(Msg::Edit.text(lang), |ui| self.edit_menu_ui(ui));
             ui.menu_button(Msg::View.text(lang), |ui| self.view_menu_ui(ui));
-            ui.menu_button(Msg::Plc.text(lang), |ui| self.entry(ui, Command::Compile));
+            ui.menu_button(Msg::Plc.text(lang), |ui| {
+                for c in super::command::PLC_MENU {
+                    match c {
+                        Some(c) => self.entry(ui, *c),
+                        None => {
+                            ui.separator();
+                        }
+                    }
+                }
+                ui.separator();
+                for s in ladder_engine::runner::Speed::ALL {
+                    self.entry(ui, Command::Speed(s));
+                }
+            });
             ui.menu_button(Msg::Tools.text(lang), |ui| {
                 for v in REFERENCE_VIEWS {
                     let c = Command::ShowView(v);
@@ -198,6 +211,12 @@ impl LadderApp {
             for c in LADDER_TOOLBAR {
                 button(self, ui, *c);
             }
+        });
+        ui.horizontal(|ui| {
+            for c in super::command::ONLINE_TOOLBAR {
+                button(self, ui, *c);
+            }
+            self.online_toolbar_ui(ui);
         });
     }
 

@@ -13,6 +13,7 @@ pub mod function_dialog;
 pub mod i18n;
 pub mod ladder_view;
 pub mod menus;
+pub mod online;
 pub mod place;
 pub mod pointer;
 pub mod selection;
@@ -82,6 +83,8 @@ pub struct LadderApp {
     /// When the project last changed, on the tables' draft clock (undo takes back the later
     /// of a change and a draft).
     pub last_change: u64,
+    /// Online: the machine running behind the editor, and the online views' state.
+    pub online: online::OnlineState,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -106,6 +109,7 @@ impl LadderApp {
             ctx: None,
             pending: Vec::new(),
             last_change: 0,
+            online: Default::default(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -352,7 +356,6 @@ impl LadderApp {
             ui.label(Msg::NoProject.text(lang));
             return;
         };
-        let project = doc.project();
         match self.view {
             View::Block(b) => {
                 let cursor = (self.edit.cursor.block == b).then_some((
@@ -364,22 +367,16 @@ impl LadderApp {
                     .edit
                     .selection
                     .and_then(|(sb, s)| (sb == b).then_some(s));
-                let events = ladder_view::block_ui(
-                    ui,
-                    project,
-                    b,
-                    &ladder_view::ViewOptions {
-                        zoom: self.settings.zoom,
-                        mode: self.settings.display,
-                        comments: self.settings.show_comments,
-                        titles: self.settings.show_titles,
-                        cursor,
-                        selection,
-                        document: doc.serial,
-                    },
-                    &mut self.edit.jump_to,
-                    &mut self.edit.geometry,
-                );
+                let opts = ladder_view::ViewOptions {
+                    zoom: self.settings.zoom,
+                    mode: self.settings.display,
+                    comments: self.settings.show_comments,
+                    titles: self.settings.show_titles,
+                    cursor,
+                    selection,
+                    document: doc.serial,
+                };
+                let events = self.live_block_ui(ui, b, &opts);
                 self.pointer_events(b, events);
             }
             View::RefIndex | View::RefBits | View::RefBytes => self.xref_view_ui(ui),
@@ -476,6 +473,7 @@ impl LadderApp {
                 ui.separator();
                 ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
+            self.online_status_ui(ui);
             ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
         });
@@ -491,6 +489,7 @@ impl eframe::App for LadderApp {
         self.dropped_files(&ctx);
         self.close_requested(&ctx);
         self.autosave_tick();
+        self.online_frame();
         if self.files.question.is_some() {
             self.question_ui(&ctx);
         }
@@ -504,6 +503,9 @@ impl eframe::App for LadderApp {
         }
         if self.settings.show_status {
             egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
+        }
+        if self.online() {
+            egui::Panel::bottom("timeline").show(ui, |ui| self.timeline_ui(ui));
         }
         if self.settings.show_output {
             egui::Panel::bottom("output")
@@ -529,6 +531,18 @@ impl eframe::App for LadderApp {
                 self.ask(c);
             }
         }
+        // The online panel takes its room only while online: offline the tables and the
+        // ladder keep the whole width.
+        if self.settings.show_online && self.online() {
+            // At most half the window: the ladder stays the main view; a wide page scrolls.
+            let max = (ui.available_width() * 0.5).max(260.0);
+            egui::Panel::right("online")
+                .resizable(true)
+                .default_size(600.0_f32.min(max))
+                .min_size(240.0)
+                .max_size(max)
+                .show(ui, |ui| self.online_panel_ui(ui));
+        }
         egui::CentralPanel::default().show(ui, |ui| {
             self.tabs_ui(ui);
             self.main_ui(ui)
@@ -543,10 +557,26 @@ impl eframe::App for LadderApp {
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
         eframe::set_value(storage, eframe::APP_KEY, &self.settings);
     }
+
+    fn on_exit(&mut self) {
+        // The machine thread ends with the window.
+        self.go_offline();
+    }
+}
+
+/// How the editor starts (the command line's options).
+#[derive(Clone, Debug, Default)]
+pub struct Start {
+    /// The project to open.
+    pub project: Option<PathBuf>,
+    /// Go online and run at once.
+    pub run: bool,
+    /// An NC program to load and start from the operator panel.
+    pub nc: Option<String>,
 }
 
 /// Opens the editor window (blocks until it closes).
-pub fn run(path: Option<PathBuf>) -> anyhow::Result<()> {
+pub fn run(start: Start) -> anyhow::Result<()> {
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_title("Ladder Studio")
@@ -556,7 +586,13 @@ pub fn run(path: Option<PathBuf>) -> anyhow::Result<()> {
     eframe::run_native(
         APP_ID,
         options,
-        Box::new(move |cc| Ok(Box::new(LadderApp::from_creation(cc, path)))),
+        Box::new(move |cc| {
+            let mut app = LadderApp::from_creation(cc, start.project.clone());
+            if start.run {
+                app.start_running(start.nc.clone());
+            }
+            Ok(Box::new(app))
+        }),
     )
     .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
 }

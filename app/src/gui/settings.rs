@@ -17,6 +17,77 @@ pub enum DisplayMode {
     Both,
 }
 
+/// How the online monitor writes a value.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum NumFormat {
+    /// Signed decimal.
+    #[default]
+    Dec,
+    /// Hexadecimal (`0x…`, two digits per byte).
+    Hex,
+    /// Binary, grouped by four.
+    Bin,
+    /// A 4-byte value as a real (D_FLOAT style).
+    Real,
+    /// 0/1 (bits).
+    Bit,
+}
+
+impl NumFormat {
+    /// Every format, in menu order.
+    pub const ALL: [NumFormat; 5] = [
+        NumFormat::Dec,
+        NumFormat::Hex,
+        NumFormat::Bin,
+        NumFormat::Real,
+        NumFormat::Bit,
+    ];
+
+    /// Its short name in lists (the same in both languages).
+    pub fn name(self) -> &'static str {
+        match self {
+            NumFormat::Dec => "DEC",
+            NumFormat::Hex => "HEX",
+            NumFormat::Bin => "BIN",
+            NumFormat::Real => "REAL",
+            NumFormat::Bit => "BIT",
+        }
+    }
+
+    /// `value` read at `bytes` wide, written in this format.
+    pub fn show(self, value: i64, bytes: u32) -> String {
+        let bits = 8 * bytes.clamp(1, 4);
+        let raw = (value as u64) & ((1u64 << bits) - 1);
+        match self {
+            NumFormat::Dec => value.to_string(),
+            NumFormat::Hex => format!("0x{raw:0w$X}", w = (bits / 4) as usize),
+            NumFormat::Bin => {
+                let digits = format!("{raw:0w$b}", w = bits as usize);
+                let groups: Vec<&str> = digits
+                    .as_bytes()
+                    .chunks(4)
+                    .map(|c| std::str::from_utf8(c).unwrap_or(""))
+                    .collect();
+                groups.join("_")
+            }
+            NumFormat::Real if bytes == 4 => format!("{}", f32::from_bits(raw as u32)),
+            NumFormat::Real => value.to_string(),
+            NumFormat::Bit => u8::from(value != 0).to_string(),
+        }
+    }
+}
+
+/// A watch-table row: an address or symbol as the user typed it, and its format.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct WatchRow {
+    /// `X0002.3`, `D0010:2`, a symbol or `cnc.KEY`.
+    pub text: String,
+    /// How its value is written.
+    pub format: NumFormat,
+    /// Whether the signal trace charts it.
+    pub traced: bool,
+}
+
 /// The zoom steps of the ladder view, in percent.
 pub const ZOOMS: [u16; 5] = [75, 100, 125, 150, 175];
 
@@ -47,6 +118,17 @@ pub struct Settings {
     pub show_tree: bool,
     /// Whether the status bar is shown.
     pub show_status: bool,
+    /// Whether the online panel (machine, CNC, watch, forces, trace, alarms) is shown.
+    pub show_online: bool,
+    /// How function boxes show their live values.
+    pub live_format: NumFormat,
+    /// Ticks of "step N".
+    pub step_ticks: u64,
+    /// Watch tables by project file. A watch list is how one user looks at a machine, like
+    /// the open tabs, not part of the program: it stays with the user's settings, so sharing
+    /// a project never imposes one engineer's watch list on another (and never changes the
+    /// project's checksum).
+    pub watches: std::collections::BTreeMap<PathBuf, Vec<WatchRow>>,
 }
 
 impl Default for Settings {
@@ -58,6 +140,10 @@ impl Default for Settings {
             display: DisplayMode::Address,
             show_comments: true,
             show_titles: true,
+            show_online: true,
+            live_format: NumFormat::Dec,
+            step_ticks: 10,
+            watches: Default::default(),
             show_toolbar: true,
             show_output: true,
             show_tree: true,

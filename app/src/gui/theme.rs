@@ -30,6 +30,21 @@ pub const CURSOR: Color32 = Color32::from_rgb(0x20, 0x60, 0xff);
 /// The fill of selected cells, rows and networks.
 pub const SELECTED: Color32 = Color32::from_rgb(0xcc, 0xe0, 0xff);
 
+/// Online: an energised wire, lead or rail.
+pub const POWER: Color32 = Color32::from_rgb(0x00, 0xa0, 0x30);
+/// Online: the inside of a closed contact or an energised coil.
+pub const POWER_FILL: Color32 = Color32::from_rgb(0x40, 0xd0, 0x60);
+/// Online: the inside of a function box whose ACT is on.
+pub const POWER_BOX: Color32 = Color32::from_rgb(0xdc, 0xf5, 0xe0);
+/// Online: a box operand's live value.
+pub const LIVE_VALUE: Color32 = Color32::from_rgb(0x00, 0x50, 0xa0);
+/// Online: the mark of a forced element.
+pub const FORCED: Color32 = Color32::from_rgb(0xc0, 0x00, 0xc0);
+/// Online: the frame "why?" draws round a deciding contact.
+pub const WHY: Color32 = Color32::from_rgb(0xff, 0x8c, 0x00);
+/// Online: the paper while the view shows a recorded past tick.
+pub const PAPER_PAST: Color32 = Color32::from_rgb(0xf6, 0xf2, 0xe6);
+
 /// Operand colours (manual §3.4.3.3): a symbol mapped to an address is blue.
 pub const MAPPED: Color32 = Color32::from_rgb(0x1f, 0x4f, 0xd0);
 /// An undefined symbol is red.
@@ -37,3 +52,20 @@ pub const UNDEFINED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x20);
 /// An operand of the wrong type for its place (a byte address on a contact, an area the
 /// instruction does not take) is orange.
 pub const WRONG_TYPE: Color32 = Color32::from_rgb(0xe0, 0x80, 0x00);
+
+/// A lit lamp of the operator panel, and the fill of a key whose lamp is lit.
+pub const PANEL_LIT: Color32 = Color32::from_rgb(0xff, 0xc0, 0x30);
+/// An unlit lamp of the operator panel.
+pub const PANEL_DARK: Color32 = Color32::from_gray(0x60);
+/// The rim of a panel lamp, so an unlit lamp still shows on a dark theme.
+pub const PANEL_RIM: Color32 = Color32::from_gray(0x20);
+/// A CNC status lamp that is on (MF, SF, TF, FIN, DEN).
+pub const CNC_LAMP_ON: Color32 = Color32::from_rgb(0x20, 0xc0, 0x40);
+/// The background of the NC block being executed in the program listing.
+pub const CNC_CURRENT_LINE: Color32 = Color32::from_rgb(0xff, 0xe8, 0x80);
+/// A bit's lane in the signal trace.
+pub const TRACE_BIT: Color32 = Color32::from_rgb(0x10, 0xa0, 0x40);
+/// A value's lane in the signal trace.
+pub const TRACE_VALUE: Color32 = Color32::from_rgb(0x30, 0x70, 0xe0);
+/// The cursor line of the signal trace.
+pub const TRACE_CURSOR: Color32 = Color32::from_rgb(0xe0, 0x30, 0x30);

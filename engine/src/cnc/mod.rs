@@ -14,6 +14,7 @@
 //! return, overtravel), `plc_axes` (AXCTL groups), `windr` (the window functions), `command`
 //! (what scripts and the editor do to a running CNC) and `keys` (the values they read back).
 
+pub mod alarm_text;
 mod auto;
 pub mod command;
 pub mod data;

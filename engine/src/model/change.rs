@@ -5,6 +5,7 @@
 //! construction, whatever the table's own rules did to the entered value.
 
 use super::edit::{Edit, EditError};
+use super::panel::Panel;
 use super::project::Project;
 use super::tables::{AddressRow, DataTables, MCodeRow, MessageTable, SymbolTable, VersionInfo};
 
@@ -25,6 +26,8 @@ pub enum TableEdit {
     MCodes(Vec<MCodeRow>),
     /// The version information.
     Version(Box<VersionInfo>),
+    /// The operator panel (an empty one puts the profile's preset back).
+    Panel(Box<Panel>),
 }
 
 /// One undoable change of a project.
@@ -67,6 +70,7 @@ impl Project {
             TableEdit::Permissions(t) => TableEdit::Permissions(replace(&mut self.permissions, t)),
             TableEdit::MCodes(t) => TableEdit::MCodes(replace(&mut self.m_codes, t)),
             TableEdit::Version(t) => TableEdit::Version(Box::new(replace(&mut self.version, *t))),
+            TableEdit::Panel(t) => TableEdit::Panel(Box::new(replace(&mut self.panel, *t))),
         }
     }
 
@@ -231,6 +235,7 @@ impl Project {
                 TableEdit::Permissions(t) => *t == self.permissions,
                 TableEdit::MCodes(t) => *t == self.m_codes,
                 TableEdit::Version(t) => **t == self.version,
+                TableEdit::Panel(t) => **t == self.panel,
             },
         }
     }

@@ -7,6 +7,7 @@ pub mod edit;
 pub mod ladder;
 pub mod network;
 pub mod operand;
+pub mod panel;
 pub mod plan;
 pub mod project;
 pub mod region;
@@ -20,6 +21,7 @@ pub use edit::{CellRef, Edit, EditError};
 pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH};
 pub use network::{Network, NetworkId, Row};
 pub use operand::{Operand, OperandError, is_symbol_name};
+pub use panel::{Panel, PanelError, PanelItem, PanelKind};
 pub use project::{Project, SymbolIndex};
 pub use tables::{
     AddressRow, Comments, DataRow, DataTables, MCodeRow, Message, MessageTable, PasswordHash,

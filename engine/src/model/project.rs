@@ -1,6 +1,7 @@
 //! The project: target profile, ladder, and every table of manual §3.4.
 
 use super::ladder::Ladder;
+use super::panel::Panel;
 use super::tables::{
     AddressRow, BLOCK_SYMBOLS, DataTables, MCodeRow, MessageTable, Symbol, SymbolTable, VersionInfo,
 };
@@ -39,6 +40,10 @@ pub struct Project {
     /// Version information.
     #[serde(default)]
     pub version: VersionInfo,
+    /// The operator panel of the online monitor; empty means the profile's preset, and is
+    /// not written, so a project that never customised it saves as it did before.
+    #[serde(default, skip_serializing_if = "Panel::is_empty")]
+    pub panel: Panel,
 }
 
 impl Default for Project {
@@ -57,6 +62,7 @@ impl Default for Project {
             permissions: Vec::new(),
             m_codes: Vec::new(),
             version: VersionInfo::default(),
+            panel: Panel::default(),
         }
     }
 }
@@ -129,6 +135,28 @@ impl Project {
                     .find(|s| s.name == name)
                     .map(|s| s.address)
             })
+    }
+
+    /// The comment of an address in a language (`zh`, `en`), else in any language it has.
+    pub fn comment_of(&self, address: Address, lang: &str) -> Option<&str> {
+        let row = self
+            .symbols()
+            .find(|s| s.address == address && !s.comments.is_empty())?;
+        row.comments
+            .get(lang)
+            .or_else(|| row.comments.values().next())
+            .map(String::as_str)
+            .filter(|c| !c.is_empty())
+    }
+
+    /// The operator panel to show: the project's own, or its profile's preset when it has
+    /// none.
+    pub fn operator_panel(&self) -> std::borrow::Cow<'_, Panel> {
+        if self.panel.is_empty() {
+            std::borrow::Cow::Owned(Panel::preset(self.profile))
+        } else {
+            std::borrow::Cow::Borrowed(&self.panel)
+        }
     }
 
     /// The symbol name of an address, if it has one.

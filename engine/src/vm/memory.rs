@@ -83,6 +83,24 @@ impl Layout {
         }
     }
 
+    /// The address whose bytes include image offset `off` (live areas only, not level 2's
+    /// latched copies), with `bit` when given and the area is 1-byte; for a 4-byte area,
+    /// the address whose value holds the byte. The inverse of [`Layout::loc`], for naming
+    /// forced bytes and recorded changes.
+    pub fn address_at(&self, off: u32, bit: Option<u8>) -> Option<Address> {
+        Area::ALL.into_iter().find_map(|area| {
+            let i = area.index();
+            let bytes = u32::from(area.element_bytes());
+            let start = self.base[i];
+            let end = start + self.count[i] * bytes;
+            (start..end).contains(&off).then(|| Address {
+                area,
+                number: self.first[i] + ((off - start) / bytes) as u16,
+                bit: if bytes == 1 { bit } else { None },
+            })
+        })
+    }
+
     /// Byte range of a whole area in the live image.
     pub fn area_range(&self, area: Area) -> std::ops::Range<usize> {
         let i = area.index();

@@ -2,14 +2,22 @@
 //! and function boxes. Only the networks inside the visible part are laid out and painted, so
 //! a 5000-step program scrolls as smoothly as a small one.
 
-use super::settings::DisplayMode;
+mod network;
+
+pub use network::{LiveNetwork, address_of};
+use network::{Style, cursor_ui, network_ui, selection_ui};
+
+use super::settings::{DisplayMode, NumFormat};
 use super::theme;
-use egui::{Align2, Color32, FontId, Pos2, Rect, Sense, Stroke, StrokeKind, pos2, vec2};
+use egui::{Color32, Pos2, Rect, Sense, Stroke, pos2, vec2};
+use ladder_engine::Address;
 use ladder_engine::model::region::Region as Selection;
 use ladder_engine::model::{Cell, Network, Operand, Project};
+use ladder_engine::vm::monitor::NetworkView;
+use std::ops::Range;
 
 pub use super::theme::WRONG_TYPE;
-use super::theme::{MAPPED, SELECTED, UNDEFINED};
+use super::theme::{MAPPED, UNDEFINED};
 
 /// Where an operand stands, for its type check.
 #[derive(Clone, Copy, Debug)]
@@ -135,187 +143,6 @@ fn plain_operand_text(project: &Project, o: &Operand, mode: DisplayMode) -> (Str
             }
         }
         other => (other.to_string(), theme::INK),
-    }
-}
-
-/// How networks are drawn.
-struct Style {
-    m: Metrics,
-    mode: DisplayMode,
-    comments: bool,
-    titles: bool,
-}
-
-/// Draws one network with its top-left at `origin`.
-fn network_ui(
-    painter: &egui::Painter,
-    project: &Project,
-    net: &Network,
-    index: usize,
-    origin: Pos2,
-    style: &Style,
-) {
-    let Style {
-        m,
-        mode,
-        comments,
-        titles,
-    } = style;
-    let (mode, comments) = (*mode, *comments);
-    let width = project.ladder.width;
-    let wire = Stroke::new(1.5, theme::WIRE);
-    let font = FontId::proportional(m.font);
-    let title = if net.title.is_empty() || !titles {
-        format!("N{:04}", index + 1)
-    } else {
-        format!("N{:04}  {}", index + 1, net.title)
-    };
-    painter.text(
-        origin + vec2(4.0, 2.0),
-        Align2::LEFT_TOP,
-        title,
-        FontId::proportional(m.font * 1.1),
-        theme::TITLE,
-    );
-    let mut y = origin.y + m.header;
-    if comments && !net.comment.is_empty() {
-        painter.text(
-            pos2(origin.x + 4.0, y),
-            Align2::LEFT_TOP,
-            net.comment.lines().next().unwrap_or(""),
-            font.clone(),
-            theme::COMMENT,
-        );
-        y += m.header;
-    }
-    let rail_x = origin.x + m.margin;
-    let col_x = |c: usize| rail_x + c as f32 * m.cell;
-    let right_rail = col_x(width) + m.output + 8.0;
-    let top = y;
-    let mut row_tops = Vec::with_capacity(net.rows.len());
-    for row in &net.rows {
-        row_tops.push(y);
-        y += m.row_height(&row.cells);
-    }
-    // Rails.
-    painter.line_segment(
-        [pos2(rail_x, top), pos2(rail_x, y)],
-        Stroke::new(3.0, theme::RAIL),
-    );
-    painter.line_segment(
-        [pos2(right_rail, top), pos2(right_rail, y)],
-        Stroke::new(3.0, theme::RAIL),
-    );
-    for (r, row) in net.rows.iter().enumerate() {
-        let mid = row_tops[r] + m.row * 0.5;
-        for (c, cell) in row.cells.iter().enumerate() {
-            let x0 = col_x(c);
-            let x1 = if c == width {
-                x0 + m.output
-            } else {
-                x0 + m.cell
-            };
-            match cell {
-                Cell::Empty => {}
-                Cell::Wire => {
-                    painter.line_segment([pos2(x0, mid), pos2(x1, mid)], wire);
-                }
-                Cell::Contact { negated, operand } => {
-                    let cx = (x0 + x1) * 0.5;
-                    let gap = m.cell * 0.12;
-                    painter.line_segment([pos2(x0, mid), pos2(cx - gap, mid)], wire);
-                    painter.line_segment([pos2(cx + gap, mid), pos2(x1, mid)], wire);
-                    let h = m.row * 0.22;
-                    painter.line_segment([pos2(cx - gap, mid - h), pos2(cx - gap, mid + h)], wire);
-                    painter.line_segment([pos2(cx + gap, mid - h), pos2(cx + gap, mid + h)], wire);
-                    if *negated {
-                        painter.line_segment(
-                            [pos2(cx - gap * 1.4, mid + h), pos2(cx + gap * 1.4, mid - h)],
-                            wire,
-                        );
-                    }
-                    let (text, color) = operand_text(
-                        project,
-                        operand,
-                        mode,
-                        Place::Bit,
-                        std::slice::from_ref(operand),
-                    );
-                    painter.text(
-                        pos2(cx, mid - h - 2.0),
-                        Align2::CENTER_BOTTOM,
-                        text,
-                        font.clone(),
-                        color,
-                    );
-                }
-                Cell::Coil { negated, operand } => {
-                    let cx = x1 - m.output * 0.3;
-                    let rad = m.row * 0.2;
-                    painter.line_segment([pos2(x0, mid), pos2(cx - rad, mid)], wire);
-                    painter.circle_stroke(pos2(cx, mid), rad, wire);
-                    if *negated {
-                        painter.line_segment(
-                            [
-                                pos2(cx - rad * 0.7, mid + rad * 0.7),
-                                pos2(cx + rad * 0.7, mid - rad * 0.7),
-                            ],
-                            wire,
-                        );
-                    }
-                    painter.line_segment([pos2(cx + rad, mid), pos2(right_rail, mid)], wire);
-                    let (text, color) = operand_text(
-                        project,
-                        operand,
-                        mode,
-                        Place::Bit,
-                        std::slice::from_ref(operand),
-                    );
-                    painter.text(
-                        pos2(cx, mid - rad - 2.0),
-                        Align2::CENTER_BOTTOM,
-                        text,
-                        font.clone(),
-                        color,
-                    );
-                }
-                Cell::Box { op, operands } => {
-                    let h = m.row_height(&row.cells) - 8.0;
-                    let rect = Rect::from_min_size(
-                        pos2(x0 + 6.0, row_tops[r] + 4.0),
-                        vec2(m.output - 12.0, h),
-                    );
-                    painter.line_segment([pos2(x0, mid), pos2(rect.left(), mid)], wire);
-                    painter.line_segment([pos2(rect.right(), mid), pos2(right_rail, mid)], wire);
-                    painter.rect_stroke(rect, 2.0, wire, StrokeKind::Middle);
-                    painter.text(
-                        rect.center_top() + vec2(0.0, 2.0),
-                        Align2::CENTER_TOP,
-                        op.name(),
-                        FontId::proportional(m.font * 1.1),
-                        theme::INK,
-                    );
-                    for (i, o) in operands.iter().enumerate() {
-                        let name = op.spec().operand(i).map_or("", |s| s.name);
-                        let (text, color) =
-                            operand_text(project, o, mode, Place::Box(*op, i), operands);
-                        let p = rect.left_top() + vec2(4.0, m.line * (i as f32 + 1.0) + 2.0);
-                        painter.text(
-                            p,
-                            Align2::LEFT_TOP,
-                            format!("{name} {text}"),
-                            font.clone(),
-                            color,
-                        );
-                    }
-                }
-            }
-            // A vertical link at the left edge of this column, down to the next row.
-            if c > 0 && row.links.get(c).copied().unwrap_or(false) && r + 1 < net.rows.len() {
-                let next_mid = row_tops[r + 1] + m.row * 0.5;
-                painter.line_segment([pos2(x0, mid), pos2(x0, next_mid)], wire);
-            }
-        }
     }
 }
 
@@ -453,6 +280,24 @@ pub struct ViewEvents {
     pub secondary: Option<Hit>,
     /// The view's response, for its context menu.
     pub response: Option<egui::Response>,
+    /// The networks drawn (the online monitor records only these).
+    pub visible: Range<usize>,
+    /// What the pointer rests on.
+    pub hover: Option<Hit>,
+}
+
+/// What the online monitor puts on the ladder view.
+pub struct Live<'a> {
+    /// The view of network `i` of the block from the last scan (or a recorded tick).
+    pub network: &'a dyn Fn(usize) -> Option<NetworkView>,
+    /// How box values are written.
+    pub format: NumFormat,
+    /// Whether an address is forced.
+    pub forced: &'a dyn Fn(Address) -> bool,
+    /// Cells marked by "why?": (network, row, column).
+    pub marked: &'a [(usize, usize, usize)],
+    /// The view shows a recorded past tick, not the present (the paper is tinted).
+    pub past: bool,
 }
 
 /// What a point in network `net` (drawn at `origin`) falls on.
@@ -498,6 +343,7 @@ pub fn block_ui(
     opts: &ViewOptions,
     jump_to: &mut Option<usize>,
     geometry: &mut Geometry,
+    live: Option<&Live<'_>>,
 ) -> ViewEvents {
     let Some(b) = project.ladder.blocks.get(block) else {
         return ViewEvents::default();
@@ -558,6 +404,9 @@ pub fn block_ui(
             if response.secondary_clicked() {
                 events.secondary = pointer.and_then(hit);
             }
+            if response.hovered() {
+                events.hover = ui.input(|i| i.pointer.hover_pos()).and_then(hit);
+            }
             if response.drag_started() {
                 events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(hit);
             }
@@ -571,7 +420,11 @@ pub fn block_ui(
             painter.rect_filled(
                 rect.intersect(viewport.translate(rect.min.to_vec2())),
                 0.0,
-                theme::PAPER,
+                if live.is_some_and(|l| l.past) {
+                    theme::PAPER_PAST
+                } else {
+                    theme::PAPER
+                },
             );
             if let Some(target) = jump_to.take()
                 && let Some(p) = placed.get(target)
@@ -581,10 +434,13 @@ pub fn block_ui(
             }
             // Only the networks that intersect the visible part.
             let first = placed.partition_point(|p| p.top + p.height < viewport.min.y);
+            events.visible = first..first;
+            let mut marks = Vec::new();
             for (i, p) in placed.iter().enumerate().skip(first) {
                 if p.top > viewport.max.y {
                     break;
                 }
+                events.visible.end = i + 1;
                 let origin = rect.min + vec2(0.0, p.top);
                 if let Some(sel) = opts.selection {
                     selection_ui(
@@ -598,7 +454,29 @@ pub fn block_ui(
                         &style,
                     );
                 }
-                network_ui(&painter, project, &b.networks[i], i, origin, &style);
+                let view = live.and_then(|l| (l.network)(i));
+                let shown = match (live, &view) {
+                    (Some(l), Some(v)) => {
+                        marks.clear();
+                        marks.extend(l.marked.iter().filter(|m| m.0 == i).map(|m| (m.1, m.2)));
+                        Some(LiveNetwork {
+                            view: v,
+                            format: l.format,
+                            forced: l.forced,
+                            marked: &marks,
+                        })
+                    }
+                    _ => None,
+                };
+                network_ui(
+                    &painter,
+                    project,
+                    &b.networks[i],
+                    i,
+                    origin,
+                    &style,
+                    shown.as_ref(),
+                );
                 if let Some((cn, cr, cc)) = opts.cursor
                     && cn == i
                 {
@@ -622,76 +500,6 @@ pub fn block_ui(
             events
         })
         .inner
-}
-
-/// Fills what is selected in network `index`.
-#[allow(clippy::too_many_arguments)] // One painter call site; a struct would only rename them.
-fn selection_ui(
-    painter: &egui::Painter,
-    net: &Network,
-    index: usize,
-    origin: Pos2,
-    height: f32,
-    width: f32,
-    sel: &Selection,
-    style: &Style,
-) {
-    let m = &style.m;
-    if sel.covers_network(index) {
-        painter.rect_filled(
-            Rect::from_min_size(origin, vec2(width, height - 2.0)),
-            0.0,
-            SELECTED,
-        );
-        return;
-    }
-    let tops = row_tops(net, m, style.comments);
-    for (r, row) in net.rows.iter().enumerate() {
-        let h = m.row_height(&row.cells);
-        for c in 0..row.cells.len() {
-            if sel.contains(index, r, c) {
-                let x = origin.x + m.margin + c as f32 * m.cell;
-                let w = if c + 1 == row.cells.len() {
-                    m.output
-                } else {
-                    m.cell
-                };
-                painter.rect_filled(
-                    Rect::from_min_size(pos2(x, origin.y + tops[r]), vec2(w, h)),
-                    0.0,
-                    SELECTED,
-                );
-            }
-        }
-    }
-}
-
-/// Outlines the cursor's cell.
-fn cursor_ui(
-    painter: &egui::Painter,
-    net: &Network,
-    origin: Pos2,
-    row: usize,
-    col: usize,
-    width: usize,
-    style: &Style,
-) {
-    let m = &style.m;
-    let y = origin.y
-        + row_tops(net, m, style.comments)
-            .get(row)
-            .copied()
-            .unwrap_or(m.header);
-    let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
-    let x = origin.x + m.margin + col as f32 * m.cell;
-    let w = if col >= width { m.output } else { m.cell };
-    let rect = Rect::from_min_size(pos2(x, y), vec2(w, h));
-    painter.rect_stroke(
-        rect,
-        2.0,
-        Stroke::new(2.0, theme::CURSOR),
-        StrokeKind::Inside,
-    );
 }
 
 #[cfg(test)]

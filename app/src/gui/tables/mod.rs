@@ -182,9 +182,10 @@ impl TableState {
     }
 
     /// The view that shows the table an edit replaces (`project` on one side of the edit):
-    /// for the symbol tables, the one that differs.
-    pub fn view_of(project: &Project, edit: &TableEdit) -> View {
-        match edit {
+    /// for the symbol tables, the one that differs. `None` for the operator panel, which is
+    /// shown by the online monitor beside the main area, not in a view of its own.
+    pub fn view_of(project: &Project, edit: &TableEdit) -> Option<View> {
+        Some(match edit {
             TableEdit::Symbols(_) => match changed_row(project, edit) {
                 Some((Sheet::Symbols(t), _)) => View::Symbols(t),
                 _ => View::Symbols(0),
@@ -195,13 +196,15 @@ impl TableState {
             TableEdit::Permissions(_) => View::Permissions,
             TableEdit::MCodes(_) => View::MCodes,
             TableEdit::Version(_) => View::Version,
-        }
+            TableEdit::Panel(_) => return None,
+        })
     }
 
     /// After an undo or a redo of a table edit: selects the row it changed and scrolls to it
     /// (the data view turns to its tab); returns the view to show. `project` is on one side
-    /// of the edit and `edit` holds the other, as the history gives them.
-    pub fn show_change(&mut self, project: &Project, edit: &TableEdit) -> View {
+    /// of the edit and `edit` holds the other, as the history gives them. `None` keeps the
+    /// view shown (see [`TableState::view_of`]).
+    pub fn show_change(&mut self, project: &Project, edit: &TableEdit) -> Option<View> {
         match changed_row(project, edit) {
             Some((sheet, row)) => {
                 if let Some(tab) = data_tab_of(sheet) {

@@ -500,9 +500,9 @@ fn an_undone_table_edit_is_shown_at_its_row() {
     let mut renamed = p.symbol_tables.clone();
     renamed[1].rows[1899].name = "LAST".into();
     let edit = TableEdit::Symbols(renamed);
-    assert_eq!(TableState::view_of(&p, &edit), View::Symbols(1));
+    assert_eq!(TableState::view_of(&p, &edit), Some(View::Symbols(1)));
     let view = h.state_mut().tables.show_change(&p, &edit);
-    h.state_mut().view = view;
+    h.state_mut().view = view.expect("a symbol table is a view");
     h.run();
     assert_eq!(h.state().tables.selected[&Sheet::Symbols(1)], 1899);
     assert_eq!(cell_value(&h, "Symbol 1900"), "S1899", "scrolled to it");
@@ -511,7 +511,10 @@ fn an_undone_table_edit_is_shown_at_its_row() {
     let mut data = p.data.clone();
     data.dt.push(DataRow::new(Address::byte(Area::Dt, 4), 100));
     let edit = TableEdit::Data(Box::new(data));
-    assert_eq!(h.state_mut().tables.show_change(&p, &edit), View::Data);
+    assert_eq!(
+        h.state_mut().tables.show_change(&p, &edit),
+        Some(View::Data)
+    );
     assert_eq!(h.state().tables.data_tab, DataTab::Dt);
     let mut k = p.data.clone();
     k.set_k_bit(1, 1, true);

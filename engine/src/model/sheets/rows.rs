@@ -242,8 +242,8 @@ fn first_difference<T: PartialEq>(a: &[T], b: &[T]) -> Option<usize> {
 /// The row of `project` that a table edit changes, or changed: `edit` holds the table on
 /// one side of the change and `project` the other, as before an edit is applied or after
 /// its inverse was. The first row that differs, moved onto the last row when rows were
-/// removed from the end; `None` when the tables are equal, or for the K page and the version
-/// information, which have no rows.
+/// removed from the end; `None` when the tables are equal, or for the K page, the version
+/// information and the operator panel, which are no sheets of rows.
 pub fn changed_row(project: &Project, edit: &TableEdit) -> Option<(Sheet, usize)> {
     let at = |sheet: Sheet, i: usize| (sheet, i.min(sheet.rows(project).saturating_sub(1)));
     match edit {
@@ -280,6 +280,7 @@ pub fn changed_row(project: &Project, edit: &TableEdit) -> Option<(Sheet, usize)
         TableEdit::MCodes(rows) => {
             first_difference(&project.m_codes, rows).map(|i| at(Sheet::MCodes, i))
         }
-        TableEdit::Version(_) => None,
+        // The version information has no rows; the panel is no sheet.
+        TableEdit::Version(_) | TableEdit::Panel(_) => None,
     }
 }

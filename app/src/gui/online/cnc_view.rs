@@ -1,0 +1,375 @@
+//! The CNC screen widget: mode and run state, the NC program and MDI editors with the block
+//! being executed marked, axis positions, spindle, the M/S/T handshake lamps and the active
+//! alarms, as the simulated CNC reports them in its [`CncStatus`].
+//!
+//! A widget: [`cnc_ui`] takes the status (none while no machine runs) and the editor buffers,
+//! which the caller owns so they outlive a machine, and returns [`CncEvent`]s that the
+//! application sends to the CNC.
+
+use crate::gui::i18n::{Lang, Msg};
+use crate::gui::theme;
+use egui::accesskit::Role;
+use ladder_engine::cnc::{AXIS_NAMES, CncStatus, Mode, RunState};
+
+/// What the user asked the CNC for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CncEvent {
+    /// Load this text as the memory programs ("Load program"): `CncCommand::Program`.
+    Program(String),
+    /// Put this text in the MDI buffer: `CncCommand::Mdi`.
+    Mdi(String),
+    /// The CNC's RESET key: `CncCommand::Reset`.
+    Reset,
+}
+
+/// The editor buffers of the CNC screen, owned by the caller.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct CncTexts {
+    /// The NC program text (one or more `O` programs).
+    pub program: String,
+    /// The MDI text.
+    pub mdi: String,
+}
+
+/// The name of a mode in the UI language.
+pub fn mode_text(mode: Mode, lang: Lang) -> &'static str {
+    let m = match mode {
+        Mode::Edit => Msg::CncModeEdit,
+        Mode::Mem => Msg::CncModeMem,
+        Mode::Mdi => Msg::CncModeMdi,
+        Mode::Handle => Msg::CncModeHandle,
+        Mode::Jog => Msg::CncModeJog,
+        Mode::Dnc => Msg::CncModeDnc,
+        Mode::Ref => Msg::CncModeRef,
+    };
+    m.text(lang)
+}
+
+/// The name of a run state in the UI language.
+pub fn run_text(run: RunState, lang: Lang) -> &'static str {
+    let m = match run {
+        RunState::Idle => Msg::CncRunIdle,
+        RunState::Run => Msg::CncRunRun,
+        RunState::Hold => Msg::CncRunHold,
+        RunState::Stop => Msg::CncRunStop,
+    };
+    m.text(lang)
+}
+
+/// A position in increments (0.001 mm) as millimetres with three decimals.
+pub fn mm_text(increments: i64) -> String {
+    let sign = if increments < 0 { "-" } else { "" };
+    let a = increments.unsigned_abs();
+    format!("{sign}{}.{:03}", a / 1000, a % 1000)
+}
+
+/// Draws the CNC screen and returns what the user asked for. `alarm_text` gives an alarm
+/// number's text in the UI language.
+pub fn cnc_ui(
+    ui: &mut egui::Ui,
+    status: Option<&CncStatus>,
+    texts: &mut CncTexts,
+    lang: Lang,
+    alarm_text: &dyn Fn(u16) -> String,
+) -> Vec<CncEvent> {
+    let t = |m: Msg| m.text(lang);
+    let mut events = Vec::new();
+    match status {
+        None => {
+            ui.label(t(Msg::CncNotRunning));
+        }
+        Some(s) => status_ui(ui, s, lang, alarm_text),
+    }
+    ui.separator();
+    // The block being executed is in the program or in the MDI buffer.
+    let program_line = status.filter(|s| !s.mdi).and_then(|s| s.line);
+    let mdi_line = status.filter(|s| s.mdi).and_then(|s| s.line);
+    let heading = ui.horizontal(|ui| {
+        let heading = ui.strong(t(Msg::CncProgram));
+        if ui.button(t(Msg::CncLoadProgram)).clicked() {
+            events.push(CncEvent::Program(texts.program.clone()));
+        }
+        if status.is_some() && ui.button(t(Msg::CncReset)).clicked() {
+            events.push(CncEvent::Reset);
+        }
+        if let Some(line) = status.and_then(|s| s.line) {
+            ui.label(format!("{} {line}", t(Msg::CncCurrentLine)));
+        }
+        heading.id
+    });
+    nc_editor(
+        ui,
+        "cnc-program",
+        &mut texts.program,
+        program_line,
+        12,
+        heading.inner,
+    );
+    let heading = ui.horizontal(|ui| {
+        let heading = ui.strong(t(Msg::CncMdi));
+        if ui.button(t(Msg::CncSendMdi)).clicked() {
+            events.push(CncEvent::Mdi(texts.mdi.clone()));
+        }
+        heading.id
+    });
+    nc_editor(ui, "cnc-mdi", &mut texts.mdi, mdi_line, 3, heading.inner);
+    events
+}
+
+/// Mode, state, positions, spindle, M/S/T and alarms.
+fn status_ui(ui: &mut egui::Ui, s: &CncStatus, lang: Lang, alarm_text: &dyn Fn(u16) -> String) {
+    let t = |m: Msg| m.text(lang);
+    ui.horizontal(|ui| {
+        ui.label(t(Msg::CncMode));
+        ui.strong(mode_text(s.mode, lang));
+        ui.separator();
+        ui.label(t(Msg::CncState));
+        ui.strong(run_text(s.run, lang));
+        ui.separator();
+        ui.label(t(Msg::CncProgramNo));
+        ui.monospace(format!("O{:04}", s.program));
+        ui.label(t(Msg::CncBlockNo));
+        ui.monospace(format!("N{:04}", s.block));
+    });
+    egui::Grid::new("cnc-positions")
+        .striped(true)
+        .num_columns(3)
+        .show(ui, |ui| {
+            for m in [Msg::CncAxis, Msg::CncMachinePos, Msg::CncAbsolutePos] {
+                ui.strong(t(m));
+            }
+            ui.end_row();
+            let axes = AXIS_NAMES.iter().zip(s.machine.iter().zip(&s.absolute));
+            for (name, (machine, absolute)) in axes.take(s.axes) {
+                ui.monospace(*name);
+                ui.monospace(format!("{:>11}", mm_text(*machine)));
+                ui.monospace(format!("{:>11}", mm_text(*absolute)));
+                ui.end_row();
+            }
+        });
+    ui.horizontal(|ui| {
+        ui.label(t(Msg::CncSpindle));
+        ui.monospace(format!("{:>5}", s.spindle));
+        ui.label(t(Msg::CncRpm));
+    });
+    let m = &s.mst;
+    ui.horizontal(|ui| {
+        ui.label(t(Msg::CncMCode));
+        ui.monospace(format!("{:02}", m.m));
+        lamp(ui, t(Msg::CncStrobeMf), m.mf);
+        ui.separator();
+        ui.label(t(Msg::CncSCode));
+        ui.monospace(format!("{}", m.s));
+        lamp(ui, t(Msg::CncStrobeSf), m.sf);
+        ui.separator();
+        ui.label(t(Msg::CncTCode));
+        ui.monospace(format!("{:04}", m.t));
+        lamp(ui, t(Msg::CncStrobeTf), m.tf);
+        ui.separator();
+        lamp(ui, t(Msg::CncFin), m.fin);
+        lamp(ui, t(Msg::CncDen), m.den);
+    });
+    ui.horizontal(|ui| {
+        ui.strong(t(Msg::CncAlarms));
+        if s.alarms.is_empty() {
+            ui.label(t(Msg::CncNoAlarm));
+        }
+    });
+    for &n in &s.alarms {
+        ui.horizontal(|ui| {
+            ui.colored_label(
+                theme::ERROR,
+                egui::RichText::new(format!("{n:04}")).monospace(),
+            );
+            ui.colored_label(theme::ERROR, alarm_text(n));
+        });
+    }
+}
+
+/// A signal lamp with its name: a small circle, lit while the signal is 1. It reports itself
+/// toggled while lit, so it can be read without looking at colours.
+fn lamp(ui: &mut egui::Ui, name: &str, on: bool) {
+    let height = ui.text_style_height(&egui::TextStyle::Body);
+    let galley = ui.painter().layout_no_wrap(
+        name.to_string(),
+        egui::TextStyle::Body.resolve(ui.style()),
+        ui.visuals().text_color(),
+    );
+    let size = egui::vec2(height + 4.0 + galley.size().x, height);
+    let (rect, resp) = ui.allocate_exact_size(size, egui::Sense::hover());
+    let r = height * 0.35;
+    let centre = egui::pos2(rect.left() + height / 2.0, rect.center().y);
+    let fill = if on {
+        theme::CNC_LAMP_ON
+    } else {
+        theme::PANEL_DARK
+    };
+    ui.painter()
+        .circle(centre, r, fill, egui::Stroke::new(1.0, theme::PANEL_RIM));
+    let text_pos = egui::pos2(
+        rect.left() + height + 4.0,
+        rect.center().y - galley.size().y / 2.0,
+    );
+    ui.painter()
+        .galley(text_pos, galley, ui.visuals().text_color());
+    resp.widget_info(|| egui::WidgetInfo::selected(Role::Status, true, on, name));
+}
+
+/// The NC editors' inner margin.
+const MARGIN: egui::Vec2 = egui::vec2(4.0, 2.0);
+
+/// A monospace NC editor with a line-number gutter; the executing line is marked in the
+/// gutter (`>`) and highlighted in the text.
+fn nc_editor(
+    ui: &mut egui::Ui,
+    id: &str,
+    text: &mut String,
+    current: Option<usize>,
+    rows: usize,
+    label: egui::Id,
+) {
+    let font = egui::TextStyle::Monospace.resolve(ui.style());
+    let colour = ui.visuals().text_color();
+    let lines = text.split('\n').count().max(rows);
+    let gutter: String = (1..=lines)
+        .map(|n| {
+            let mark = if Some(n) == current { '>' } else { ' ' };
+            format!("{mark}{n:>4}")
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let mut layouter = |ui: &egui::Ui, buf: &dyn egui::TextBuffer, wrap: f32| {
+        let mut job = egui::text::LayoutJob::default();
+        for (k, line) in buf.as_str().split_inclusive('\n').enumerate() {
+            let mut format = egui::TextFormat::simple(font.clone(), colour);
+            if Some(k + 1) == current {
+                format.background = theme::CNC_CURRENT_LINE;
+                format.color = theme::INK;
+            }
+            job.append(line, 0.0, format);
+        }
+        job.wrap.max_width = wrap;
+        ui.fonts_mut(|f| f.layout_job(job))
+    };
+    egui::ScrollArea::vertical()
+        .id_salt(id)
+        .max_height(ui.text_style_height(&egui::TextStyle::Monospace) * (rows as f32 + 1.0))
+        .show(ui, |ui| {
+            ui.horizontal_top(|ui| {
+                // The gutter's top margin is the editor's, so the numbers stay on their rows.
+                egui::Frame::NONE
+                    .inner_margin(egui::Margin::symmetric(0, MARGIN.y as i8))
+                    .show(ui, |ui| {
+                        ui.add(
+                            egui::Label::new(egui::RichText::new(gutter).monospace().weak())
+                                .selectable(false),
+                        );
+                    });
+                ui.add(
+                    egui::TextEdit::multiline(text)
+                        .id_salt(id)
+                        .code_editor()
+                        .margin(MARGIN)
+                        .desired_rows(rows)
+                        .desired_width(f32::INFINITY)
+                        .layouter(&mut layouter),
+                )
+                .labelled_by(label);
+            });
+        });
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use egui::accesskit::Toggled;
+    use egui_kittest::Harness;
+    use egui_kittest::kittest::{NodeT, Queryable};
+    use ladder_engine::cnc::MstStatus;
+
+    type Shown = (Option<CncStatus>, CncTexts, Vec<CncEvent>);
+
+    fn harness(status: Option<CncStatus>) -> Harness<'static, Shown> {
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(900.0, 800.0))
+            .build_ui_state(
+                |ui, (status, texts, events): &mut Shown| {
+                    let alarm = |n: u16| format!("alarm text {n}");
+                    events.extend(cnc_ui(ui, status.as_ref(), texts, Lang::En, &alarm));
+                },
+                (status, CncTexts::default(), Vec::new()),
+            );
+        h.run();
+        h
+    }
+
+    #[test]
+    fn load_program_sends_the_text_typed() {
+        let mut h = harness(None);
+        h.get_by_label_contains("The CNC runs with the PLC");
+        fn editor<'h>(h: &'h Harness<'static, Shown>) -> egui_kittest::Node<'h> {
+            h.get_by_role_and_label(Role::MultilineTextInput, "NC program")
+        }
+        editor(&h).click();
+        h.run();
+        editor(&h).type_text("O0001\nG00 X10\nM30");
+        h.run();
+        h.get_by_label("Load program").click();
+        h.run();
+        assert_eq!(
+            h.state().2,
+            [CncEvent::Program("O0001\nG00 X10\nM30".into())]
+        );
+        h.get_by_label("Send MDI").click();
+        h.run();
+        assert_eq!(h.state().2[1], CncEvent::Mdi(String::new()));
+        assert!(h.query_by_label("RESET").is_none(), "no CNC to reset");
+    }
+
+    #[test]
+    fn the_status_shows_alarms_positions_and_lamps() {
+        let mut status = CncStatus {
+            mode: Mode::Mem,
+            run: RunState::Run,
+            axes: 2,
+            alarms: vec![950, 1001],
+            spindle: 800,
+            mst: MstStatus {
+                m: 3,
+                mf: true,
+                ..MstStatus::default()
+            },
+            line: Some(2),
+            ..CncStatus::default()
+        };
+        status.machine[0] = 12_345;
+        status.absolute[1] = -2_560;
+        let mut h = harness(Some(status));
+        h.get_by_label("0950");
+        h.get_by_label("alarm text 950");
+        h.get_by_label("1001");
+        h.get_by_label("AUTO");
+        h.get_by_label("Running");
+        h.get_by_label_contains("12.345");
+        h.get_by_label_contains("-2.560");
+        h.get_by_label_contains("Current block: line 2");
+        let lamp = |h: &Harness<'static, Shown>, name: &str| {
+            h.get_by_role_and_label(Role::Status, name)
+                .accesskit_node()
+                .toggled()
+        };
+        assert_eq!(lamp(&h, "MF"), Some(Toggled::True));
+        assert_eq!(lamp(&h, "FIN"), Some(Toggled::False));
+        h.get_by_label("RESET").click();
+        h.run();
+        assert_eq!(h.state().2, [CncEvent::Reset]);
+    }
+
+    #[test]
+    fn increments_read_as_millimetres_with_three_decimals() {
+        assert_eq!(mm_text(0), "0.000");
+        assert_eq!(mm_text(12_345), "12.345");
+        assert_eq!(mm_text(-5), "-0.005");
+        assert_eq!(mm_text(-2_560), "-2.560");
+    }
+}

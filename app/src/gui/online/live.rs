@@ -1,0 +1,246 @@
+//! The ladder view online: each visible network's power flow from the published state (or a
+//! recorded tick), tooltips with live values, and "why?".
+
+use super::super::LadderApp;
+use super::super::i18n::Msg;
+use super::super::ladder_view::{Hit, Live, address_of};
+use super::Why;
+use ladder_engine::model::{Cell, Operand, Project};
+use ladder_engine::vm::monitor::{NetworkView, network_view};
+use ladder_engine::vm::why::deciding_contacts;
+
+impl LadderApp {
+    /// Draws block `b` with the monitor on it, when online. Returns what `block_ui` returns.
+    pub(crate) fn live_block_ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        b: usize,
+        opts: &super::super::ladder_view::ViewOptions,
+    ) -> super::super::ladder_view::ViewEvents {
+        let Some(doc) = self.doc.as_ref() else {
+            return Default::default();
+        };
+        let project = doc.project();
+        let session = self.online.session.as_ref();
+        let drawing_runs = session.is_some_and(|s| s.drawing_runs(project));
+        let view_of = |i: usize| -> Option<NetworkView> {
+            let s = session?;
+            // Power flow is drawn only where the drawing is what runs: a changed network
+            // would otherwise show another program's state.
+            let network = if drawing_runs {
+                project.ladder.blocks.get(b)?.networks.get(i)?
+            } else {
+                let running = s.running.ladder.blocks.get(b)?.networks.get(i)?;
+                let drawn = project.ladder.blocks.get(b)?.networks.get(i)?;
+                if running != drawn {
+                    return None;
+                }
+                drawn
+            };
+            Some(network_view(
+                &s.source(),
+                &s.running.program,
+                b,
+                i,
+                network,
+                project.ladder.width,
+            ))
+        };
+        let forced = |a: ladder_engine::Address| session.is_some_and(|s| super::forced_in(s, a));
+        let marked: Vec<(usize, usize, usize)> = self
+            .online
+            .why
+            .iter()
+            .filter(|w| w.block == b)
+            .flat_map(|w| w.cells.iter().map(|&(r, c)| (w.network, r, c)))
+            .collect();
+        let live = Live {
+            network: &view_of,
+            format: self.settings.live_format,
+            forced: &forced,
+            marked: &marked,
+            past: session.is_some_and(|s| s.scrub.is_some()),
+        };
+        let mut jump_to = self.edit.jump_to.take();
+        let mut geometry = std::mem::take(&mut self.edit.geometry);
+        let events = super::super::ladder_view::block_ui(
+            ui,
+            project,
+            b,
+            opts,
+            &mut jump_to,
+            &mut geometry,
+            session.map(|_| &live),
+        );
+        self.edit.jump_to = jump_to;
+        self.edit.geometry = geometry;
+        if let (Some(hit), Some(r), true) = (events.hover, events.response.as_ref(), self.online())
+            && let Some(text) = self.tooltip(b, hit)
+        {
+            r.clone().on_hover_text_at_pointer(text);
+        }
+        let visible = events.visible.clone();
+        if let Some(s) = self.online.session.as_mut() {
+            s.watch_visible(b, visible);
+        }
+        events
+    }
+
+    /// The monitor's view of a network of the running program, as the ladder view draws it.
+    pub fn live_network_view(&self, b: usize, n: usize) -> Option<NetworkView> {
+        let s = self.online.session.as_ref()?;
+        let p = self.doc.as_ref()?.project();
+        let grid = p.ladder.blocks.get(b)?.networks.get(n)?;
+        Some(network_view(
+            &s.source(),
+            &s.running.program,
+            b,
+            n,
+            grid,
+            p.ladder.width,
+        ))
+    }
+
+    /// The tooltip of a cell: address, symbol, comment and, online, value and force.
+    pub fn tooltip(&self, b: usize, hit: Hit) -> Option<String> {
+        let Hit::Cell { network, row, col } = hit else {
+            return None;
+        };
+        let doc = self.doc.as_ref()?;
+        let p = doc.project();
+        let cell = p
+            .ladder
+            .blocks
+            .get(b)?
+            .networks
+            .get(network)?
+            .rows
+            .get(row)?
+            .cells
+            .get(col)?;
+        let operands: Vec<&Operand> = match cell {
+            Cell::Contact { operand, .. } | Cell::Coil { operand, .. } => vec![operand],
+            Cell::Box { operands, .. } => operands.iter().collect(),
+            _ => return None,
+        };
+        let lines: Vec<String> = operands
+            .iter()
+            .filter_map(|o| self.operand_line(p, o))
+            .collect();
+        (!lines.is_empty()).then(|| lines.join("\n"))
+    }
+
+    fn operand_line(&self, p: &Project, o: &Operand) -> Option<String> {
+        let lang = self.settings.lang;
+        let a = address_of(p, o)?;
+        let mut line = a.to_string();
+        if let Some(sym) = p.symbol_of(a) {
+            line.push_str(&format!("  {sym}"));
+        }
+        if let Some(c) = p.comment_of(a, lang.code()) {
+            line.push_str(&format!("  — {c}"));
+        }
+        if let Some(s) = self.online.session.as_ref() {
+            let bytes = u32::from(a.area.element_bytes()).max(1);
+            let v = s.source().value(a, bytes);
+            let shown = if a.bit.is_some() {
+                v.to_string()
+            } else {
+                self.settings.live_format.show(v, bytes)
+            };
+            line.push_str(&format!("  = {shown}"));
+            if self.is_forced(a) {
+                line.push_str(&format!("  ({})", Msg::Forced.text(lang)));
+            }
+        }
+        Some(line)
+    }
+
+    /// "Why?" on the output at the cursor's row: marks the deciding contacts, names the
+    /// first in the output window and jumps the timeline to the tick it last changed.
+    pub(crate) fn why_at_cursor(&mut self) {
+        let lang = self.settings.lang;
+        let c = self.edit.cursor;
+        let Some(doc) = self.doc.as_ref() else { return };
+        let p = doc.project();
+        let Some(s) = self.online.session.as_ref() else {
+            return;
+        };
+        let Some(grid) = p
+            .ladder
+            .blocks
+            .get(c.block)
+            .and_then(|b| b.networks.get(c.network))
+        else {
+            return;
+        };
+        let width = p.ladder.width;
+        let is_output = grid.rows.get(c.row).is_some_and(|r| {
+            matches!(
+                r.cells.get(width),
+                Some(Cell::Coil { .. } | Cell::Box { .. })
+            )
+        });
+        if !is_output || !s.drawing_runs(p) {
+            let text = Msg::WhyNeedsOutput.text(lang).to_string();
+            self.say(text, true);
+            return;
+        }
+        let view = network_view(
+            &s.source(),
+            &s.running.program,
+            c.block,
+            c.network,
+            grid,
+            width,
+        );
+        let cells = deciding_contacts(grid, &view, width, c.row);
+        let on = view.cells[c.row][width].power_in;
+        let at = s.scrub.or(Some(s.published.snapshot.ticks)).unwrap_or(0);
+        let mut text = format!(
+            "{} N{:04} {}: {}",
+            Msg::Why.text(lang),
+            c.network + 1,
+            Msg::Row.text(lang),
+            c.row + 1
+        );
+        let mut jump = None;
+        if let Some(&(r, col)) = cells.first()
+            && let Cell::Contact { operand, .. } = &grid.rows[r].cells[col]
+            && let Some(a) = address_of(p, operand)
+        {
+            let name = p
+                .symbol_of(a)
+                .map_or(a.to_string(), |sym| format!("{a} ({sym})"));
+            let state = if on {
+                Msg::HoldsIt.text(lang)
+            } else {
+                Msg::BrokeIt.text(lang)
+            };
+            text = format!("{text} {name} {state}");
+            let loc = s.running.layout.loc(a, false);
+            let mask = 1u8 << a.bit.unwrap_or(0);
+            jump = s.recorder().last_change(at, loc.off, mask);
+            match jump {
+                Some(t) => text.push_str(&format!(
+                    "; {} {t} ({:.3} s)",
+                    Msg::LastChangedAt.text(lang),
+                    t as f64 * 0.008
+                )),
+                None => text.push_str(&format!("; {}", Msg::NotChangedInRecord.text(lang))),
+            }
+        } else if cells.is_empty() {
+            text = format!("{text} {}", Msg::NoDecidingContact.text(lang));
+        }
+        self.online.why = Some(Why {
+            block: c.block,
+            network: c.network,
+            cells,
+            text: text.clone(),
+        });
+        self.say(text, false);
+        if let (Some(t), Some(s)) = (jump, self.online.session.as_mut()) {
+            s.scrub_to(Some(t));
+        }
+    }
+}

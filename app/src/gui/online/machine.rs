@@ -1,0 +1,239 @@
+//! The machine side of the online panel: the operator panel (keys → X, lamps ← Y), the CNC
+//! screen, and the signal trace drawn from the scan recorder.
+
+use super::super::LadderApp;
+use super::super::i18n::Msg;
+use super::cnc_view::{CncEvent, cnc_ui};
+use super::panel_view::{PanelEvent, panel_ui};
+use super::trace_view::{TraceData, TraceEvent, TraceSignal, trace_csv, trace_ui};
+use super::watch::resolve;
+use ladder_engine::Address;
+use ladder_engine::cnc::command::CncCommand;
+use ladder_engine::machine::{MachineCommand, Target};
+use ladder_engine::model::{Panel, PanelKind, TableEdit};
+use ladder_engine::runner::Request;
+
+fn target(a: Address) -> Target {
+    Target {
+        address: a,
+        bytes: 1,
+        explicit: false,
+    }
+}
+
+impl LadderApp {
+    /// The panel in use: the project's own, else the profile's preset.
+    pub fn panel(&self) -> Panel {
+        let Some(doc) = self.doc.as_ref() else {
+            return Panel::default();
+        };
+        let p = doc.project();
+        if p.panel.is_empty() {
+            Panel::preset(p.profile)
+        } else {
+            p.panel.clone()
+        }
+    }
+
+    /// At power-on the panel's switches and knobs are where the panel says (a released
+    /// E-stop, closed limit switches, the override knobs at their first-listed value), so
+    /// the machine starts as one ready to run.
+    pub(super) fn apply_panel_defaults(&mut self) {
+        self.online.panel_bytes.clear();
+        for item in self.panel().items {
+            match item.kind {
+                PanelKind::Switch { input } => self.send_command_pub(MachineCommand::Write(
+                    target(input),
+                    i64::from(item.initial != 0),
+                )),
+                PanelKind::Knob { input, .. } => {
+                    // Knobs sharing a byte each set their own bits (feed and rapid on X5).
+                    let mask = i64::from(item.kind.knob_mask());
+                    let byte = self.panel_byte(input);
+                    let v = (byte & !mask) | (item.initial & mask);
+                    self.online.panel_bytes.push((input, v));
+                    self.send_command_pub(MachineCommand::Write(target(input), v));
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// A byte as the defaults being applied left it (the machine has not answered yet).
+    fn panel_byte(&self, a: Address) -> i64 {
+        self.online
+            .panel_bytes
+            .iter()
+            .rev()
+            .find(|(b, _)| *b == a)
+            .map_or(0, |(_, v)| *v)
+    }
+
+    pub(super) fn machine_panel_ui(&mut self, ui: &mut egui::Ui) {
+        let Some(doc) = self.doc.as_ref() else { return };
+        let profile = doc.project().profile();
+        let panel = self.panel();
+        let lang = self.settings.lang;
+        let session = self.online.session.as_ref();
+        let memory = |a: Address| -> i64 {
+            session.map_or(0, |s| {
+                let v = s.source().value(a, 1);
+                if a.bit.is_some() { v } else { v & 0xFF }
+            })
+        };
+        let events = panel_ui(ui, &panel, &memory, profile, lang, &mut self.online.panel);
+        let live = self.online() && !self.scrubbing();
+        for e in events {
+            match e {
+                PanelEvent::Press(a) if live => self.send_request(Request::Press(target(a))),
+                PanelEvent::Release(a) if live => self.send_request(Request::Release(target(a))),
+                PanelEvent::Set(a, v) if live => {
+                    self.send_command_pub(MachineCommand::Write(target(a), v))
+                }
+                PanelEvent::Edited(p) => {
+                    if let Err(e) = self.try_edit(TableEdit::Panel(Box::new(p))) {
+                        self.say(e, true);
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    pub(super) fn cnc_page_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let status = self
+            .online
+            .session
+            .as_ref()
+            .and_then(|s| s.published.snapshot.cnc.clone());
+        let alarm = |n: u16| {
+            ladder_engine::cnc::alarm_text::alarm_text(n, lang == super::super::i18n::Lang::Zh)
+                .into_owned()
+        };
+        let events = cnc_ui(ui, status.as_ref(), &mut self.online.cnc, lang, &alarm);
+        for e in events {
+            let c = match e {
+                CncEvent::Program(text) => CncCommand::Program(text),
+                CncEvent::Mdi(text) => CncCommand::Mdi(text),
+                CncEvent::Reset => CncCommand::Reset,
+            };
+            if self.online() {
+                self.send_command_pub(MachineCommand::Cnc(c));
+            } else {
+                let t = Msg::OfflineHint.text(lang).to_string();
+                self.say(t, true);
+            }
+        }
+    }
+
+    /// The CNC alarm's text in the UI language.
+    pub(super) fn cnc_alarm_text(&self, n: u16) -> String {
+        ladder_engine::cnc::alarm_text::alarm_text(
+            n,
+            self.settings.lang == super::super::i18n::Lang::Zh,
+        )
+        .into_owned()
+    }
+
+    /// The traced watch rows over the recorded window, from the scan recorder: exact to the
+    /// tick at any speed.
+    pub fn trace_data(&self) -> TraceData {
+        let mut data = TraceData::default();
+        let (Some(doc), Some(s)) = (self.doc.as_ref(), self.online.session.as_ref()) else {
+            return data;
+        };
+        let rec = s.recorder();
+        let (Some(first), Some(last)) = (rec.oldest(), rec.newest()) else {
+            return data;
+        };
+        let last = self.online.trace.paused_at.unwrap_or(last).min(last);
+        data.first = first;
+        data.last = last;
+        let mut image = Vec::new();
+        if !rec.image_at(first, &mut image) {
+            return data;
+        }
+        let mut changes = Vec::new();
+        for row in self.watch_rows().iter().filter(|r| r.traced) {
+            let Ok(t) = resolve(doc.project(), &row.text) else {
+                continue;
+            };
+            let loc = s.running.layout.loc(t.address, false);
+            let (off, n) = (loc.off as usize, t.bytes as usize);
+            let mut bytes: Vec<u8> = image.get(off..off + n).map_or(vec![0; n], <[u8]>::to_vec);
+            let value = |b: &[u8]| -> i64 {
+                match t.address.bit {
+                    Some(bit) => i64::from(b[0] >> bit & 1),
+                    None => {
+                        let mut raw = [0u8; 4];
+                        raw[..n].copy_from_slice(b);
+                        let v = u32::from_le_bytes(raw);
+                        let shift = 32 - 8 * n as u32;
+                        i64::from(((v << shift) as i32) >> shift)
+                    }
+                }
+            };
+            let mut points = vec![(first, value(&bytes))];
+            // Every change of any of its bytes, in tick order.
+            let mut all: Vec<(u64, usize, u8)> = Vec::new();
+            for k in 0..n {
+                changes.clear();
+                rec.changes_of((off + k) as u32, first + 1, last, &mut changes);
+                all.extend(changes.iter().map(|&(tick, v)| (tick, k, v)));
+            }
+            all.sort_by_key(|c| c.0);
+            for (tick, k, v) in all {
+                bytes[k] = v;
+                let now = value(&bytes);
+                match points.last_mut() {
+                    Some(p) if p.0 == tick => p.1 = now,
+                    Some(p) if p.1 == now => {}
+                    _ => points.push((tick, now)),
+                }
+            }
+            data.signals.push(TraceSignal {
+                name: t.text(),
+                bit: t.address.bit.is_some(),
+                points,
+            });
+        }
+        data
+    }
+
+    pub(super) fn trace_page_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        if !self.watch_rows().iter().any(|r| r.traced) {
+            ui.label(Msg::TraceHint.text(lang));
+        }
+        let data = self.trace_data();
+        let events = trace_ui(ui, &data, &mut self.online.trace.view, lang);
+        for e in events {
+            match e {
+                TraceEvent::Pause(on) => {
+                    self.online.trace.paused_at = on.then_some(data.last);
+                }
+                TraceEvent::Remove(i) => {
+                    let key = self.watch_key();
+                    let name = data.signals.get(i).map(|s| s.name.clone());
+                    if let (Some(list), Some(name)) = (self.settings.watches.get_mut(&key), name) {
+                        for r in list.iter_mut() {
+                            if r.traced && r.text == name {
+                                r.traced = false;
+                            }
+                        }
+                    }
+                }
+                TraceEvent::ExportCsv => {
+                    self.online.trace.csv = Some(trace_csv(&data));
+                    self.start_dialog(super::super::files::DialogKind::ExportTrace);
+                }
+                TraceEvent::Clear => {
+                    if let Some(s) = self.online.session.as_ref() {
+                        s.recorder().clear();
+                    }
+                }
+            }
+        }
+    }
+}

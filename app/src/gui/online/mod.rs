@@ -1,0 +1,404 @@
+//! Online: the ladder and the simulated CNC running behind the editor.
+//!
+//! [`session`] holds the machine thread and what it published; the LadderApp methods here
+//! carry out the online commands; `ui.rs` draws the online panel (operator panel, CNC, watch
+//! table, forces, trace, alarms), the toolbar's clock and the timeline; `live.rs` turns the
+//! published state into what the ladder view paints and answers "why?".
+
+pub mod alarms;
+pub mod cnc_view;
+pub mod live;
+mod machine;
+pub mod panel_view;
+pub mod session;
+pub mod trace_view;
+mod ui;
+pub mod watch;
+
+use super::LadderApp;
+use super::command::Command;
+use super::i18n::Msg;
+use ladder_engine::Address;
+use ladder_engine::machine::{MachineCommand, Target};
+use ladder_engine::runner::{Request, Speed};
+use session::{Notice, Session, StartError};
+
+/// Whether an address (or any bit of it) is forced in the session's last state.
+pub fn forced_in(s: &Session, a: Address) -> bool {
+    let loc = s.running.layout.loc(a, false);
+    let bytes = if loc.wide { 4 } else { 1 };
+    s.published.snapshot.forces.iter().any(|(off, mask, _)| {
+        (loc.off..loc.off + bytes).contains(off)
+            && match a.bit {
+                Some(b) => mask >> b & 1 == 1,
+                None => true,
+            }
+    })
+}
+
+/// Which page of the online panel is shown.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum OnlineTab {
+    /// The machine operator panel.
+    #[default]
+    Panel,
+    /// The CNC screen.
+    Cnc,
+    /// The watch table.
+    Watch,
+    /// The force list.
+    Forces,
+    /// The signal trace.
+    Trace,
+    /// PLC and CNC alarms.
+    Alarms,
+}
+
+/// The answer to "why?".
+#[derive(Clone, Debug, PartialEq)]
+pub struct Why {
+    /// Block and network of the output.
+    pub block: usize,
+    /// Network.
+    pub network: usize,
+    /// The deciding contacts (row, column).
+    pub cells: Vec<(usize, usize)>,
+    /// What the output window said.
+    pub text: String,
+}
+
+/// The online state the app keeps.
+#[derive(Default)]
+pub struct OnlineState {
+    /// The running session, if online.
+    pub session: Option<Session>,
+    /// The pace asked for.
+    pub speed: Speed,
+    /// The online panel's page.
+    pub tab: OnlineTab,
+    /// The last "why?".
+    pub why: Option<Why>,
+    /// The watch table's UI.
+    pub watch: watch::WatchUi,
+    /// The PLC alarms with the tick each came on.
+    pub alarms: alarms::AlarmList,
+    /// The operator panel widget's state.
+    pub panel: panel_view::PanelViewState,
+    /// The CNC page's program and MDI texts.
+    pub cnc: cnc_view::CncTexts,
+    /// The signal trace.
+    pub trace: TraceUi,
+    /// Bytes the panel's power-on values wrote, until the machine answers.
+    pub panel_bytes: Vec<(Address, i64)>,
+    /// Panel keys to press once the machine has run so many ticks (`--run --nc`).
+    pub startup: Vec<(u64, Request)>,
+}
+
+/// The signal trace page's state.
+#[derive(Default)]
+pub struct TraceUi {
+    /// The chart's own state.
+    pub view: trace_view::TraceState,
+    /// The last tick shown while paused.
+    pub paused_at: Option<u64>,
+    /// The CSV waiting for its file name.
+    pub csv: Option<String>,
+}
+
+impl LadderApp {
+    /// Whether a machine is online.
+    pub fn online(&self) -> bool {
+        self.online.session.is_some()
+    }
+
+    /// Whether the view shows a recorded tick (read-only).
+    pub fn scrubbing(&self) -> bool {
+        self.online
+            .session
+            .as_ref()
+            .is_some_and(|s| s.scrub.is_some())
+    }
+
+    /// Goes online: compiles (errors go to the output window and nothing starts) and starts
+    /// the machine, stopped.
+    pub fn go_online(&mut self) -> bool {
+        if self.online() {
+            return true;
+        }
+        self.compile();
+        let Some(doc) = self.doc.as_ref() else {
+            return false;
+        };
+        let ctx = self.ctx.clone();
+        let wake = Box::new(move || {
+            if let Some(c) = &ctx {
+                c.request_repaint();
+            }
+        });
+        match Session::start(doc.project(), doc.generation, wake) {
+            Ok(mut s) => {
+                s.set_speed(self.online.speed);
+                self.online.session = Some(s);
+                self.online.alarms = Default::default();
+                self.online.why = None;
+                self.apply_panel_defaults();
+                let t = self.t(Msg::OnlineStarted).to_string();
+                self.say(t, false);
+                true
+            }
+            Err(StartError::Compile(_)) => {
+                let t = self.t(Msg::RunNeedsCompile).to_string();
+                self.say(t, true);
+                false
+            }
+            Err(StartError::Other(m)) => {
+                let t = format!("{}: {m}", self.t(Msg::RunFailed));
+                self.say(t, true);
+                false
+            }
+        }
+    }
+
+    /// `--run`: goes online and runs at real time; with an NC program, loads it and starts it
+    /// as an operator would: the panel's AUTO key, then Cycle start.
+    pub fn start_running(&mut self, nc: Option<String>) {
+        self.execute_online(Command::Run);
+        let Some(text) = nc else { return };
+        // The CNC page's editor shows what was loaded.
+        self.online.cnc.program = text.clone();
+        self.send_command(MachineCommand::Cnc(
+            ladder_engine::cnc::command::CncCommand::Program(text),
+        ));
+        let key = |app: &LadderApp, en: &str| {
+            app.panel()
+                .items
+                .into_iter()
+                .find_map(|i| (i.label_en == en).then(|| i.kind.input()).flatten())
+        };
+        let target = |a: Address| Target {
+            address: a,
+            bytes: 1,
+            explicit: false,
+        };
+        if let (Some(auto), Some(start)) = (key(self, "AUTO"), key(self, "Cycle start")) {
+            self.online.startup = vec![
+                (2, Request::Press(target(auto))),
+                (3, Request::Release(target(auto))),
+                (30, Request::Press(target(start))),
+                (31, Request::Release(target(start))),
+            ];
+        }
+    }
+
+    /// Leaves online mode and stops the machine thread (closing a project or the window
+    /// does this too).
+    pub fn go_offline(&mut self) {
+        if let Some(s) = self.online.session.take() {
+            s.stop();
+        }
+        self.online.why = None;
+    }
+
+    fn send_command(&mut self, c: MachineCommand) {
+        if let Some(s) = self.online.session.as_mut() {
+            s.command(c);
+        }
+    }
+
+    /// Sends a request to the machine (panel keys, swaps).
+    pub fn send_request(&mut self, r: Request) {
+        if let Some(s) = self.online.session.as_mut() {
+            s.send(r);
+        }
+    }
+
+    /// Carries out an online command.
+    pub(crate) fn execute_online(&mut self, c: Command) {
+        match c {
+            Command::Run if self.go_online() => {
+                self.leave_scrub();
+                self.send_command(MachineCommand::Run);
+            }
+            Command::Stop => self.send_command(MachineCommand::Stop),
+            Command::StepTick | Command::StepN if self.go_online() => {
+                self.leave_scrub();
+                let n = if c == Command::StepTick {
+                    1
+                } else {
+                    self.settings.step_ticks.clamp(1, 1_000_000)
+                };
+                self.send_command(MachineCommand::Tick(n));
+            }
+            Command::PowerCycle => {
+                self.send_command(MachineCommand::PowerCycle);
+                self.apply_panel_defaults();
+            }
+            Command::GoOffline => self.go_offline(),
+            Command::ToggleBit | Command::ForceBit | Command::Unforce => self.at_cursor(c),
+            Command::UnforceAll => {
+                for a in self.forced_addresses() {
+                    self.send_command(MachineCommand::Unforce(a));
+                }
+            }
+            Command::Why => self.why_at_cursor(),
+            Command::LiveView => self.leave_scrub(),
+            Command::Speed(s) => {
+                self.online.speed = s;
+                if let Some(session) = self.online.session.as_mut() {
+                    session.set_speed(s);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// Back from a recorded tick to the present.
+    pub fn leave_scrub(&mut self) {
+        if let Some(s) = self.online.session.as_mut() {
+            s.scrub_to(None);
+        }
+    }
+
+    /// The bit address of the element at the cursor (a contact or coil).
+    fn cursor_bit(&self) -> Option<Address> {
+        let doc = self.doc.as_ref()?;
+        let p = doc.project();
+        let c = self.edit.cursor;
+        let cell = p
+            .ladder
+            .blocks
+            .get(c.block)?
+            .networks
+            .get(c.network)?
+            .rows
+            .get(c.row)?
+            .cells
+            .get(c.col)?;
+        let operand = match cell {
+            ladder_engine::model::Cell::Contact { operand, .. }
+            | ladder_engine::model::Cell::Coil { operand, .. } => operand,
+            _ => return None,
+        };
+        super::ladder_view::address_of(p, operand).filter(|a| a.bit.is_some())
+    }
+
+    /// Reads a bit of the shown state.
+    pub fn live_bit(&self, a: Address) -> Option<bool> {
+        let s = self.online.session.as_ref()?;
+        Some(s.source().bit(a))
+    }
+
+    /// Whether an address (or any bit of it) is forced.
+    pub fn is_forced(&self, a: Address) -> bool {
+        self.online
+            .session
+            .as_ref()
+            .is_some_and(|s| forced_in(s, a))
+    }
+
+    /// Every forced address: bits of byte areas one by one, 4-byte values whole.
+    pub fn forced_addresses(&self) -> Vec<Address> {
+        let Some(s) = self.online.session.as_ref() else {
+            return Vec::new();
+        };
+        let layout = &s.running.layout;
+        let mut out: Vec<Address> = Vec::new();
+        for &(off, mask, _) in &s.published.snapshot.forces {
+            let Some(whole) = layout.address_at(off, None) else {
+                continue;
+            };
+            if whole.area.element_bytes() == 4 || mask == 0xFF {
+                if !out.contains(&whole) {
+                    out.push(whole);
+                }
+            } else {
+                for b in 0..8 {
+                    if mask >> b & 1 == 1 {
+                        out.extend(layout.address_at(off, Some(b)));
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    fn at_cursor(&mut self, c: Command) {
+        let Some(a) = self.cursor_bit() else {
+            let t = self.t(Msg::NoBitAtCursor).to_string();
+            self.say(t, true);
+            return;
+        };
+        let value = self.live_bit(a).unwrap_or(false);
+        let target = Target {
+            address: a,
+            bytes: 1,
+            explicit: false,
+        };
+        match c {
+            Command::ToggleBit => {
+                self.send_command(MachineCommand::Write(target, i64::from(!value)))
+            }
+            Command::ForceBit if self.is_forced(a) => self.send_command(MachineCommand::Unforce(a)),
+            Command::ForceBit => self.send_command(MachineCommand::Force(a, i64::from(!value))),
+            _ => self.send_command(MachineCommand::Unforce(a)),
+        }
+    }
+
+    /// Every frame: takes the machine's news, follows edits, keeps the alarm list.
+    pub fn online_frame(&mut self) {
+        let Some(s) = self.online.session.as_mut() else {
+            return;
+        };
+        let (changed, notices) = s.poll();
+        let mut lines = Vec::new();
+        let lang = self.settings.lang;
+        for n in notices {
+            lines.push(match n {
+                Notice::Refused(m) => (format!("{}: {m}", Msg::MachineRefused.text(lang)), true),
+                Notice::Swapped(kept, fresh) => (
+                    format!(
+                        "{} ({} {kept}, {} {fresh})",
+                        Msg::EditSwapped.text(lang),
+                        Msg::KeptInstances.text(lang),
+                        Msg::FreshInstances.text(lang)
+                    ),
+                    false,
+                ),
+                Notice::SwapRefused(m) => {
+                    (format!("{}: {m}", Msg::EditNotSwapped.text(lang)), true)
+                }
+                Notice::Failed(m) => (format!("{}: {m}", Msg::MachineFailed.text(lang)), true),
+            });
+        }
+        let failed = s.published.stopped;
+        let now = s.published.snapshot.ticks;
+        while self
+            .online
+            .startup
+            .first()
+            .is_some_and(|(at, _)| *at <= now)
+        {
+            let (_, r) = self.online.startup.remove(0);
+            s.send(r);
+        }
+        if let Some(doc) = self.doc.as_ref()
+            && s.scrub.is_none()
+            && let Some(errors) = s.follow_edit(doc.project(), doc.generation)
+        {
+            let _ = errors;
+            self.compile();
+            let t = Msg::EditNotCompiled.text(lang).to_string();
+            lines.push((t, true));
+        }
+        if changed && let Some(doc) = self.doc.as_ref() {
+            let s = self.online.session.as_ref().expect("checked above");
+            self.online.alarms.update(doc.project(), s);
+        }
+        for (t, e) in lines {
+            self.say(t, e);
+        }
+        if failed {
+            self.go_offline();
+        }
+    }
+}

@@ -1,0 +1,314 @@
+//! The online session: the machine thread, what it last published, the program it runs and
+//! how that compares with the drawing, the scan recorder and the scrub position. No egui
+//! here: the views in this module's siblings read it, and commands change it.
+
+use ladder_engine::cnc::SimCnc;
+use ladder_engine::compiler::{Program, compile};
+use ladder_engine::machine::{Machine, MachineCommand};
+use ladder_engine::model::{Ladder, Project};
+use ladder_engine::recorder::Recorder;
+use ladder_engine::runner::{Published, Reply, Request, Runner, Speed};
+use ladder_engine::vm::Vm;
+use ladder_engine::vm::code::Code;
+use ladder_engine::vm::memory::Layout;
+use ladder_engine::vm::monitor::Source;
+use std::collections::BTreeSet;
+use std::sync::{Arc, Mutex, MutexGuard};
+
+/// Virtual seconds the scan recorder keeps by default.
+pub const RECORD_SECONDS: u64 = 60;
+
+/// A program the machine runs (or is about to): what was compiled, and from which drawing.
+pub struct Running {
+    /// The ladder it was compiled from: the drawing equals the running program while the
+    /// project's ladder equals this.
+    pub ladder: Ladder,
+    /// The compiled program (cell origins of each instruction).
+    pub program: Program,
+    /// Its lowered code (networks, word sources).
+    pub code: Code,
+    /// The memory layout.
+    pub layout: Layout,
+    /// Its number in swap requests (0 for the program the machine started with).
+    pub number: u64,
+}
+
+/// Whether what runs is what is drawn.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Sync {
+    /// The running program is the drawing.
+    Same,
+    /// An edited program was sent and has not taken over yet.
+    Swapping,
+    /// The drawing changed and cannot run: the reason (compile errors, a refused swap).
+    Refused(String),
+}
+
+/// What went wrong starting a machine.
+#[derive(Clone, Debug, PartialEq)]
+pub enum StartError {
+    /// The project has compile errors (how many).
+    Compile(usize),
+    /// The program could not be lowered or the thread could not start.
+    Other(String),
+}
+
+/// Something the session tells the user (the output window).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Notice {
+    /// A command was refused by the machine.
+    Refused(String),
+    /// An edit runs now: function instances kept and new.
+    Swapped(usize, usize),
+    /// An edit could not take over.
+    SwapRefused(String),
+    /// The machine thread failed.
+    Failed(String),
+}
+
+/// The online session.
+pub struct Session {
+    runner: Runner,
+    /// The last published state.
+    pub published: Published,
+    /// The program the published state comes from.
+    pub running: Arc<Running>,
+    pending: Option<Arc<Running>>,
+    sent: u64,
+    /// The scan recorder, filled on the machine thread.
+    pub recorder: Arc<Mutex<Recorder>>,
+    /// The tick shown instead of the present, while scrubbing.
+    pub scrub: Option<u64>,
+    scrub_image: Vec<u8>,
+    /// Whether what runs is what is drawn.
+    pub sync: Sync,
+    /// The project change counter last compared.
+    pub seen_generation: u64,
+    watched: BTreeSet<usize>,
+}
+
+fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
+    let compiled = compile(project);
+    if compiled.errors() > 0 {
+        return Err(StartError::Compile(compiled.errors()));
+    }
+    let mut vm = Vm::from_program(&compiled.program, project.profile())
+        .map_err(|e| StartError::Other(e.to_string()))?;
+    vm.set_division(project.level2_division);
+    let running = Running {
+        ladder: project.ladder.clone(),
+        program: compiled.program,
+        code: vm.code().clone(),
+        layout: vm.layout().clone(),
+        number,
+    };
+    Ok((vm, running))
+}
+
+impl Session {
+    /// Compiles the project and starts its machine (PLC and simulated CNC) stopped, with the
+    /// data tables loaded; `wake` asks the UI to draw again.
+    pub fn start(
+        project: &Project,
+        generation: u64,
+        wake: Box<dyn Fn() + Send>,
+    ) -> Result<Session, StartError> {
+        let (mut vm, running) = build(project, 0)?;
+        vm.load_data_tables(project);
+        let size = running.layout.size as usize;
+        let cnc = SimCnc::new(project.profile, &project.messages);
+        let machine = Machine::from_parts(vm, Some(cnc));
+        let ticks = RECORD_SECONDS * 1000 / ladder_engine::vm::TICK_MS;
+        let recorder = Arc::new(Mutex::new(Recorder::new(size, ticks)));
+        let rec = Arc::clone(&recorder);
+        let hook = Box::new(move |m: &Machine| {
+            let mut r = rec.lock().unwrap_or_else(|e| e.into_inner());
+            r.record(m.plc.ticks(), &m.plc.image()[..size]);
+        });
+        let runner =
+            Runner::start(machine, hook, wake).map_err(|e| StartError::Other(e.to_string()))?;
+        Ok(Session {
+            runner,
+            published: Published::default(),
+            running: Arc::new(running),
+            pending: None,
+            sent: 0,
+            recorder,
+            scrub: None,
+            scrub_image: Vec::new(),
+            sync: Sync::Same,
+            seen_generation: generation,
+            watched: BTreeSet::new(),
+        })
+    }
+
+    /// Sends a request.
+    pub fn send(&mut self, r: Request) {
+        self.sent += 1;
+        self.runner.send(r);
+    }
+
+    /// Sends a machine command (what a script line would do).
+    pub fn command(&mut self, c: MachineCommand) {
+        self.send(Request::Command(c));
+    }
+
+    /// Whether the state shown includes every request sent.
+    pub fn caught_up(&self) -> bool {
+        self.published.handled >= self.sent
+    }
+
+    /// Takes what the machine published; returns the notices for the user, and whether
+    /// anything changed.
+    pub fn poll(&mut self) -> (bool, Vec<Notice>) {
+        if !self.runner.take(&mut self.published) {
+            return (false, Vec::new());
+        }
+        let mut notices = Vec::new();
+        for r in std::mem::take(&mut self.published.replies) {
+            match r {
+                Reply::Refused(m) => notices.push(Notice::Refused(m)),
+                Reply::Swapped(n, s) => {
+                    if let Some(p) = self.pending.take_if(|p| p.number == n) {
+                        self.running = p;
+                        self.watched.clear();
+                        if self.sync == Sync::Swapping {
+                            self.sync = Sync::Same;
+                        }
+                    }
+                    notices.push(Notice::Swapped(s.kept, s.fresh));
+                }
+                Reply::SwapRefused(n, m) => {
+                    if self.pending.as_ref().is_some_and(|p| p.number == n) {
+                        self.pending = None;
+                        self.sync = Sync::Refused(m.clone());
+                    }
+                    notices.push(Notice::SwapRefused(m));
+                }
+                Reply::Failed(m) => notices.push(Notice::Failed(m)),
+            }
+        }
+        (true, notices)
+    }
+
+    /// After an edit: compiles the drawing and swaps it in at the next tick boundary, or
+    /// says why it cannot run. Returns the compile error count when it has errors.
+    pub fn follow_edit(&mut self, project: &Project, generation: u64) -> Option<usize> {
+        if generation == self.seen_generation {
+            return None;
+        }
+        self.seen_generation = generation;
+        let target = self.pending.as_ref().unwrap_or(&self.running);
+        if project.ladder == target.ladder {
+            if self.pending.is_none() {
+                self.sync = Sync::Same;
+            }
+            return None;
+        }
+        let number = self
+            .running
+            .number
+            .max(self.pending.as_ref().map_or(0, |p| p.number))
+            + 1;
+        match build(project, number) {
+            Ok((vm, running)) => {
+                let running = Arc::new(running);
+                self.pending = Some(Arc::clone(&running));
+                self.sync = Sync::Swapping;
+                self.send(Request::Swap(Box::new(vm), number));
+                None
+            }
+            Err(StartError::Compile(n)) => {
+                self.sync = Sync::Refused(format!("{n}"));
+                Some(n)
+            }
+            Err(StartError::Other(m)) => {
+                self.sync = Sync::Refused(m);
+                None
+            }
+        }
+    }
+
+    /// Whether the drawing is the program that runs.
+    pub fn drawing_runs(&self, project: &Project) -> bool {
+        self.sync == Sync::Same && project.ladder == self.running.ladder
+    }
+
+    /// The pace.
+    pub fn set_speed(&mut self, s: Speed) {
+        self.send(Request::Speed(s));
+    }
+
+    /// Shows tick `t` from the recorder instead of the present (`None`: back to live).
+    pub fn scrub_to(&mut self, t: Option<u64>) {
+        let mut image = std::mem::take(&mut self.scrub_image);
+        self.scrub = t.filter(|t| self.recorder().image_at(*t, &mut image));
+        self.scrub_image = image;
+    }
+
+    /// The recorder, locked (briefly: the machine thread waits for it at its next tick).
+    pub fn recorder(&self) -> MutexGuard<'_, Recorder> {
+        self.recorder.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// The memory shown: the recorded tick while scrubbing, else the last published state.
+    pub fn memory(&self) -> &[u8] {
+        if self.scrub.is_some() {
+            &self.scrub_image
+        } else {
+            &self.published.snapshot.memory
+        }
+    }
+
+    /// What the monitor reads. While scrubbing, or before the state of the running program
+    /// has arrived, contacts come from memory instead of the scan's record.
+    pub fn source(&self) -> Source<'_> {
+        let live = self.scrub.is_none()
+            && self.published.program == self.running.number
+            && self.published.snapshot.trace.len() == self.running.code.words().len();
+        Source {
+            code: &self.running.code,
+            layout: &self.running.layout,
+            memory: self.memory(),
+            trace: live.then_some((
+                &self.published.snapshot.trace[..],
+                &self.published.snapshot.watched[..],
+            )),
+        }
+    }
+
+    /// Records the scan of exactly the code networks of `networks` (ladder networks of
+    /// `block` on screen): networks nobody looks at cost nothing.
+    pub fn watch_visible(&mut self, block: usize, networks: std::ops::Range<usize>) {
+        let code = &self.running.code;
+        let want: BTreeSet<usize> = code
+            .networks
+            .iter()
+            .enumerate()
+            .filter(|(_, n)| n.block == block && networks.contains(&n.network))
+            .map(|(i, _)| i)
+            .collect();
+        if want == self.watched {
+            return;
+        }
+        let off: Vec<usize> = self.watched.difference(&want).copied().collect();
+        let on: Vec<usize> = want.difference(&self.watched).copied().collect();
+        for n in off {
+            self.command(MachineCommand::WatchNetwork(n, false));
+        }
+        for n in on {
+            self.command(MachineCommand::WatchNetwork(n, true));
+        }
+        self.watched = want;
+    }
+
+    /// Whether the machine is ticking on its own.
+    pub fn is_running(&self) -> bool {
+        self.published.snapshot.running
+    }
+
+    /// Stops the thread and waits for it.
+    pub fn stop(self) {
+        let _ = self.runner.stop();
+    }
+}

@@ -1,0 +1,244 @@
+//! The online panel and the online parts of the toolbar and status bar: the clock, the pace,
+//! "step N", whether the drawing runs, and the scan recorder's timeline.
+
+use super::super::LadderApp;
+use super::super::command::Command;
+use super::super::i18n::Msg;
+use super::super::theme;
+use super::OnlineTab;
+use super::alarms::AlarmList;
+use super::session::Sync;
+use ladder_engine::machine::MachineCommand;
+use ladder_engine::runner::Speed;
+use ladder_engine::vm::TICK_MS;
+
+/// `ticks` as virtual time, `h:mm:ss.mmm`.
+pub fn clock_text(ticks: u64) -> String {
+    let ms = ticks * TICK_MS;
+    format!(
+        "{}:{:02}:{:02}.{:03}",
+        ms / 3_600_000,
+        ms / 60_000 % 60,
+        ms / 1000 % 60,
+        ms % 1000
+    )
+}
+
+impl LadderApp {
+    /// The toolbar's online part after the run buttons: pace, N, clock and ticks.
+    pub fn online_toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        egui::ComboBox::new("speed", t(Msg::SpeedLabel))
+            .selected_text(Command::Speed(self.online.speed).text().text(lang))
+            .show_ui(ui, |ui| {
+                for s in Speed::ALL {
+                    let c = Command::Speed(s);
+                    if ui
+                        .selectable_label(self.online.speed == s, c.text().text(lang))
+                        .clicked()
+                    {
+                        self.ask(c);
+                    }
+                }
+            });
+        ui.add(
+            egui::DragValue::new(&mut self.settings.step_ticks)
+                .range(1..=1_000_000)
+                .prefix("N = "),
+        )
+        .on_hover_text(t(Msg::StepNHint));
+        if let Some(s) = &self.online.session {
+            let snap = &s.published.snapshot;
+            ui.separator();
+            ui.monospace(format!(
+                "{}  {} {}",
+                clock_text(snap.ticks),
+                t(Msg::Ticks),
+                snap.ticks
+            ));
+            ui.label(if snap.running {
+                t(Msg::StateRunning)
+            } else {
+                t(Msg::StateStopped)
+            });
+            if let Some(h) = &snap.halt {
+                ui.colored_label(theme::ERROR, format!("{}: {h}", t(Msg::PlcHalted)));
+            }
+        }
+    }
+
+    /// The status bar's online part: whether the drawing is what runs.
+    pub fn online_status_ui(&self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let (Some(s), Some(doc)) = (&self.online.session, &self.doc) else {
+            return;
+        };
+        ui.separator();
+        if s.scrub.is_some() {
+            ui.colored_label(theme::CAUTION, t(Msg::ShowingPast));
+        }
+        match &s.sync {
+            _ if s.drawing_runs(doc.project()) => {
+                ui.colored_label(theme::OK, t(Msg::DrawingRuns));
+            }
+            Sync::Swapping => {
+                ui.colored_label(theme::CAUTION, t(Msg::DrawingSwapping));
+            }
+            Sync::Refused(why) => {
+                ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::DrawingDiffers)));
+            }
+            Sync::Same => {
+                ui.colored_label(theme::CAUTION, t(Msg::DrawingDiffers));
+            }
+        }
+    }
+
+    /// The scan recorder's timeline: a slider over the recorded ticks; moving it shows that
+    /// tick (read-only), "live" goes back to the present.
+    pub fn timeline_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let Some(s) = self.online.session.as_mut() else {
+            return;
+        };
+        let (oldest, newest) = {
+            let r = s.recorder();
+            (r.oldest(), r.newest())
+        };
+        let (Some(oldest), Some(newest)) = (oldest, newest) else {
+            ui.label(t(Msg::RecorderEmpty));
+            return;
+        };
+        let mut at = s.scrub.unwrap_or(newest);
+        ui.horizontal(|ui| {
+            let width = (ui.available_width() - 360.0).max(120.0);
+            ui.spacing_mut().slider_width = width;
+            let r = ui.add(
+                egui::Slider::new(&mut at, oldest..=newest)
+                    .text(t(Msg::Timeline))
+                    .show_value(false)
+                    .clamping(egui::SliderClamping::Always),
+            );
+            ui.monospace(format!("{} ({at})", clock_text(at)));
+            let live = s.scrub.is_none();
+            if r.changed() {
+                s.scrub_to(if at >= newest && live { None } else { Some(at) });
+            }
+            if ui
+                .add_enabled(!live, egui::Button::new(t(Msg::LiveView)))
+                .clicked()
+            {
+                s.scrub_to(None);
+            }
+        });
+    }
+
+    /// The online panel: its pages.
+    pub fn online_panel_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        ui.horizontal_wrapped(|ui| {
+            for (tab, m) in [
+                (OnlineTab::Panel, Msg::TabPanel),
+                (OnlineTab::Cnc, Msg::TabCnc),
+                (OnlineTab::Watch, Msg::TabWatch),
+                (OnlineTab::Forces, Msg::TabForces),
+                (OnlineTab::Trace, Msg::TabTrace),
+                (OnlineTab::Alarms, Msg::TabAlarms),
+            ] {
+                ui.selectable_value(&mut self.online.tab, tab, t(m));
+            }
+        });
+        ui.separator();
+        if self.online.session.is_none() && !matches!(self.online.tab, OnlineTab::Watch) {
+            ui.label(t(Msg::OfflineHint));
+        }
+        egui::ScrollArea::both()
+            .id_salt("online-page")
+            .auto_shrink([false, false])
+            .show(ui, |ui| match self.online.tab {
+                OnlineTab::Panel => self.machine_panel_ui(ui),
+                OnlineTab::Cnc => self.cnc_page_ui(ui),
+                OnlineTab::Watch => self.watch_ui(ui),
+                OnlineTab::Forces => self.forces_ui(ui),
+                OnlineTab::Trace => self.trace_page_ui(ui),
+                OnlineTab::Alarms => self.alarms_ui(ui),
+            });
+    }
+
+    fn forces_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let forced = self.forced_addresses();
+        if forced.is_empty() {
+            ui.label(t(Msg::NoForces));
+            return;
+        }
+        let mut release = Vec::new();
+        egui::Grid::new("forces").striped(true).show(ui, |ui| {
+            for a in &forced {
+                let bytes = u32::from(a.area.element_bytes()).max(1);
+                let value = self
+                    .online
+                    .session
+                    .as_ref()
+                    .map_or(0, |s| s.source().value(*a, bytes));
+                ui.colored_label(theme::FORCED, a.to_string());
+                let sym = self
+                    .doc
+                    .as_ref()
+                    .and_then(|d| d.project().symbol_of(*a).map(str::to_string))
+                    .unwrap_or_default();
+                ui.label(sym);
+                ui.monospace(value.to_string());
+                if ui.button(t(Msg::Release)).clicked() {
+                    release.push(*a);
+                }
+                ui.end_row();
+            }
+        });
+        if ui.button(t(Msg::ReleaseAll)).clicked() {
+            self.ask(Command::UnforceAll);
+        }
+        for a in release {
+            self.send_command_pub(MachineCommand::Unforce(a));
+        }
+    }
+
+    fn alarms_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let Some(doc) = self.doc.as_ref() else { return };
+        ui.strong(t(Msg::PlcAlarms));
+        if self.online.alarms.on.is_empty() {
+            ui.label(t(Msg::NoAlarms));
+        }
+        egui::Grid::new("plc-alarms").striped(true).show(ui, |ui| {
+            for a in &self.online.alarms.on {
+                ui.colored_label(theme::ERROR, format!("{:04}", a.number));
+                ui.label(AlarmList::text(doc.project(), a, lang.code()));
+                ui.monospace(a.bit.to_string());
+                ui.monospace(clock_text(a.since));
+                ui.end_row();
+            }
+        });
+        ui.separator();
+        ui.strong(t(Msg::CncAlarms));
+        let cnc = self
+            .online
+            .session
+            .as_ref()
+            .and_then(|s| s.published.snapshot.cnc.as_ref())
+            .map(|c| c.alarms.clone())
+            .unwrap_or_default();
+        let cnc: Vec<u16> = cnc.into_iter().filter(|n| *n < 1000).collect();
+        if cnc.is_empty() {
+            ui.label(t(Msg::NoAlarms));
+        }
+        for n in cnc {
+            ui.colored_label(theme::ERROR, format!("{n:04}  {}", self.cnc_alarm_text(n)));
+        }
+    }
+}

@@ -1,0 +1,421 @@
+//! The online monitor, driven as a user drives it: run and step, force and release, the
+//! watch table, online edit, the scan recorder and "why?", the machine panel and the CNC.
+//! The machine runs on its own thread; the tests step it tick by tick and wait for the state
+//! it publishes, so nothing depends on the speed of the machine the tests run on.
+
+mod common;
+use common::*;
+use ladder_engine::model::{Cell, CellRef, Edit, Operand};
+use ladder_studio::gui::command::Command;
+
+/// Runs frames until the machine has carried out everything sent (at most 20 s).
+fn settle(h: &mut Harness<'static, LadderApp>) {
+    let start = std::time::Instant::now();
+    loop {
+        h.step();
+        let s = h.state();
+        if s.online.session.as_ref().is_none_or(|s| s.caught_up()) {
+            h.step();
+            return;
+        }
+        assert!(
+            start.elapsed() < std::time::Duration::from_secs(20),
+            "the machine did not answer"
+        );
+        std::thread::sleep(std::time::Duration::from_millis(1));
+    }
+}
+
+fn command(h: &mut Harness<'static, LadderApp>, c: Command) {
+    h.state_mut().ask(c);
+    h.step();
+    settle(h);
+}
+
+fn ticks(h: &mut Harness<'static, LadderApp>, n: u64) {
+    h.state_mut().settings.step_ticks = n;
+    command(h, Command::StepN);
+}
+
+fn value(h: &Harness<'static, LadderApp>, text: &str) -> i64 {
+    let app = h.state();
+    let p = app.doc.as_ref().unwrap().project();
+    let t = ladder_studio::gui::online::watch::resolve(p, text).unwrap();
+    app.online
+        .session
+        .as_ref()
+        .expect("online")
+        .source()
+        .value(t.address, t.bytes)
+}
+
+fn output(h: &Harness<'static, LadderApp>) -> String {
+    h.state()
+        .output
+        .iter()
+        .map(|l| l.text.clone())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// A project from an instruction list, saved in a temporary folder.
+fn il_project(text: &str) -> PathBuf {
+    let p = ladder_engine::il::import(text).project.expect("valid IL");
+    let path = tempfile_dir().join("t.ldp");
+    ladder_engine::file::save(&p, &path).unwrap();
+    path
+}
+
+fn lathe() -> PathBuf {
+    PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/lathe-988ta.ldp"
+    ))
+}
+
+// Inputs the preset operator panel does not drive (it writes its switches at power-on).
+const RUNG: &str = "LEVEL2\nNETWORK\nLD X0010.0\nAND X0010.1\nOUT Y0010.0\n\
+NETWORK\nLD X0010.2\nTMRB T0000 1000 R0000.0\n";
+
+#[test]
+fn the_cursor_keys_force_an_input_and_release_it() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    assert!(h.state().online(), "a step goes online");
+    // Cursor on X0000.0 (network 1, row 1, column 1): Shift+F7 forces it to 1.
+    click_cell(&mut h, 0, 0, 0);
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
+    settle(&mut h);
+    ticks(&mut h, 1);
+    assert_eq!(value(&h, "X0010.0"), 1);
+    let forced = h.state().forced_addresses();
+    assert_eq!(forced.len(), 1, "{forced:?}");
+    assert_eq!(forced[0].to_string(), "X0010.0");
+    // The force list shows it with a release button.
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Forces;
+    h.step();
+    h.get_by_label("X0010.0");
+    h.get_by_label("Release all").click();
+    h.step();
+    settle(&mut h);
+    assert!(h.state().forced_addresses().is_empty(), "released");
+    assert_eq!(
+        value(&h, "X0010.0"),
+        1,
+        "the last forced value stays until written"
+    );
+    // F7 toggles the bit once: it can be written again.
+    h.key_press(egui::Key::F7);
+    settle(&mut h);
+    assert_eq!(value(&h, "X0010.0"), 0);
+}
+
+#[test]
+fn the_watch_table_shows_a_timer_counting() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    h.state_mut().add_watch("T0000").unwrap();
+    h.state_mut().add_watch("X0010.2").unwrap();
+    command(&mut h, Command::StepTick);
+    h.state_mut()
+        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+            "X0010.2".parse().unwrap(),
+            1,
+        ));
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Watch;
+    ticks(&mut h, 10);
+    let first = value(&h, "T0000");
+    ticks(&mut h, 10);
+    let second = value(&h, "T0000");
+    assert_eq!(second - first, 80, "10 ticks of 8 ms");
+    h.step();
+    h.get_by_label("T0000");
+    h.get_by_label(&second.to_string());
+}
+
+fn set_cell(h: &mut Harness<'static, LadderApp>, network: usize, col: usize, cell: Cell) {
+    let at = CellRef {
+        block: 1,
+        network,
+        row: 0,
+        col,
+    };
+    h.state_mut()
+        .try_edit(Edit::SetCell { at, cell })
+        .expect("the edit applies");
+    h.step();
+    settle(h);
+}
+
+#[test]
+fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut()
+        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+            "X0002.0".parse().unwrap(),
+            0,
+        ));
+    // Start the timer: X0000.2 on.
+    h.state_mut()
+        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+            "X0010.2".parse().unwrap(),
+            1,
+        ));
+    ticks(&mut h, 11);
+    let before = value(&h, "T0000");
+    assert_eq!(before, 80);
+    // Edit network 1: X0000.1 becomes X0000.3.
+    set_cell(
+        &mut h,
+        0,
+        1,
+        Cell::Contact {
+            negated: false,
+            operand: Operand::parse("X0010.3").unwrap(),
+        },
+    );
+    assert!(output(&h).contains("The edit runs now"), "{}", output(&h));
+    assert!(
+        h.state()
+            .online
+            .session
+            .as_ref()
+            .unwrap()
+            .drawing_runs(h.state().doc.as_ref().unwrap().project())
+    );
+    ticks(&mut h, 1);
+    assert_eq!(value(&h, "T0000"), before + 8, "the timer went on counting");
+    h.get_by_label("Running program = drawing");
+}
+
+#[test]
+fn an_edit_that_does_not_compile_is_refused_and_the_status_says_so() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    set_cell(
+        &mut h,
+        0,
+        1,
+        Cell::Contact {
+            negated: false,
+            operand: Operand::parse("NO_SUCH_SYMBOL").unwrap(),
+        },
+    );
+    let out = output(&h);
+    assert!(
+        out.contains("does not compile and was not swapped in"),
+        "{out}"
+    );
+    assert!(
+        out.contains("NO_SUCH_SYMBOL"),
+        "the compile error is listed: {out}"
+    );
+    h.get_by_label_contains("Running program ≠ drawing");
+    // The machine runs on with the old program.
+    ticks(&mut h, 2);
+    assert!(h.state().online());
+}
+
+#[test]
+fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_the_rung() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    let write = |h: &mut Harness<'static, LadderApp>, a: &str, v: i64| {
+        let t = ladder_studio::gui::online::watch::resolve(
+            h.state().doc.as_ref().unwrap().project(),
+            a,
+        )
+        .unwrap();
+        h.state_mut()
+            .send_command_pub(ladder_engine::machine::MachineCommand::Write(t, v));
+    };
+    write(&mut h, "X0010.0", 1);
+    write(&mut h, "X0010.1", 1);
+    ticks(&mut h, 5);
+    assert_eq!(value(&h, "Y0010.0"), 1);
+    let on_tick = h
+        .state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .published
+        .snapshot
+        .ticks;
+    write(&mut h, "X0010.1", 0);
+    ticks(&mut h, 5);
+    assert_eq!(value(&h, "Y0010.0"), 0);
+    // Back to a tick where the coil was on: the view shows it, read-only.
+    h.state_mut()
+        .online
+        .session
+        .as_mut()
+        .unwrap()
+        .scrub_to(Some(on_tick));
+    h.step();
+    assert_eq!(value(&h, "Y0010.0"), 1, "the recorded state");
+    assert!(
+        !h.state().enabled(Command::Contact),
+        "no edits while replaying"
+    );
+    h.get_by_label("Replay (read-only)");
+    command(&mut h, Command::LiveView);
+    assert_eq!(value(&h, "Y0010.0"), 0);
+    // Why is the coil off? X0000.1 broke the rung, and changed at the tick after `on_tick`.
+    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    h.state_mut().edit.cursor = CellRef {
+        block: 1,
+        network: 0,
+        row: 0,
+        col: width,
+    };
+    command(&mut h, Command::Why);
+    let out = output(&h);
+    assert!(
+        out.contains("X0010.1") && out.contains("broke the rung"),
+        "{out}"
+    );
+    let why = h.state().online.why.clone().unwrap();
+    assert_eq!(why.cells, vec![(0, 1)]);
+    let s = h.state().online.session.as_ref().unwrap();
+    assert_eq!(
+        s.scrub,
+        Some(on_tick + 1),
+        "the timeline went to the change"
+    );
+}
+
+#[test]
+fn closing_the_project_or_the_window_while_running_stops_the_machine() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::Run);
+    for _ in 0..5 {
+        h.step();
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    assert!(h.state().online());
+    command(&mut h, Command::Close);
+    assert!(!h.state().online(), "the machine went with the project");
+    // Run again on a new project, then drop the whole app while running.
+    command(&mut h, Command::New);
+    drop(h);
+}
+
+#[test]
+fn a_project_with_compile_errors_does_not_run_and_says_why() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    set_cell(
+        &mut h,
+        0,
+        1,
+        Cell::Contact {
+            negated: false,
+            operand: Operand::parse("NO_SUCH_SYMBOL").unwrap(),
+        },
+    );
+    command(&mut h, Command::Run);
+    assert!(!h.state().online());
+    assert!(
+        output(&h).contains("compile errors and cannot run"),
+        "{}",
+        output(&h)
+    );
+}
+
+/// Clicks a panel or CNC page button by its label.
+fn click(h: &mut Harness<'static, LadderApp>, label: &str) {
+    // A wide panel scrolls inside the online panel, as for a user.
+    h.get_by_label(label).scroll_to_me();
+    for _ in 0..30 {
+        h.step();
+    }
+    h.get_by_label(label).click();
+    h.step();
+    settle(h);
+}
+
+#[test]
+fn the_jog_key_of_the_panel_selects_jog_and_lights_its_lamp() {
+    let mut h = harness(Some(lathe()), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Panel;
+    ticks(&mut h, 2);
+    assert_eq!(value(&h, "G0043"), 0, "power-on: MDI");
+    click(&mut h, "JOG");
+    ticks(&mut h, 12);
+    assert_eq!(value(&h, "X0002.3"), 0, "the key is up again");
+    assert_eq!(value(&h, "G0043"), 5, "MD4 + MD1: JOG");
+    assert_eq!(value(&h, "Y0001.3"), 1, "the JOG lamp");
+    assert!(h.state().online.alarms.on.is_empty(), "a healthy machine");
+}
+
+#[test]
+fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
+    let mut h = harness(Some(lathe()), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    ticks(&mut h, 2);
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
+    h.state_mut().online.cnc.program = "O0001; M03 S800; M30".into();
+    h.step();
+    click(&mut h, "Load program");
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Panel;
+    h.step();
+    click(&mut h, "AUTO");
+    ticks(&mut h, 12);
+    click(&mut h, "Cycle start");
+    // The CNC starts when cycle start is let go; a click is held for 10 ticks.
+    ticks(&mut h, 13);
+    assert_eq!(value(&h, "F0007.0"), 1, "MF");
+    assert_eq!(value(&h, "Y0000.0"), 1, "spindle CW");
+    // The spindle coil is drawn energised in the ladder view.
+    let (b, n, r) = {
+        let p = h.state().doc.as_ref().unwrap().project();
+        let width = p.ladder.width;
+        let mut at = None;
+        for (bi, block) in p.ladder.blocks.iter().enumerate() {
+            for (ni, net) in block.networks.iter().enumerate() {
+                for (ri, row) in net.rows.iter().enumerate() {
+                    if let Some(Cell::Coil { operand, .. }) = row.cells.get(width)
+                        && operand.to_string() == "Y0000.0"
+                    {
+                        at = at.or(Some((bi, ni, ri)));
+                    }
+                }
+            }
+        }
+        at.expect("the sample has a Y0000.0 coil")
+    };
+    h.state_mut().jump(CellRef {
+        block: b,
+        network: n,
+        row: r,
+        col: 0,
+    });
+    h.step();
+    settle(&mut h);
+    ticks(&mut h, 1);
+    let view = h.state().live_network_view(b, n).expect("on screen");
+    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    assert!(view.cells[r][width].power_in, "the coil is energised");
+    // FIN comes back within the M code time (200 ms), and the CNC goes on to M30.
+    ticks(&mut h, 40);
+    assert_ne!(value(&h, "F0010:4"), 3, "M03 is done");
+    let s = h.state().online.session.as_ref().unwrap();
+    let fin = s.running.layout.loc("G0004.3".parse().unwrap(), false).off;
+    let mut changes = Vec::new();
+    let newest = s.recorder().newest().unwrap();
+    s.recorder().changes_of(fin, 0, newest, &mut changes);
+    assert!(
+        changes.iter().any(|(_, v)| v & 0b1000 != 0),
+        "FIN (G4.3) was 1: {changes:?}"
+    );
+}

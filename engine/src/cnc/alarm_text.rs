@@ -1,0 +1,187 @@
+//! The short texts a CNC screen shows next to an alarm number, in Chinese and English, for
+//! the editor's CNC panel (docs/cnc.md, "Alarms", "Program errors", "Overtravel", "PLC axis
+//! control").
+//!
+//! Every alarm the simulator raises by itself has its own text in [`TEXTS`]. Numbers it only
+//! raises on request (`cnc alarm N`) get the text of their range: servo for 0401–0499, P/S for
+//! the rest of 1–999. PLC alarms (1000–1999) get a generic text: their own text is the
+//! project's message table row, which the editor shows itself.
+
+use super::program::ps;
+use super::{ALARM_ESTOP, ALARM_HARD_LIMIT, ALARM_STROKE};
+use std::borrow::Cow;
+
+/// The texts of one alarm.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AlarmText {
+    /// The alarm number.
+    pub number: u16,
+    /// Chinese text.
+    pub zh: &'static str,
+    /// English text.
+    pub en: &'static str,
+}
+
+const fn text(number: u16, zh: &'static str, en: &'static str) -> AlarmText {
+    AlarmText { number, zh, en }
+}
+
+/// Every alarm the simulator raises by itself, in number order. The numbers come from the
+/// simulator's own constants, so a text cannot drift from the alarm it names.
+pub const TEXTS: &[AlarmText] = &[
+    text(ps::DIGITS, "数字位数太多", "Too many digits"),
+    text(ps::ADDRESS, "非法地址或数值", "Improper address or value"),
+    text(ps::G_CODE, "G代码错误", "Improper G code"),
+    text(ps::NO_FEED, "未指定进给速度", "No feedrate commanded"),
+    text(ps::M_COUNT, "M代码过多", "Too many M codes"),
+    text(ps::NO_PROGRAM, "子程序未找到", "Subprogram not found"),
+    text(ps::NESTING, "子程序嵌套过多", "Subprograms nested too deep"),
+    text(
+        ps::NO_REFERENCE,
+        "未建立参考点",
+        "Reference point not established",
+    ),
+    text(
+        ps::PLC_AXIS,
+        "PLC轴控制指令错误",
+        "PLC axis command refused",
+    ),
+    text(
+        ps::AXIS_CLAIM,
+        "PLC控制轴冲突",
+        "Axis claimed by both CNC and PLC",
+    ),
+    text(
+        ALARM_STROKE[0],
+        "正向软限位超程",
+        "Soft limit overtravel (+)",
+    ),
+    text(
+        ALARM_STROKE[1],
+        "负向软限位超程",
+        "Soft limit overtravel (-)",
+    ),
+    text(
+        ALARM_HARD_LIMIT[0],
+        "正向硬限位超程",
+        "Hard limit overtravel (+)",
+    ),
+    text(
+        ALARM_HARD_LIMIT[1],
+        "负向硬限位超程",
+        "Hard limit overtravel (-)",
+    ),
+    text(ALARM_ESTOP, "急停报警", "Emergency stop"),
+];
+
+/// The text of a range: what a number without its own text shows.
+fn generic(number: u16, zh: bool) -> &'static str {
+    let (z, e) = match number {
+        401..=499 => ("伺服报警", "Servo alarm"),
+        1000..=1999 => ("PLC报警", "PLC alarm"),
+        2000..=9999 => ("操作信息", "Operator message"),
+        _ => ("P/S报警", "P/S alarm"),
+    };
+    if zh { z } else { e }
+}
+
+/// The short text of alarm `number`, in Chinese when `zh`, else English: its own text if the
+/// simulator raises it by itself, else its range's (see the module documentation).
+pub fn alarm_text(number: u16, zh: bool) -> Cow<'static, str> {
+    let own = TEXTS.iter().find(|t| t.number == number);
+    Cow::Borrowed(match own {
+        Some(t) if zh => t.zh,
+        Some(t) => t.en,
+        None => generic(number, zh),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The numbers the simulator's sources name as alarms: the `ps` constants of
+    /// `program.rs` and the `ALARM_` constants of `mod.rs`, read from the text so a new
+    /// constant is found without anyone listing it.
+    fn constants_in_sources() -> Vec<u16> {
+        let program = include_str!("program.rs");
+        let ps_block = program
+            .split("pub mod ps {")
+            .nth(1)
+            .and_then(|rest| rest.split("\n}").next())
+            .expect("program.rs has the ps constants");
+        let ps = ps_block
+            .lines()
+            .filter(|l| l.trim_start().starts_with("pub const"))
+            .map(str::to_owned);
+        let alarms = include_str!("mod.rs")
+            .lines()
+            .filter(|l| l.starts_with("pub const ALARM_"))
+            .map(str::to_owned);
+        let mut numbers = Vec::new();
+        for line in ps.chain(alarms) {
+            let value = line.split('=').nth(1).expect("a constant has a value");
+            for n in value.split(|c: char| !c.is_ascii_digit()) {
+                if !n.is_empty() {
+                    numbers.push(n.parse().expect("an alarm number"));
+                }
+            }
+        }
+        numbers
+    }
+
+    #[test]
+    fn every_alarm_constant_of_the_simulator_has_its_own_text_in_both_languages() {
+        let numbers = constants_in_sources();
+        assert!(numbers.len() >= 15, "{numbers:?}");
+        for n in numbers {
+            let own = TEXTS.iter().find(|t| t.number == n);
+            assert!(own.is_some(), "alarm {n:04} has no text in TEXTS");
+            for zh in [true, false] {
+                let text = alarm_text(n, zh);
+                assert_ne!(text, generic(n, zh), "alarm {n:04}");
+                assert!(!text.is_empty());
+            }
+            assert!(
+                alarm_text(n, true).chars().any(|c| c > '\u{2E80}'),
+                "alarm {n:04}: the Chinese text has Chinese in it"
+            );
+        }
+    }
+
+    #[test]
+    fn the_simulator_raises_alarms_only_through_named_constants() {
+        // A literal number passed to `raise` would escape the test above.
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/src/cnc");
+        for entry in std::fs::read_dir(dir).expect("the cnc sources") {
+            let path = entry.expect("a directory entry").path();
+            let source = std::fs::read_to_string(&path).expect("a source file");
+            for call in source.split("raise(").skip(1) {
+                assert!(
+                    !call.starts_with(|c: char| c.is_ascii_digit()),
+                    "{}: raise({}",
+                    path.display(),
+                    &call[..call.find(')').unwrap_or(call.len())]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn texts_are_listed_once_in_number_order() {
+        assert!(TEXTS.windows(2).all(|w| w[0].number < w[1].number));
+    }
+
+    #[test]
+    fn numbers_without_their_own_text_get_their_range() {
+        assert_eq!(alarm_text(950, true), "急停报警");
+        assert_eq!(alarm_text(950, false), "Emergency stop");
+        assert_eq!(alarm_text(500, true), "正向软限位超程");
+        assert_eq!(alarm_text(411, false), "Servo alarm");
+        assert_eq!(alarm_text(411, true), "伺服报警");
+        assert_eq!(alarm_text(1003, false), "PLC alarm");
+        assert_eq!(alarm_text(1003, true), "PLC报警");
+        assert_eq!(alarm_text(123, false), "P/S alarm");
+        assert_eq!(alarm_text(600, true), "P/S报警");
+    }
+}
