@@ -419,3 +419,67 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
         "FIN (G4.3) was 1: {changes:?}"
     );
 }
+
+#[test]
+fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    let commands = [
+        Command::Run,
+        Command::Stop,
+        Command::StepTick,
+        Command::StepN,
+        Command::PowerCycle,
+        Command::ToggleBit,
+        Command::ForceBit,
+        Command::Unforce,
+        Command::UnforceAll,
+        Command::Why,
+        Command::LiveView,
+        Command::Undo,
+        Command::Redo,
+        Command::GoOffline,
+        Command::Close,
+        Command::New,
+        Command::Speed(ladder_engine::runner::Speed::Max),
+        Command::Speed(ladder_engine::runner::Speed::RealTime),
+    ];
+    // A fixed pseudo-random walk: the same sequence every run.
+    let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
+    for i in 0..300 {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        let pick = (seed >> 33) as usize;
+        if i % 7 == 3 && h.state().doc.is_some() {
+            // An edit, valid or not, where the cursor is.
+            let operand = if pick % 2 == 0 { "X0010.3" } else { "NO_SUCH" };
+            let _ = h.state_mut().try_edit(Edit::SetCell {
+                at: CellRef {
+                    block: 1,
+                    network: 0,
+                    row: 0,
+                    col: 1,
+                },
+                cell: Cell::Contact {
+                    negated: false,
+                    operand: Operand::parse(operand).unwrap(),
+                },
+            });
+        } else if i % 11 == 5 {
+            let scrub = h.state().online.session.as_ref().and_then(|s| {
+                let r = s.recorder();
+                r.oldest()
+            });
+            if let Some(s) = h.state_mut().online.session.as_mut() {
+                s.scrub_to(scrub);
+            }
+        } else {
+            let c = commands[pick % commands.len()];
+            h.state_mut().ask(c);
+        }
+        h.step();
+    }
+    settle(&mut h);
+    drop(h);
+}

@@ -34,8 +34,12 @@ fn main() {
     let start = Instant::now();
     let mut p = Published::default();
     // A UI taking the state at 60 frames a second, as the editor does.
+    let poll: u64 = std::env::var("RUNNER_POLL_MS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(16);
     while start.elapsed() < Duration::from_secs(seconds) {
-        std::thread::sleep(Duration::from_millis(16));
+        std::thread::sleep(Duration::from_millis(poll));
         runner.take(&mut p);
     }
     runner.take(&mut p);

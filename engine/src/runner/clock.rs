@@ -92,11 +92,6 @@ impl Clock {
         self.origin + period.saturating_mul(n.min(u64::from(u32::MAX)) as u32)
     }
 
-    /// When the next tick is due.
-    pub(super) fn next_due(&self) -> Instant {
-        self.next_due
-    }
-
     /// How long until the next tick is due.
     pub(super) fn until_due(&self, now: Instant) -> Duration {
         // Set by the last `due_ticks`: the tick after the batch it gave.

@@ -15,7 +15,7 @@ use crate::machine::{Machine, MachineCommand, Snapshot, Target};
 use crate::vm::Vm;
 use crate::vm::swap::Swapped;
 use clock::Clock;
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender, TryRecvError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex, MutexGuard};
 use std::thread::JoinHandle;
 use std::time::{Duration, Instant};
@@ -23,9 +23,6 @@ use std::time::{Duration, Instant};
 /// Ticks a momentary key stays pressed at least (80 ms of virtual time): longer than a
 /// level-2 cycle at any division up to 9, so the ladder sees a click however short it was.
 pub const MIN_PRESS_TICKS: u64 = 10;
-
-/// How long before a tick is due the runner stops sleeping and yields instead.
-const SPIN: Duration = Duration::from_millis(2);
 
 /// How often an unchanged state is published anyway while running (the clock moves).
 const IDLE_PUBLISH: Duration = Duration::from_millis(250);
@@ -228,29 +225,12 @@ impl Worker {
         loop {
             // Wait for a request, or until the next tick is due.
             let request = if self.machine.running() {
-                // Sleep until just before the tick is due, then yield until it is: a sleeping
-                // thread wakes up to a millisecond late, which a real-time tick must not be.
                 let wait = self.clock.until_due(Instant::now());
-                let r = if wait > SPIN {
-                    match self.rx.recv_timeout(wait - SPIN) {
-                        Ok(r) => Some(r),
-                        Err(RecvTimeoutError::Timeout) => None,
-                        Err(RecvTimeoutError::Disconnected) => return,
-                    }
-                } else {
-                    match self.rx.try_recv() {
-                        Ok(r) => Some(r),
-                        Err(TryRecvError::Empty) => None,
-                        Err(TryRecvError::Disconnected) => return,
-                    }
-                };
-                if r.is_none() {
-                    let due = self.clock.next_due();
-                    while Instant::now() < due {
-                        std::thread::yield_now();
-                    }
+                match self.rx.recv_timeout(wait) {
+                    Ok(r) => Some(r),
+                    Err(RecvTimeoutError::Timeout) => None,
+                    Err(RecvTimeoutError::Disconnected) => return,
                 }
-                r
             } else {
                 match self.rx.recv() {
                     Ok(r) => Some(r),
