@@ -453,7 +453,11 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
         let pick = (seed >> 33) as usize;
         if i % 7 == 3 && h.state().doc.is_some() {
             // An edit, valid or not, where the cursor is.
-            let operand = if pick % 2 == 0 { "X0010.3" } else { "NO_SUCH" };
+            let operand = if pick.is_multiple_of(2) {
+                "X0010.3"
+            } else {
+                "NO_SUCH"
+            };
             let _ = h.state_mut().try_edit(Edit::SetCell {
                 at: CellRef {
                     block: 1,
