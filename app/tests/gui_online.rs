@@ -487,3 +487,59 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
     settle(&mut h);
     drop(h);
 }
+
+/// A double-click with frames between the presses, as a user's.
+fn double_click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
+    let p = h
+        .state()
+        .edit
+        .geometry
+        .cell_center(network, row, col)
+        .expect("the cell is on screen");
+    h.hover_at(p);
+    h.step();
+    for pressed in [true, false, true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: p,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::NONE,
+        });
+        h.step();
+    }
+    settle(h);
+}
+
+#[test]
+fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
+    let path = il_project(RUNG);
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1920.0, 1000.0))
+        .with_step_dt(1.0 / 60.0)
+        .build_eframe(move |cc| {
+            let mut app = LadderApp::from_creation(cc, Some(path));
+            app.settings.lang = Lang::En;
+            app
+        });
+    h.run();
+    command(&mut h, Command::StepTick);
+    double_click_cell(&mut h, 0, 0, 0);
+    assert_eq!(value(&h, "X0010.0"), 1, "the contact's bit was toggled");
+    assert!(
+        h.state().function_dialog.is_none(),
+        "online, no edit dialog"
+    );
+    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    double_click_cell(&mut h, 1, 0, width);
+    assert!(
+        h.state().online.values.at.is_some(),
+        "the box's value window"
+    );
+    h.state_mut().online.values.texts[0] = "500".into();
+    h.step();
+    // The first row's Write: T0000 (the preset is a constant and has none).
+    h.get_all_by_label("Write").next().unwrap().click();
+    h.step();
+    settle(&mut h);
+    assert_eq!(value(&h, "T0000"), 500, "written once");
+}

@@ -77,6 +77,8 @@ messages! {
     Speed100 => "×100", "×100";
     SpeedMax => "最快", "As fast as possible";
     SpeedLabel => "速度", "Speed";
+    LiveFormat => "数值格式", "Values as";
+    ValuesTitle => "在线数值", "live values";
     StepNHint => "“运行 N 个周期”（Shift+F8）的周期数", "Ticks of \"Step N ticks\" (Shift+F8)";
     Ticks => "周期", "ticks";
     StateRunning => "运行中", "running";

@@ -551,6 +551,7 @@ impl eframe::App for LadderApp {
             self.function_dialog_ui(&ctx);
         }
         self.help_ui(&ctx);
+        self.value_window_ui(&ctx);
         self.run_pending();
     }
 

@@ -122,6 +122,10 @@ impl LadderApp {
         }
         if let Some(hit) = ev.double_click {
             match hit {
+                // Online, a double-click operates the element instead of editing it.
+                Hit::Cell { network, row, col } if self.online() => {
+                    self.operate_element(cell(network, row, col))
+                }
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {
                     self.edit.cursor = cell(network, 0, 0);

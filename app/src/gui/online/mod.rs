@@ -13,6 +13,7 @@ pub mod panel_view;
 pub mod session;
 pub mod trace_view;
 mod ui;
+pub mod values;
 pub mod watch;
 
 use super::LadderApp;
@@ -90,6 +91,8 @@ pub struct OnlineState {
     pub trace: TraceUi,
     /// Bytes the panel's power-on values wrote, until the machine answers.
     pub panel_bytes: Vec<(Address, i64)>,
+    /// The value window of a function box (online double-click).
+    pub values: values::ValueWindow,
     /// Panel keys to press once the machine has run so many ticks (`--run --nc`).
     pub startup: Vec<(u64, Request)>,
 }

@@ -42,6 +42,13 @@ impl LadderApp {
                     }
                 }
             });
+        egui::ComboBox::new("live-format", t(Msg::LiveFormat))
+            .selected_text(self.settings.live_format.name())
+            .show_ui(ui, |ui| {
+                for f in super::super::settings::NumFormat::ALL {
+                    ui.selectable_value(&mut self.settings.live_format, f, f.name());
+                }
+            });
         ui.add(
             egui::DragValue::new(&mut self.settings.step_ticks)
                 .range(1..=1_000_000)
