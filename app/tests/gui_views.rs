@@ -308,3 +308,53 @@ fn closing_the_project_leaves_no_tab_and_no_output_behind() {
     assert!(h.state().output.is_empty());
     assert!(h.query_by_label_contains("Tab:").is_none());
 }
+
+#[test]
+fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/stress-5000.ldp"
+    ));
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    let (networks, width) = {
+        let p = h.state().doc.as_ref().unwrap().project();
+        (p.ladder.blocks[1].networks.len(), p.ladder.width)
+    };
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::End);
+    h.run();
+    h.run();
+    let c = h.state().edit.cursor;
+    assert_eq!(c.network, networks - 1, "Ctrl+End: the last network");
+    let p = h
+        .state()
+        .edit
+        .geometry
+        .cell_center(c.network, c.row, 0)
+        .expect("drawn");
+    assert!((0.0..800.0).contains(&p.y), "the view followed: {p:?}");
+    h.key_press(egui::Key::End);
+    h.run();
+    assert_eq!(h.state().edit.cursor.col, width, "End: the output column");
+    h.key_press(egui::Key::Home);
+    h.run();
+    assert_eq!(h.state().edit.cursor.col, 0, "Home: the first column");
+    h.key_press(egui::Key::PageUp);
+    h.run();
+    assert_eq!(
+        h.state().edit.cursor.network,
+        networks - 9,
+        "PgUp: a page up"
+    );
+    h.key_press(egui::Key::PageDown);
+    h.run();
+    assert_eq!(h.state().edit.cursor.network, networks - 1);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
+    h.run();
+    let c = h.state().edit.cursor;
+    assert_eq!(
+        (c.network, c.row, c.col),
+        (0, 0, 0),
+        "Ctrl+Home: the first cell"
+    );
+}

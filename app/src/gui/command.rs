@@ -228,6 +228,18 @@ commands! {
     LiveView => LiveView;
     /// The online panel shown (on/off).
     ToggleOnline => OnlineWindow;
+    /// The cursor to the first column of its row.
+    RowStart => CursorRowStart, NONE Home;
+    /// The cursor to the output column of its row.
+    RowEnd => CursorRowEnd, NONE End;
+    /// The cursor a page of networks up.
+    PageUp => CursorPageUp, NONE PageUp;
+    /// The cursor a page of networks down.
+    PageDown => CursorPageDown, NONE PageDown;
+    /// The cursor to the block's first cell.
+    BlockStart => CursorBlockStart, COMMAND Home;
+    /// The cursor to the block's last row.
+    BlockEnd => CursorBlockEnd, COMMAND End;
 }
 
 /// The PLC menu: compiling and the online commands (`None` is a separator).
@@ -460,8 +472,22 @@ impl Command {
 
     /// Whether it changes the ladder at the cursor (refused outside a ladder view).
     pub fn edits_ladder(self) -> bool {
-        EDIT_GROUPS.iter().any(|g| g.contains(&self))
-            || matches!(self, Command::Move(_) | Command::Extend(_))
+        EDIT_GROUPS.iter().any(|g| g.contains(&self)) || self.navigates()
+    }
+
+    /// Whether it only moves the cursor (allowed in a read-only replay too).
+    pub fn navigates(self) -> bool {
+        matches!(
+            self,
+            Command::Move(_)
+                | Command::Extend(_)
+                | Command::RowStart
+                | Command::RowEnd
+                | Command::PageUp
+                | Command::PageDown
+                | Command::BlockStart
+                | Command::BlockEnd
+        )
     }
 }
 

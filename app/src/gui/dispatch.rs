@@ -67,7 +67,7 @@ impl LadderApp {
             Command::Why => self.online() && self.in_ladder(),
             Command::LiveView => self.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline => true,
-            Command::Move(_) | Command::Extend(_) => self.in_ladder(),
+            c if c.navigates() => self.in_ladder(),
             // A recorded past is read-only: no edits while the view shows one.
             c if c.edits_ladder() => self.in_ladder() && !self.scrubbing(),
             _ => doc.is_some(),
@@ -309,6 +309,12 @@ impl LadderApp {
                 let (dr, dc) = d.delta();
                 self.move_cursor(dr, dc);
             }
+            Command::RowStart
+            | Command::RowEnd
+            | Command::PageUp
+            | Command::PageDown
+            | Command::BlockStart
+            | Command::BlockEnd => self.navigate(c),
             Command::Extend(d) => {
                 let (dr, dc) = d.delta();
                 self.extend_by(dr, dc);

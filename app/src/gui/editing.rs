@@ -428,6 +428,44 @@ impl LadderApp {
         self.edit.jump_to = Some(c.network);
     }
 
+    /// Home, End, PgUp, PgDn, Ctrl+Home, Ctrl+End: the cursor jumps, and the view follows.
+    pub(super) fn navigate(&mut self, c: super::command::Command) {
+        use super::command::Command;
+        /// Networks a page moves: about what a screen shows at 100 %.
+        const PAGE: usize = 8;
+        let Some(block) = self.block() else { return };
+        let networks = self.networks_of(block);
+        let width = self.width();
+        let mut at = self.edit.cursor;
+        at.block = block;
+        match c {
+            Command::RowStart => at.col = 0,
+            Command::RowEnd => at.col = width,
+            Command::PageUp => {
+                at.network = at.network.saturating_sub(PAGE);
+                at.row = 0;
+            }
+            Command::PageDown => {
+                at.network = (at.network + PAGE).min(networks.saturating_sub(1));
+                at.row = 0;
+            }
+            Command::BlockStart => {
+                at.network = 0;
+                at.row = 0;
+                at.col = 0;
+            }
+            Command::BlockEnd => {
+                at.network = networks.saturating_sub(1);
+                at.row = self.rows_of(block, at.network).saturating_sub(1);
+                at.col = 0;
+            }
+            _ => return,
+        }
+        self.edit.selection = None;
+        self.edit.cursor = at;
+        self.edit.jump_to = Some(at.network);
+    }
+
     /// F4: a wire at the cursor.
     pub fn wire(&mut self) {
         if let Some(at) = self.ensure_network() {

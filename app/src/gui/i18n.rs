@@ -190,6 +190,12 @@ messages! {
     ToolParallelNc => "并联常闭触点", "Parallel NC contact";
     ClearSelection => "取消选择", "Clear selection";
     CursorLeft => "光标左移", "Cursor left";
+    CursorRowStart => "光标到行首", "Cursor to the row's start";
+    CursorRowEnd => "光标到行尾（输出列）", "Cursor to the row's end (output column)";
+    CursorPageUp => "光标上翻一页", "Cursor a page up";
+    CursorPageDown => "光标下翻一页", "Cursor a page down";
+    CursorBlockStart => "光标到程序开头", "Cursor to the block's start";
+    CursorBlockEnd => "光标到程序末尾", "Cursor to the block's end";
     CursorRight => "光标右移", "Cursor right";
     CursorUp => "光标上移", "Cursor up";
     CursorDown => "光标下移", "Cursor down";
