@@ -273,3 +273,20 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
         "the edit made meanwhile is not dropped without asking"
     );
 }
+
+#[test]
+fn the_window_title_names_the_project_and_marks_unsaved_changes() {
+    let dir = tempfile_dir();
+    let path = dir.join("mill.ldp");
+    ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    assert_eq!(h.state().title, "mill.ldp — Ladder Studio");
+    h.key_press(egui::Key::F4);
+    h.run();
+    assert!(h.state().doc.as_ref().unwrap().dirty, "a wire was drawn");
+    assert_eq!(h.state().title, "mill.ldp* — Ladder Studio");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
+    h.run();
+    assert_eq!(h.state().title, "mill.ldp — Ladder Studio", "saved");
+}

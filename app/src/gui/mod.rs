@@ -85,6 +85,8 @@ pub struct LadderApp {
     pub last_change: u64,
     /// Online: the machine running behind the editor, and the online views' state.
     pub online: online::OnlineState,
+    /// The window title last sent, so it is sent only when it changes.
+    pub title: String,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -110,6 +112,7 @@ impl LadderApp {
             pending: Vec::new(),
             last_change: 0,
             online: Default::default(),
+            title: String::new(),
         };
         let start = path
             .map(Path::to_path_buf)
@@ -136,6 +139,21 @@ impl LadderApp {
             app.offer_restore();
         }
         app
+    }
+
+    /// The window's title: the project's file name, `*` while it has unsaved changes, and
+    /// the program's name (as GSKLadder and most editors show it).
+    pub fn window_title(&self) -> String {
+        match &self.doc {
+            Some(doc) => {
+                let name = doc
+                    .name()
+                    .unwrap_or_else(|| self.t(Msg::Untitled).to_string());
+                let mark = if doc.dirty { "*" } else { "" };
+                format!("{name}{mark} — Ladder Studio")
+            }
+            None => "Ladder Studio".to_string(),
+        }
     }
 
     fn t(&self, m: Msg) -> &'static str {
@@ -490,6 +508,11 @@ impl eframe::App for LadderApp {
         self.close_requested(&ctx);
         self.autosave_tick();
         self.online_frame();
+        let title = self.window_title();
+        if title != self.title {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.title = title;
+        }
         if self.files.question.is_some() {
             self.question_ui(&ctx);
         }
