@@ -119,7 +119,7 @@ fn the_watch_table_shows_a_timer_counting() {
     h.state_mut().add_watch("X0010.2").unwrap();
     command(&mut h, Command::StepTick);
     h.state_mut()
-        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+        .send_command(ladder_engine::machine::MachineCommand::Force(
             "X0010.2".parse().unwrap(),
             1,
         ));
@@ -154,13 +154,13 @@ fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     h.run();
     command(&mut h, Command::StepTick);
     h.state_mut()
-        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+        .send_command(ladder_engine::machine::MachineCommand::Force(
             "X0002.0".parse().unwrap(),
             0,
         ));
     // Start the timer: X0000.2 on.
     h.state_mut()
-        .send_command_pub(ladder_engine::machine::MachineCommand::Force(
+        .send_command(ladder_engine::machine::MachineCommand::Force(
             "X0010.2".parse().unwrap(),
             1,
         ));
@@ -232,7 +232,7 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
         )
         .unwrap();
         h.state_mut()
-            .send_command_pub(ladder_engine::machine::MachineCommand::Write(t, v));
+            .send_command(ladder_engine::machine::MachineCommand::Write(t, v));
     };
     write(&mut h, "X0010.0", 1);
     write(&mut h, "X0010.1", 1);

@@ -29,6 +29,15 @@ impl Default for Ladder {
 }
 
 impl Ladder {
+    /// The cell at a place, if it exists.
+    pub fn cell_at(&self, at: super::CellRef) -> Option<&super::Cell> {
+        self.blocks
+            .get(at.block)?
+            .networks
+            .get(at.network)?
+            .cell(at.row, at.col)
+    }
+
     /// An empty ladder with level 1 and level 2 and no subprograms.
     pub fn new(width: usize) -> Ladder {
         Ladder {

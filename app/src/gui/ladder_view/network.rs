@@ -163,23 +163,19 @@ pub(super) fn network_ui(
                             wire,
                         );
                     }
-                    let (text, color) = operand_text(
+                    let label = BitLabel {
                         project,
-                        operand,
                         mode,
-                        Place::Bit,
-                        std::slice::from_ref(operand),
-                    );
-                    painter.text(
+                        font: &font,
+                        size: m.font,
+                    };
+                    label.draw(
+                        painter,
+                        operand,
                         pos2(cx, mid - h - 2.0),
-                        Align2::CENTER_BOTTOM,
-                        text,
-                        font.clone(),
-                        color,
+                        forced(operand),
+                        pos2(cx + gap + 2.0, mid + h),
                     );
-                    if forced(operand) {
-                        force_mark(painter, pos2(cx + gap + 2.0, mid + h), m.font);
-                    }
                 }
                 Cell::Coil { negated, operand } => {
                     let cx = x1 - m.output * 0.3;
@@ -199,23 +195,19 @@ pub(super) fn network_ui(
                         );
                     }
                     painter.line_segment([pos2(cx + rad, mid), pos2(right_rail, mid)], wire);
-                    let (text, color) = operand_text(
+                    let label = BitLabel {
                         project,
-                        operand,
                         mode,
-                        Place::Bit,
-                        std::slice::from_ref(operand),
-                    );
-                    painter.text(
+                        font: &font,
+                        size: m.font,
+                    };
+                    label.draw(
+                        painter,
+                        operand,
                         pos2(cx, mid - rad - 2.0),
-                        Align2::CENTER_BOTTOM,
-                        text,
-                        font.clone(),
-                        color,
+                        forced(operand),
+                        pos2(cx + rad + 2.0, mid + rad),
                     );
-                    if forced(operand) {
-                        force_mark(painter, pos2(cx + rad + 2.0, mid + rad), m.font);
-                    }
                 }
                 Cell::Box { op, operands } => {
                     let h = m.row_height(&row.cells) - 8.0;
@@ -276,6 +268,38 @@ pub(super) fn network_ui(
                     || cell_view(r + 1, c - 1).is_some_and(|v| v.power_out);
                 painter.line_segment([pos2(x0, mid), pos2(x0, next_mid)], stroke(on));
             }
+        }
+    }
+}
+
+/// How a contact's or coil's operand is labelled.
+struct BitLabel<'a> {
+    project: &'a Project,
+    mode: DisplayMode,
+    font: &'a FontId,
+    size: f32,
+}
+
+impl BitLabel<'_> {
+    /// The operand's text centred above `above`, and the force mark at `mark` when forced.
+    fn draw(
+        &self,
+        painter: &egui::Painter,
+        operand: &Operand,
+        above: Pos2,
+        forced: bool,
+        mark: Pos2,
+    ) {
+        let (text, color) = operand_text(
+            self.project,
+            operand,
+            self.mode,
+            Place::Bit,
+            std::slice::from_ref(operand),
+        );
+        painter.text(above, Align2::CENTER_BOTTOM, text, self.font.clone(), color);
+        if forced {
+            force_mark(painter, mark, self.size);
         }
     }
 }

@@ -24,15 +24,10 @@ fn target(a: Address) -> Target {
 impl LadderApp {
     /// The panel in use: the project's own, else the profile's preset.
     pub fn panel(&self) -> Panel {
-        let Some(doc) = self.doc.as_ref() else {
-            return Panel::default();
-        };
-        let p = doc.project();
-        if p.panel.is_empty() {
-            Panel::preset(p.profile)
-        } else {
-            p.panel.clone()
-        }
+        self.doc
+            .as_ref()
+            .map(|d| d.project().operator_panel().into_owned())
+            .unwrap_or_default()
     }
 
     /// At power-on the panel's switches and knobs are where the panel says (a released
@@ -42,7 +37,7 @@ impl LadderApp {
         self.online.panel_bytes.clear();
         for item in self.panel().items {
             match item.kind {
-                PanelKind::Switch { input } => self.send_command_pub(MachineCommand::Write(
+                PanelKind::Switch { input } => self.send_command(MachineCommand::Write(
                     target(input),
                     i64::from(item.initial != 0),
                 )),
@@ -52,7 +47,7 @@ impl LadderApp {
                     let byte = self.panel_byte(input);
                     let v = (byte & !mask) | (item.initial & mask);
                     self.online.panel_bytes.push((input, v));
-                    self.send_command_pub(MachineCommand::Write(target(input), v));
+                    self.send_command(MachineCommand::Write(target(input), v));
                 }
                 _ => {}
             }
@@ -72,7 +67,8 @@ impl LadderApp {
     pub(super) fn machine_panel_ui(&mut self, ui: &mut egui::Ui) {
         let Some(doc) = self.doc.as_ref() else { return };
         let profile = doc.project().profile();
-        let panel = self.panel();
+        // Borrowed, not rebuilt: the preset is made only for a project without a panel.
+        let panel = doc.project().operator_panel();
         let lang = self.settings.lang;
         let session = self.online.session.as_ref();
         let memory = |a: Address| -> i64 {
@@ -88,7 +84,7 @@ impl LadderApp {
                 PanelEvent::Press(a) if live => self.send_request(Request::Press(target(a))),
                 PanelEvent::Release(a) if live => self.send_request(Request::Release(target(a))),
                 PanelEvent::Set(a, v) if live => {
-                    self.send_command_pub(MachineCommand::Write(target(a), v))
+                    self.send_command(MachineCommand::Write(target(a), v))
                 }
                 PanelEvent::Edited(p) => {
                     if let Err(e) = self.try_edit(TableEdit::Panel(Box::new(p))) {
@@ -119,7 +115,7 @@ impl LadderApp {
                 CncEvent::Reset => CncCommand::Reset,
             };
             if self.online() {
-                self.send_command_pub(MachineCommand::Cnc(c));
+                self.send_command(MachineCommand::Cnc(c));
             } else {
                 let t = Msg::OfflineHint.text(lang).to_string();
                 self.say(t, true);

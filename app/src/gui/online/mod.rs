@@ -202,7 +202,8 @@ impl LadderApp {
         self.online.why = None;
     }
 
-    fn send_command(&mut self, c: MachineCommand) {
+    /// Sends a machine command (what a script line would do); offline it does nothing.
+    pub fn send_command(&mut self, c: MachineCommand) {
         if let Some(s) = self.online.session.as_mut() {
             s.command(c);
         }
@@ -266,17 +267,7 @@ impl LadderApp {
     fn cursor_bit(&self) -> Option<Address> {
         let doc = self.doc.as_ref()?;
         let p = doc.project();
-        let c = self.edit.cursor;
-        let cell = p
-            .ladder
-            .blocks
-            .get(c.block)?
-            .networks
-            .get(c.network)?
-            .rows
-            .get(c.row)?
-            .cells
-            .get(c.col)?;
+        let cell = p.ladder.cell_at(self.edit.cursor)?;
         let operand = match cell {
             ladder_engine::model::Cell::Contact { operand, .. }
             | ladder_engine::model::Cell::Coil { operand, .. } => operand,

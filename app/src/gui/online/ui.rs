@@ -210,7 +210,7 @@ impl LadderApp {
             self.ask(Command::UnforceAll);
         }
         for a in release {
-            self.send_command_pub(MachineCommand::Unforce(a));
+            self.send_command(MachineCommand::Unforce(a));
         }
     }
 

@@ -6,9 +6,8 @@ use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::ladder_view::address_of;
 use super::super::place::Cursor;
-use super::super::settings::NumFormat;
 use super::super::theme;
-use super::watch::parse_value;
+use super::watch::{force_command, parse_value, write_command};
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::model::Cell;
 
@@ -26,19 +25,10 @@ impl LadderApp {
     pub fn operate_element(&mut self, at: Cursor) {
         self.edit.selection = None;
         self.edit.cursor = at;
-        let cell = self.doc.as_ref().and_then(|d| {
-            d.project()
-                .ladder
-                .blocks
-                .get(at.block)?
-                .networks
-                .get(at.network)?
-                .rows
-                .get(at.row)?
-                .cells
-                .get(at.col)
-                .cloned()
-        });
+        let cell = self
+            .doc
+            .as_ref()
+            .and_then(|d| d.project().ladder.cell_at(at).cloned());
         match cell {
             Some(Cell::Contact { .. } | Cell::Coil { .. }) if !self.scrubbing() => {
                 self.execute_online(super::super::command::Command::ToggleBit)
@@ -65,15 +55,7 @@ impl LadderApp {
             return;
         };
         let p = doc.project();
-        let Some(Cell::Box { op, operands }) = p
-            .ladder
-            .blocks
-            .get(at.block)
-            .and_then(|b| b.networks.get(at.network))
-            .and_then(|n| n.rows.get(at.row))
-            .and_then(|r| r.cells.get(at.col))
-            .cloned()
-        else {
+        let Some(Cell::Box { op, operands }) = p.ladder.cell_at(at).cloned() else {
             self.online.values = ValueWindow::default();
             return;
         };
@@ -135,23 +117,14 @@ impl LadderApp {
                             .clicked()
                             && let Some(v) = parsed
                         {
-                            commands.push(if format == NumFormat::Real && target.bytes == 4 {
-                                MachineCommand::WriteReal(target.address, v as f32)
-                            } else {
-                                MachineCommand::Write(*target, v as i64)
-                            });
+                            commands.push(write_command(*target, format, v));
                         }
                         if ui
                             .add_enabled(ok, egui::Button::new(t(Msg::ForceValue)))
                             .clicked()
                             && let Some(v) = parsed
                         {
-                            let raw = if format == NumFormat::Real {
-                                i64::from((v as f32).to_bits() as i32)
-                            } else {
-                                v as i64
-                            };
-                            commands.push(MachineCommand::Force(target.address, raw));
+                            commands.push(force_command(*target, format, v));
                         }
                         if ui
                             .add_enabled(*forced && !scrubbing, egui::Button::new(t(Msg::Release)))
@@ -164,7 +137,7 @@ impl LadderApp {
                 });
             });
         for c in commands {
-            self.send_command_pub(c);
+            self.send_command(c);
         }
         if !open {
             self.online.values = ValueWindow::default();

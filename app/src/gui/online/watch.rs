@@ -82,6 +82,26 @@ pub fn parse_value(text: &str, format: NumFormat) -> Option<f64> {
     }
 }
 
+/// The command that writes `v`, typed in `format`, once: a real into a 4-byte value when
+/// the format is REAL.
+pub fn write_command(t: Target, format: NumFormat, v: f64) -> MachineCommand {
+    if format == NumFormat::Real && t.bytes == 4 {
+        MachineCommand::WriteReal(t.address, v as f32)
+    } else {
+        MachineCommand::Write(t, v as i64)
+    }
+}
+
+/// The command that forces `v`, typed in `format` (a real as its bit pattern).
+pub fn force_command(t: Target, format: NumFormat, v: f64) -> MachineCommand {
+    let raw = if format == NumFormat::Real {
+        i64::from((v as f32).to_bits() as i32)
+    } else {
+        v as i64
+    };
+    MachineCommand::Force(t.address, raw)
+}
+
 impl LadderApp {
     /// The key of this project's watch list in the settings.
     pub fn watch_key(&self) -> PathBuf {
@@ -213,11 +233,7 @@ impl LadderApp {
                         .clicked()
                         && let (Some(t), Some(v)) = (target, parsed)
                     {
-                        commands.push(if format == NumFormat::Real && t.bytes == 4 {
-                            MachineCommand::WriteReal(t.address, v as f32)
-                        } else {
-                            MachineCommand::Write(t, v as i64)
-                        });
+                        commands.push(write_command(t, format, v));
                     }
                     if ui
                         .add_enabled(
@@ -227,12 +243,7 @@ impl LadderApp {
                         .clicked()
                         && let (Some(t), Some(v)) = (target, parsed)
                     {
-                        let raw = if format == NumFormat::Real {
-                            i64::from((v as f32).to_bits() as i32)
-                        } else {
-                            v as i64
-                        };
-                        commands.push(MachineCommand::Force(t.address, raw));
+                        commands.push(force_command(t, format, v));
                     }
                     if ui
                         .add_enabled(can && forced, egui::Button::new(t(Msg::Release)))
@@ -274,14 +285,7 @@ impl LadderApp {
             }
         }
         for c in commands {
-            self.send_command_pub(c);
-        }
-    }
-
-    /// Sends a machine command (for the online views).
-    pub fn send_command_pub(&mut self, c: MachineCommand) {
-        if let Some(s) = self.online.session.as_mut() {
-            s.command(c);
+            self.send_command(c);
         }
     }
 }
