@@ -27,7 +27,8 @@ pub enum DialogKind {
 }
 
 impl DialogKind {
-    fn saves(self) -> bool {
+    /// Whether the answer is a file to write (else one to read).
+    pub fn saves(self) -> bool {
         matches!(
             self,
             DialogKind::SaveProjectAs
@@ -37,7 +38,8 @@ impl DialogKind {
         )
     }
 
-    fn filter(self) -> (&'static str, &'static [&'static str]) {
+    /// The file type's name and extensions, the first one the default.
+    pub fn filter(self) -> (&'static str, &'static [&'static str]) {
         match self {
             DialogKind::OpenProject | DialogKind::SaveProjectAs => ("Ladder project", &["ldp"]),
             DialogKind::ExportIl => ("Instruction list", &["il", "txt"]),
@@ -56,6 +58,9 @@ pub trait FileDialogs {
     fn poll(&mut self) -> Option<(DialogKind, Option<PathBuf>)>;
     /// Whether a dialog is open.
     fn busy(&self) -> bool;
+    /// Draws a dialog that lives in the editor's window, once a frame (system dialogs have
+    /// their own window and draw nothing here).
+    fn show(&mut self, _ctx: &egui::Context, _lang: super::i18n::Lang) {}
 }
 
 /// The system's dialogs (rfd: the xdg portal, else zenity), each on its own thread.

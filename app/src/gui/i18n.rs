@@ -295,6 +295,15 @@ messages! {
     DontSave => "不保存", "Don't save";
     Cancel => "取消", "Cancel";
     DamagedTitle => "文件已损坏", "Damaged file";
+    // The in-app file dialog (when the system's cannot appear).
+    DialogOpen => "打开", "Open";
+    DialogSave => "保存", "Save";
+    NewFolder => "新建文件夹", "New folder";
+    NewFolderName => "新文件夹", "New folder";
+    Refresh => "刷新", "Refresh";
+    ParentFolder => "上一级文件夹", "Parent folder";
+    FileLabel => "文件名：", "File name:";
+    ShowHidden => "显示隐藏文件", "Show hidden files";
     OpenReadOnlyQuestion => "是否只读打开其中可读的部分？", "Open what can be read of it, read-only?";
     OpenReadOnly => "只读打开", "Open read-only";
     RestoreTitle => "恢复工程", "Recover project";

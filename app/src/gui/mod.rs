@@ -7,6 +7,7 @@ pub mod dispatch;
 pub mod document;
 pub mod editing;
 pub mod errors;
+pub mod file_dialog;
 pub mod files;
 pub mod fonts;
 pub mod function_dialog;
@@ -503,6 +504,7 @@ impl eframe::App for LadderApp {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
         self.clamp_ui_state();
+        self.files.dialogs.show(&ctx, self.settings.lang);
         self.poll_dialogs();
         self.dropped_files(&ctx);
         self.close_requested(&ctx);

@@ -2,7 +2,8 @@
 //! ladder editor's place and gestures, and the file side (dialogs, questions, recovery). A
 //! function that needs one group borrows that group, not the whole application.
 
-use super::dialogs::{Action, FileDialogs, NativeDialogs, Question};
+use super::dialogs::{Action, FileDialogs, Question};
+use super::file_dialog::SystemDialogs;
 use super::ladder_view::{Geometry, Hit};
 use super::place::{BlockKey, Cursor, block_start};
 use ladder_engine::model::CellRef;
@@ -84,7 +85,7 @@ pub struct FileState {
 impl Default for FileState {
     fn default() -> FileState {
         FileState {
-            dialogs: Box::new(NativeDialogs::default()),
+            dialogs: Box::new(SystemDialogs::default()),
             question: None,
             after_save: None,
             exit_confirmed: false,
