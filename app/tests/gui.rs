@@ -137,6 +137,7 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
     use egui::{Key, Modifiers};
     let mut h = harness(None, Lang::En);
     h.run();
+    on_level2(&mut h);
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "30 2");
     let c = h.state().edit.cursor;
@@ -453,6 +454,7 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
 fn typing_after_f1_completes_from_the_symbol_table() {
     let mut h = harness(None, Lang::En);
     h.run();
+    on_level2(&mut h);
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
     h.key_press(egui::Key::F1);

@@ -31,7 +31,7 @@ fn new_asks_about_unsaved_changes_and_cancel_keeps_them() {
         "a new, empty project"
     );
     assert_eq!(
-        ladder_engine::file::load(&path).unwrap().ladder.blocks[1]
+        ladder_engine::file::load(&path).unwrap().ladder.blocks[0]
             .networks
             .len(),
         0,
@@ -74,9 +74,9 @@ fn closing_the_window_with_unsaved_changes_saves_them_first_when_asked() {
     assert!(h.state().files.exit_confirmed, "saved, then closed");
     let saved = ladder_engine::file::load(&path).unwrap();
     assert_eq!(
-        saved.ladder.blocks[1].networks.len(),
+        saved.ladder.blocks[0].networks.len(),
         1,
-        "the change was saved"
+        "the change (a network in level 1, where the editor opens) was saved"
     );
 }
 
@@ -194,7 +194,7 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::S);
     h.run();
     assert_eq!(
-        ladder_engine::file::load(&path).unwrap().ladder.blocks[1]
+        ladder_engine::file::load(&path).unwrap().ladder.blocks[0]
             .networks
             .len(),
         1

@@ -81,6 +81,7 @@ NETWORK\nLD X0010.2\nTMRB T0000 1000 R0000.0\n";
 fn the_cursor_keys_force_an_input_and_release_it() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
+    on_level2(&mut h);
     command(&mut h, Command::StepTick);
     assert!(h.state().online(), "a step goes online");
     // Cursor on X0000.0 (network 1, row 1, column 1): Shift+F7 forces it to 1.
@@ -522,6 +523,7 @@ fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
             app
         });
     h.run();
+    on_level2(&mut h);
     command(&mut h, Command::StepTick);
     double_click_cell(&mut h, 0, 0, 0);
     assert_eq!(value(&h, "X0010.0"), 1, "the contact's bit was toggled");

@@ -25,7 +25,11 @@ fn starts_on_the_bundled_sample_with_the_project_tree() {
         h.get_by_label(label);
     }
     h.get_by_label_contains("P0001");
-    assert_eq!(h.state().view, View::Block(1), "level 2 is shown first");
+    assert_eq!(
+        h.state().view,
+        View::Block(0),
+        "level 1 is shown first, as in the manual's editor"
+    );
 }
 
 #[test]
@@ -162,17 +166,17 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
 fn every_view_opened_gets_a_tab_that_switches_back_to_it() {
     let mut h = harness(None, Lang::En);
     h.run();
-    h.get_by_label("Level 1").click();
+    h.get_by_label("Level 2").click();
     h.run();
     h.get_by_label("Display messages").click();
     h.run();
     assert_eq!(
         h.state().tabs,
-        [View::Block(1), View::Block(0), View::Messages]
+        [View::Block(0), View::Block(1), View::Messages]
     );
-    h.get_by_label("Tab: Level 2").click();
+    h.get_by_label("Tab: Level 1").click();
     h.run();
-    assert_eq!(h.state().view, View::Block(1));
+    assert_eq!(h.state().view, View::Block(0));
 }
 
 #[test]
@@ -317,6 +321,7 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
     ));
     let mut h = harness(Some(path), Lang::En);
     h.run();
+    on_level2(&mut h);
     let (networks, width) = {
         let p = h.state().doc.as_ref().unwrap().project();
         (p.ladder.blocks[1].networks.len(), p.ladder.width)
@@ -356,5 +361,120 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
         (c.network, c.row, c.col),
         (0, 0, 0),
         "Ctrl+Home: the first cell"
+    );
+}
+
+/// The stress project on level 2, in a window, with the cursor sent to network `n` (1-based).
+fn stress_at(n: usize) -> (Harness<'static, LadderApp>, PathBuf) {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/stress-5000.ldp"
+    ));
+    let mut h = harness(Some(path.clone()), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, &format!("{n} 1"));
+    h.run();
+    (h, ladder_studio::gui::settings::canonical(&path))
+}
+
+#[test]
+fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
+    let (mut h, _) = stress_at(40);
+    let c = h.state().edit.cursor;
+    // Ctrl+plus zooms in about the cursor cell: it stays where it was.
+    let g = h.state().edit.geometry.clone();
+    let before = g.cell_rect(c.network, c.row, c.col).unwrap().center();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Plus);
+    h.run();
+    assert_eq!(h.state().settings.zoom, 125);
+    let g = h.state().edit.geometry.clone();
+    let after = g.cell_rect(c.network, c.row, c.col).unwrap();
+    assert!(
+        after.contains(before),
+        "the cursor cell stays where it was: {after:?} holds {before:?}"
+    );
+    // The mouse on the fifth column of the next network's first row; one notch of
+    // Ctrl+wheel zooms in about it.
+    let mouse = g.cell_rect(c.network + 1, 0, 4).unwrap().center();
+    h.hover_at(mouse);
+    h.run();
+    h.event(egui::Event::MouseWheel {
+        unit: egui::MouseWheelUnit::Line,
+        delta: egui::vec2(0.0, 1.0),
+        phase: egui::TouchPhase::Move,
+        source: egui::MouseWheelSource::Unknown,
+        modifiers: egui::Modifiers::COMMAND,
+    });
+    // The wheel's motion is smoothed over a few frames.
+    h.run_steps(30);
+    assert_eq!(h.state().settings.zoom, 150, "one notch, one zoom step");
+    let g = h.state().edit.geometry.clone();
+    let a = g.anchor_at(mouse).unwrap();
+    assert_eq!(
+        (a.network, a.row),
+        (c.network + 1, Some(0)),
+        "the same row is under the mouse"
+    );
+    let cell = g.cell_rect(c.network + 1, 0, 4).unwrap();
+    assert!(cell.contains(mouse), "{cell:?} holds {mouse:?}");
+}
+
+#[test]
+fn the_view_follows_the_cursor_after_an_insert_and_a_paste() {
+    let (mut h, _) = stress_at(60);
+    let visible = |h: &Harness<'static, LadderApp>| {
+        let c = h.state().edit.cursor;
+        let g = &h.state().edit.geometry;
+        let r = g.cell_rect(c.network, c.row, c.col).unwrap();
+        let screen = h.ctx.content_rect();
+        r.top() >= 0.0 && r.bottom() <= screen.bottom()
+    };
+    assert!(visible(&h), "after the jump");
+    // Copy a network, then insert and paste below it several times: each lands below the
+    // screen's bottom unless the view follows.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::C);
+    h.run();
+    for _ in 0..6 {
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
+        h.run();
+        h.run();
+        assert!(visible(&h), "after Ctrl+I");
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::V);
+        h.run();
+        h.run();
+        assert!(visible(&h), "after Ctrl+V");
+    }
+}
+
+#[test]
+fn each_block_opens_again_where_it_was_left() {
+    let (mut h, path) = stress_at(120);
+    h.run();
+    let top = h.state().settings.tops[&path]["LEVEL2"];
+    assert!(
+        (100..=119).contains(&top),
+        "network 120 is on screen: top {top}"
+    );
+    let settings = h.state().settings.clone();
+    drop(h);
+    // Another session with the same settings: level 1 first, then level 2 where it was.
+    let mut h = egui_kittest::Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_eframe(move |cc| {
+            let mut app = LadderApp::from_creation(cc, Some(path));
+            app.settings = settings;
+            app
+        });
+    h.run();
+    assert_eq!(h.state().view, View::Block(0));
+    on_level2(&mut h);
+    h.run();
+    let g = h.state().edit.geometry.clone();
+    let shown = g.cell_rect(top, 0, 0).unwrap();
+    assert!(
+        shown.top() >= 0.0 && shown.top() < 200.0,
+        "network {top} is at the top again: {shown:?}"
     );
 }

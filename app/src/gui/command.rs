@@ -195,9 +195,9 @@ commands! {
     /// The status bar shown (on/off).
     ToggleStatus => StatusBar;
     /// One zoom step up.
-    ZoomIn => ZoomIn;
+    ZoomIn => ZoomIn, COMMAND Plus;
     /// One zoom step down.
-    ZoomOut => ZoomOut;
+    ZoomOut => ZoomOut, COMMAND Minus;
     /// Compile into the output window.
     Compile => Compile, NONE F9;
     /// A new subprogram.

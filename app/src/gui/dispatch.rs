@@ -254,8 +254,8 @@ impl LadderApp {
             Command::ToggleOutput => self.settings.show_output ^= true,
             Command::ToggleToolbar => self.settings.show_toolbar ^= true,
             Command::ToggleStatus => self.settings.show_status ^= true,
-            Command::ZoomIn => self.settings.step_zoom(true),
-            Command::ZoomOut => self.settings.step_zoom(false),
+            Command::ZoomIn => self.zoom_step(true, None),
+            Command::ZoomOut => self.zoom_step(false, None),
             Command::Compile => self.compile(),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::Run

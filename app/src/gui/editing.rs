@@ -424,8 +424,9 @@ impl LadderApp {
         } else {
             c.row = row.clamp(0, (rows - 1).max(0)) as usize;
         }
+        // The view follows with the least scrolling (ladder_view's `follow`), so an arrow
+        // key never throws the network to the top of the screen.
         self.edit.cursor = c;
-        self.edit.jump_to = Some(c.network);
     }
 
     /// Home, End, PgUp, PgDn, Ctrl+Home, Ctrl+End: the cursor jumps, and the view follows.
@@ -536,7 +537,6 @@ impl LadderApp {
                 row: 0,
                 col: 0,
             };
-            self.edit.jump_to = Some(index);
         }
     }
 

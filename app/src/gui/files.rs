@@ -130,11 +130,12 @@ impl LadderApp {
         self.reset_view();
     }
 
-    /// Back to level 2 at its first cell, with nothing pending from the old project.
+    /// Back to level 1 at its first cell (where the manual's editor opens), with nothing
+    /// pending from the old project.
     pub fn reset_view(&mut self) {
         // Another project (or none): the old one's machine stops with it.
         self.go_offline();
-        self.view = View::Block(1);
+        self.view = View::Block(0);
         self.prompt = None;
         self.function_dialog = None;
         self.tables = Default::default();

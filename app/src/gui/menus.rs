@@ -195,7 +195,10 @@ impl LadderApp {
                 .selected_text(format!("{}%", self.settings.zoom))
                 .show_ui(ui, |ui| {
                     for z in super::settings::ZOOMS {
-                        ui.selectable_value(&mut self.settings.zoom, z, format!("{z}%"));
+                        let on = self.settings.zoom == z;
+                        if ui.selectable_label(on, format!("{z}%")).clicked() && !on {
+                            self.zoom_to(z, None);
+                        }
                     }
                 });
         });

@@ -99,7 +99,7 @@ impl LadderApp {
         let mut app = LadderApp {
             settings,
             doc: None,
-            view: View::Block(1),
+            view: View::Block(0),
             tabs: Vec::new(),
             output: Vec::new(),
             edit: Default::default(),
@@ -128,6 +128,8 @@ impl LadderApp {
     /// The creator eframe calls: fonts, then settings from storage.
     pub fn from_creation(cc: &eframe::CreationContext<'_>, path: Option<PathBuf>) -> LadderApp {
         fonts::install(&cc.egui_ctx);
+        // Ctrl+plus and Ctrl+minus zoom the ladder, as Ctrl+wheel does, not the whole UI.
+        cc.egui_ctx.options_mut(|o| o.zoom_with_keyboard = false);
         let settings = cc
             .storage
             .and_then(|s| eframe::get_value(s, eframe::APP_KEY))
@@ -386,6 +388,24 @@ impl LadderApp {
                     .edit
                     .selection
                     .and_then(|(sb, s)| (sb == b).then_some(s));
+                let Some(block) = doc.project().ladder.blocks.get(b) else {
+                    return;
+                };
+                let label = block.kind.label();
+                if self.edit.shown.insert((doc.serial, b))
+                    && self.edit.jump_to.is_none()
+                    && let Some(path) = &doc.path
+                {
+                    self.edit.jump_to = self
+                        .settings
+                        .tops
+                        .get(path)
+                        .and_then(|t| t.get(&label))
+                        .copied();
+                }
+                let seen = (self.edit.cursor, doc.serial, doc.generation);
+                let follow = self.edit.followed != Some(seen);
+                self.edit.followed = Some(seen);
                 let opts = ladder_view::ViewOptions {
                     zoom: self.settings.zoom,
                     mode: self.settings.display,
@@ -394,8 +414,14 @@ impl LadderApp {
                     cursor,
                     selection,
                     document: doc.serial,
+                    anchor: self.edit.anchor.take(),
+                    follow,
                 };
                 let events = self.live_block_ui(ui, b, &opts);
+                if let Some((up, at)) = events.zoom {
+                    self.zoom_step(up, Some(at));
+                }
+                self.remember_top(&label, events.visible.start);
                 self.pointer_events(b, events);
             }
             View::RefIndex | View::RefBits | View::RefBytes => self.xref_view_ui(ui),

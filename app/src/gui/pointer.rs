@@ -435,4 +435,38 @@ impl LadderApp {
         })?;
         Ok(())
     }
+
+    /// One zoom step in or out about `at` (the mouse, for Ctrl+wheel), else the cursor cell.
+    pub fn zoom_step(&mut self, up: bool, at: Option<egui::Pos2>) {
+        self.zoom_to(super::settings::next_zoom(self.settings.zoom, up), at);
+    }
+
+    /// Zooms to `zoom` percent keeping the ladder point at `at` (else at the cursor cell's
+    /// centre) where it is on screen: the element looked at does not run away.
+    pub fn zoom_to(&mut self, zoom: u16, at: Option<egui::Pos2>) {
+        if zoom == self.settings.zoom {
+            return;
+        }
+        let g = &self.edit.geometry;
+        let c = self.edit.cursor;
+        let point = at.or_else(|| {
+            matches!(self.view, View::Block(b) if b == c.block)
+                .then(|| g.cell_rect(c.network, c.row, c.col))
+                .flatten()
+                .map(|r| r.center())
+        });
+        self.edit.anchor = point.and_then(|p| g.anchor_at(p));
+        self.settings.zoom = zoom;
+    }
+
+    /// Keeps `top` as the first network on screen of block `label` of the open project.
+    pub fn remember_top(&mut self, label: &str, top: usize) {
+        let Some(path) = self.doc.as_ref().and_then(|d| d.path.as_ref()) else {
+            return;
+        };
+        if self.settings.tops.get(path).and_then(|t| t.get(label)) != Some(&top) {
+            let tops = self.settings.tops.entry(path.clone()).or_default();
+            tops.insert(label.to_string(), top);
+        }
+    }
 }

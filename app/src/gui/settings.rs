@@ -91,6 +91,17 @@ pub struct WatchRow {
 /// The zoom steps of the ladder view, in percent.
 pub const ZOOMS: [u16; 5] = [75, 100, 125, 150, 175];
 
+/// The zoom one step up or down from `zoom` (a zoom between the steps counts as 100 %).
+pub fn next_zoom(zoom: u16, up: bool) -> u16 {
+    let i = ZOOMS.iter().position(|z| *z == zoom).unwrap_or(1);
+    let i = if up {
+        (i + 1).min(ZOOMS.len() - 1)
+    } else {
+        i.saturating_sub(1)
+    };
+    ZOOMS[i]
+}
+
 /// Most recent files kept (GSKLadder lists four).
 pub const RECENT_FILES: usize = 4;
 
@@ -129,6 +140,10 @@ pub struct Settings {
     /// a project never imposes one engineer's watch list on another (and never changes the
     /// project's checksum).
     pub watches: std::collections::BTreeMap<PathBuf, Vec<WatchRow>>,
+    /// The first network on screen in each block (by label) of each project file: a
+    /// project opens again where each of its blocks was being read. Networks, not pixels,
+    /// so the place survives another zoom or comments shown.
+    pub tops: std::collections::BTreeMap<PathBuf, std::collections::BTreeMap<String, usize>>,
 }
 
 impl Default for Settings {
@@ -144,6 +159,7 @@ impl Default for Settings {
             live_format: NumFormat::Dec,
             step_ticks: 10,
             watches: Default::default(),
+            tops: Default::default(),
             show_toolbar: true,
             show_output: true,
             show_tree: true,
@@ -159,17 +175,6 @@ impl Settings {
         self.recent.retain(|p| *p != path);
         self.recent.insert(0, path);
         self.recent.truncate(RECENT_FILES);
-    }
-
-    /// The next zoom step up or down.
-    pub fn step_zoom(&mut self, up: bool) {
-        let i = ZOOMS.iter().position(|z| *z == self.zoom).unwrap_or(1);
-        let i = if up {
-            (i + 1).min(ZOOMS.len() - 1)
-        } else {
-            i.saturating_sub(1)
-        };
-        self.zoom = ZOOMS[i];
     }
 }
 

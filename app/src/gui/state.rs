@@ -35,12 +35,20 @@ pub struct EditState {
     pub geometry: Geometry,
     /// The last text searched for (Ctrl+F offers it again, to find the next match).
     pub last_find: String,
+    /// A ladder point to keep in place at the next frame: the zoom has just changed.
+    pub anchor: Option<super::ladder_view::Anchor>,
+    /// The cursor and the document's change count the view last followed: when either
+    /// differs, the view brings the cursor into sight.
+    pub followed: Option<(Cursor, u64, u64)>,
+    /// The (document, block) pairs shown since they were opened: the first showing scrolls
+    /// to where the block was left in an earlier session.
+    pub shown: std::collections::HashSet<(u64, usize)>,
 }
 
 impl Default for EditState {
     fn default() -> EditState {
         EditState {
-            cursor: block_start(1),
+            cursor: block_start(0),
             block_cursors: HashMap::new(),
             selection: None,
             clipboard: None,
@@ -49,6 +57,9 @@ impl Default for EditState {
             jump_to: None,
             geometry: Geometry::default(),
             last_find: String::new(),
+            anchor: None,
+            followed: None,
+            shown: Default::default(),
         }
     }
 }

@@ -83,13 +83,18 @@ pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usiz
     );
 }
 
-/// The app's state of a document: (path, dirty, networks in level 2).
+/// The app's state of a document: (path, dirty, networks in the whole ladder).
 pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bool, usize)> {
     h.state().doc.as_ref().map(|d| {
         (
             d.path.clone(),
             d.dirty,
-            d.project().ladder.blocks[1].networks.len(),
+            d.project()
+                .ladder
+                .blocks
+                .iter()
+                .map(|b| b.networks.len())
+                .sum(),
         )
     })
 }
@@ -107,7 +112,16 @@ pub fn editor_on(il: &str, name: &str) -> (Harness<'static, LadderApp>, PathBuf)
     ladder_engine::file::save(&p, &path).unwrap();
     let mut h = harness(Some(path.clone()), Lang::En);
     h.run();
+    on_level2(&mut h);
     (h, path)
+}
+
+/// Shows level 2, as a click on it in the project tree does (the editor opens on level 1).
+pub fn on_level2(h: &mut Harness<'static, LadderApp>) {
+    use ladder_studio::gui::command::Command;
+    use ladder_studio::gui::place::View;
+    h.state_mut().ask(Command::ShowView(View::Block(1)));
+    h.run();
 }
 
 /// The instructions the editor's project compiles to (directives kept, spaces folded).

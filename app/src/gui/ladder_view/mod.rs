@@ -3,9 +3,11 @@
 //! a 5000-step program scrolls as smoothly as a small one.
 
 mod network;
+mod scroll;
 
 pub use network::{LiveNetwork, address_of};
 use network::{Style, cursor_ui, network_ui, selection_ui};
+pub use scroll::Anchor;
 
 use super::settings::{DisplayMode, NumFormat};
 use super::theme;
@@ -47,6 +49,9 @@ fn right_type(project: &Project, o: &Operand, place: Place, operands: &[Operand]
         }
     }
 }
+
+/// The space under a network's last row, at every zoom.
+pub const NETWORK_GAP: f32 = 8.0;
 
 /// Sizes at a zoom.
 #[derive(Clone, Copy, Debug)]
@@ -103,7 +108,7 @@ impl Metrics {
         } else {
             0.0
         };
-        self.header + comment + rows + 8.0
+        self.header + comment + rows + NETWORK_GAP
     }
 }
 
@@ -173,6 +178,10 @@ pub struct Geometry {
     pub width: usize,
     /// Width of the left margin.
     pub margin: f32,
+    /// Height of each network.
+    pub heights: Vec<f32>,
+    /// The zoom it was drawn at, in percent.
+    pub zoom: u16,
 }
 
 impl Geometry {
@@ -207,6 +216,10 @@ pub struct ViewOptions {
     /// Tells the open documents apart, so each document's blocks keep their own scroll
     /// position and a project never opens where the last one was scrolled to.
     pub document: u64,
+    /// A point to keep where it is on screen: the zoom has just changed.
+    pub anchor: Option<Anchor>,
+    /// Bring the cursor cell into sight: it moved, or the ladder changed under it.
+    pub follow: bool,
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
@@ -284,6 +297,8 @@ pub struct ViewEvents {
     pub visible: Range<usize>,
     /// What the pointer rests on.
     pub hover: Option<Hit>,
+    /// Ctrl+wheel over the view: zoom in (`true`) or out, about the pointer's position.
+    pub zoom: Option<(bool, Pos2)>,
 }
 
 /// What the online monitor puts on the ladder view.
@@ -368,138 +383,171 @@ pub fn block_ui(
         comments,
         titles: opts.titles,
     };
-    egui::ScrollArea::both()
+    let mut area = egui::ScrollArea::both()
         .id_salt(("ladder", opts.document, block))
-        .auto_shrink([false, false])
-        .show_viewport(ui, |ui, viewport| {
-            let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
-            geometry.origin = rect.min;
-            geometry.cell = m.cell;
-            geometry.output = m.output;
-            geometry.width = project.ladder.width;
-            geometry.margin = m.margin;
-            geometry.tops = placed.iter().map(|p| p.top).collect();
-            geometry.rows = b
-                .networks
-                .iter()
-                .map(|n| row_tops(n, &m, comments))
-                .collect();
-            let hit = |p: Pos2| {
-                let y = p.y - rect.min.y;
-                let i = placed.partition_point(|q| q.top + q.height <= y);
-                let q = placed.get(i)?;
-                let origin = rect.min + vec2(0.0, q.top);
-                hit_in(project, &b.networks[i], i, origin, p, &m, comments)
-            };
-            let mut events = ViewEvents::default();
-            let pointer = response.interact_pointer_pos();
-            if response.clicked() {
-                let mods = ui.input(|i| i.modifiers);
-                events.click = pointer.and_then(hit).map(|h| (h, mods));
-            }
-            // A third quick click is still a double-click to a user.
-            if response.double_clicked() || response.triple_clicked() {
-                events.double_click = pointer.and_then(hit);
-            }
-            if response.secondary_clicked() {
-                events.secondary = pointer.and_then(hit);
-            }
-            if response.hovered() {
-                events.hover = ui.input(|i| i.pointer.hover_pos()).and_then(hit);
-            }
-            if response.drag_started() {
-                events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(hit);
-            }
-            if response.dragged() || response.drag_stopped() {
-                let now = pointer.or_else(|| ui.input(|i| i.pointer.latest_pos()));
-                events.drag_now = now.and_then(hit);
-                events.drag_done = response.drag_stopped();
-            }
-            let painter = ui.painter_at(rect);
-            // Black on white, like a printed ladder, whatever the UI theme.
-            painter.rect_filled(
-                rect.intersect(viewport.translate(rect.min.to_vec2())),
-                0.0,
-                if live.is_some_and(|l| l.past) {
-                    theme::PAPER_PAST
+        .auto_shrink([false, false]);
+    if let Some(a) = &opts.anchor {
+        let view_min = ui.available_rect_before_wrap().min;
+        if let Some(off) = scroll::offset_for(a, b, &placed, &m, zoom, comments, view_min) {
+            area = area.scroll_offset(off);
+        }
+    }
+    area.show_viewport(ui, |ui, viewport| {
+        let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
+        geometry.origin = rect.min;
+        geometry.cell = m.cell;
+        geometry.output = m.output;
+        geometry.width = project.ladder.width;
+        geometry.margin = m.margin;
+        geometry.zoom = zoom;
+        geometry.tops = placed.iter().map(|p| p.top).collect();
+        geometry.heights = placed.iter().map(|p| p.height).collect();
+        geometry.rows = b
+            .networks
+            .iter()
+            .map(|n| row_tops(n, &m, comments))
+            .collect();
+        let hit = |p: Pos2| {
+            let y = p.y - rect.min.y;
+            let i = placed.partition_point(|q| q.top + q.height <= y);
+            let q = placed.get(i)?;
+            let origin = rect.min + vec2(0.0, q.top);
+            hit_in(project, &b.networks[i], i, origin, p, &m, comments)
+        };
+        let mut events = ViewEvents::default();
+        let pointer = response.interact_pointer_pos();
+        if response.clicked() {
+            let mods = ui.input(|i| i.modifiers);
+            events.click = pointer.and_then(hit).map(|h| (h, mods));
+        }
+        // A third quick click is still a double-click to a user.
+        if response.double_clicked() || response.triple_clicked() {
+            events.double_click = pointer.and_then(hit);
+        }
+        if response.secondary_clicked() {
+            events.secondary = pointer.and_then(hit);
+        }
+        if response.hovered() {
+            events.hover = ui.input(|i| i.pointer.hover_pos()).and_then(hit);
+        }
+        if response.drag_started() {
+            events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(hit);
+        }
+        if response.dragged() || response.drag_stopped() {
+            let now = pointer.or_else(|| ui.input(|i| i.pointer.latest_pos()));
+            events.drag_now = now.and_then(hit);
+            events.drag_done = response.drag_stopped();
+        }
+        let painter = ui.painter_at(rect);
+        // Black on white, like a printed ladder, whatever the UI theme.
+        painter.rect_filled(
+            rect.intersect(viewport.translate(rect.min.to_vec2())),
+            0.0,
+            if live.is_some_and(|l| l.past) {
+                theme::PAPER_PAST
+            } else {
+                theme::PAPER
+            },
+        );
+        if let Some(target) = jump_to.take()
+            && let Some(p) = placed.get(target)
+        {
+            let r = Rect::from_min_size(rect.min + vec2(0.0, p.top), vec2(total.x, p.height));
+            ui.scroll_to_rect(r, Some(egui::Align::TOP));
+        } else if opts.follow
+            && let Some((n, r, c)) = opts.cursor
+            && let Some(cell) = geometry.cell_rect(n, r, c)
+        {
+            // The least scrolling that shows the cell with a little room around it.
+            ui.scroll_to_rect(cell.expand(m.row * 0.25), None);
+        }
+        if response.contains_pointer() {
+            let delta = ui.input(|i| i.zoom_delta());
+            if delta != 1.0 {
+                // Wheel notches arrive spread over frames: one step per 15 % of zoom.
+                let id = response.id.with("zoom");
+                let acc = ui.data_mut(|d| {
+                    let acc = d.get_temp_mut_or_default::<f32>(id);
+                    *acc += delta.ln();
+                    std::mem::take(acc)
+                });
+                let step = 1.15f32.ln();
+                let pos = ui.input(|i| i.pointer.hover_pos());
+                if acc.abs() >= step {
+                    events.zoom = pos.map(|p| (acc > 0.0, p));
                 } else {
-                    theme::PAPER
-                },
-            );
-            if let Some(target) = jump_to.take()
-                && let Some(p) = placed.get(target)
-            {
-                let r = Rect::from_min_size(rect.min + vec2(0.0, p.top), vec2(total.x, p.height));
-                ui.scroll_to_rect(r, Some(egui::Align::TOP));
+                    ui.data_mut(|d| d.insert_temp(id, acc));
+                }
             }
-            // Only the networks that intersect the visible part.
-            let first = placed.partition_point(|p| p.top + p.height < viewport.min.y);
-            events.visible = first..first;
-            let mut marks = Vec::new();
-            for (i, p) in placed.iter().enumerate().skip(first) {
-                if p.top > viewport.max.y {
-                    break;
-                }
-                events.visible.end = i + 1;
-                let origin = rect.min + vec2(0.0, p.top);
-                if let Some(sel) = opts.selection {
-                    selection_ui(
-                        &painter,
-                        &b.networks[i],
-                        i,
-                        origin,
-                        p.height,
-                        total.x,
-                        &sel,
-                        &style,
-                    );
-                }
-                let view = live.and_then(|l| (l.network)(i));
-                let shown = match (live, &view) {
-                    (Some(l), Some(v)) => {
-                        marks.clear();
-                        marks.extend(l.marked.iter().filter(|m| m.0 == i).map(|m| (m.1, m.2)));
-                        Some(LiveNetwork {
-                            view: v,
-                            format: l.format,
-                            forced: l.forced,
-                            marked: &marks,
-                        })
-                    }
-                    _ => None,
-                };
-                network_ui(
+        }
+        // Only the networks that intersect the visible part.
+        let first = placed.partition_point(|p| p.top + p.height < viewport.min.y);
+        events.visible = first..first;
+        let mut marks = Vec::new();
+        for (i, p) in placed.iter().enumerate().skip(first) {
+            if p.top > viewport.max.y {
+                break;
+            }
+            events.visible.end = i + 1;
+            let origin = rect.min + vec2(0.0, p.top);
+            if let Some(sel) = opts.selection {
+                selection_ui(
                     &painter,
-                    project,
                     &b.networks[i],
                     i,
                     origin,
+                    p.height,
+                    total.x,
+                    &sel,
                     &style,
-                    shown.as_ref(),
-                );
-                if let Some((cn, cr, cc)) = opts.cursor
-                    && cn == i
-                {
-                    cursor_ui(
-                        &painter,
-                        &b.networks[i],
-                        origin,
-                        cr,
-                        cc,
-                        project.ladder.width,
-                        &style,
-                    );
-                }
-                let sep = origin.y + p.height - 2.0;
-                painter.line_segment(
-                    [pos2(rect.left(), sep), pos2(rect.right(), sep)],
-                    Stroke::new(0.5, theme::NETWORK_RULE),
                 );
             }
-            events.response = Some(response);
-            events
-        })
-        .inner
+            let view = live.and_then(|l| (l.network)(i));
+            let shown = match (live, &view) {
+                (Some(l), Some(v)) => {
+                    marks.clear();
+                    marks.extend(l.marked.iter().filter(|m| m.0 == i).map(|m| (m.1, m.2)));
+                    Some(LiveNetwork {
+                        view: v,
+                        format: l.format,
+                        forced: l.forced,
+                        marked: &marks,
+                    })
+                }
+                _ => None,
+            };
+            network_ui(
+                &painter,
+                project,
+                &b.networks[i],
+                i,
+                origin,
+                &style,
+                shown.as_ref(),
+            );
+            if let Some((cn, cr, cc)) = opts.cursor
+                && cn == i
+            {
+                cursor_ui(
+                    &painter,
+                    &b.networks[i],
+                    origin,
+                    cr,
+                    cc,
+                    project.ladder.width,
+                    &style,
+                );
+            }
+            let sep = origin.y + p.height - 2.0;
+            painter.line_segment(
+                [pos2(rect.left(), sep), pos2(rect.right(), sep)],
+                Stroke::new(0.5, theme::NETWORK_RULE),
+            );
+        }
+        events.response = Some(response);
+        events
+    })
+    .inner
 }
 
 #[cfg(test)]
