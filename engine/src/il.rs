@@ -10,8 +10,9 @@ use crate::compiler::{
 use crate::model::{Block, BlockKind, DEFAULT_WIDTH, Ladder, MAX_WIDTH, Network, Operand, Project};
 use std::fmt::Write as _;
 
-/// Splits a line into tokens: words and `"quoted strings"`, up to a `;` comment.
-fn tokenize(line: &str) -> Result<Vec<(bool, String)>, String> {
+/// Splits a line into tokens: words and `"quoted strings"`, up to a `;` comment. `None`
+/// when a quoted text is not closed.
+fn tokenize(line: &str) -> Option<Vec<(bool, String)>> {
     let mut tokens = Vec::new();
     let mut chars = line.chars().peekable();
     while let Some(&c) = chars.peek() {
@@ -24,14 +25,12 @@ fn tokenize(line: &str) -> Result<Vec<(bool, String)>, String> {
             let mut s = String::new();
             loop {
                 match chars.next() {
-                    None => return Err("a quoted text is not closed: add the closing \"".into()),
+                    None => return None,
                     Some('"') => break,
                     Some('\\') => match chars.next() {
                         Some('n') => s.push('\n'),
                         Some(other) => s.push(other),
-                        None => {
-                            return Err("a quoted text is not closed: add the closing \"".into());
-                        }
+                        None => return None,
                     },
                     Some(other) => s.push(other),
                 }
@@ -49,7 +48,7 @@ fn tokenize(line: &str) -> Result<Vec<(bool, String)>, String> {
             tokens.push((false, s));
         }
     }
-    Ok(tokens)
+    Some(tokens)
 }
 
 /// One parsed network before the split into networks is settled.
@@ -85,7 +84,6 @@ fn mark_broken(nets: &mut Vec<RawNetwork>) {
 pub fn parse(text: &str, sink: &mut Sink) -> Program {
     let has_network_lines = text.lines().any(|l| {
         tokenize(l)
-            .ok()
             .and_then(|t| {
                 t.first()
                     .map(|(q, w)| !q && w.eq_ignore_ascii_case("NETWORK"))
@@ -103,9 +101,14 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
         let line_no = index as u32 + 1;
         let origin = Origin::Line(line_no);
         let tokens = match tokenize(line) {
-            Ok(t) => t,
-            Err(msg) => {
-                sink.report(origin, Code::L012Syntax, msg);
+            Some(t) => t,
+            None => {
+                sink.report(
+                    origin,
+                    Code::L012Syntax,
+                    "a quoted text is not closed: add the closing \"",
+                    "带引号的文字没有结束：请补上结尾的 \"",
+                );
                 mark_broken(&mut blocks[current].2);
                 continue;
             }
@@ -128,6 +131,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                 origin,
                 Code::L012Syntax,
                 "a line starts with an instruction or a directive, not a quoted text",
+                "每行应以指令或伪指令开头，而不是带引号的文字",
             );
             continue;
         }
@@ -142,6 +146,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                         origin,
                         Code::L012Syntax,
                         format!("{upper} takes nothing after it"),
+                        format!("{upper} 后面不能再写其他内容"),
                     );
                 }
             }
@@ -167,6 +172,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                         origin,
                         Code::L012Syntax,
                         "SUB needs a subprogram number: `SUB P0001 \"NAME\"`",
+                        "SUB 需要子程序号：`SUB P0001 \"NAME\"`",
                     ),
                 }
             }
@@ -178,6 +184,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                             origin,
                             Code::L012Syntax,
                             format!("write the network title in quotes: NETWORK \"{t}\""),
+                            format!("网络标题要写在引号内：NETWORK \"{t}\""),
                         );
                         t.clone()
                     }
@@ -188,10 +195,12 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
             }
             _ => {
                 let Some(op) = Op::from_name(&upper) else {
+                    let (hint, hint_zh) = suggestion(&upper);
                     sink.report(
                         origin,
                         Code::L010UnknownInstruction,
-                        format!("unknown instruction `{word}`{}", suggestion(&upper)),
+                        format!("unknown instruction `{word}`{hint}"),
+                        format!("未知指令 `{word}`{hint_zh}"),
                     );
                     mark_broken(&mut blocks[current].2);
                     continue;
@@ -204,6 +213,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                             origin,
                             Code::L012Syntax,
                             format!("`\"{t}\"`: operands are not quoted"),
+                            format!("`\"{t}\"`：操作数不加引号"),
                         );
                         bad = true;
                         break;
@@ -215,6 +225,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                                 origin,
                                 Code::L012Syntax,
                                 format!("{} operand: {e}", op.name()),
+                                format!("{} 的操作数：{}", op.name(), e.zh()),
                             );
                             bad = true;
                             break;
@@ -285,8 +296,9 @@ fn starts_network(prev: &[Instr], op: Op) -> bool {
         && !mps_open
 }
 
-fn suggestion(upper: &str) -> String {
-    // The closest mnemonic by edit distance, when it is close enough to be a typo.
+/// What to write instead of an unknown mnemonic, in English and in Chinese: the closest
+/// mnemonic by edit distance when it is close enough to be a typo, else where to look.
+fn suggestion(upper: &str) -> (String, String) {
     fn distance(a: &str, b: &str) -> usize {
         let b: Vec<char> = b.chars().collect();
         let mut prev: Vec<usize> = (0..=b.len()).collect();
@@ -308,9 +320,12 @@ fn suggestion(upper: &str) -> String {
         .map(|s| (distance(upper, s.name), s.name))
         .min()
         .filter(|(d, _)| *d <= 2)
-        .map(|(_, n)| format!(": did you mean {n}?"))
+        .map(|(_, n)| (format!(": did you mean {n}?"), format!("：是不是 {n}？")))
         .unwrap_or_else(|| {
-            ": see the instruction list in the manual (LD, AND, OUT, TMRB, …)".into()
+            (
+                ": see the instruction list in the manual (LD, AND, OUT, TMRB, …)".into(),
+                "：请查阅手册中的指令表（LD、AND、OUT、TMRB 等）".into(),
+            )
         })
 }
 

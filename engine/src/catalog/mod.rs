@@ -375,13 +375,31 @@ pub fn check_digit_group(op: Op, operand: &str, value: i64) -> Result<(), String
     if ok {
         Ok(())
     } else {
-        Err(match op {
-            Op::Ctrc => {
-                "CTRC's FMT is 0000, 0001, 0010 or 0011 (00ab: a = initial value, b = down)".into()
-            }
-            Op::Pari => "PARI's OE is 0000 (even) or 0001 (odd)".into(),
-            _ => "XMOV's FMT is 0nnx: nn elements (00–99) of x = 1, 2 or 4 bytes".into(),
-        })
+        Err(digit_group_rule(op).0.into())
+    }
+}
+
+/// The rule of an instruction's control digits (CTRC's FMT, PARI's OE, XMOV's FMT), in
+/// Chinese: what [`check_digit_group`] says in English.
+pub fn digit_group_rule_zh(op: Op) -> &'static str {
+    digit_group_rule(op).1
+}
+
+/// (English, Chinese) of the digit-group rule, in one match so neither goes missing.
+fn digit_group_rule(op: Op) -> (&'static str, &'static str) {
+    match op {
+        Op::Ctrc => (
+            "CTRC's FMT is 0000, 0001, 0010 or 0011 (00ab: a = initial value, b = down)",
+            "CTRC 的 FMT 为 0000、0001、0010 或 0011（00ab：a = 初始值，b = 减计数）",
+        ),
+        Op::Pari => (
+            "PARI's OE is 0000 (even) or 0001 (odd)",
+            "PARI 的 OE 为 0000（偶校验）或 0001（奇校验）",
+        ),
+        _ => (
+            "XMOV's FMT is 0nnx: nn elements (00–99) of x = 1, 2 or 4 bytes",
+            "XMOV 的 FMT 为 0nnx：nn 个元素（00–99），每个元素 x = 1、2 或 4 字节",
+        ),
     }
 }
 

@@ -1,7 +1,7 @@
 //! Instruction-level checks: operands against the catalogue, labels, calls, stacks, step
 //! limits, and the warnings about doubly driven coils and shared timers.
 
-use super::diag::{Code, Origin, Sink};
+use super::diag::{Code, Location, Origin, Sink};
 pub use super::operands::{Refusal, operand_error, operand_ok};
 use super::rung::Instr;
 use super::{Program, StepCounts};
@@ -35,6 +35,17 @@ fn place_text(program: &Program, p: Place) -> String {
     }
 }
 
+/// The place of `p` in Chinese, as a diagnostic's location reads.
+fn place_text_zh(program: &Program, p: Place) -> String {
+    Location {
+        block: p.0,
+        block_label: program.blocks[p.0].kind.label(),
+        network: p.1,
+        origin: p.2,
+    }
+    .describe_zh()
+}
+
 /// Checks a whole program and resolves its symbols in place. Returns the step counts.
 pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) -> StepCounts {
     let profile = project.profile();
@@ -53,6 +64,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                     block.origin,
                     Code::L038SubNumber,
                     format!("subprogram number P{number:04} is out of range (P{lo}–P{hi})"),
+                    format!("子程序号 P{number:04} 超出范围（P{lo}–P{hi}）"),
                 );
             } else if let std::collections::btree_map::Entry::Vacant(e) = subs.entry(number) {
                 // The first definition is the one calls reach.
@@ -64,6 +76,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                     format!(
                         "subprogram P{number:04} is defined twice: give one of them another number"
                     ),
+                    format!("子程序 P{number:04} 重复定义：请给其中一个换一个子程序号"),
                 );
             }
         }
@@ -90,6 +103,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                                         "label {a} is already defined at {}; each label is defined once in the project",
                                         place_text(program, *prev)
                                     ),
+                                    format!(
+                                        "标号 {a} 已在 {} 定义；工程中每个标号只能定义一次",
+                                        place_text_zh(program, *prev)
+                                    ),
                                 );
                             } else {
                                 labels.insert(a.number, here);
@@ -105,6 +122,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                                     format!(
                                         "coil {a} is also driven at {}; the later one wins each scan",
                                         place_text(program, *prev)
+                                    ),
+                                    format!(
+                                        "线圈 {a} 也在 {} 输出；每次扫描以后面的输出为准",
+                                        place_text_zh(program, *prev)
                                     ),
                                 );
                             } else {
@@ -122,6 +143,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                                     format!(
                                         "{a} is also used by the instruction at {}; two instructions sharing a timer or counter disturb each other",
                                         place_text(program, *prev)
+                                    ),
+                                    format!(
+                                        "{a} 也被 {} 的指令使用；两条指令共用一个定时器或计数器会互相干扰",
+                                        place_text_zh(program, *prev)
                                     ),
                                 );
                             } else {
@@ -152,6 +177,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                             instr.origin,
                             Code::L031UndefinedLabel,
                             format!("JMPB to {a}, which no LBL defines: add `LBL {a}` in this block or correct the label"),
+                            format!("JMPB 跳转到 {a}，但没有 LBL 定义该标号：请在本程序块中加入 `LBL {a}`，或改正标号"),
                         ),
                         Some(target) if target.0 != b => sink.report(
                             instr.origin,
@@ -159,6 +185,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                             format!(
                                 "JMPB to {a} at {}: a jump stays inside its own block (use CALL to reach a subprogram)",
                                 place_text(program, *target)
+                            ),
+                            format!(
+                                "JMPB 跳转到位于 {} 的 {a}：跳转只能在本程序块内进行（要进入子程序请用 CALL）",
+                                place_text_zh(program, *target)
                             ),
                         ),
                         Some(_) => {}
@@ -168,6 +198,7 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                             instr.origin,
                             Code::L033UndefinedSub,
                             format!("{} {a}: there is no subprogram {a}; create it or correct the number", instr.op.name()),
+                            format!("{} {a}：不存在子程序 {a}；请新建该子程序或改正子程序号", instr.op.name()),
                         ),
                         Some(&target) => calls.entry(b).or_default().push((target, (b, n, instr.origin))),
                     },
@@ -219,6 +250,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
                 "level 1 has {level1} steps with the subprograms it calls; it must stay under {} (move work to level 2)",
                 profile.level1_step_limit
             ),
+            format!(
+                "一级程序连同其调用的子程序共 {level1} 步；必须少于 {} 步（请把部分程序移到二级程序）",
+                profile.level1_step_limit
+            ),
         );
     }
     if total > profile.program_step_limit {
@@ -227,6 +262,10 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
             Code::L036ProgramSteps,
             format!(
                 "the program has {total} steps; at most {} fit the PLC",
+                profile.program_step_limit
+            ),
+            format!(
+                "程序共 {total} 步；PLC 最多容纳 {} 步",
                 profile.program_step_limit
             ),
         );
@@ -272,6 +311,10 @@ fn check_recursion(
                 "this call of {} makes the subprograms call themselves in a loop, which never ends within a scan",
                 program.blocks[target].kind.label()
             ),
+            format!(
+                "此处调用 {} 使子程序循环调用自身，一次扫描内永远不会结束",
+                program.blocks[target].kind.label()
+            ),
         );
     }
 }
@@ -291,6 +334,7 @@ fn check_stacks(instrs: &[Instr], sink: &mut Sink) {
                             i.origin,
                             Code::L018StackDepth,
                             format!("more than {BLOCK_STACK_DEPTH} nested logic blocks: split the rung or use intermediate relays"),
+                            format!("嵌套的逻辑块超过 {BLOCK_STACK_DEPTH} 个：请拆分该梯级，或使用中间继电器"),
                         );
                     }
                 }
@@ -304,6 +348,7 @@ fn check_stacks(instrs: &[Instr], sink: &mut Sink) {
                         i.origin,
                         Code::L018StackDepth,
                         format!("more than {BRANCH_STACK_DEPTH} nested branch points (MPS): split the rung or use intermediate relays"),
+                        format!("嵌套的分支点（MPS）超过 {BRANCH_STACK_DEPTH} 个：请拆分该梯级，或使用中间继电器"),
                     );
                 }
             }
@@ -346,6 +391,9 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
             let extra = spec.table.map_or(String::new(), |t| {
                 format!(" and {} table entries", spec.operands[t.count_from].name)
             });
+            let extra_zh = spec.table.map_or(String::new(), |t| {
+                format!("，以及 {} 个表格数据", spec.operands[t.count_from].name)
+            });
             sink.report(
                 instr.origin,
                 Code::L011OperandCount,
@@ -353,6 +401,12 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                     "{} takes {n} operand{} ({}{extra}), found {}",
                     spec.name,
                     if n == 1 { "" } else { "s" },
+                    names(),
+                    instr.operands.len()
+                ),
+                format!(
+                    "{} 需要 {n} 个操作数（{}{extra_zh}），实有 {} 个",
+                    spec.name,
                     names(),
                     instr.operands.len()
                 ),
@@ -365,6 +419,12 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                 Code::L011OperandCount,
                 format!(
                     "{} takes {} and {} table entries",
+                    spec.name,
+                    names(),
+                    spec.table.map_or("", |t| spec.operands[t.count_from].name)
+                ),
+                format!(
+                    "{} 需要操作数 {}，以及 {} 个表格数据",
                     spec.name,
                     names(),
                     spec.table.map_or("", |t| spec.operands[t.count_from].name)
@@ -384,6 +444,7 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                         instr.origin,
                         Code::L020UndefinedSymbol,
                         format!("undefined symbol `{name}`: define it in the symbol table or write the address"),
+                        format!("符号 `{name}` 未定义：请在符号表中定义，或直接写地址"),
                     );
                     return;
                 }
@@ -400,6 +461,12 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                 instr.origin,
                 code,
                 format!("{} {}: {text}", spec.name, ospec.name),
+                format!(
+                    "{} 的操作数 {}：{}",
+                    spec.name,
+                    ospec.name,
+                    refusal.zh(instr.op)
+                ),
             );
             continue;
         }
@@ -411,6 +478,11 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                 Code::W003BitsSpill,
                 format!(
                     "{} OUT {a}: the three result bits continue into {}",
+                    spec.name,
+                    Address::byte(a.area, a.number + 1)
+                ),
+                format!(
+                    "{} 的 OUT {a}：三个结果位会延续到 {}",
                     spec.name,
                     Address::byte(a.area, a.number + 1)
                 ),

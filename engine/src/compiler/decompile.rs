@@ -93,8 +93,8 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
     let mut last_origin = Origin::None;
     for i in instrs {
         last_origin = i.origin;
-        let fail = |sink: &mut Sink, code: Code, msg: &str| {
-            sink.report(i.origin, code, msg.to_string());
+        let fail = |sink: &mut Sink, code: Code, msg: &str, msg_zh: &str| {
+            sink.report(i.origin, code, msg, msg_zh);
             None
         };
         let spec = i.op.spec();
@@ -112,6 +112,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                             sink,
                             Code::L015LoadAfterOutput,
                             "LD/LDI right after an output while MPS is open: use MRD or MPP to return to the branch point first",
+                            "MPS 未闭合时在输出之后直接 LD/LDI：请先用 MRD 或 MPP 回到分支点",
                         );
                     }
                     Some(prev) => {
@@ -132,6 +133,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L013BlockStack,
                         "AND/ANI needs a contact before it: start the rung with LD or LDI",
+                        "AND/ANI 前面需要有触点：梯级应以 LD 或 LDI 开始",
                     );
                 };
                 let e = contact(i, i.op == Op::Ani);
@@ -146,6 +148,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L013BlockStack,
                         "OR/ORI needs a contact before it: start the rung with LD or LDI",
+                        "OR/ORI 前面需要有触点：梯级应以 LD 或 LDI 开始",
                     );
                 };
                 if a.node.is_some() {
@@ -153,6 +156,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L017NotDrawable,
                         "OR/ORI after a branch point or output has no ladder drawing: write the parallel part as LD … ORB, then ANB",
+                        "分支点或输出之后的 OR/ORI 无法画成梯形图：请把并联部分写成 LD … ORB，再用 ANB",
                     );
                 }
                 let e = contact(i, i.op == Op::Ori);
@@ -171,6 +175,10 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                             "{} has no open block to join: each ORB/ANB needs an LD or LDI block before it",
                             i.op.name()
                         ),
+                        &format!(
+                            "{} 没有可连接的逻辑块：每个 ORB/ANB 前面都需要一个以 LD 或 LDI 开始的逻辑块",
+                            i.op.name()
+                        ),
                     );
                 };
                 let (None, Some(cur_e)) = (cur.node, cur.pending) else {
@@ -178,6 +186,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L017NotDrawable,
                         "a block that contains an output or a branch point cannot be joined by ORB/ANB",
+                        "含有输出或分支点的逻辑块不能用 ORB/ANB 连接",
                     );
                 };
                 if i.op == Op::Orb {
@@ -186,6 +195,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                             sink,
                             Code::L017NotDrawable,
                             "ORB joins a block to a branch point's path, which has no ladder drawing: move the parallel block before the MPS",
+                            "ORB 把逻辑块并联到分支点之后的支路上，无法画成梯形图：请把并联的逻辑块移到 MPS 之前",
                         );
                     };
                     acc = Some(Acc {
@@ -208,6 +218,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L013BlockStack,
                         "MPS/MRD/MPP inside an open LD block: close the block with ORB or ANB first",
+                        "MPS/MRD/MPP 位于未闭合的 LD 逻辑块中：请先用 ORB 或 ANB 闭合该逻辑块",
                     );
                 }
                 match i.op {
@@ -217,6 +228,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                                 sink,
                                 Code::L014BranchStack,
                                 "MPS needs a contact before it",
+                                "MPS 前面需要有触点",
                             );
                         };
                         let n = b.anchor(a);
@@ -240,6 +252,10 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                                     "{} without MPS: every MRD/MPP needs an open MPS",
                                     i.op.name()
                                 ),
+                                &format!(
+                                    "{} 没有对应的 MPS：每个 MRD/MPP 都需要一个未闭合的 MPS",
+                                    i.op.name()
+                                ),
                             );
                         };
                         acc = Some(Acc {
@@ -258,6 +274,10 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         Code::L007NotStandalone,
                         &format!(
                             "{} stands alone: end the rung before it with an output",
+                            i.op.name()
+                        ),
+                        &format!(
+                            "{} 必须单独成网络：请先用一个输出结束它前面的梯级",
                             i.op.name()
                         ),
                     );
@@ -281,6 +301,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L006NoContact,
                         &format!("{} needs a condition: put LD/LDI before it", i.op.name()),
+                        &format!("{} 需要执行条件：请在它前面加 LD/LDI", i.op.name()),
                     );
                 };
                 if !blocks.is_empty() {
@@ -288,6 +309,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                         sink,
                         Code::L013BlockStack,
                         "an LD block is still open before this output: join it with ORB or ANB",
+                        "该输出之前还有未闭合的 LD 逻辑块：请用 ORB 或 ANB 连接",
                     );
                 }
                 let n = b.anchor(a);
@@ -310,6 +332,7 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                 last_origin,
                 Code::L013BlockStack,
                 "the network ends with an LD block still open: join it with ORB or ANB",
+                "网络结束时仍有未闭合的 LD 逻辑块：请用 ORB 或 ANB 连接",
             );
             return None;
         }
@@ -318,11 +341,17 @@ pub fn decompile(instrs: &[Instr], sink: &mut Sink) -> Option<Vec<Rung>> {
                 last_origin,
                 Code::L014BranchStack,
                 "the network ends with an MPS still open: close it with MPP",
+                "网络结束时仍有未闭合的 MPS：请用 MPP 闭合",
             );
             return None;
         }
         if !after_output {
-            sink.report(last_origin, Code::L016NoOutput, "the network ends without an output: finish the rung with a coil or function instruction");
+            sink.report(
+                last_origin,
+                Code::L016NoOutput,
+                "the network ends without an output: finish the rung with a coil or function instruction",
+                "网络结束时没有输出：请用线圈或功能指令结束该梯级",
+            );
             return None;
         }
         b.finish_rung();

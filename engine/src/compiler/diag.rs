@@ -374,6 +374,8 @@ pub struct Diagnostic {
     pub code: Code,
     /// What is wrong and how to fix it.
     pub message: String,
+    /// The same message in Chinese, with the same specifics (addresses, names, numbers).
+    pub message_zh: String,
 }
 
 impl Diagnostic {
@@ -386,6 +388,29 @@ impl Diagnostic {
     /// in front: `PATH:BLOCK:NETWORK:ROW:COL: error: MESSAGE` for ladder cells (1-based), or
     /// `PATH:LINE: error: MESSAGE` for IL lines.
     pub fn render(&self, path: &str) -> String {
+        self.render_in(path, false)
+    }
+
+    /// The diagnostic for a Chinese reader, with `name` (the file) in front:
+    /// `NAME 二级程序 网络 3 行 1 列 2：错误：[L020] MESSAGE_ZH`, the place as
+    /// [`Location::describe_zh`] writes it.
+    pub fn render_zh(&self, name: &str) -> String {
+        let severity = match self.severity() {
+            Severity::Error => "错误",
+            Severity::Warning => "警告",
+        };
+        format!(
+            "{name} {}：{severity}：[{}] {}",
+            self.location.describe_zh(),
+            self.code.as_str(),
+            self.message_zh
+        )
+    }
+
+    /// [`Diagnostic::render`] with the message in Chinese when `zh` is set: the same
+    /// machine-readable shape `PATH:BLOCK:NETWORK:ROW:COL: error: MESSAGE_ZH [CODE]` (the
+    /// place and the `error`/`warning` keyword stay as they are), or exactly `render(path)`.
+    pub fn render_in(&self, path: &str, zh: bool) -> String {
         let l = &self.location;
         let place = match l.origin {
             Origin::Line(line) => format!("{path}:{line}"),
@@ -401,27 +426,14 @@ impl Diagnostic {
         format!(
             "{place}: {}: {} [{}]",
             self.severity(),
-            self.message,
+            self.message_in(zh),
             self.code.as_str()
         )
     }
 
-    /// The diagnostic for a Chinese reader, with `name` (the file) in front:
-    /// `NAME 二级程序 网络 3 行 1 列 2：错误：[L020] 符号未定义（MESSAGE）`. The title says what is
-    /// wrong in Chinese; the English message follows in parentheses because it carries the
-    /// specifics (the address, the instruction, the numbers) that the title leaves out.
-    pub fn render_zh(&self, name: &str) -> String {
-        let severity = match self.severity() {
-            Severity::Error => "错误",
-            Severity::Warning => "警告",
-        };
-        format!(
-            "{name} {}：{severity}：[{}] {}（{}）",
-            self.location.describe_zh(),
-            self.code.as_str(),
-            self.code.title_zh(),
-            self.message
-        )
+    /// The message in Chinese when `zh` is set, else in English.
+    pub fn message_in(&self, zh: bool) -> &str {
+        if zh { &self.message_zh } else { &self.message }
     }
 }
 
@@ -478,8 +490,14 @@ impl Sink {
         self.network = network;
     }
 
-    /// Reports at `origin` in the current network.
-    pub fn report(&mut self, origin: Origin, code: Code, message: impl Into<String>) {
+    /// Reports at `origin` in the current network, in English and in Chinese.
+    pub fn report(
+        &mut self,
+        origin: Origin,
+        code: Code,
+        message: impl Into<String>,
+        message_zh: impl Into<String>,
+    ) {
         self.diagnostics.push(Diagnostic {
             location: Location {
                 block: self.block,
@@ -489,6 +507,7 @@ impl Sink {
             },
             code,
             message: message.into(),
+            message_zh: message_zh.into(),
         });
     }
 
@@ -542,6 +561,7 @@ mod tests {
             },
             code,
             message: "undefined symbol `NOWHERE`".into(),
+            message_zh: "符号 `NOWHERE` 未定义".into(),
         }
     }
 
@@ -551,23 +571,38 @@ mod tests {
         let d = diagnostic("LEVEL2", 2, cell, Code::L020UndefinedSymbol);
         assert_eq!(
             d.render_zh("err.ldp"),
-            "err.ldp 二级程序 网络 3 行 1 列 2：错误：[L020] 符号未定义（undefined symbol `NOWHERE`）"
+            "err.ldp 二级程序 网络 3 行 1 列 2：错误：[L020] 符号 `NOWHERE` 未定义"
         );
         let w = diagnostic("P0001", 0, Origin::None, Code::W001CoilTwice);
-        assert!(
-            w.render_zh("a")
-                .starts_with("a 子程序 P0001 网络 1：警告：[W001] 线圈重复输出")
+        assert_eq!(
+            w.render_zh("a"),
+            "a 子程序 P0001 网络 1：警告：[W001] 符号 `NOWHERE` 未定义"
         );
         let t = diagnostic("DATA", 1, cell, Code::T004DataValue);
         assert!(t.render_zh("a").starts_with("a 数据表 DT 行 1 列 2："));
         let il = diagnostic("LEVEL1", 0, Origin::Line(5), Code::L012Syntax);
-        assert!(
-            il.render_zh("a.il")
-                .starts_with("a.il 第 5 行：错误：[L012] 语法错误")
+        assert_eq!(
+            il.render_zh("a.il"),
+            "a.il 第 5 行：错误：[L012] 符号 `NOWHERE` 未定义"
         );
         assert_eq!(
             d.render("err.ldp"),
             "err.ldp:LEVEL2:3:1:2: error: undefined symbol `NOWHERE` [L020]"
         );
+        assert_eq!(d.render_in("err.ldp", false), d.render("err.ldp"));
+        assert_eq!(
+            d.render_in("err.ldp", true),
+            "err.ldp:LEVEL2:3:1:2: error: 符号 `NOWHERE` 未定义 [L020]"
+        );
+        assert_eq!(
+            w.render_in("a", true),
+            "a:P0001:1:0:0: warning: 符号 `NOWHERE` 未定义 [W001]"
+        );
+        assert_eq!(
+            il.render_in("a.il", true),
+            "a.il:5: error: 符号 `NOWHERE` 未定义 [L012]"
+        );
+        assert_eq!(d.message_in(true), "符号 `NOWHERE` 未定义");
+        assert_eq!(d.message_in(false), "undefined symbol `NOWHERE`");
     }
 }

@@ -98,6 +98,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                             origin,
                             Code::L005WrongColumn,
                             "a coil or function box must stand in the output column at the right end of the rung",
+                            "线圈或功能指令必须放在梯级最右端的输出列",
                         );
                         continue;
                     }
@@ -123,6 +124,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                     origin,
                     Code::L005WrongColumn,
                     "only coils and function boxes go in the output column; move the contact or wire left",
+                    "输出列只能放线圈和功能指令；请把触点或导线移到左边",
                 );
             }
         }
@@ -167,6 +169,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                     origin,
                     Code::L001NotConnected,
                     "this element is not connected to the left rail; draw a wire or vertical link to it",
+                    "该元件未连接到左母线；请画一条导线或竖线连到它",
                 );
             }
         } else if !to_output[e.to] {
@@ -174,6 +177,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 origin,
                 Code::L002OpenBranch,
                 "open branch: nothing after this element leads to a coil or function box; connect it or delete it",
+                "开路分支：该元件之后没有连到任何线圈或功能指令；请连接或删除它",
             );
         } else {
             live.push(e);
@@ -200,20 +204,25 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                         "{} stands alone: remove the contacts and other outputs on its rung",
                         o.op.name()
                     ),
+                    format!(
+                        "{} 必须单独成网络：请删除同一梯级上的触点和其他输出",
+                        o.op.name()
+                    ),
                 );
             }
             rungs_out.push((row, Rung::Standalone(o)));
         } else if !from_rail[n] {
+            let coil = o.op.spec().class == crate::catalog::InstrClass::Coil;
             sink.report(
                 o.origin,
                 Code::L001NotConnected,
                 format!(
                     "this {} is not connected to the left rail; draw the contacts that drive it",
-                    if o.op.spec().class == crate::catalog::InstrClass::Coil {
-                        "coil"
-                    } else {
-                        "function box"
-                    }
+                    if coil { "coil" } else { "function box" }
+                ),
+                format!(
+                    "该{}未连接到左母线；请画出驱动它的触点",
+                    if coil { "线圈" } else { "功能指令" }
                 ),
             );
         } else {
@@ -245,6 +254,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 cell_origin(e.key.0 as usize, e.key.1 as usize),
                 Code::L004Bridge,
                 "these branches join again after a branch point (or form a bridge), which no instruction list can express; draw each output's contacts as separate parallel branches",
+                "这些分支在分支点之后重新汇合（或形成桥接），指令表无法表达；请把每个输出的触点画成各自独立的并联分支",
             );
             return Vec::new();
         }
@@ -266,6 +276,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                     *origin,
                     Code::L006NoContact,
                     "this rung has no contact: an output needs at least one contact between it and the rail",
+                    "该梯级没有触点：输出与母线之间至少要有一个触点",
                 );
             }
         }
@@ -276,6 +287,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 o.origin,
                 Code::L006NoContact,
                 "this output is connected straight to the rail; put a contact before it",
+                "该输出直接连在母线上；请在它前面加一个触点",
             );
         }
     }
@@ -304,6 +316,7 @@ fn reduce(edges: &mut Vec<Edge>, output_nodes: &[bool], nodes: usize, sink: &mut
                                     first_origin(x),
                                     Code::L003ShortCircuit,
                                     "this branch is short-circuited by a plain wire in parallel with it; delete the wire or put a contact in it",
+                                    "该分支被与之并联的导线短路；请删除该导线，或在导线中加一个触点",
                                 );
                             }
                             Term::Wire(o)

@@ -14,6 +14,8 @@ pub mod lower;
 pub mod operands;
 pub mod rung;
 pub mod tables;
+#[cfg(test)]
+pub(crate) mod zh_tests;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
 pub use rung::Instr;

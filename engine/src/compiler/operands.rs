@@ -1,12 +1,13 @@
 //! Whether an operand may stand where it is written, and if not, why: one function for the
 //! compiler's check, the editor's function dialog, replace and the operand colours. The
-//! refusal is structured ([`Refusal`]), so the compiler turns it into a diagnostic (its code
-//! and English text) and the editor into a sentence in the user's language.
+//! refusal is structured ([`Refusal`]), so the compiler turns it into a diagnostic (its code,
+//! English text and Chinese text) and the editor into a sentence in the user's language.
 
 use super::diag::Code;
 use crate::address::{Address, AddressError, Area, AreaSet};
 use crate::catalog::{
-    Access, CONST_MAX, Op, OperandKind, OperandSpec, Width, check_digit_group, xmov_format,
+    Access, CONST_MAX, Op, OperandKind, OperandSpec, Width, check_digit_group, digit_group_rule_zh,
+    xmov_format,
 };
 use crate::model::Operand;
 use crate::profile::Profile;
@@ -103,6 +104,58 @@ pub fn expected_text(kind: OperandKind) -> &'static str {
         OperandKind::Subprogram => "a subprogram such as P0001",
         OperandKind::Timer => "a timer such as T0001",
         OperandKind::Counter => "a counter such as C0001",
+    }
+}
+
+/// What an operand of this kind looks like, in Chinese words.
+pub fn expected_text_zh(kind: OperandKind) -> &'static str {
+    match kind {
+        OperandKind::Size => "大小 1、2 或 4",
+        OperandKind::Const => "常数",
+        OperandKind::Digits { .. } => "4 位数字组，如 0000",
+        OperandKind::Bit => "位地址，如 R0010.0",
+        OperandKind::Byte => "地址，如 R0010 或 D0004",
+        OperandKind::ConstOrByte => "整数常数或地址",
+        OperandKind::RealOrD => "实数常数或 D 地址",
+        OperandKind::BitOrByte => "位地址或字节地址",
+        OperandKind::Label => "标号，如 L0001",
+        OperandKind::Subprogram => "子程序，如 P0001",
+        OperandKind::Timer => "定时器，如 T0001",
+        OperandKind::Counter => "计数器，如 C0001",
+    }
+}
+
+impl Refusal {
+    /// The refusal in Chinese, with the same specifics as its English text. `op` is the
+    /// instruction the operand belongs to (it names the rule of a refused digit group).
+    pub fn zh(&self, op: Op) -> String {
+        match self {
+            Refusal::TooMany => "该指令没有这么多操作数".into(),
+            Refusal::Kind { expected, found } => {
+                format!("应为{}，实为 `{found}`", expected_text_zh(*expected))
+            }
+            Refusal::WantsBit(a) => format!("应为位地址，如 R0010.0，实为 `{a}`"),
+            Refusal::WantsByte(a) => {
+                format!("应为不带位的字节地址，如 R0010，实为 `{a}`")
+            }
+            Refusal::Size(v) => format!("大小应为 1、2 或 4，不能是 {v}"),
+            Refusal::Digits { value, binary } => format!(
+                "应写 4 位{}数字，不能是 `{value}`",
+                if *binary { "二进制" } else { "十进制" }
+            ),
+            Refusal::DigitGroup(_) => digit_group_rule_zh(op).into(),
+            Refusal::ConstRange { value, min, max } => {
+                format!("{value} 超出范围（{min}–{max}）")
+            }
+            Refusal::ConstTooBig(v) => format!("{v} 超出范围（−2147483647–2147483647）"),
+            Refusal::ReadOnly { address, .. } => {
+                format!("{address} 不能写入：X 和 F 是输入，对程序只读")
+            }
+            Refusal::Area { address, allowed } => {
+                format!("此处不允许使用 {address}；请用 {}", allowed.describe())
+            }
+            Refusal::Range(e) => e.zh(),
+        }
     }
 }
 

@@ -33,6 +33,7 @@ fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
                 origin,
                 Code::W007CommentLength,
                 format!("the `{lang}` comment: {e}; shorten it"),
+                format!("`{lang}` 注释：{}；请缩短", e.zh()),
             );
         }
     }
@@ -42,12 +43,13 @@ fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
 fn data_symbol(sink: &mut Sink, project: &Project, origin: Origin, name: &str, address: Address) {
     match check_data_symbol(project, name, address) {
         Err(e @ TableError::SymbolName { .. }) => {
-            sink.report(origin, Code::T001SymbolName, e.to_string())
+            sink.report(origin, Code::T001SymbolName, e.to_string(), e.zh())
         }
         Err(e) => sink.report(
             origin,
             Code::T002SymbolTwice,
             format!("{address}: {e}; use another symbol or none"),
+            format!("{address}：{}；请换一个符号，或不用符号", e.zh()),
         ),
         Ok(()) => {}
     }
@@ -62,9 +64,10 @@ fn address_table(sink: &mut Sink, project: &Project, rows: &[AddressRow]) {
                 at(r, 0),
                 Code::T008TableKey,
                 format!("{e}; this table lists memory addresses"),
+                format!("{}；此表只列存储器地址", e.zh()),
             );
         } else if let Err(e) = row.address.check_range(project.profile()) {
-            sink.report(at(r, 0), Code::T008TableKey, e.to_string());
+            sink.report(at(r, 0), Code::T008TableKey, e.to_string(), e.zh());
         }
         if let Some(prev) = seen.insert(row.address, r) {
             sink.report(
@@ -75,6 +78,7 @@ fn address_table(sink: &mut Sink, project: &Project, rows: &[AddressRow]) {
                     row.address,
                     prev + 1
                 ),
+                format!("{} 也在第 {} 行；每个地址只保留一行", row.address, prev + 1),
             );
         }
         comments(sink, at(r, 1), &row.comments);
@@ -108,6 +112,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     "symbol table name `{}` is empty, taken, or the block-symbol table's: give it a unique name",
                     table.name
                 ),
+                format!(
+                    "符号表名称 `{}` 为空、已被占用或与程序块符号表同名：请另起一个不重复的名称",
+                    table.name
+                ),
             );
         }
         for (r, s) in table.rows.iter().enumerate() {
@@ -116,9 +124,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     at(r, 0),
                     Code::T007SymbolArea,
                     format!("{e} (labels have no symbols; a subprogram is named in its block)"),
+                    format!("{}（标号不能定义符号；子程序在其程序块中命名）", e.zh()),
                 );
             } else if let Err(e) = s.address.check_range(profile) {
-                sink.report(at(r, 0), Code::T003DataAddress, e.to_string());
+                sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
             }
             comments(sink, at(r, 2), &s.comments);
             if let Some((pt, pr)) = addresses.insert(s.address, (t, r)) {
@@ -127,6 +136,12 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     Code::W004AddressTwice,
                     format!(
                         "{} is also in table {} row {}; keep one row per address",
+                        s.address,
+                        pt + 1,
+                        pr + 1
+                    ),
+                    format!(
+                        "{} 也在符号表 {} 第 {} 行；每个地址只保留一行",
                         s.address,
                         pt + 1,
                         pr + 1
@@ -144,6 +159,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                         "`{}` is not a valid symbol: use letters, digits, `_` and Chinese, not starting with a digit, at most 32 characters, and not an address",
                         s.name
                     ),
+                    format!(
+                        "`{}` 不是有效的符号：请使用字母、数字、`_` 和汉字，不以数字开头，最多 32 个字符，且不能是地址",
+                        s.name
+                    ),
                 );
             } else if let Some((pt, pr)) = names.insert(&s.name, (t, r)) {
                 sink.report(
@@ -151,6 +170,12 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     Code::T002SymbolTwice,
                     format!(
                         "symbol `{}` already exists (table {} row {}); symbols are unique",
+                        s.name,
+                        pt + 1,
+                        pr + 1
+                    ),
+                    format!(
+                        "符号 `{}` 已存在（符号表 {} 第 {} 行）；符号不能重复",
                         s.name,
                         pt + 1,
                         pr + 1
@@ -170,6 +195,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                 Code::T003DataAddress,
                 format!(
                     "{a} is also in the {pname} table row {}; keep one row per address",
+                    pr + 1
+                ),
+                format!(
+                    "{a} 也在数据表 {pname} 第 {} 行；每个地址只保留一行",
                     pr + 1
                 ),
             );
@@ -195,9 +224,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                         "{} does not belong in the {name} table; use {name} addresses",
                         row.address
                     ),
+                    format!("{} 不属于数据表 {name}；请使用 {name} 地址", row.address),
                 );
             } else if let Err(e) = row.address.check_range(profile) {
-                sink.report(at(r, 0), Code::T003DataAddress, e.to_string());
+                sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
             }
             let lo = row.min.unwrap_or(-VALUE_LIMIT);
             let hi = row.max.unwrap_or(VALUE_LIMIT);
@@ -209,6 +239,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                         "{} = {} lies outside its limits {lo}…{hi}",
                         row.address, row.value
                     ),
+                    format!("{} = {} 超出其上下限 {lo}…{hi}", row.address, row.value),
                 );
             }
             if area == Area::C && row.value < 0 {
@@ -216,6 +247,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     at(r, 1),
                     Code::T004DataValue,
                     "a counter value is 0…2147483647",
+                    "计数器的值为 0…2147483647",
                 );
             }
         }
@@ -233,6 +265,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                 at(r, 0),
                 Code::T003DataAddress,
                 format!("{} is not a D address of this controller", row.address),
+                format!("{} 不是本控制器的 D 地址", row.address),
             );
         }
         if !row.value.is_finite()
@@ -243,6 +276,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                 at(r, 1),
                 Code::T004DataValue,
                 format!("{} = {} lies outside its limits", row.address, row.value),
+                format!("{} = {} 超出其上下限", row.address, row.value),
             );
         }
     }
@@ -259,6 +293,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     "{}: alarm number {n} is outside 1000–9999",
                     MessageTable::address(r)
                 ),
+                format!("{}：报警号 {n} 超出 1000–9999", MessageTable::address(r)),
             ),
             Some(n) => {
                 if let Some(prev) = numbers.insert(n, r) {
@@ -270,6 +305,11 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                             MessageTable::address(r),
                             MessageTable::address(prev)
                         ),
+                        format!(
+                            "{}：报警号 {n} 已被 {} 使用",
+                            MessageTable::address(r),
+                            MessageTable::address(prev)
+                        ),
                     );
                 }
                 if !has_text {
@@ -277,6 +317,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                         at(r, 2),
                         Code::W005MessageHalf,
                         format!("{}: alarm {n} has no text", MessageTable::address(r)),
+                        format!("{}：报警 {n} 没有信息文本", MessageTable::address(r)),
                     );
                 }
             }
@@ -287,6 +328,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     "{}: a message text without an alarm number",
                     MessageTable::address(r)
                 ),
+                format!("{}：信息文本没有报警号", MessageTable::address(r)),
             ),
             None => {}
         }
@@ -304,6 +346,11 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     MessageTable::address(k),
                     MessageTable::address(rows - 1)
                 ),
+                format!(
+                    "{} 超出本控制器的 A 地址范围（A0000.0–{}）：请清空该行",
+                    MessageTable::address(k),
+                    MessageTable::address(rows - 1)
+                ),
             );
         }
     }
@@ -317,7 +364,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
     let mut codes: HashMap<u32, usize> = HashMap::new();
     for (r, row) in project.m_codes.iter().enumerate() {
         if let Err(e) = check_m_code(row.code) {
-            sink.report(at(r, 0), Code::T008TableKey, e.to_string());
+            sink.report(at(r, 0), Code::T008TableKey, e.to_string(), e.zh());
         }
         if let Some(prev) = codes.insert(row.code, r) {
             sink.report(
@@ -328,6 +375,11 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     row.code,
                     prev + 1
                 ),
+                format!(
+                    "M{:02} 也在第 {} 行；每个 M 代码只保留一行",
+                    row.code,
+                    prev + 1
+                ),
             );
         }
         comments(sink, at(r, 1), &row.comments);
@@ -335,16 +387,17 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
     // Version information.
     sink.at(VERSION, "VERSION", 0);
     let v = &project.version;
-    for (field, text, max) in [
-        ("designer", &v.designer, DESIGNER_MAX),
-        ("version", &v.version, VERSION_MAX),
-        ("remarks", &v.remarks, REMARKS_MAX),
+    for (field, field_zh, text, max) in [
+        ("designer", "设计者", &v.designer, DESIGNER_MAX),
+        ("version", "版本", &v.version, VERSION_MAX),
+        ("remarks", "备注", &v.remarks, REMARKS_MAX),
     ] {
         if text.chars().count() > max {
             sink.report(
                 at(0, 0),
                 Code::W006VersionLength,
                 format!("the {field} is longer than {max} characters"),
+                format!("{field_zh}超过 {max} 个字符"),
             );
         }
     }

@@ -1,8 +1,10 @@
 //! Splitting a script line into words: a double-quoted string is one word and may hold
 //! spaces, `;` and `#`; outside quotes `;` or `#` starts a comment.
 
+use super::{Msg, msg};
+
 /// The words of one line, or why it cannot be split.
-pub fn words(line: &str) -> Result<Vec<&str>, String> {
+pub fn words(line: &str) -> Result<Vec<&str>, Msg> {
     let mut out = Vec::new();
     let mut rest = line;
     loop {
@@ -12,13 +14,19 @@ pub fn words(line: &str) -> Result<Vec<&str>, String> {
             ';' | '#' => break,
             '"' => {
                 let body = &rest[1..];
-                let end = body
-                    .find('"')
-                    .ok_or_else(|| "a quoted string has no closing `\"`".to_string())?;
+                let end = body.find('"').ok_or_else(|| {
+                    msg(
+                        "a quoted string has no closing `\"`",
+                        "带引号的字符串缺少结尾的 `\"`",
+                    )
+                })?;
                 out.push(&body[..end]);
                 rest = &body[end + 1..];
                 if rest.starts_with(|c: char| !c.is_whitespace() && c != ';' && c != '#') {
-                    return Err("a quoted string must be followed by a space".into());
+                    return Err(msg(
+                        "a quoted string must be followed by a space",
+                        "带引号的字符串后面必须跟一个空格",
+                    ));
                 }
             }
             _ => {
@@ -26,7 +34,7 @@ pub fn words(line: &str) -> Result<Vec<&str>, String> {
                     .find(|c: char| c.is_whitespace() || c == ';' || c == '#' || c == '"')
                     .unwrap_or(rest.len());
                 if rest[end..].starts_with('"') {
-                    return Err("a quote must start a word".into());
+                    return Err(msg("a quote must start a word", "引号只能位于单词开头"));
                 }
                 out.push(&rest[..end]);
                 rest = &rest[end..];

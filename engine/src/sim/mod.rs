@@ -39,6 +39,46 @@ pub struct ScriptError {
     pub line: usize,
     /// What is wrong and how to fix it.
     pub message: String,
+    /// The same message in Chinese, with the same specifics (addresses, names, numbers).
+    pub message_zh: String,
+}
+
+impl ScriptError {
+    /// The message in Chinese when `zh` is set, else in English.
+    pub fn message_in(&self, zh: bool) -> &str {
+        if zh { &self.message_zh } else { &self.message }
+    }
+}
+
+/// Why a line is refused, in English and in Chinese.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Msg {
+    en: String,
+    zh: String,
+}
+
+fn msg(en: impl Into<String>, zh: impl Into<String>) -> Msg {
+    Msg {
+        en: en.into(),
+        zh: zh.into(),
+    }
+}
+
+/// A refusal of the CNC side (`cnc` lines, `cnc.KEY` values), which words it in English only.
+fn cnc_refusal(en: String) -> Msg {
+    Msg {
+        zh: format!("CNC 命令或数值有误：{en}"),
+        en,
+    }
+}
+
+impl From<AddressError> for Msg {
+    fn from(e: AddressError) -> Msg {
+        Msg {
+            en: e.to_string(),
+            zh: e.zh(),
+        }
+    }
 }
 
 /// A parsed script: commands with their lines.
@@ -72,24 +112,35 @@ const COMMANDS: &[&str] = &[
     "cnc",
 ];
 
-fn target(text: &str, profile: &Profile) -> Result<Target, String> {
+fn target(text: &str, profile: &Profile) -> Result<Target, Msg> {
     let (addr, bytes) = match text.split_once(':') {
         Some((a, n)) => {
             let n: u32 = n
                 .parse()
                 .ok()
                 .filter(|n| matches!(n, 1 | 2 | 4))
-                .ok_or_else(|| format!("`{text}`: the byte count after `:` is 1, 2 or 4"))?;
+                .ok_or_else(|| {
+                    msg(
+                        format!("`{text}`: the byte count after `:` is 1, 2 or 4"),
+                        format!("`{text}`：`:` 后的字节数应为 1、2 或 4"),
+                    )
+                })?;
             (a, Some(n))
         }
         None => (text, None),
     };
-    let address = Address::parse_in(addr, profile).map_err(|e: AddressError| e.to_string())?;
+    let address = Address::parse_in(addr, profile)?;
     if matches!(address.area, Area::L | Area::P) {
-        return Err(format!("`{text}`: labels and subprograms hold no value"));
+        return Err(msg(
+            format!("`{text}`: labels and subprograms hold no value"),
+            format!("`{text}`：标号和子程序没有值"),
+        ));
     }
     if address.bit.is_some() && bytes.is_some() {
-        return Err(format!("`{text}`: a bit address takes no byte count"));
+        return Err(msg(
+            format!("`{text}`: a bit address takes no byte count"),
+            format!("`{text}`：位地址不能带字节数"),
+        ));
     }
     let natural = if address.bit.is_some() {
         1
@@ -98,9 +149,7 @@ fn target(text: &str, profile: &Profile) -> Result<Target, String> {
     };
     let bytes = bytes.unwrap_or(natural);
     if address.bit.is_none() && address.area.element_bytes() == 1 {
-        address
-            .check_span(profile, bytes)
-            .map_err(|e| e.to_string())?;
+        address.check_span(profile, bytes)?;
     }
     Ok(Target {
         address,
@@ -114,26 +163,32 @@ fn is_cnc_key(text: &str) -> bool {
         .is_some_and(|p| p.eq_ignore_ascii_case("cnc."))
 }
 
-fn probe(text: &str, profile: &Profile, cnc: bool) -> Result<Probe, String> {
+fn probe(text: &str, profile: &Profile, cnc: bool) -> Result<Probe, Msg> {
     if is_cnc_key(text) {
         if !cnc {
-            return Err(format!("`{text}` is a CNC value: run with `sim --cnc`"));
+            return Err(msg(
+                format!("`{text}` is a CNC value: run with `sim --cnc`"),
+                format!("`{text}` 是 CNC 的值：请用 `sim --cnc` 运行"),
+            ));
         }
-        return CncKey::parse(text, profile.id).map(Probe::Cnc);
+        return CncKey::parse(text, profile.id)
+            .map(Probe::Cnc)
+            .map_err(cnc_refusal);
     }
     target(text, profile).map(Probe::Memory)
 }
 
-fn memory_target(text: &str, profile: &Profile, verb: &str) -> Result<Target, String> {
+fn memory_target(text: &str, profile: &Profile, verb: &str) -> Result<Target, Msg> {
     if is_cnc_key(text) {
-        return Err(format!(
-            "`{verb}` writes PLC memory; `{text}` is a CNC value (use a `cnc` command)"
+        return Err(msg(
+            format!("`{verb}` writes PLC memory; `{text}` is a CNC value (use a `cnc` command)"),
+            format!("`{verb}` 写入的是 PLC 存储器；`{text}` 是 CNC 的值（请用 `cnc` 命令）"),
         ));
     }
     target(text, profile)
 }
 
-fn integer(text: &str) -> Result<i64, String> {
+fn integer(text: &str) -> Result<i64, Msg> {
     let (neg, digits) = match text.strip_prefix('-') {
         Some(d) => (true, d),
         None => (false, text.strip_prefix('+').unwrap_or(text)),
@@ -145,36 +200,53 @@ fn integer(text: &str) -> Result<i64, String> {
         Some(hex) => i64::from_str_radix(hex, 16),
         None => digits.parse::<i64>(),
     }
-    .map_err(|_| format!("`{text}` is not an integer"))?;
+    .map_err(|_| {
+        msg(
+            format!("`{text}` is not an integer"),
+            format!("`{text}` 不是整数"),
+        )
+    })?;
     Ok(if neg { -v } else { v })
 }
 
-fn fits(target: &Target, v: i64) -> Result<(), String> {
+fn fits(target: &Target, v: i64) -> Result<(), Msg> {
     if target.address.bit.is_some() {
         return if v == 0 || v == 1 {
             Ok(())
         } else {
-            Err(format!(
-                "{} is a bit: the value is 0 or 1, not {v}",
-                target.text()
+            Err(msg(
+                format!("{} is a bit: the value is 0 or 1, not {v}", target.text()),
+                format!("{} 是位：值只能是 0 或 1，不能是 {v}", target.text()),
             ))
         };
     }
     let bits = 8 * target.bytes;
     let (lo, hi) = (-(1i64 << (bits - 1)), (1i64 << bits) - 1);
     if v < lo || v > hi {
-        return Err(format!(
-            "{v} does not fit {} ({} byte{}: {lo}…{hi})",
-            target.text(),
-            target.bytes,
-            if target.bytes == 1 { "" } else { "s" }
+        return Err(msg(
+            format!(
+                "{v} does not fit {} ({} byte{}: {lo}…{hi})",
+                target.text(),
+                target.bytes,
+                if target.bytes == 1 { "" } else { "s" }
+            ),
+            format!(
+                "{v} 超出 {} 的范围（{} 字节：{lo}…{hi}）",
+                target.text(),
+                target.bytes
+            ),
         ));
     }
     Ok(())
 }
 
-fn duration(text: &str) -> Result<u64, String> {
-    let bad = || format!("`{text}` is not a duration (write 250ms, 2s or a number of ms)");
+fn duration(text: &str) -> Result<u64, Msg> {
+    let bad = || {
+        msg(
+            format!("`{text}` is not a duration (write 250ms, 2s or a number of ms)"),
+            format!("`{text}` 不是时间长度（应写成 250ms、2s 或毫秒数）"),
+        )
+    };
     let (number, scale) = if let Some(n) = text.strip_suffix("ms") {
         (n, 1.0)
     } else if let Some(n) = text.strip_suffix('s') {
@@ -189,16 +261,26 @@ fn duration(text: &str) -> Result<u64, String> {
     Ok(((v * scale) / TICK_MS as f64).ceil() as u64)
 }
 
-fn real(text: &str) -> Result<f32, String> {
-    text.parse::<f32>()
-        .map_err(|_| format!("`{text}` is not a number"))
+fn real(text: &str) -> Result<f32, Msg> {
+    text.parse::<f32>().map_err(|_| {
+        msg(
+            format!("`{text}` is not a number"),
+            format!("`{text}` 不是数字"),
+        )
+    })
 }
 
-fn four_byte(t: &Target, verb: &str) -> Result<(), String> {
+fn four_byte(t: &Target, verb: &str) -> Result<(), Msg> {
     if t.address.bit.is_some() || t.address.area.element_bytes() != 4 {
-        return Err(format!(
-            "{verb} needs a 4-byte address (D, T, C, DT, DC), not {}",
-            t.address
+        return Err(msg(
+            format!(
+                "{verb} needs a 4-byte address (D, T, C, DT, DC), not {}",
+                t.address
+            ),
+            format!(
+                "{verb} 需要 4 字节地址（D、T、C、DT、DC），不能是 {}",
+                t.address
+            ),
         ));
     }
     Ok(())
@@ -230,7 +312,11 @@ impl Script {
         let mut commands = Vec::new();
         for (i, raw) in text.lines().enumerate() {
             let line = i + 1;
-            let err = |message: String| ScriptError { line, message };
+            let err = |m: Msg| ScriptError {
+                line,
+                message: m.en,
+                message_zh: m.zh,
+            };
             let words = lex::words(raw).map_err(err)?;
             let Some(&verb) = words.first() else {
                 continue;
@@ -247,12 +333,12 @@ fn parse_line(
     args: &[&str],
     profile: &Profile,
     options: &Options<'_>,
-) -> Result<Command, String> {
+) -> Result<Command, Msg> {
     let want = |n: std::ops::RangeInclusive<usize>, usage: &str| {
         if n.contains(&args.len()) {
             Ok(())
         } else {
-            Err(format!("usage: {usage}"))
+            Err(msg(format!("usage: {usage}"), format!("用法：`{usage}`")))
         }
     };
     let lower = verb.to_ascii_lowercase();
@@ -291,7 +377,12 @@ fn parse_line(
                     .parse::<u64>()
                     .ok()
                     .filter(|n| *n <= 100_000_000)
-                    .ok_or_else(|| format!("`{n}` is not a number of scans"))?,
+                    .ok_or_else(|| {
+                        msg(
+                            format!("`{n}` is not a number of scans"),
+                            format!("`{n}` 不是扫描次数"),
+                        )
+                    })?,
                 None => 1,
             };
             act(MachineCommand::Tick(n))
@@ -303,7 +394,11 @@ fn parse_line(
         "expect" => {
             want(2..=2, "expect ADDR[:N] VALUE")?;
             match probe(args[0], profile, options.cnc)? {
-                Probe::Cnc(k) => Ok(Command::ExpectCnc(k, k.expected(args[1])?, args[1].into())),
+                Probe::Cnc(k) => Ok(Command::ExpectCnc(
+                    k,
+                    k.expected(args[1]).map_err(cnc_refusal)?,
+                    args[1].into(),
+                )),
                 Probe::Memory(t) => {
                     let v = integer(args[1])?;
                     fits(&t, v)?;
@@ -335,7 +430,12 @@ fn parse_line(
                 .parse::<u32>()
                 .ok()
                 .filter(|n| (1..=1000).contains(n))
-                .ok_or_else(|| format!("`{}`: the division is a number 1–1000", args[0]))?;
+                .ok_or_else(|| {
+                    msg(
+                        format!("`{}`: the division is a number 1–1000", args[0]),
+                        format!("`{}`：二级程序分割数应为 1–1000", args[0]),
+                    )
+                })?;
             act(MachineCommand::Division(n))
         }
         "power-cycle" => {
@@ -344,24 +444,33 @@ fn parse_line(
         }
         "cnc" => {
             if !options.cnc {
-                return Err("`cnc` lines drive the simulated CNC: run with `sim --cnc`".into());
+                return Err(msg(
+                    "`cnc` lines drive the simulated CNC: run with `sim --cnc`",
+                    "`cnc` 行驱动的是模拟 CNC：请用 `sim --cnc` 运行",
+                ));
             }
-            act(MachineCommand::Cnc(CncCommand::parse(
-                args,
-                profile.id,
-                options.read_file,
-            )?))
+            act(MachineCommand::Cnc(
+                CncCommand::parse(args, profile.id, options.read_file).map_err(cnc_refusal)?,
+            ))
         }
         _ => {
             let prefix: String = lower.chars().take(3).collect();
-            let near = COMMANDS
-                .iter()
-                .find(|c| c.starts_with(&prefix))
-                .map(|c| format!("; did you mean `{c}`?"))
-                .unwrap_or_default();
-            Err(format!(
-                "unknown command `{verb}`{near} (commands: {})",
-                COMMANDS.join(", ")
+            let near = COMMANDS.iter().find(|c| c.starts_with(&prefix));
+            let (near_en, near_zh) = near.map_or((String::new(), String::new()), |c| {
+                (
+                    format!("; did you mean `{c}`?"),
+                    format!("；是不是 `{c}`？"),
+                )
+            });
+            Err(msg(
+                format!(
+                    "unknown command `{verb}`{near_en} (commands: {})",
+                    COMMANDS.join(", ")
+                ),
+                format!(
+                    "未知命令 `{verb}`{near_zh}（命令：{}）",
+                    COMMANDS.join("、")
+                ),
             ))
         }
     }
@@ -508,6 +617,7 @@ pub fn run(machine: &mut Machine, script: &Script, name: &str, trace: bool) -> O
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::compiler::zh_tests::assert_bilingual;
     use crate::profile::ProfileId;
 
     fn parse(text: &str) -> Result<Script, ScriptError> {
@@ -582,6 +692,48 @@ mod tests {
         assert!(parse_cnc("expect cnc.pos.X").is_err());
         assert!(parse_cnc("cnc program \"M03").is_err());
         assert!(parse_cnc("watch cnc.pos.Z\nprint cnc.spindle").is_ok());
+    }
+
+    #[test]
+    fn script_errors_say_in_chinese_what_they_say_in_english() {
+        let plc = [
+            "set R0000 256",
+            "sett X1.0 1",
+            "frob",
+            "set R1000 1",
+            "set X1.0 2",
+            "set X1.0:2 1",
+            "set L0001 1",
+            "set R0001:3 1",
+            "set R0999:4 1",
+            "set R1 x",
+            "set Q1 1",
+            "set R1.9 1",
+            "set D1.3 1",
+            "run 2x",
+            "scan many",
+            "division 0",
+            "setf R1 1.5",
+            "expectf D1 one",
+            "set R1",
+            "power-cycle now",
+            "cnc reset",
+            "expect cnc.mode MEM",
+            "print \"R1",
+            "print \"R1\"x",
+            "print R\"1\"",
+            "set cnc.mode 1",
+        ];
+        for text in plc {
+            let e = parse(text).expect_err(text);
+            assert_bilingual(&e.message, &e.message_zh);
+            assert_eq!(e.message_in(false), e.message);
+            assert_eq!(e.message_in(true), e.message_zh);
+        }
+        // The CNC side words its refusals in English; the Chinese says what they are about.
+        let e = parse_cnc("scan\ncnc program-file other.nc").unwrap_err();
+        assert!(e.message_zh.starts_with("CNC 命令或数值有误："));
+        assert!(e.message_zh.contains("other.nc"), "{}", e.message_zh);
     }
 
     #[test]

@@ -85,6 +85,14 @@ impl Vm {
                     "one level-2 cycle"
                 }
             ),
+            message_zh: format!(
+                "{}中 JMPB 循环超过 {WATCHDOG_STEPS} 步；PLC 已停止，需重新上电",
+                if level == Level::One {
+                    "一级程序的一次扫描"
+                } else {
+                    "二级程序的一个周期"
+                }
+            ),
         }
     }
 
@@ -380,4 +388,46 @@ fn hot<const TRACE: bool>(
     r.branches = branches;
     r.steps = steps;
     stop
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::cnc::NoCnc;
+    use super::super::{Vm, WATCHDOG_STEPS};
+    use crate::address::Address;
+    use crate::compiler::zh_tests::assert_bilingual;
+
+    /// A PLC whose level (`LEVEL1` or `LEVEL2`) spins in a JMPB loop while X0001.0 is on.
+    fn spinning(level: &str) -> Vm {
+        let text = format!(
+            "LEVEL1\nNETWORK\nLD X0000.0\nOUT R0000.0\n{level}\nNETWORK\nLBL L0001\nNETWORK\nLD X0001.0\nJMPB L0001\n"
+        );
+        let project = crate::il::import(&text).project.expect("draws");
+        let mut vm = Vm::new(&project).unwrap();
+        vm.write(Address::parse("X1.0").unwrap(), 1, 1);
+        vm.tick(&mut NoCnc);
+        vm
+    }
+
+    #[test]
+    fn a_halt_says_in_chinese_what_it_says_in_english() {
+        for (level, words) in [("LEVEL1", "一级程序"), ("LEVEL2", "二级程序")] {
+            let vm = spinning(level);
+            let halt = vm.halt().expect("halted");
+            assert_bilingual(&halt.message, &halt.message_zh);
+            assert!(halt.message_zh.contains(words), "{}", halt.message_zh);
+            assert!(
+                halt.message_zh
+                    .contains(&format!("JMPB 循环超过 {WATCHDOG_STEPS} 步")),
+                "{}",
+                halt.message_zh
+            );
+            assert_eq!(halt.text(false), halt.to_string());
+            let network = if level == "LEVEL1" { 3 } else { 2 };
+            assert_eq!(
+                halt.text(true),
+                format!("{level} 网络 {network}：{}", halt.message_zh)
+            );
+        }
+    }
 }

@@ -52,6 +52,20 @@ pub struct Halt {
     pub network: usize,
     /// What happened.
     pub message: String,
+    /// The same in Chinese, with the same specifics.
+    pub message_zh: String,
+}
+
+impl Halt {
+    /// The halt for a reader of Chinese (`zh`) or English: `LEVEL1 网络 3：MESSAGE_ZH`, or
+    /// as [`fmt::Display`] writes it.
+    pub fn text(&self, zh: bool) -> String {
+        if zh {
+            format!("{} 网络 {}：{}", self.block, self.network, self.message_zh)
+        } else {
+            self.to_string()
+        }
+    }
 }
 
 impl fmt::Display for Halt {
