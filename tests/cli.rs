@@ -379,3 +379,55 @@ fn the_editor_online_options_refuse_what_cannot_work() {
         r.stderr
     );
 }
+
+#[test]
+fn lang_zh_speaks_chinese_in_the_same_line_shapes() {
+    let path = il_path("invalid/stacks.il");
+    let r = run(&["--lang", "zh", "check", &path]);
+    assert_eq!(r.code, 1, "{r:?}");
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(*lines.last().unwrap(), "9 个错误，0 个警告");
+    assert!(
+        lines[0].starts_with(&format!("{path}:4: error: ")) && lines[0].ends_with("[L013]"),
+        "the shape scripts read is kept: {}",
+        lines[0]
+    );
+    assert!(
+        lines[0].contains("ORB") && !lines[0].contains("has no open block"),
+        "{}",
+        lines[0]
+    );
+    // After the subcommand too, and for unusable input.
+    let r = run(&["check", "/no/such/file.ldp", "--lang", "zh"]);
+    assert_eq!(r.code, 2);
+    assert!(
+        r.stderr.contains("无法读取 /no/such/file.ldp"),
+        "{}",
+        r.stderr
+    );
+    // A script error in Chinese, with its line.
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("s.script");
+    std::fs::write(&script, "scan 1\nsett X0000.0 1\n").unwrap();
+    let program = il_path("valid/functions.il");
+    let r = run(&[
+        "sim",
+        &program,
+        "--script",
+        script.to_str().unwrap(),
+        "--lang",
+        "zh",
+    ]);
+    assert_eq!(r.code, 2, "{r:?}");
+    let line = r.stderr.lines().next().unwrap();
+    assert!(
+        line.starts_with(&format!("{}:2: ", script.display())),
+        "{line}"
+    );
+    assert!(
+        line.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c)),
+        "{line}"
+    );
+    // An unknown language is refused like any bad argument.
+    assert_eq!(run(&["--lang", "fr", "check", &path]).code, 2);
+}

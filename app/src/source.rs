@@ -1,6 +1,7 @@
 //! Reading a PATH argument: a project file or an instruction list, told apart by content.
 
-use anyhow::{Context, Result, bail};
+use crate::cli::Say;
+use anyhow::{Result, anyhow, bail};
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::model::Project;
 use ladder_engine::{file, il};
@@ -21,19 +22,25 @@ pub enum Source {
 
 impl Source {
     /// Reads a `.ldp` project or an `.il` text; the content decides, not the extension.
-    pub fn read(path: &Path) -> Result<Source> {
-        let bytes =
-            std::fs::read(path).with_context(|| format!("cannot read {}", path.display()))?;
+    /// Errors are said in `say`'s language.
+    pub fn read(path: &Path, say: Say) -> Result<Source> {
+        let bytes = std::fs::read(path).map_err(|e| anyhow!(say.cannot_read(path, e)))?;
         if file::is_project_text(&bytes) {
-            let project = file::from_bytes(&bytes)
-                .with_context(|| format!("{} cannot be opened", path.display()))?;
+            let project =
+                file::from_bytes(&bytes).map_err(|e| anyhow!(say.cannot_open(path, &e)))?;
             return Ok(Source::Project(project));
         }
         let Ok(text) = String::from_utf8(bytes) else {
-            bail!(
-                "{} is neither a Ladder Studio project nor an instruction list (it is not UTF-8 text)",
-                path.display()
-            );
+            bail!(say.pick(
+                format!(
+                    "{} is neither a Ladder Studio project nor an instruction list (it is not UTF-8 text)",
+                    path.display()
+                ),
+                format!(
+                    "{} 既不是 Ladder Studio 工程，也不是指令表（不是 UTF-8 文本）",
+                    path.display()
+                )
+            ));
         };
         let imported = il::import(&text);
         Ok(Source::Il { text, imported })

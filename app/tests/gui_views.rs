@@ -112,7 +112,7 @@ fn a_compile_error_reads_in_chinese_in_a_chinese_ui() {
     let diag = h.state().output[0].clone();
     assert!(
         diag.text
-            .starts_with("err.ldp 二级程序 网络 2 行 1 列 2：错误：[L020] 符号未定义（"),
+            .starts_with("err.ldp 二级程序 网络 2 行 1 列 2：错误：[L020] 符号 `NOWHERE` 未定义"),
         "{}",
         diag.text
     );
@@ -122,7 +122,12 @@ fn a_compile_error_reads_in_chinese_in_a_chinese_ui() {
         diag.text
     );
     assert!(diag.target.is_some(), "it still jumps to its cell");
-    h.get_by_label_contains("[L020] 符号未定义");
+    h.get_by_label_contains("[L020] 符号 `NOWHERE` 未定义");
+    assert!(
+        !diag.text.contains("undefined"),
+        "no English inside the Chinese: {}",
+        diag.text
+    );
 }
 
 #[test]

@@ -625,6 +625,8 @@ pub struct Start {
     pub run: bool,
     /// An NC program to load and start from the operator panel.
     pub nc: Option<String>,
+    /// The UI language asked for on the command line (else the saved setting).
+    pub lang: Option<i18n::Lang>,
 }
 
 /// Opens the editor window (blocks until it closes).
@@ -640,6 +642,9 @@ pub fn run(start: Start) -> anyhow::Result<()> {
         options,
         Box::new(move |cc| {
             let mut app = LadderApp::from_creation(cc, start.project.clone());
+            if let Some(lang) = start.lang {
+                app.settings.lang = lang;
+            }
             if start.run {
                 app.start_running(start.nc.clone());
             }

@@ -160,7 +160,10 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
         Refusal::ReadOnly { address, allowed } if allowed.contains(address.area) => {
             Msg::FnReadOnly.text(lang).into()
         }
-        Refusal::DigitGroup(why) => why,
+        Refusal::DigitGroup(why) => match lang {
+            Lang::Zh => Refusal::DigitGroup(why).zh(op),
+            Lang::En => why,
+        },
         Refusal::Range(e) => super::tables::address_error(&e, profile, lang),
         Refusal::ReadOnly { .. }
         | Refusal::Area { .. }

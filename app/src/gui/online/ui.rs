@@ -70,7 +70,8 @@ impl LadderApp {
                 t(Msg::StateStopped)
             });
             if let Some(h) = &snap.halt {
-                ui.colored_label(theme::ERROR, format!("{}: {h}", t(Msg::PlcHalted)));
+                let why = h.text(lang == super::super::i18n::Lang::Zh);
+                ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::PlcHalted)));
             }
         }
     }

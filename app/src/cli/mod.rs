@@ -2,6 +2,10 @@
 //! input that fails (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad
 //! arguments).
 
+mod say;
+
+pub use say::Say;
+
 use crate::source::Source;
 use clap::{Parser, Subcommand};
 use ladder_engine::compiler::{Compiled, compile};
@@ -16,7 +20,6 @@ use std::path::{Path, PathBuf};
 /// Ladder editor, compiler and simulator for the PLC of GSK CNC controllers.
 #[derive(Parser, Debug)]
 #[command(name = "ladder-studio", version, about)]
-#[command(args_conflicts_with_subcommands = true)]
 pub struct Cli {
     /// A project to open in the editor (without a subcommand).
     pub project: Option<PathBuf>,
@@ -27,6 +30,10 @@ pub struct Cli {
     /// (its AUTO key, then Cycle start).
     #[arg(long, value_name = "FILE", requires = "run")]
     pub nc: Option<PathBuf>,
+    /// The language of the messages (zh or en; default: the locale's). With export-comments
+    /// and import-comments it also chooses the one comment column to write or read.
+    #[arg(long, global = true, value_name = "zh|en", value_parser = ["zh", "en"])]
+    pub lang: Option<String>,
     /// What to do.
     #[command(subcommand)]
     pub command: Option<Command>,
@@ -52,9 +59,6 @@ pub enum Command {
     ExportComments {
         /// A project (.ldp) or an instruction list (.il).
         path: PathBuf,
-        /// Only this language's column (zh or en).
-        #[arg(long)]
-        lang: Option<String>,
         /// Output file (default: standard output).
         #[arg(short, long)]
         output: Option<PathBuf>,
@@ -65,9 +69,6 @@ pub enum Command {
         project: PathBuf,
         /// The CSV file.
         csv: PathBuf,
-        /// Only this language's column (zh or en).
-        #[arg(long)]
-        lang: Option<String>,
     },
     /// Print the reference index, the bit-usage table or the byte-usage table.
     Xref {
@@ -121,8 +122,18 @@ pub enum Command {
     },
 }
 
-/// Runs the command line; returns the exit code.
+/// Runs the command line; returns the exit code. Messages are in the system locale's
+/// language unless `--lang` says otherwise.
 pub fn run<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    run_in(args, &Say::system_locale(), out, err)
+}
+
+/// Runs the command line as in `locale` (tests give one, so they read the same everywhere).
+pub fn run_in<I, T>(args: I, locale: &str, out: &mut dyn Write, err: &mut dyn Write) -> i32
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
@@ -140,6 +151,19 @@ where
             return code;
         }
     };
+    let say = Say::new(cli.lang.as_deref(), locale);
+    let lang = cli.lang.as_deref();
+    if cli.command.is_some() && (cli.project.is_some() || cli.run) {
+        let _ = writeln!(
+            err,
+            "ladder-studio: {}",
+            say.pick(
+                "a project to open (or --run) and a subcommand cannot be given together (see --help)",
+                "要打开的工程（或 --run）不能与子命令同时给出（见 --help）"
+            )
+        );
+        return 2;
+    }
     let result = match cli.command {
         None => {
             if let Some(p) = &cli.project
@@ -147,18 +171,28 @@ where
             {
                 let _ = writeln!(
                     err,
-                    "ladder-studio: no project file or subcommand `{}` (see --help)",
-                    p.display()
+                    "ladder-studio: {}",
+                    say.pick(
+                        format!(
+                            "no project file or subcommand `{}` (see --help)",
+                            p.display()
+                        ),
+                        format!("没有工程文件或子命令 `{}`（见 --help）", p.display())
+                    )
                 );
                 return 2;
             }
             let nc = match cli.nc.as_deref().map(std::fs::read_to_string) {
                 Some(Ok(text)) => Some(text),
                 Some(Err(e)) => {
+                    let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
                     let _ = writeln!(
                         err,
-                        "ladder-studio: cannot read the NC program {}: {e}",
-                        cli.nc.as_deref().unwrap_or(Path::new("")).display()
+                        "ladder-studio: {}",
+                        say.pick(
+                            format!("cannot read the NC program {}: {e}", nc.display()),
+                            format!("无法读取 NC 程序 {}：{e}", nc.display())
+                        )
                     );
                     return 2;
                 }
@@ -171,7 +205,11 @@ where
             if !display {
                 let _ = writeln!(
                     err,
-                    "ladder-studio: the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)"
+                    "ladder-studio: {}",
+                    say.pick(
+                        "the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)",
+                        "编辑器需要图形界面（没有 DISPLAY 或 WAYLAND_DISPLAY）；子命令无需图形界面即可运行（见 --help）"
+                    )
                 );
                 return 2;
             }
@@ -179,33 +217,42 @@ where
                 project: cli.project,
                 run: cli.run,
                 nc,
+                lang: cli.lang.as_deref().map(|l| {
+                    if l == "zh" {
+                        crate::gui::i18n::Lang::Zh
+                    } else {
+                        crate::gui::i18n::Lang::En
+                    }
+                }),
             };
             crate::gui::run(start).map(|()| 0)
         }
-        Some(Command::Check { path }) => check(&path, out),
-        Some(Command::ExportIl { path, output }) => export_il(&path, output.as_deref(), out, err),
-        Some(Command::ImportIl { il, output }) => import_il(&il, &output, err),
+        Some(Command::Check { path }) => check(&path, say, out),
+        Some(Command::ExportIl { path, output }) => {
+            export_il(&path, output.as_deref(), say, out, err)
+        }
+        Some(Command::ImportIl { il, output }) => import_il(&il, &output, say, err),
         Some(Command::Sim {
             path,
             script,
             trace,
             cnc,
-        }) => sim(&path, &script, trace.as_deref(), cnc, out, err),
+        }) => sim(&path, &script, trace.as_deref(), cnc, say, out, err),
         Some(Command::Bench {
             path,
             scans,
             cnc,
             script,
-        }) => bench(&path, scans, cnc, script.as_deref(), out, err),
-        Some(Command::ExportComments { path, lang, output }) => {
-            export_comments(&path, lang.as_deref(), output.as_deref(), out, err)
+        }) => bench(&path, scans, cnc, script.as_deref(), say, out, err),
+        Some(Command::ExportComments { path, output }) => {
+            export_comments(&path, lang, output.as_deref(), say, out, err)
         }
-        Some(Command::ImportComments { project, csv, lang }) => {
-            import_comments(&project, &csv, lang.as_deref(), out, err)
+        Some(Command::ImportComments { project, csv }) => {
+            import_comments(&project, &csv, lang, say, out, err)
         }
         Some(Command::Xref {
             path, bits, bytes, ..
-        }) => xref(&path, bits, bytes, out, err),
+        }) => xref(&path, bits, bytes, say, out, err),
     };
     match result {
         Ok(code) => code,
@@ -216,37 +263,29 @@ where
     }
 }
 
-fn print_diagnostics(path: &Path, compiled: &Compiled, w: &mut dyn Write) {
+fn print_diagnostics(path: &Path, compiled: &Compiled, say: Say, w: &mut dyn Write) {
     let shown = path.display().to_string();
     for d in &compiled.diagnostics {
-        let _ = writeln!(w, "{}", d.render(&shown));
+        let _ = writeln!(w, "{}", say.diagnostic(d, &shown));
     }
 }
 
-fn summary(compiled: &Compiled) -> String {
-    let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
-    format!(
-        "{}, {}",
-        plural(compiled.errors(), "error"),
-        plural(compiled.warnings(), "warning")
-    )
-}
-
-fn check(path: &Path, out: &mut dyn Write) -> anyhow::Result<i32> {
-    let source = Source::read(path)?;
+fn check(path: &Path, say: Say, out: &mut dyn Write) -> anyhow::Result<i32> {
+    let source = Source::read(path, say)?;
     let compiled = source.compiled();
-    print_diagnostics(path, &compiled, out);
-    let _ = writeln!(out, "{}", summary(&compiled));
+    print_diagnostics(path, &compiled, say, out);
+    let _ = writeln!(out, "{}", say.summary(&compiled));
     Ok(i32::from(compiled.errors() > 0))
 }
 
 fn export_il(
     path: &Path,
     output: Option<&Path>,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    let source = Source::read(path)?;
+    let source = Source::read(path, say)?;
     let compiled = match &source {
         Source::Project(p) => compile(p),
         Source::Il { imported, .. } => match &imported.project {
@@ -256,23 +295,34 @@ fn export_il(
         },
     };
     if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
-        print_diagnostics(path, &compiled, err);
-        let _ = writeln!(err, "{}; no instruction list written", summary(&compiled));
+        print_diagnostics(path, &compiled, say, err);
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!("{}; no instruction list written", say.summary(&compiled)),
+                format!("{}；未写出指令表", say.summary(&compiled))
+            )
+        );
         return Ok(1);
     }
     // Other errors (an undefined symbol, an address out of range) do not stop the export:
     // the list is what the ladder says, and the check explains what to fix.
-    print_diagnostics(path, &compiled, err);
+    print_diagnostics(path, &compiled, say, err);
     let text = il::print(&compiled.program);
-    write_output(output, &text, out)?;
+    write_output(output, &text, say, out)?;
     Ok(0)
 }
 
 /// Writes `text` to the `-o` file, or to standard output without one.
-fn write_output(output: Option<&Path>, text: &str, out: &mut dyn Write) -> anyhow::Result<()> {
+fn write_output(
+    output: Option<&Path>,
+    text: &str,
+    say: Say,
+    out: &mut dyn Write,
+) -> anyhow::Result<()> {
     match output {
-        Some(o) => std::fs::write(o, text)
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", o.display())),
+        Some(o) => std::fs::write(o, text).map_err(|e| anyhow::anyhow!(say.cannot_write(o, e))),
         None => {
             let _ = out.write_all(text.as_bytes());
             Ok(())
@@ -280,32 +330,49 @@ fn write_output(output: Option<&Path>, text: &str, out: &mut dyn Write) -> anyho
     }
 }
 
-fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<i32> {
-    let source = Source::read(path)?;
+fn import_il(path: &Path, output: &Path, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
+    let source = Source::read(path, say)?;
     let Source::Il { imported, .. } = source else {
-        anyhow::bail!(
-            "{} is a project file, not an instruction list; use export-il to get its IL",
-            path.display()
-        );
+        anyhow::bail!(say.pick(
+            format!(
+                "{} is a project file, not an instruction list; use export-il to get its IL",
+                path.display()
+            ),
+            format!(
+                "{} 是工程文件，不是指令表；用 export-il 导出它的指令表",
+                path.display()
+            )
+        ));
     };
-    print_diagnostics(path, &imported.compiled, err);
+    print_diagnostics(path, &imported.compiled, say, err);
+    let summary = say.summary(&imported.compiled);
     let Some(project) = imported.project else {
         let _ = writeln!(
             err,
-            "{}; the instruction list cannot be drawn as a ladder, no project written",
-            summary(&imported.compiled)
+            "{}",
+            say.pick(
+                format!("{summary}; the instruction list cannot be drawn as a ladder, no project written"),
+                format!("{summary}；指令表无法画成梯形图，未写出工程")
+            )
         );
         return Ok(1);
     };
-    file::save(&project, output)
-        .map_err(|e| anyhow::anyhow!("cannot save {}: {e}", output.display()))?;
+    file::save(&project, output).map_err(|e| anyhow::anyhow!(say.cannot_save(output, &e)))?;
     let errors = imported.compiled.errors();
     if errors > 0 {
         let _ = writeln!(
             err,
-            "{}; project written to {} with the errors to fix",
-            summary(&imported.compiled),
-            output.display()
+            "{}",
+            say.pick(
+                format!(
+                    "{summary}; project written to {} with the errors to fix",
+                    output.display()
+                ),
+                format!(
+                    "{summary}；工程已写入 {}，其中的错误待修改",
+                    output.display()
+                )
+            )
         );
     }
     Ok(i32::from(errors > 0))
@@ -313,27 +380,38 @@ fn import_il(path: &Path, output: &Path, err: &mut dyn Write) -> anyhow::Result<
 
 /// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the
 /// program cannot run (exit 1).
-fn machine(path: &Path, cnc: bool, err: &mut dyn Write) -> anyhow::Result<Result<Machine, i32>> {
-    let source = Source::read(path)?;
+fn machine(
+    path: &Path,
+    cnc: bool,
+    say: Say,
+    err: &mut dyn Write,
+) -> anyhow::Result<Result<Machine, i32>> {
+    let source = Source::read(path, say)?;
+    let cannot_run = |compiled: &Compiled, err: &mut dyn Write| {
+        print_diagnostics(path, compiled, say, err);
+        let summary = say.summary(compiled);
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!("{summary}; the program cannot run"),
+                format!("{summary}；程序无法运行")
+            )
+        );
+    };
     let project = match source {
         Source::Project(p) => p,
         Source::Il { imported, .. } => match imported.project {
             Some(p) => p,
             None => {
-                print_diagnostics(path, &imported.compiled, err);
-                let _ = writeln!(
-                    err,
-                    "{}; the program cannot run",
-                    summary(&imported.compiled)
-                );
+                cannot_run(&imported.compiled, err);
                 return Ok(Err(1));
             }
         },
     };
     let compiled = compile(&project);
     if compiled.errors() > 0 {
-        print_diagnostics(path, &compiled, err);
-        let _ = writeln!(err, "{}; the program cannot run", summary(&compiled));
+        cannot_run(&compiled, err);
         return Ok(Err(1));
     }
     Ok(Ok(
@@ -347,17 +425,18 @@ fn read_script(
     script_path: &Path,
     machine: &Machine,
     cnc: bool,
+    say: Say,
     err: &mut dyn Write,
 ) -> anyhow::Result<Result<Script, i32>> {
     let text = std::fs::read_to_string(script_path)
-        .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", script_path.display()))?;
+        .map_err(|e| anyhow::anyhow!(say.cannot_read(script_path, e)))?;
     let folder = script_path
         .parent()
         .map(Path::to_path_buf)
         .unwrap_or_default();
     let read_file = |p: &str| -> Result<String, String> {
         let full = folder.join(p);
-        std::fs::read_to_string(&full).map_err(|e| format!("cannot read {}: {e}", full.display()))
+        std::fs::read_to_string(&full).map_err(|e| say.cannot_read(&full, e))
     };
     let options = sim::Options {
         cnc,
@@ -366,7 +445,8 @@ fn read_script(
     match Script::parse_with(&text, machine.plc.profile(), &options) {
         Ok(s) => Ok(Ok(s)),
         Err(e) => {
-            let _ = writeln!(err, "{}:{}: {}", script_path.display(), e.line, e.message);
+            let message = e.message_in(say.zh);
+            let _ = writeln!(err, "{}:{}: {message}", script_path.display(), e.line);
             Ok(Err(2))
         }
     }
@@ -377,17 +457,18 @@ fn sim(
     script_path: &Path,
     trace: Option<&Path>,
     cnc: bool,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     if !script_path.is_file() {
-        anyhow::bail!("cannot read {}: no such file", script_path.display());
+        anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
     }
-    let mut machine = match machine(path, cnc, err)? {
+    let mut machine = match machine(path, cnc, say, err)? {
         Ok(m) => m,
         Err(code) => return Ok(code),
     };
-    let script = match read_script(script_path, &machine, cnc, err)? {
+    let script = match read_script(script_path, &machine, cnc, say, err)? {
         Ok(s) => s,
         Err(code) => return Ok(code),
     };
@@ -398,9 +479,17 @@ fn sim(
     }
     if let Some(t) = trace {
         std::fs::write(t, &outcome.trace_csv)
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {e}", t.display()))?;
+            .map_err(|e| anyhow::anyhow!(say.cannot_write(t, e)))?;
     }
-    let _ = writeln!(out, "{} passed, {} failed", outcome.passed, outcome.failed);
+    let (passed, failed) = (outcome.passed, outcome.failed);
+    let _ = writeln!(
+        out,
+        "{}",
+        say.pick(
+            format!("{passed} passed, {failed} failed"),
+            format!("{passed} 项通过，{failed} 项失败")
+        )
+    );
     Ok(i32::from(outcome.failed > 0))
 }
 
@@ -409,15 +498,16 @@ fn bench(
     scans: u64,
     cnc: bool,
     setup: Option<&Path>,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    let mut machine = match machine(path, cnc, err)? {
+    let mut machine = match machine(path, cnc, say, err)? {
         Ok(m) => m,
         Err(code) => return Ok(code),
     };
     if let Some(script_path) = setup {
-        let script = match read_script(script_path, &machine, cnc, err)? {
+        let script = match read_script(script_path, &machine, cnc, say, err)? {
             Ok(s) => s,
             Err(code) => return Ok(code),
         };
@@ -427,7 +517,14 @@ fn bench(
             for line in &outcome.output {
                 let _ = writeln!(err, "{line}");
             }
-            let _ = writeln!(err, "the set-up script failed; nothing was timed");
+            let _ = writeln!(
+                err,
+                "{}",
+                say.pick(
+                    "the set-up script failed; nothing was timed",
+                    "准备脚本失败；未计时"
+                )
+            );
             return Ok(1);
         }
     }
@@ -443,7 +540,15 @@ fn bench(
     }
     let elapsed = start.elapsed().as_nanos() as f64;
     if let Some(h) = machine.plc.halt() {
-        let _ = writeln!(err, "the PLC halted during the benchmark: {h}");
+        let why = h.text(say.zh);
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!("the PLC halted during the benchmark: {why}"),
+                format!("计时中 PLC 停止：{why}")
+            )
+        );
         return Ok(1);
     }
     let steps = (machine.plc.executed_steps() - before) as f64 / scans as f64;
@@ -501,18 +606,23 @@ impl Cnc for TimedCnc<'_> {
 /// The project a PATH holds (an IL file drawn as a ladder), or the exit code when it has none.
 fn project_of(
     path: &Path,
+    say: Say,
     err: &mut dyn Write,
 ) -> anyhow::Result<Result<ladder_engine::model::Project, i32>> {
-    Ok(match Source::read(path)? {
+    Ok(match Source::read(path, say)? {
         Source::Project(p) => Ok(p),
         Source::Il { imported, .. } => match imported.project {
             Some(p) => Ok(p),
             None => {
-                print_diagnostics(path, &imported.compiled, err);
+                print_diagnostics(path, &imported.compiled, say, err);
+                let summary = say.summary(&imported.compiled);
                 let _ = writeln!(
                     err,
-                    "{}; the instruction list cannot be drawn",
-                    summary(&imported.compiled)
+                    "{}",
+                    say.pick(
+                        format!("{summary}; the instruction list cannot be drawn"),
+                        format!("{summary}；指令表无法画成梯形图")
+                    )
                 );
                 Err(1)
             }
@@ -520,27 +630,20 @@ fn project_of(
     })
 }
 
-fn check_lang(lang: Option<&str>) -> anyhow::Result<()> {
-    match lang {
-        None | Some("zh") | Some("en") => Ok(()),
-        Some(other) => anyhow::bail!("--lang is zh or en, not `{other}`"),
-    }
-}
-
 fn export_comments(
     path: &Path,
     lang: Option<&str>,
     output: Option<&Path>,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    check_lang(lang)?;
-    let project = match project_of(path, err)? {
+    let project = match project_of(path, say, err)? {
         Ok(p) => p,
         Err(code) => return Ok(code),
     };
     let text = ladder_engine::comments::export(&project, lang);
-    write_output(output, &text, out)?;
+    write_output(output, &text, say, out)?;
     Ok(0)
 }
 
@@ -548,29 +651,41 @@ fn import_comments(
     project_path: &Path,
     csv_path: &Path,
     lang: Option<&str>,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    check_lang(lang)?;
-    let mut project = file::load(project_path)
-        .map_err(|e| anyhow::anyhow!("{} cannot be opened: {e}", project_path.display()))?;
+    let mut project =
+        file::load(project_path).map_err(|e| anyhow::anyhow!(say.cannot_open(project_path, &e)))?;
     let text = std::fs::read_to_string(csv_path)
-        .map_err(|e| anyhow::anyhow!("cannot read {}: {e}", csv_path.display()))?;
+        .map_err(|e| anyhow::anyhow!(say.cannot_read(csv_path, e)))?;
     match ladder_engine::comments::import(&mut project, &text, lang) {
         Ok(n) => {
             file::save(&project, project_path)
-                .map_err(|e| anyhow::anyhow!("cannot save {}: {e}", project_path.display()))?;
-            let _ = writeln!(out, "{n} rows applied to {}", project_path.display());
+                .map_err(|e| anyhow::anyhow!(say.cannot_save(project_path, &e)))?;
+            let shown = project_path.display();
+            let _ = writeln!(
+                out,
+                "{}",
+                say.pick(
+                    format!("{n} rows applied to {shown}"),
+                    format!("{n} 行已导入 {shown}")
+                )
+            );
             Ok(0)
         }
         Err(ladder_engine::comments::CommentsError::Rejected(rows)) => {
             for (line, message) in &rows {
                 let _ = writeln!(err, "{}:{line}: {message}", csv_path.display());
             }
+            let n = rows.len();
             let _ = writeln!(
                 err,
-                "{} row(s) rejected; the project was not changed",
-                rows.len()
+                "{}",
+                say.pick(
+                    format!("{n} row(s) rejected; the project was not changed"),
+                    format!("{n} 行被拒绝；工程未改动")
+                )
             );
             Ok(1)
         }
@@ -582,10 +697,11 @@ fn xref(
     path: &Path,
     bits: bool,
     bytes: bool,
+    say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    let project = match project_of(path, err)? {
+    let project = match project_of(path, say, err)? {
         Ok(p) => p,
         Err(code) => return Ok(code),
     };
