@@ -483,3 +483,83 @@ fn each_block_opens_again_where_it_was_left() {
         "network {top} is at the top again: {shown:?}"
     );
 }
+
+#[test]
+fn element_comments_and_long_names_fit_their_cells_and_the_tooltip_shows_them_whole() {
+    use ladder_studio::gui::command::Command;
+    use ladder_studio::gui::settings::DisplayMode;
+    let dir = tempfile_dir();
+    let path = dir.join("names.ldp");
+    let mut p =
+        ladder_engine::il::import("LEVEL1\nNETWORK\nLD X0000.0\nAND X0000.1\nOUT Y0000.0\n")
+            .project
+            .unwrap();
+    let long = "SPINDLE_ORIENTATION_FINISHED_CONFIRMATION";
+    let comment = "主轴定向完成确认信号（来自主轴驱动器的到位输出）";
+    let symbol = |name: &str, addr: &str, zh: &str| ladder_engine::model::Symbol {
+        name: name.into(),
+        address: ladder_engine::Address::parse(addr).unwrap(),
+        comments: [("zh".to_string(), zh.to_string())].into(),
+    };
+    p.symbol_tables[0]
+        .rows
+        .push(symbol(long, "X0000.0", comment));
+    p.symbol_tables[0]
+        .rows
+        .push(symbol("DOOR", "X0000.1", "防护门"));
+    p.symbol_tables[0].rows.push(symbol(
+        "SPINDLE_RUNNING_LAMP_OUTPUT",
+        "Y0000.0",
+        "主轴运转灯",
+    ));
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path), Lang::Zh);
+    h.run();
+    h.state_mut().ask(Command::Display(DisplayMode::Both));
+    h.key_press(egui::Key::F11); // element comments on
+    h.run();
+    h.run();
+    assert!(h.state().settings.show_element_comments);
+    let g = h.state().edit.geometry.clone();
+    let texts: Vec<&str> = g.labels.iter().map(|(_, t)| t.as_str()).collect();
+    assert!(
+        texts.contains(&"X0000.0") && texts.contains(&"防护门"),
+        "{texts:?}"
+    );
+    let cut = texts
+        .iter()
+        .find(|t| t.starts_with("SPINDLE_O"))
+        .expect("the long name is drawn");
+    assert!(
+        cut.ends_with('…') && cut.len() < long.len(),
+        "shortened: {cut}"
+    );
+    assert!(
+        texts
+            .iter()
+            .any(|t| t.starts_with("主轴定向") && t.ends_with('…')),
+        "the long comment is shortened: {texts:?}"
+    );
+    // No two labels overlap; none runs into the next column or over the right rail.
+    let rail = g.origin.x + g.margin + g.width as f32 * g.cell + g.output + 8.0;
+    for (i, (a, ta)) in g.labels.iter().enumerate() {
+        assert!(a.right() <= rail, "{ta} runs over the right rail");
+        for (b, tb) in &g.labels[i + 1..] {
+            assert!(!a.shrink(0.5).intersects(*b), "{ta} overlaps {tb}");
+        }
+    }
+    let first = g.cell_rect(0, 0, 0).unwrap();
+    for (r, t) in &g.labels {
+        if r.center().x < first.right() {
+            assert!(
+                r.left() >= first.left() && r.right() <= first.right(),
+                "{t} leaves its cell"
+            );
+        }
+    }
+    // Offline, the tooltip gives the whole name and comment.
+    h.hover_at(first.center());
+    h.run_steps(40);
+    let whole = format!("X0000.0  {long}  — {comment}");
+    assert!(h.query_all_by_label_contains(&whole).next().is_some());
+}

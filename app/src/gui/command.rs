@@ -184,6 +184,8 @@ commands! {
     Pen => PenShort;
     /// Network comments shown (on/off).
     ToggleComments => ShowComments;
+    /// Element comments under contacts and coils (on/off).
+    ToggleElementComments => ShowElementComments, NONE F11;
     /// Network titles shown (on/off).
     ToggleTitles => ShowTitles;
     /// The project manager shown (on/off).

@@ -48,6 +48,7 @@ impl LadderApp {
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
             Command::ZoomIn | Command::ZoomOut | Command::ClearSelection | Command::Pen => true,
             Command::ToggleComments
+            | Command::ToggleElementComments
             | Command::ToggleTitles
             | Command::ToggleTree
             | Command::ToggleOutput
@@ -80,6 +81,7 @@ impl LadderApp {
         Some(match c {
             Command::Pen => self.edit.pen,
             Command::ToggleComments => s.show_comments,
+            Command::ToggleElementComments => s.show_element_comments,
             Command::ToggleTitles => s.show_titles,
             Command::ToggleTree => s.show_tree,
             Command::ToggleOutput => s.show_output,
@@ -249,6 +251,7 @@ impl LadderApp {
             }
             Command::Pen => self.edit.pen = !self.edit.pen,
             Command::ToggleComments => self.settings.show_comments ^= true,
+            Command::ToggleElementComments => self.settings.show_element_comments ^= true,
             Command::ToggleTitles => self.settings.show_titles ^= true,
             Command::ToggleTree => self.settings.show_tree ^= true,
             Command::ToggleOutput => self.settings.show_output ^= true,

@@ -146,6 +146,7 @@ messages! {
     DisplaySymbol => "符号显示", "Show symbols";
     DisplayBoth => "地址：符号显示", "Show address: symbol";
     ShowComments => "显示网络注释", "Show network comments";
+    ShowElementComments => "显示元件注释", "Show element comments";
     About => "关于 Ladder Studio", "About Ladder Studio";
     Project => "工程", "Project";
     Ladder => "梯形图", "Ladder";

@@ -138,6 +138,7 @@ impl LadderApp {
             self.entry(ui, Command::Display(m));
         }
         self.entry(ui, Command::ToggleComments);
+        self.entry(ui, Command::ToggleElementComments);
         ui.separator();
         for c in VIEW_TOGGLES {
             self.entry(ui, *c);

@@ -416,6 +416,10 @@ impl LadderApp {
                     document: doc.serial,
                     anchor: self.edit.anchor.take(),
                     follow,
+                    element_comments: self
+                        .settings
+                        .show_element_comments
+                        .then_some(self.settings.lang.code()),
                 };
                 let events = self.live_block_ui(ui, b, &opts);
                 if let Some((up, at)) = events.zoom {

@@ -119,6 +119,8 @@ pub struct Settings {
     pub display: DisplayMode,
     /// Whether network comments are shown.
     pub show_comments: bool,
+    /// Whether element comments are written under contacts and coils.
+    pub show_element_comments: bool,
     /// Whether network titles are shown.
     pub show_titles: bool,
     /// Whether the toolbars are shown.
@@ -154,6 +156,7 @@ impl Default for Settings {
             zoom: 100,
             display: DisplayMode::Address,
             show_comments: true,
+            show_element_comments: false,
             show_titles: true,
             show_online: true,
             live_format: NumFormat::Dec,

@@ -14,6 +14,8 @@ pub fn harness(path: Option<PathBuf>, lang: Lang) -> Harness<'static, LadderApp>
     Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
         .with_step_dt(1.0 / 60.0)
+        // A tooltip fades in over a few frames wherever the mouse rests on an element.
+        .with_max_steps(16)
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, path);
             app.settings.lang = lang;

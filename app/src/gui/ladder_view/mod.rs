@@ -87,6 +87,16 @@ impl Metrics {
         }
     }
 
+    /// The sizes at `zoom` with room for the labels: "address and symbol" writes two lines
+    /// above a contact, element comments one line under it. The row grows evenly, so
+    /// contacts stay on the row's middle line and wires stay straight.
+    pub fn with_labels(zoom: u16, mode: DisplayMode, element_comments: bool) -> Metrics {
+        let mut m = Metrics::at(zoom);
+        let more = u8::from(mode == DisplayMode::Both).max(u8::from(element_comments));
+        m.row += f32::from(more) * 2.0 * m.line;
+        m
+    }
+
     /// Height of a row: function boxes grow with their operands.
     pub fn row_height(&self, cells: &[Cell]) -> f32 {
         let lines = cells
@@ -182,6 +192,9 @@ pub struct Geometry {
     pub heights: Vec<f32>,
     /// The zoom it was drawn at, in percent.
     pub zoom: u16,
+    /// Every contact and coil label drawn (operand lines and element comments): where, and
+    /// the text as shown, ellipsis included.
+    pub labels: Vec<(Rect, String)>,
 }
 
 impl Geometry {
@@ -220,6 +233,8 @@ pub struct ViewOptions {
     pub anchor: Option<Anchor>,
     /// Bring the cursor cell into sight: it moved, or the ladder changed under it.
     pub follow: bool,
+    /// Element comments under contacts and coils, in this language (`zh`, `en`).
+    pub element_comments: Option<&'static str>,
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
@@ -364,7 +379,7 @@ pub fn block_ui(
         return ViewEvents::default();
     };
     let (zoom, mode, comments) = (opts.zoom, opts.mode, opts.comments);
-    let m = Metrics::at(zoom);
+    let m = Metrics::with_labels(zoom, mode, opts.element_comments.is_some());
     // Offsets of every network: plain arithmetic over the model, no layout or text.
     let mut placed = Vec::with_capacity(b.networks.len());
     let mut y = 0.0;
@@ -382,6 +397,7 @@ pub fn block_ui(
         mode,
         comments,
         titles: opts.titles,
+        element_comments: opts.element_comments,
     };
     let mut area = egui::ScrollArea::both()
         .id_salt(("ladder", opts.document, block))
@@ -400,6 +416,7 @@ pub fn block_ui(
         geometry.width = project.ladder.width;
         geometry.margin = m.margin;
         geometry.zoom = zoom;
+        geometry.labels.clear();
         geometry.tops = placed.iter().map(|p| p.top).collect();
         geometry.heights = placed.iter().map(|p| p.height).collect();
         geometry.rows = b
@@ -519,11 +536,11 @@ pub fn block_ui(
             network_ui(
                 &painter,
                 project,
-                &b.networks[i],
-                i,
+                (&b.networks[i], i),
                 origin,
                 &style,
                 shown.as_ref(),
+                &mut geometry.labels,
             );
             if let Some((cn, cr, cc)) = opts.cursor
                 && cn == i

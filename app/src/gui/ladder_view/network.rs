@@ -17,6 +17,8 @@ pub(super) struct Style {
     pub(super) mode: DisplayMode,
     pub(super) comments: bool,
     pub(super) titles: bool,
+    /// The comment language of element comments under contacts and coils, when shown.
+    pub(super) element_comments: Option<&'static str>,
 }
 
 /// What the online monitor shows on one network.
@@ -44,17 +46,18 @@ pub fn address_of(project: &Project, o: &Operand) -> Option<Address> {
 pub(super) fn network_ui(
     painter: &egui::Painter,
     project: &Project,
-    net: &Network,
-    index: usize,
+    (net, index): (&Network, usize),
     origin: Pos2,
     style: &Style,
     live: Option<&LiveNetwork<'_>>,
+    drawn: &mut Vec<(Rect, String)>,
 ) {
     let Style {
         m,
         mode,
         comments,
         titles,
+        element_comments,
     } = style;
     let (mode, comments) = (*mode, *comments);
     let width = project.ladder.width;
@@ -168,13 +171,19 @@ pub(super) fn network_ui(
                         mode,
                         font: &font,
                         size: m.font,
+                        comment: *element_comments,
                     };
                     label.draw(
                         painter,
+                        drawn,
                         operand,
-                        pos2(cx, mid - h - 2.0),
-                        forced(operand),
-                        pos2(cx + gap + 2.0, mid + h),
+                        Span {
+                            centre: cx,
+                            left: x0 + 2.0,
+                            right: x1 - 2.0,
+                        },
+                        (mid - h - 2.0, mid + h + 2.0),
+                        forced(operand).then_some(pos2(cx + gap + 2.0, mid + h)),
                     );
                 }
                 Cell::Coil { negated, operand } => {
@@ -200,13 +209,20 @@ pub(super) fn network_ui(
                         mode,
                         font: &font,
                         size: m.font,
+                        comment: *element_comments,
                     };
+                    // The coil's label may use the whole output column, never past the rail.
                     label.draw(
                         painter,
+                        drawn,
                         operand,
-                        pos2(cx, mid - rad - 2.0),
-                        forced(operand),
-                        pos2(cx + rad + 2.0, mid + rad),
+                        Span {
+                            centre: (x0 + right_rail) * 0.5,
+                            left: x0 + 2.0,
+                            right: right_rail - 4.0,
+                        },
+                        (mid - rad - 2.0, mid + rad + 2.0),
+                        forced(operand).then_some(pos2(cx + rad + 2.0, mid + rad)),
                     );
                 }
                 Cell::Box { op, operands } => {
@@ -278,17 +294,31 @@ struct BitLabel<'a> {
     mode: DisplayMode,
     font: &'a FontId,
     size: f32,
+    /// The language of the element comment written under it, when comments are shown.
+    comment: Option<&'static str>,
+}
+
+/// The horizontal room of a label: centred on `centre`, never past `left` or `right`.
+#[derive(Clone, Copy)]
+struct Span {
+    centre: f32,
+    left: f32,
+    right: f32,
 }
 
 impl BitLabel<'_> {
-    /// The operand's text centred above `above`, and the force mark at `mark` when forced.
+    /// The operand's text above `ys.0` (address over symbol in "both" mode, each on its own
+    /// line), the element comment below `ys.1` when shown, and the force mark at `mark`
+    /// (given when the element is forced).
+    /// Every line is cut with an ellipsis at the span's edges: the tooltip shows it whole.
     fn draw(
         &self,
         painter: &egui::Painter,
+        drawn: &mut Vec<(Rect, String)>,
         operand: &Operand,
-        above: Pos2,
-        forced: bool,
-        mark: Pos2,
+        span: Span,
+        ys: (f32, f32),
+        mark: Option<Pos2>,
     ) {
         let (text, color) = operand_text(
             self.project,
@@ -297,10 +327,63 @@ impl BitLabel<'_> {
             Place::Bit,
             std::slice::from_ref(operand),
         );
-        painter.text(above, Align2::CENTER_BOTTOM, text, self.font.clone(), color);
-        if forced {
-            force_mark(painter, mark, self.size);
+        let line = self.size * 1.25;
+        // "ADDRESS:SYMBOL" is one text for the find and the tooltip; drawn, it is two lines.
+        let lines: Vec<&str> = match (self.mode, text.split_once(':')) {
+            (DisplayMode::Both, Some((a, s))) => vec![a, s],
+            _ => vec![text.as_str()],
+        };
+        for (i, t) in lines.iter().rev().enumerate() {
+            let y = ys.0 - line * i as f32;
+            drawn.push(self.line(painter, t, span, y, Align2::CENTER_BOTTOM, color));
         }
+        if let Some(lang) = self.comment
+            && let Some(a) = address_of(self.project, operand)
+            && let Some(c) = self.project.comment_of(a, lang)
+        {
+            drawn.push(self.line(painter, c, span, ys.1, Align2::CENTER_TOP, theme::COMMENT));
+        }
+        if let Some(at) = mark {
+            force_mark(painter, at, self.size);
+        }
+    }
+
+    /// One line of text at height `y`, shortened with "…" to fit the span; returns where
+    /// it went and what it says.
+    fn line(
+        &self,
+        painter: &egui::Painter,
+        text: &str,
+        span: Span,
+        y: f32,
+        align: Align2,
+        color: egui::Color32,
+    ) -> (Rect, String) {
+        let width = (span.right - span.left).max(self.size);
+        let mut job =
+            egui::text::LayoutJob::simple_singleline(text.into(), self.font.clone(), color);
+        job.wrap = egui::text::TextWrapping {
+            max_width: width,
+            max_rows: 1,
+            break_anywhere: true,
+            overflow_character: Some('…'),
+        };
+        let galley = painter.layout_job(job);
+        let w = galley.size().x;
+        let x = (span.centre - w * 0.5).clamp(span.left, (span.right - w).max(span.left));
+        let top = match align.y() {
+            egui::Align::Max => y - galley.size().y,
+            _ => y,
+        };
+        let rect = Rect::from_min_size(pos2(x, top), galley.size());
+        // What is on screen, the ellipsis included (the galley's text is the whole one).
+        let shown = galley
+            .rows
+            .iter()
+            .flat_map(|r| r.glyphs.iter().map(|g| g.chr))
+            .collect();
+        painter.galley(rect.min, galley, color);
+        (rect, shown)
     }
 }
 

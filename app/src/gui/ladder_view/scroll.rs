@@ -126,6 +126,7 @@ mod tests {
             width: 9,
             margin: m.margin,
             zoom,
+            labels: Vec::new(),
         };
         (placed, g)
     }

@@ -74,7 +74,8 @@ impl LadderApp {
         );
         self.edit.jump_to = jump_to;
         self.edit.geometry = geometry;
-        if let (Some(hit), Some(r), true) = (events.hover, events.response.as_ref(), self.online())
+        // Offline too: the whole address, symbol and comment of what the drawing shortens.
+        if let (Some(hit), Some(r)) = (events.hover, events.response.as_ref())
             && let Some(text) = self.tooltip(b, hit)
         {
             r.clone().on_hover_text_at_pointer(text);
