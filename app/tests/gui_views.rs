@@ -563,3 +563,51 @@ fn element_comments_and_long_names_fit_their_cells_and_the_tooltip_shows_them_wh
     let whole = format!("X0000.0  {long}  — {comment}");
     assert!(h.query_all_by_label_contains(&whole).next().is_some());
 }
+
+#[test]
+fn the_output_window_resizes_keeps_its_height_lists_a_branch_once_and_copies_a_line() {
+    // An open branch of three contacts, and an undefined symbol.
+    let il =
+        "LEVEL2\nNETWORK\nLD X0001.0\nOUT Y0001.0\nNETWORK\nLD X0001.1\nAND NOWHERE\nOUT Y0001.1\n";
+    let (mut h, _) = editor_on(il, "out.ldp");
+    // Draw the open branch under network 1: a link down, then three contacts.
+    click_cell(&mut h, 0, 0, 1);
+    h.key_press(egui::Key::F5);
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::R);
+    h.run();
+    for col in 1..4 {
+        click_cell(&mut h, 0, 1, col);
+        h.key_press(egui::Key::F1);
+        enter_operand(&mut h, &format!("X0002.{col}"));
+    }
+    h.key_press(egui::Key::F9);
+    h.run();
+    let lines: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    assert_eq!(
+        lines.iter().filter(|l| l.contains("[L002]")).count(),
+        1,
+        "one line for the branch: {lines:?}"
+    );
+    // Copy one line from its right-click menu.
+    h.get_by_label_contains("[L020]").click_secondary();
+    h.run();
+    h.get_by_label("Copy this line").click();
+    h.step();
+    let copied = h.output().platform_output.commands.iter().any(|c| {
+        matches!(c, egui::OutputCommand::CopyText(t) if t.contains("[L020]") && t.contains("NOWHERE"))
+    });
+    assert!(copied, "{:?}", h.output().platform_output.commands);
+    h.run();
+    // Drag the window's top edge up by 100 points: it grows, and the settings keep it.
+    let before = h.state().settings.output_height;
+    let top = h.get_by_label("Output").rect().top() - 4.0;
+    drag(
+        &mut h,
+        egui::pos2(600.0, top),
+        egui::pos2(600.0, top - 100.0),
+    );
+    h.run();
+    let after = h.state().settings.output_height;
+    assert!(after > before + 60.0, "{before} → {after}");
+}

@@ -130,6 +130,23 @@ fn a_dangling_contact_is_an_open_branch() {
 }
 
 #[test]
+fn an_open_branch_of_several_contacts_is_one_diagnostic_at_its_first_cell() {
+    // Row 2 runs three contacts and a wire into nothing; row 3 is a second, separate branch.
+    let (_, diags) = check(&[
+        "X1.0 - - - (Y1.0)",
+        "| 1",
+        ". X1.1 X1.2 X1.3 .",
+        "| 1",
+        ". X1.4 . . .",
+    ]);
+    assert_eq!(
+        diags,
+        vec![("L002", 2, 2), ("L002", 3, 2)],
+        "one line per branch"
+    );
+}
+
+#[test]
 fn a_wire_around_a_contact_is_a_short_circuit() {
     let (_, diags) = check(&["X1.0 X1.1 - - (Y1.0)", "| 1 2", ". - . . ."]);
     assert_eq!(diags, vec![("L003", 1, 2)]);

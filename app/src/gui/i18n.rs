@@ -165,6 +165,8 @@ messages! {
     MCodes => "M 代码注释表", "M-code comments";
     VersionInfo => "梯形图版本信息", "Version information";
     Output => "信息输出", "Output";
+    CopyLine => "复制这一行", "Copy this line";
+    CopyAll => "全部复制", "Copy all";
     Network => "网络", "Network";
     Steps => "步数", "Steps";
     StepsUnit => "步", "steps";

@@ -63,6 +63,9 @@ pub struct LadderApp {
     pub tabs: Vec<View>,
     /// The output window.
     pub output: Vec<OutputLine>,
+    /// What the output window showed last frame (line count, first line), to scroll to
+    /// what is new: the first line of a new list, or the last of lines added.
+    output_seen: (usize, String),
     /// The ladder editor: cursor, selection, clipboard, gestures.
     pub edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
@@ -102,6 +105,7 @@ impl LadderApp {
             view: View::Block(0),
             tabs: Vec::new(),
             output: Vec::new(),
+            output_seen: (0, String::new()),
             edit: Default::default(),
             files: Default::default(),
             prompt: None,
@@ -434,12 +438,26 @@ impl LadderApp {
     }
 
     fn output_ui(&mut self, ui: &mut egui::Ui) {
-        ui.label(self.t(Msg::Output));
+        let lang = self.settings.lang;
+        ui.horizontal(|ui| {
+            ui.label(self.t(Msg::Output));
+            if !self.output.is_empty() && ui.small_button(Msg::CopyAll.text(lang)).clicked() {
+                let all: Vec<&str> = self.output.iter().map(|l| l.text.as_str()).collect();
+                ui.ctx().copy_text(all.join("\n"));
+            }
+        });
+        let first = self.output.first().map_or("", |l| l.text.as_str());
+        let new_list = first != self.output_seen.1;
+        let added = !new_list && self.output.len() > self.output_seen.0;
+        if new_list || self.output.len() != self.output_seen.0 {
+            self.output_seen = (self.output.len(), first.to_string());
+        }
         let mut jump = None;
         egui::ScrollArea::vertical()
-            .max_height(120.0)
+            .auto_shrink([false, false])
             .show(ui, |ui| {
-                for line in &self.output {
+                let last = self.output.len().saturating_sub(1);
+                for (i, line) in self.output.iter().enumerate() {
                     let color = if line.error {
                         theme::ERROR
                     } else {
@@ -451,6 +469,15 @@ impl LadderApp {
                     );
                     if r.double_clicked() || r.clicked() {
                         jump = line.target;
+                    }
+                    r.context_menu(|ui| {
+                        if ui.button(Msg::CopyLine.text(lang)).clicked() {
+                            ui.ctx().copy_text(line.text.clone());
+                            ui.close();
+                        }
+                    });
+                    if (new_list && i == 0) || (added && i == last) {
+                        r.scroll_to_me(None);
                     }
                 }
             });
@@ -563,9 +590,16 @@ impl eframe::App for LadderApp {
             egui::Panel::bottom("timeline").show(ui, |ui| self.timeline_ui(ui));
         }
         if self.settings.show_output {
-            egui::Panel::bottom("output")
+            // Resizable by its top edge; the height is kept in the settings for next time.
+            let shown = egui::Panel::bottom("output")
                 .resizable(true)
+                .default_size(self.settings.output_height)
+                .min_size(60.0)
                 .show(ui, |ui| self.output_ui(ui));
+            let height = shown.response.rect.height();
+            if (height - self.settings.output_height).abs() >= 1.0 {
+                self.settings.output_height = height;
+            }
         }
         if self.settings.show_tree {
             let mut asked = None;

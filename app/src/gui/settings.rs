@@ -127,6 +127,8 @@ pub struct Settings {
     pub show_toolbar: bool,
     /// Whether the output window is shown.
     pub show_output: bool,
+    /// The output window's height, in points.
+    pub output_height: f32,
     /// Whether the project manager (tree) is shown.
     pub show_tree: bool,
     /// Whether the status bar is shown.
@@ -157,6 +159,7 @@ impl Default for Settings {
             display: DisplayMode::Address,
             show_comments: true,
             show_element_comments: false,
+            output_height: 140.0,
             show_titles: true,
             show_online: true,
             live_format: NumFormat::Dec,

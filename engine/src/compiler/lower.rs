@@ -55,6 +55,50 @@ impl Uf {
     }
 }
 
+/// An element of an open branch.
+struct OpenElement {
+    /// The node at its right.
+    end: usize,
+    /// A contact (wires only carry the branch along; they are not counted).
+    contact: bool,
+    /// Its cell.
+    key: (u32, u32),
+}
+
+/// One L002 per open branch, at its first cell: `branches` joins the nodes of one branch.
+fn report_open_branches(branches: &mut Uf, elements: &[OpenElement], sink: &mut Sink) {
+    let mut groups: std::collections::BTreeMap<usize, ((u32, u32), usize)> = Default::default();
+    for e in elements {
+        let g = groups.entry(branches.find(e.end)).or_insert((e.key, 0));
+        g.0 = g.0.min(e.key);
+        g.1 += usize::from(e.contact);
+    }
+    let mut firsts: Vec<((u32, u32), usize)> = groups.into_values().collect();
+    firsts.sort();
+    for ((row, col), contacts) in firsts {
+        let origin = cell_origin(row as usize, col as usize);
+        if contacts <= 1 {
+            sink.report(
+                origin,
+                Code::L002OpenBranch,
+                "open branch: nothing after this element leads to a coil or function box; connect it or delete it",
+                "开路分支：该元件之后没有连到任何线圈或功能指令；请连接或删除它",
+            );
+        } else {
+            sink.report(
+                origin,
+                Code::L002OpenBranch,
+                format!(
+                    "open branch of {contacts} contacts from here: nothing after them leads to a coil or function box; connect the branch or delete it"
+                ),
+                format!(
+                    "从此处起的开路分支（{contacts} 个触点）：之后没有连到任何线圈或功能指令；请连接或删除该分支"
+                ),
+            );
+        }
+    }
+}
+
 fn cell_origin(row: usize, col: usize) -> Origin {
     Origin::Cell {
         row: row as u32,
@@ -160,6 +204,10 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
         }
     }
     let mut live = Vec::new();
+    // The elements of an open branch, by branch: one branch is one mistake, reported once
+    // at its first cell however many elements it holds.
+    let mut open = Uf((0..nodes).collect());
+    let mut open_edges: Vec<OpenElement> = Vec::new();
     for e in edges {
         let origin = cell_origin(e.key.0 as usize, e.key.1 as usize);
         let is_wire = matches!(e.term, Term::Wire(_));
@@ -173,16 +221,21 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 );
             }
         } else if !to_output[e.to] {
-            sink.report(
-                origin,
-                Code::L002OpenBranch,
-                "open branch: nothing after this element leads to a coil or function box; connect it or delete it",
-                "开路分支：该元件之后没有连到任何线圈或功能指令；请连接或删除它",
-            );
+            // Branches that start at one live node are separate mistakes: only the dead
+            // nodes of a branch join it together.
+            if !to_output[e.from] {
+                open.union(e.from, e.to);
+            }
+            open_edges.push(OpenElement {
+                end: e.to,
+                contact: !is_wire,
+                key: e.key,
+            });
         } else {
             live.push(e);
         }
     }
+    report_open_branches(&mut open, &open_edges, sink);
 
     let mut rungs_out: Vec<(u32, Rung)> = Vec::new();
     let mut powered_outputs: Vec<Vec<(u32, Output)>> = vec![Vec::new(); nodes];
