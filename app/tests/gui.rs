@@ -85,18 +85,48 @@ fn find_and_replace_an_address() {
     h.get_by_label_contains("LEVEL2 N0002 1:1").click();
     h.run();
     assert_eq!(h.state().view, View::Block(1));
-    // Replace: the coil may take Y4.1; X1.0 would be refused where it is written.
+    // Replace: the contacts may take X1.0; the coil would be refused (an X is an input).
     h.key_press_modifiers(Modifiers::COMMAND, Key::H);
-    enter_operand(&mut h, "Y3.7 X1.0");
-    assert_eq!(
-        h.state().output.last().unwrap().text,
-        "2 replaced, 1 skipped where the result would be invalid"
-    );
+    h.run();
+    // The window opens with the last text searched for; the replacement is typed.
+    let to = "Replace with (an operand)";
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, to)
+        .click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, to)
+        .type_text("X1.0");
+    h.run();
+    // The preview lists every place with the count, before anything changes.
+    h.get_by_label("3 places: 2 to change, 1 skipped (the result is not valid there)");
+    h.get_by_label_contains("LEVEL2 N0001 2:1   Y0003.7 → X0001.0");
+    h.get_by_label_contains("LEVEL2 N0001 1:11   Y0003.7   (skipped");
+    assert_eq!(h.state().doc.as_ref().unwrap().history().undo_len(), 0);
+    h.get_by_label("Replace all (2)").click();
+    h.run();
     let project = h.state().doc.as_ref().unwrap().project();
     let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
     assert!(
         il.contains("OR   X0001.0") && il.contains("OUT  Y0003.7") && il.contains("LD   X0001.0"),
         "{il}"
+    );
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().history().undo_len(),
+        1,
+        "the whole replace is one undo step"
+    );
+    h.key_press(Key::Escape);
+    h.run();
+    assert!(
+        h.state().replace.is_none(),
+        "Escape closes the replace window"
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    h.run();
+    let project = h.state().doc.as_ref().unwrap().project();
+    let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
+    assert!(
+        !il.contains("X0001.0"),
+        "one Ctrl+Z undoes every place: {il}"
     );
 }
 

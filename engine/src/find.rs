@@ -79,12 +79,32 @@ pub fn find(project: &Project, q: &Query) -> Vec<CellRef> {
     hits
 }
 
-/// The edit that replaces `from` by `to` wherever the result is a valid operand, and how many
-/// places were skipped because it would not be (a byte address in a contact, an X as a coil…).
-pub fn replace(project: &Project, from: &Query, to: &Operand) -> (Edit, usize, usize) {
+/// One place a replace would change: the cell as it is, and as it would be — `None` when the
+/// result would not be a valid operand there (a byte address in a contact, an X as a coil…).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Planned {
+    /// Where.
+    pub at: CellRef,
+    /// The cell now.
+    pub before: Cell,
+    /// The cell after the replace, or `None` where it is skipped.
+    pub after: Option<Cell>,
+}
+
+impl Planned {
+    /// The edit of this one place (none when skipped).
+    pub fn edit(&self) -> Option<Edit> {
+        self.after
+            .clone()
+            .map(|cell| Edit::SetCell { at: self.at, cell })
+    }
+}
+
+/// Every place a replace of `from` by `to` would touch, in find order: what each cell would
+/// become, or that it is skipped. Nothing is changed: the editor previews this list.
+pub fn replace_plan(project: &Project, from: &Query, to: &Operand) -> Vec<Planned> {
     let profile = project.profile();
-    let mut edits = Vec::new();
-    let mut skipped = 0;
+    let mut plan = Vec::new();
     for at in find(project, from) {
         let cell = &project.ladder.blocks[at.block].networks[at.network].rows[at.row].cells[at.col];
         let Some((op, operands)) = (match cell {
@@ -111,19 +131,30 @@ pub fn replace(project: &Project, from: &Query, to: &Operand) -> (Edit, usize, u
                 _ => o.clone(),
             })
             .collect();
-        if changed
+        let valid = changed
             .iter()
-            .all(|i| operand_ok(op, &resolved, *i, profile))
-        {
+            .all(|i| operand_ok(op, &resolved, *i, profile));
+        let after = valid.then(|| {
             let mut new_cell = cell.clone();
             new_cell.operands_mut().clone_from_slice(&new_operands);
-            edits.push(Edit::SetCell { at, cell: new_cell });
-        } else {
-            skipped += 1;
-        }
+            new_cell
+        });
+        plan.push(Planned {
+            at,
+            before: cell.clone(),
+            after,
+        });
     }
+    plan
+}
+
+/// The edit that replaces `from` by `to` wherever the result is a valid operand (one undo
+/// step), how many places it changes, and how many it skips.
+pub fn replace(project: &Project, from: &Query, to: &Operand) -> (Edit, usize, usize) {
+    let plan = replace_plan(project, from, to);
+    let edits: Vec<Edit> = plan.iter().filter_map(Planned::edit).collect();
     let count = edits.len();
-    (Edit::Batch(edits), count, skipped)
+    (Edit::Batch(edits), count, plan.len() - count)
 }
 
 #[cfg(test)]

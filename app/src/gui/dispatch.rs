@@ -172,7 +172,7 @@ impl LadderApp {
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
             Command::Find => self.open_prompt(PlaceKind::Find, self.edit.last_find.clone()),
-            Command::Replace => self.open_prompt(PlaceKind::Replace, String::new()),
+            Command::Replace => self.open_replace(),
             Command::GoTo => self.open_prompt(PlaceKind::GoTo, String::new()),
             Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
             Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),

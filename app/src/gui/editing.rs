@@ -31,8 +31,6 @@ pub enum PlaceKind {
     Function,
     /// Ctrl+F: an address (any spelling), symbol, constant or instruction to find.
     Find,
-    /// Ctrl+H: `FROM TO`, replaced only where the result is valid.
-    Replace,
     /// Ctrl+G: `NETWORK [ROW]` of the current block (1-based).
     GoTo,
     /// The cursor's network title.
@@ -266,40 +264,10 @@ impl LadderApp {
         Ok(())
     }
 
-    /// Ctrl+H: `FROM TO`.
-    pub fn replace(&mut self, text: &str) -> Result<(), String> {
-        let lang = self.settings.lang;
-        let mut words = text.split_whitespace();
-        let (Some(from), Some(to), None) = (words.next(), words.next(), words.next()) else {
-            return Err(Msg::ReplaceUsage.text(lang).into());
-        };
-        let query = Query::parse(from)
-            .ok_or_else(|| format!("`{from}`: {}", Msg::NothingToFind.text(lang)))?;
-        let to = Operand::parse(to).map_err(|e| super::errors::operand_error(&e, lang))?;
-        let Some(doc) = self.doc.as_ref() else {
-            return Ok(());
-        };
-        let (edit, done, skipped) = find::replace(doc.project(), &query, &to);
-        if done > 0 {
-            self.try_edit(edit)?;
-        }
-        self.output.push(OutputLine {
-            text: format!(
-                "{done} {}, {skipped} {}",
-                Msg::Replaced.text(lang),
-                Msg::SkippedInvalid.text(lang)
-            ),
-            error: false,
-            target: None,
-        });
-        Ok(())
-    }
-
     /// Places what the prompt describes at the cursor.
     pub fn place(&mut self, kind: PlaceKind, text: &str) -> Result<(), String> {
         match kind {
             PlaceKind::Find => return self.find(text),
-            PlaceKind::Replace => return self.replace(text),
             PlaceKind::GoTo => return self.go_to(text),
             PlaceKind::NetworkTitle => {
                 self.set_network_text(Some(text), None);
@@ -352,7 +320,6 @@ impl LadderApp {
                 }
             }
             PlaceKind::Find
-            | PlaceKind::Replace
             | PlaceKind::GoTo
             | PlaceKind::NetworkTitle
             | PlaceKind::NetworkComment
@@ -606,6 +573,9 @@ impl LadderApp {
         let lang = self.settings.lang;
         let mut close = false;
         let label = match prompt.kind {
+            PlaceKind::Find => Msg::FindPrompt,
+            PlaceKind::GoTo if self.tables.sheet_of(self.view).is_some() => Msg::GoToRowPrompt,
+            PlaceKind::GoTo => Msg::GoToPrompt,
             PlaceKind::NetworkTitle => Msg::TitlePrompt,
             PlaceKind::NetworkComment => Msg::CommentPrompt,
             PlaceKind::NewSub | PlaceKind::RenameSub(_) => Msg::SubPrompt,
@@ -630,7 +600,13 @@ impl LadderApp {
             let r = ui
                 .add(
                     egui::TextEdit::singleline(&mut prompt.text)
-                        .hint_text(if completes { "X0002.1" } else { "" })
+                        .hint_text(match prompt.kind {
+                            _ if completes => "X0002.1",
+                            PlaceKind::Find => "X0002.1 · X2.1 · START · MOVN · 100",
+                            PlaceKind::GoTo if self.tables.sheet_of(self.view).is_some() => "25",
+                            PlaceKind::GoTo => "12 3",
+                            _ => "",
+                        })
                         .desired_width(280.0),
                 )
                 .labelled_by(label.id);

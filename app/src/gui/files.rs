@@ -138,6 +138,7 @@ impl LadderApp {
         self.view = View::Block(0);
         self.prompt = None;
         self.function_dialog = None;
+        self.replace = None;
         self.tables = Default::default();
         // Nothing of the old project stays pointed at: cursor, selection, drag, tabs, and
         // output lines whose targets were its cells. (The clipboard stays: copying between

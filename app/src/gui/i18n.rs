@@ -212,6 +212,19 @@ messages! {
     Replaced => "处已替换", "replaced";
     SkippedInvalid => "处因结果无效未替换", "skipped where the result would be invalid";
     NothingToFind => "不是地址、符号、常数或指令", "is not an address, symbol, constant or instruction";
+    FindPrompt => "查找（地址、符号、常数或指令）：", "Find (an address, symbol, constant or instruction):";
+    GoToPrompt => "转到网络 [行]：", "Go to network [row]:";
+    GoToRowPrompt => "转到表格行：", "Go to table row:";
+    ReplaceTitle => "替换", "Replace";
+    ReplaceFrom => "查找（地址、符号、常数或指令）", "Find (an address, symbol, constant or instruction)";
+    ReplaceTo => "替换为（操作数）", "Replace with (an operand)";
+    ReplaceOne => "替换选中的一处", "Replace the selected one";
+    ReplaceAll => "全部替换", "Replace all";
+    ReplaceClose => "关闭", "Close";
+    ReplacePlaces => "处", "places";
+    ReplaceWillChange => "处将替换", "to change";
+    ReplaceSkipped => "处跳过（结果在此无效）", "skipped (the result is not valid there)";
+    ReplaceNone => "没有找到", "Nothing found";
     ReplaceUsage => "替换：输入“原地址 新地址”，例如 R10.0 R11.0", "Replace: type `FROM TO`, e.g. R10.0 R11.0";
     SaveNeedsName => "工程还没有文件名：请先另存为", "The project has no file name yet: use Save As";
     // Files and menus.

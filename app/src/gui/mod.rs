@@ -17,6 +17,7 @@ pub mod menus;
 pub mod online;
 pub mod place;
 pub mod pointer;
+pub mod replace;
 pub mod selection;
 pub mod settings;
 pub mod state;
@@ -63,6 +64,8 @@ pub struct LadderApp {
     pub tabs: Vec<View>,
     /// The output window.
     pub output: Vec<OutputLine>,
+    /// The replace window, while open.
+    pub replace: Option<replace::ReplaceDialog>,
     /// What the output window showed last frame (line count, first line), to scroll to
     /// what is new: the first line of a new list, or the last of lines added.
     output_seen: (usize, String),
@@ -106,6 +109,7 @@ impl LadderApp {
             tabs: Vec::new(),
             output: Vec::new(),
             output_seen: (0, String::new()),
+            replace: None,
             edit: Default::default(),
             files: Default::default(),
             prompt: None,
@@ -575,6 +579,7 @@ impl eframe::App for LadderApp {
         if self.files.question.is_some() {
             self.question_ui(&ctx);
         }
+        self.replace_ui(&ctx);
         self.keys(&ctx);
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         if self.settings.show_toolbar {

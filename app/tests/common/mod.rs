@@ -43,10 +43,13 @@ pub fn tempfile_dir() -> PathBuf {
         .keep()
 }
 
-/// Types into the operand prompt and presses Enter.
+/// Types into the prompt (operand, find, go to…: the text field that has the keyboard) and
+/// presses Enter.
 pub fn enter_operand(h: &mut Harness<'static, LadderApp>, text: &str) {
     h.run();
-    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Operand")
+    h.get_all_by_role(egui::accesskit::Role::TextInput)
+        .find(|n| n.is_focused())
+        .expect("a prompt has the keyboard")
         .type_text(text);
     h.run();
     h.key_press(egui::Key::Enter);

@@ -1,0 +1,217 @@
+//! Ctrl+H: find and replace with a preview. Every place the replace would touch is listed
+//! (where, the cell before and after, or why it is skipped) with the counts, before anything
+//! changes; *Replace all* is one undo step, *Replace the selected one* changes one place.
+
+use super::LadderApp;
+use super::i18n::Msg;
+use super::theme;
+use ladder_engine::find::{self, Planned, Query};
+use ladder_engine::model::{Cell, Edit, Operand};
+
+/// The replace window's state (UI state: never saved).
+#[derive(Clone, Debug, Default)]
+pub struct ReplaceDialog {
+    /// What to find.
+    pub from: String,
+    /// What to put instead.
+    pub to: String,
+    /// The place selected in the preview.
+    pub selected: usize,
+    /// Why the last replace was refused.
+    pub error: Option<String>,
+    /// The preview, for the texts and the document change it was made from.
+    plan: Option<((String, String, u64, u64), Result<Vec<Planned>, String>)>,
+}
+
+/// How a cell reads in the preview: its operands as written.
+fn cell_text(cell: &Cell) -> String {
+    match cell {
+        Cell::Contact { operand, .. } | Cell::Coil { operand, .. } => operand.to_string(),
+        Cell::Box { op, operands } => {
+            let ops: Vec<String> = operands.iter().map(Operand::to_string).collect();
+            format!("{} {}", op.name(), ops.join(" "))
+        }
+        other => format!("{other:?}"),
+    }
+}
+
+impl LadderApp {
+    /// Opens the replace window (with the last text searched for as what to find).
+    pub fn open_replace(&mut self) {
+        if self.replace.is_none() {
+            self.replace = Some(ReplaceDialog {
+                from: self.edit.last_find.clone(),
+                ..Default::default()
+            });
+        }
+    }
+
+    /// The preview of `d` on the open project, computed again only when the texts or the
+    /// project changed.
+    fn replace_plan(&self, d: &mut ReplaceDialog) {
+        let lang = self.settings.lang;
+        let Some(doc) = self.doc.as_ref() else {
+            d.plan = None;
+            return;
+        };
+        let key = (d.from.clone(), d.to.clone(), doc.serial, doc.generation);
+        if d.plan.as_ref().is_some_and(|(k, _)| *k == key) {
+            return;
+        }
+        let plan = (|| {
+            let (from, to) = (d.from.trim(), d.to.trim());
+            if from.is_empty() {
+                return Ok(Vec::new());
+            }
+            let query = Query::parse(from)
+                .ok_or_else(|| format!("`{from}`: {}", Msg::NothingToFind.text(lang)))?;
+            if to.is_empty() {
+                return Ok(Vec::new());
+            }
+            let to = Operand::parse(to).map_err(|e| super::errors::operand_error(&e, lang))?;
+            Ok(find::replace_plan(doc.project(), &query, &to))
+        })();
+        d.selected = d
+            .selected
+            .min(plan.as_ref().map_or(0, |p| p.len().saturating_sub(1)));
+        d.plan = Some((key, plan));
+    }
+
+    /// Draws the replace window while it is open.
+    pub fn replace_ui(&mut self, ctx: &egui::Context) {
+        let Some(mut d) = self.replace.take() else {
+            return;
+        };
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        self.replace_plan(&mut d);
+        let mut open = true;
+        let mut apply: Option<Edit> = None;
+        let mut show = None;
+        egui::Window::new(t(Msg::ReplaceTitle))
+            .id(egui::Id::unique("replace"))
+            .open(&mut open)
+            .default_size([520.0, 340.0])
+            .resizable(true)
+            .collapsible(false)
+            .show(ctx, |ui| {
+                egui::Grid::new("replace-fields")
+                    .num_columns(2)
+                    .show(ui, |ui| {
+                        let l = ui.label(t(Msg::ReplaceFrom));
+                        ui.add(
+                            egui::TextEdit::singleline(&mut d.from)
+                                .hint_text("X0002.1 · START · R100")
+                                .desired_width(220.0),
+                        )
+                        .labelled_by(l.id);
+                        ui.end_row();
+                        let l = ui.label(t(Msg::ReplaceTo));
+                        ui.add(
+                            egui::TextEdit::singleline(&mut d.to)
+                                .hint_text("X0003.1")
+                                .desired_width(220.0),
+                        )
+                        .labelled_by(l.id);
+                        ui.end_row();
+                    });
+                let plan = d.plan.as_ref().map(|(_, p)| p);
+                match plan {
+                    Some(Err(e)) => {
+                        ui.colored_label(theme::ERROR, e);
+                    }
+                    Some(Ok(plan)) if !plan.is_empty() => {
+                        let change = plan.iter().filter(|p| p.after.is_some()).count();
+                        ui.label(format!(
+                            "{} {}: {change} {}, {} {}",
+                            plan.len(),
+                            t(Msg::ReplacePlaces),
+                            t(Msg::ReplaceWillChange),
+                            plan.len() - change,
+                            t(Msg::ReplaceSkipped)
+                        ));
+                        egui::ScrollArea::vertical()
+                            .max_height(ui.available_height() - 36.0)
+                            .auto_shrink([false, true])
+                            .show(ui, |ui| {
+                                for (i, p) in plan.iter().enumerate() {
+                                    let project = self.doc.as_ref().map(|d| d.project());
+                                    let block = project
+                                        .and_then(|pr| pr.ladder.blocks.get(p.at.block))
+                                        .map_or(String::new(), |b| b.kind.label());
+                                    let place = format!(
+                                        "{block} N{:04} {}:{}",
+                                        p.at.network + 1,
+                                        p.at.row + 1,
+                                        p.at.col + 1
+                                    );
+                                    let (text, color) = match &p.after {
+                                        Some(after) => (
+                                            format!(
+                                                "{place}   {} → {}",
+                                                cell_text(&p.before),
+                                                cell_text(after)
+                                            ),
+                                            ui.visuals().text_color(),
+                                        ),
+                                        None => (
+                                            format!(
+                                                "{place}   {}   ({})",
+                                                cell_text(&p.before),
+                                                t(Msg::ReplaceSkipped)
+                                            ),
+                                            theme::CAUTION,
+                                        ),
+                                    };
+                                    let r = ui.selectable_label(
+                                        d.selected == i,
+                                        egui::RichText::new(text).color(color),
+                                    );
+                                    if r.clicked() {
+                                        d.selected = i;
+                                        show = Some(p.at);
+                                    }
+                                }
+                            });
+                        ui.horizontal(|ui| {
+                            let one = plan.get(d.selected).and_then(Planned::edit);
+                            if ui
+                                .add_enabled(one.is_some(), egui::Button::new(t(Msg::ReplaceOne)))
+                                .clicked()
+                            {
+                                apply = one;
+                            }
+                            let all: Vec<Edit> = plan.iter().filter_map(Planned::edit).collect();
+                            let label = format!("{} ({})", t(Msg::ReplaceAll), all.len());
+                            if ui
+                                .add_enabled(!all.is_empty(), egui::Button::new(label))
+                                .clicked()
+                            {
+                                apply = Some(Edit::Batch(all));
+                            }
+                        });
+                    }
+                    Some(Ok(_)) if !d.from.trim().is_empty() && !d.to.trim().is_empty() => {
+                        ui.label(t(Msg::ReplaceNone));
+                    }
+                    _ => {}
+                }
+                if let Some(e) = &d.error {
+                    ui.colored_label(theme::ERROR, e);
+                }
+            });
+        if let Some(at) = show {
+            self.jump(at);
+        }
+        if let Some(edit) = apply {
+            // One apply: the whole replace is one undo step.
+            match self.try_edit(edit) {
+                Ok(_) => d.error = None,
+                Err(e) => d.error = Some(e),
+            }
+        }
+        if open && !ctx.input(|i| i.key_pressed(egui::Key::Escape)) {
+            self.replace = Some(d);
+        }
+    }
+}
