@@ -23,7 +23,7 @@ fn enter(
     col: Col,
     text: &str,
 ) -> Result<(), TableError> {
-    if let Some(edit) = commit(p, sheet, row, col, text, "en")? {
+    if let Some(edit) = commit(p, sheet, row, col, text)? {
         p.apply_table(edit);
     }
     Ok(())
@@ -89,23 +89,23 @@ fn symbols_are_entered_canonical_and_shown() {
     assert!(p.symbol_tables[0].rows.is_empty());
     enter(&mut p, S, 0, Col::Address, " r10.1 ").unwrap();
     enter(&mut p, S, 0, Col::Symbol, "START").unwrap();
-    enter(&mut p, S, 0, Col::Comment, "cycle start").unwrap();
+    enter(&mut p, S, 0, Col::Comment("en"), "cycle start").unwrap();
     let row = &p.symbol_tables[0].rows[0];
     assert_eq!(row.address, Address::bit(Area::R, 10, 1));
     assert_eq!(row.name, "START");
     assert_eq!(row.comments["en"], "cycle start");
-    assert_eq!(cell_text(&p, S, 0, Col::Address, "en"), "R0010.1");
+    assert_eq!(cell_text(&p, S, 0, Col::Address), "R0010.1");
     assert_eq!(
-        cell_text(&p, S, 0, Col::Comment, "zh"),
+        cell_text(&p, S, 0, Col::Comment("zh")),
         "",
         "no Chinese comment"
     );
     assert_eq!(
-        commit(&p, S, 0, Col::Symbol, "START", "en"),
+        commit(&p, S, 0, Col::Symbol, "START"),
         Ok(None),
         "a field left as it was is no edit"
     );
-    enter(&mut p, S, 0, Col::Comment, "  ").unwrap();
+    enter(&mut p, S, 0, Col::Comment("en"), "  ").unwrap();
     assert!(p.symbol_tables[0].rows[0].comments.is_empty(), "emptied");
 }
 
@@ -185,7 +185,7 @@ fn symbol_tables_refuse_bad_addresses_and_names_with_the_reason() {
         "`TOOL`: symbol already exists: 程序块符号 P0003"
     );
     assert_eq!(
-        refused(&mut p, S, 0, Col::Comment, &"字".repeat(43)),
+        refused(&mut p, S, 0, Col::Comment("en"), &"字".repeat(43)),
         TableError::CommentTooLong {
             bytes: 129,
             max: 127
@@ -222,7 +222,7 @@ fn data_values_are_clamped_and_addresses_kept_apart() {
         }
     );
     enter(&mut p, Sheet::D, 1, Col::Address, "d12").unwrap();
-    assert_eq!(cell_text(&p, Sheet::D, 1, Col::Address, "en"), "D0012");
+    assert_eq!(cell_text(&p, Sheet::D, 1, Col::Address), "D0012");
     // One D holds an integer or a real, not both.
     assert_eq!(
         refused(&mut p, Sheet::DFloat, 0, Col::Address, "D12"),
@@ -264,9 +264,9 @@ fn messages_numbers_m_codes_and_diagnosis_rows_are_checked() {
     let mut p = Project::default();
     let m = Sheet::Messages;
     enter(&mut p, m, 399, Col::Number, "1234").unwrap();
-    enter(&mut p, m, 399, Col::Text, "Oil level low").unwrap();
+    enter(&mut p, m, 399, Col::Text("en"), "Oil level low").unwrap();
     assert_eq!(p.messages.rows[399].number, Some(1234));
-    assert_eq!(cell_text(&p, m, 399, Col::Address, "en"), "A0049.7");
+    assert_eq!(cell_text(&p, m, 399, Col::Address), "A0049.7");
     assert_eq!(
         refused(&mut p, m, 398, Col::Number, "1234"),
         TableError::AlarmTwice {
@@ -279,14 +279,14 @@ fn messages_numbers_m_codes_and_diagnosis_rows_are_checked() {
         TableError::AlarmRange { text: "999".into() }
     );
     assert_eq!(
-        commit(&p, m, 400, Col::Number, "1000", "en"),
+        commit(&p, m, 400, Col::Number, "1000"),
         Ok(None),
         "400 rows"
     );
 
     let c = Sheet::MCodes;
     enter(&mut p, c, 0, Col::Code, "m3").unwrap();
-    assert_eq!(cell_text(&p, c, 0, Col::Code, "en"), "M03");
+    assert_eq!(cell_text(&p, c, 0, Col::Code), "M03");
     assert_eq!(
         refused(&mut p, c, 1, Col::Code, "M03"),
         TableError::MCodeTwice { code: 3, row: 0 }
@@ -315,7 +315,7 @@ fn messages_numbers_m_codes_and_diagnosis_rows_are_checked() {
         }
     );
     assert_eq!(
-        refused(&mut p, d, 0, Col::Comment, &"x".repeat(128)),
+        refused(&mut p, d, 0, Col::Comment("en"), &"x".repeat(128)),
         TableError::CommentTooLong {
             bytes: 128,
             max: 127

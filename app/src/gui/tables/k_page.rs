@@ -76,5 +76,5 @@ pub(super) fn k_page_ui(
                 });
             });
         });
-    run_actions(project, state, actions, lang, events);
+    run_actions(project, state, actions, events);
 }

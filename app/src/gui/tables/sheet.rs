@@ -28,29 +28,38 @@ fn op_msg(op: RowOp) -> Msg {
     }
 }
 
-fn col_title(col: Col) -> Msg {
-    match col {
+/// A column's title: a per-language column names its language, so that the columns of one
+/// row read "Comment (zh)", "Comment (en)" whatever the UI language.
+fn col_title(col: Col, lang: Lang) -> String {
+    let msg = match col {
         Col::Address => Msg::TblAddress,
         Col::Symbol => Msg::TblSymbol,
-        Col::Comment => Msg::TblComment,
+        Col::Comment(_) => Msg::TblComment,
         Col::Value => Msg::TblValue,
         Col::Min => Msg::TblMin,
         Col::Max => Msg::TblMax,
         Col::Number => Msg::TblAlarmNumber,
-        Col::Text => Msg::TblMessageText,
+        Col::Text(_) => Msg::TblMessageText,
         Col::Code => Msg::TblMCode,
+    };
+    match col.lang() {
+        Some(code) => format!("{} ({code})", msg.text(lang)),
+        None => msg.text(lang).to_string(),
     }
 }
 
+/// A column's width: room for a typical entry at first, and never less than a few
+/// characters when the user narrows it. A table wider than the window scrolls sideways
+/// rather than squeezing every language's text.
 fn col_column(col: Col) -> Column {
-    let width = match col {
-        Col::Address | Col::Code | Col::Number => 100.0,
-        Col::Value | Col::Min | Col::Max => 110.0,
-        Col::Symbol => 170.0,
-        Col::Comment => 280.0,
-        Col::Text => 360.0,
+    let (width, least) = match col {
+        Col::Address | Col::Code | Col::Number => (100.0, 64.0),
+        Col::Value | Col::Min | Col::Max => (100.0, 64.0),
+        Col::Symbol => (160.0, 80.0),
+        Col::Comment(_) => (230.0, 100.0),
+        Col::Text(_) => (300.0, 120.0),
     };
-    Column::initial(width).at_least(50.0).clip(true)
+    Column::initial(width).at_least(least).clip(true)
 }
 
 /// Carries out what the user did this frame: one table edit per action, each judged against
@@ -59,7 +68,6 @@ pub(super) fn run_actions(
     project: &Project,
     state: &mut TableState,
     actions: Vec<Action>,
-    lang: Lang,
     events: &mut Vec<TableEvent>,
 ) {
     let last = actions.len().saturating_sub(1);
@@ -70,7 +78,7 @@ pub(super) fn run_actions(
         let edit = match action {
             Action::Commit(key, text) => {
                 let (sheet, row, col) = key;
-                match commit(now, sheet, row, col, &text, lang.code()) {
+                match commit(now, sheet, row, col, &text) {
                     Ok(edit) => {
                         state.pending.remove(&key);
                         edit
@@ -140,7 +148,8 @@ fn row_op_button(
 }
 
 /// One editable cell: shows the typed text while there is some, commits it when the field
-/// loses focus (Enter included), drops it on Escape.
+/// loses focus (Enter included), drops it on Escape. Returns the field's rectangle when it
+/// has just taken the keyboard, for the grid to bring it into view sideways.
 fn cell_ui(
     ui: &mut egui::Ui,
     state: &mut TableState,
@@ -149,20 +158,20 @@ fn cell_ui(
     len: usize,
     lang: Lang,
     actions: &mut Vec<Action>,
-) {
+) -> Option<egui::Rect> {
     let fresh = row >= len;
     if !sheet.editable(col) || (fresh && col != sheet.key_col()) {
         if !fresh {
-            ui.label(cell_text(project, sheet, row, col, lang.code()));
+            ui.label(cell_text(project, sheet, row, col));
         }
-        return;
+        return None;
     }
     let key = (sheet, row, col);
     let pending = state.pending.get(&key);
     let refused = pending.is_some_and(|p| p.error.is_some());
     let mut text = match pending {
         Some(p) => p.text.clone(),
-        None => cell_text(project, sheet, row, col, lang.code()),
+        None => cell_text(project, sheet, row, col),
     };
     let mut edit = egui::TextEdit::singleline(&mut text).desired_width(f32::INFINITY);
     if refused {
@@ -178,9 +187,13 @@ fn cell_ui(
     }
     let r = ui
         .add(edit)
-        .accessible_name(format!("{} {}", col_title(col).text(lang), row + 1));
-    if r.gained_focus() {
+        .accessible_name(format!("{} {}", col_title(col, lang), row + 1));
+    let focused = r.gained_focus();
+    if focused {
         state.selected.insert(sheet, row);
+        // A cell half hidden at the top or bottom edge comes fully into view. (The rows'
+        // scroll area drops the sideways part of this; the grid's caller does that.)
+        r.scroll_to_me(None);
     }
     if r.changed() {
         let stamp = state.next_stamp();
@@ -195,6 +208,7 @@ fn cell_ui(
             actions.push(Action::Commit(key, text));
         }
     }
+    focused.then_some(r.rect)
 }
 
 /// A row table: the row toolbar, then the grid with a row header (click selects,
@@ -207,7 +221,6 @@ pub(super) fn sheet_ui(
     lang: Lang,
     events: &mut Vec<TableEvent>,
 ) {
-    let t = |m: Msg| m.text(lang);
     let profile = project.profile();
     let len = sheet.rows(project);
     // Growing tables end in an empty line: typing its address (or code) adds a row.
@@ -226,6 +239,37 @@ pub(super) fn sheet_ui(
             ui.colored_label(ERROR_RED, table_error(e, profile, lang));
         }
     });
+    // One comment column per language makes the grid wider than a small window: it scrolls
+    // sideways, the header with it, and the rows still scroll on their own below the header.
+    egui::ScrollArea::horizontal()
+        .id_salt(("sheet columns", sheet))
+        .show(ui, |ui| {
+            // Tab walks the columns: the cell that took the keyboard comes into view, left or
+            // right, from outside the rows' own (vertical) scroll area.
+            if let Some(rect) = grid_ui(ui, project, state, sheet, selected, lang, &mut actions) {
+                ui.scroll_to_rect(rect, None);
+            }
+        });
+    run_actions(project, state, actions, events);
+}
+
+/// The grid of a row table, only its visible rows laid out: the row header, a cell per
+/// column, and the first refusal of the row's cells. Returns the rectangle of the cell that
+/// took the keyboard this frame, if one did.
+fn grid_ui(
+    ui: &mut egui::Ui,
+    project: &Project,
+    state: &mut TableState,
+    sheet: Sheet,
+    selected: Option<usize>,
+    lang: Lang,
+    actions: &mut Vec<Action>,
+) -> Option<egui::Rect> {
+    let t = |m: Msg| m.text(lang);
+    let mut focused = None;
+    let profile = project.profile();
+    let len = sheet.rows(project);
+    let shown = if sheet.fixed() { len } else { len + 1 };
     let row_height = row_height(ui);
     let mut builder = TableBuilder::new(ui)
         .id_salt(sheet)
@@ -247,7 +291,7 @@ pub(super) fn sheet_ui(
             });
             for col in sheet.columns() {
                 header.col(|ui| {
-                    ui.strong(t(col_title(*col)));
+                    ui.strong(col_title(*col, lang));
                 });
             }
             header.col(|ui| {
@@ -278,7 +322,10 @@ pub(super) fn sheet_ui(
                 });
                 for &col in sheet.columns() {
                     row.col(|ui| {
-                        cell_ui(ui, state, project, (sheet, i, col), len, lang, &mut actions)
+                        let cell = (sheet, i, col);
+                        if let Some(rect) = cell_ui(ui, state, project, cell, len, lang, actions) {
+                            focused = Some(rect);
+                        }
                     });
                 }
                 row.col(|ui| {
@@ -289,5 +336,5 @@ pub(super) fn sheet_ui(
                 });
             });
         });
-    run_actions(project, state, actions, lang, events);
+    focused
 }

@@ -67,7 +67,7 @@ fn symbols_are_entered_checked_and_undone() {
     let mut h = harness(&original, "symbols", View::Symbols(0));
     enter(&mut h, "Address 1", "r10.1");
     enter(&mut h, "Symbol 1", "START");
-    enter(&mut h, "Comment 1", "cycle start");
+    enter(&mut h, "Comment (en) 1", "cycle start");
     let row = &project(&h).symbol_tables[0].rows[0];
     assert_eq!(row.address, Address::bit(Area::R, 10, 1));
     assert_eq!(row.name, "START");
@@ -76,6 +76,18 @@ fn symbols_are_entered_checked_and_undone() {
         Some("cycle start")
     );
     assert_eq!(cell_value(&h, "Address 1"), "R0010.1", "shown canonical");
+    assert_eq!(
+        cell_value(&h, "Comment (zh) 1"),
+        "",
+        "no Chinese comment yet"
+    );
+    enter(&mut h, "Comment (zh) 1", "循环启动");
+    let comments = &project(&h).symbol_tables[0].rows[0].comments;
+    assert_eq!(
+        (comments["zh"].as_str(), comments["en"].as_str()),
+        ("循环启动", "cycle start"),
+        "each column its own language"
+    );
 
     let before = project(&h).symbol_tables.clone();
     for (text, reason) in [
@@ -284,7 +296,7 @@ fn the_message_table_has_a_row_per_a_bit_and_scrolls() {
     h.get_by_label("A0049.7");
     assert!(h.query_by_label("Alarm number 401").is_none(), "400 rows");
     enter(&mut h, "Alarm number 400", "1234");
-    enter(&mut h, "Message text 400", "Oil level low");
+    enter(&mut h, "Message text (en) 400", "Oil level low");
     let m = &project(&h).messages.rows[399];
     assert_eq!(m.number, Some(1234));
     assert_eq!(m.texts.get("en").map(String::as_str), Some("Oil level low"));
@@ -308,7 +320,7 @@ fn diagnosis_permissions_and_m_codes_are_edited_and_checked() {
     let original = Project::default();
     let mut h = harness(&original, "misc", View::MCodes);
     enter(&mut h, "M code 1", "m3");
-    enter(&mut h, "Comment 1", "spindle CW");
+    enter(&mut h, "Comment (en) 1", "spindle CW");
     assert_eq!(project(&h).m_codes[0].code, 3);
     assert_eq!(cell_value(&h, "M code 1"), "M03");
     enter(&mut h, "M code 2", "M03");
@@ -328,7 +340,7 @@ fn diagnosis_permissions_and_m_codes_are_edited_and_checked() {
     h.get_by_label_contains("only these areas belong here");
     assert_eq!(project(&h).diagnosis.len(), 1);
     let long = "x".repeat(128);
-    enter(&mut h, "Comment 1", &long);
+    enter(&mut h, "Comment (en) 1", &long);
     h.get_by_label_contains("at most 127 bytes");
     assert!(project(&h).diagnosis[0].comments.is_empty());
 

@@ -11,10 +11,10 @@ use crate::model::tables::{
 };
 use crate::model::{Project, TableEdit};
 
-/// What a cell shows when nobody is typing in it; comments and message texts in language
-/// `lang` (`zh`, `en`). Empty past the last row.
-pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &str) -> String {
-    let comment = |c: &Comments| c.get(lang).cloned().unwrap_or_default();
+/// What a cell shows when nobody is typing in it; a comment or message-text column shows its
+/// own language. Empty past the last row, and in a column the table does not have.
+pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col) -> String {
+    let comment = |c: &Comments, lang: &str| c.get(lang).cloned().unwrap_or_default();
     let int = |v: Option<i64>| v.map(|v| v.to_string()).unwrap_or_default();
     let real = |v: Option<f32>| v.map(|v| v.to_string()).unwrap_or_default();
     match sheet {
@@ -25,7 +25,8 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
             match col {
                 Col::Address => s.address.to_string(),
                 Col::Symbol => s.name.clone(),
-                _ => comment(&s.comments),
+                Col::Comment(lang) => comment(&s.comments, lang),
+                _ => String::new(),
             }
         }
         Sheet::D | Sheet::Dt | Sheet::Dc => {
@@ -38,7 +39,8 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
                 Col::Min => int(r.min),
                 Col::Max => int(r.max),
                 Col::Symbol => r.symbol.clone(),
-                _ => comment(&r.comments),
+                Col::Comment(lang) => comment(&r.comments, lang),
+                _ => String::new(),
             }
         }
         Sheet::DFloat => {
@@ -51,7 +53,8 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
                 Col::Min => real(r.min),
                 Col::Max => real(r.max),
                 Col::Symbol => r.symbol.clone(),
-                _ => comment(&r.comments),
+                Col::Comment(lang) => comment(&r.comments, lang),
+                _ => String::new(),
             }
         }
         Sheet::Messages => {
@@ -61,7 +64,8 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
             match col {
                 Col::Address => MessageTable::address(row).to_string(),
                 Col::Number => m.number.map(|n| n.to_string()).unwrap_or_default(),
-                _ => comment(&m.texts),
+                Col::Text(lang) => comment(&m.texts, lang),
+                _ => String::new(),
             }
         }
         Sheet::Diagnosis | Sheet::Permissions => {
@@ -70,7 +74,8 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
             };
             match col {
                 Col::Address => r.address.to_string(),
-                _ => comment(&r.comments),
+                Col::Comment(lang) => comment(&r.comments, lang),
+                _ => String::new(),
             }
         }
         Sheet::MCodes => {
@@ -79,22 +84,23 @@ pub fn cell_text(project: &Project, sheet: Sheet, row: usize, col: Col, lang: &s
             };
             match col {
                 Col::Code => format!("M{:02}", r.code),
-                _ => comment(&r.comments),
+                Col::Comment(lang) => comment(&r.comments, lang),
+                _ => String::new(),
             }
         }
     }
 }
 
-/// Applies text typed into a cell (comments in language `lang`): the edit replacing its
-/// table, none when nothing changes, or why the text is refused. A row past the last is the
-/// empty last line of a growing table, which takes only the key that creates a row.
+/// Applies text typed into a cell (a comment or message-text column writes its own language
+/// only): the edit replacing its table, none when nothing changes, or why the text is
+/// refused. A row past the last is the empty last line of a growing table, which takes only
+/// the key that creates a row; a column the table does not have takes nothing.
 pub fn commit(
     project: &Project,
     sheet: Sheet,
     row: usize,
     col: Col,
     raw: &str,
-    lang: &str,
 ) -> Result<Option<TableEdit>, TableError> {
     let text = raw.trim();
     let fresh = row >= sheet.rows(project);
@@ -123,7 +129,8 @@ pub fn commit(
                         check_symbol(project, text, Some((t, row)))?;
                         s.name = text.into();
                     }
-                    _ => set_comment(&mut s.comments, lang, raw, true)?,
+                    Col::Comment(lang) => set_comment(&mut s.comments, lang, raw, true)?,
+                    _ => {}
                 }
             }
             Ok(changed(&project.symbol_tables, tables, TableEdit::Symbols))
@@ -146,7 +153,8 @@ pub fn commit(
                         check_data_symbol(project, text, r.address)?;
                         r.symbol = text.into();
                     }
-                    _ => set_comment(&mut r.comments, lang, raw, true)?,
+                    Col::Comment(lang) => set_comment(&mut r.comments, lang, raw, true)?,
+                    _ => {}
                 }
             }
             Ok(changed(&project.data, data, |d| {
@@ -171,7 +179,8 @@ pub fn commit(
                         check_data_symbol(project, text, r.address)?;
                         r.symbol = text.into();
                     }
-                    _ => set_comment(&mut r.comments, lang, raw, true)?,
+                    Col::Comment(lang) => set_comment(&mut r.comments, lang, raw, true)?,
+                    _ => {}
                 }
             }
             Ok(changed(&project.data, data, |d| {
@@ -185,7 +194,7 @@ pub fn commit(
             };
             match col {
                 Col::Number => m.number = alarm_number(project, text, row)?,
-                Col::Text => set_comment(&mut m.texts, lang, raw, false)?,
+                Col::Text(lang) => set_comment(&mut m.texts, lang, raw, false)?,
                 _ => {}
             }
             Ok(changed(&project.messages, messages, |m| {
@@ -203,7 +212,8 @@ pub fn commit(
                 let r = &mut rows[row];
                 match col {
                     Col::Address => r.address = plain_address(project, sheet, text, Some(row))?,
-                    _ => set_comment(&mut r.comments, lang, raw, true)?,
+                    Col::Comment(lang) => set_comment(&mut r.comments, lang, raw, true)?,
+                    _ => {}
                 }
             }
             Ok(changed(
@@ -223,7 +233,8 @@ pub fn commit(
                 let r = &mut rows[row];
                 match col {
                     Col::Code => r.code = m_code(project, text, Some(row))?,
-                    _ => set_comment(&mut r.comments, lang, raw, true)?,
+                    Col::Comment(lang) => set_comment(&mut r.comments, lang, raw, true)?,
+                    _ => {}
                 }
             }
             Ok(changed(&project.m_codes, rows, TableEdit::MCodes))

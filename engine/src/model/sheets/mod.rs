@@ -11,6 +11,8 @@ mod commit;
 mod error;
 mod rows;
 mod rules;
+#[cfg(test)]
+mod tests;
 
 pub use commit::{cell_text, commit, set_password};
 pub use error::{TableError, Taken};
@@ -25,6 +27,12 @@ pub use rules::{
 use super::tables::{AddressRow, DataRow, DataTables, message_rows};
 use super::{Project, TableEdit};
 use crate::address::Area;
+use crate::comments::LANGUAGES;
+
+// The per-language columns follow the comments CSV's language columns (zh, then en), so a
+// table reads like its export.
+const ZH: &str = LANGUAGES[0];
+const EN: &str = LANGUAGES[1];
 
 /// A row table of the project.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -56,8 +64,8 @@ pub enum Col {
     Address,
     /// Its symbol.
     Symbol,
-    /// Its comment in the editing language.
-    Comment,
+    /// Its comment in one language: the key of the row's comment map (`zh`, `en`).
+    Comment(&'static str),
     /// A data row's initial value.
     Value,
     /// A data row's minimum.
@@ -66,8 +74,8 @@ pub enum Col {
     Max,
     /// A message's alarm number.
     Number,
-    /// A message's text in the editing language.
-    Text,
+    /// A message's text in one language: the key of its text map (`zh`, `en`).
+    Text(&'static str),
     /// An M code.
     Code,
 }
@@ -95,22 +103,42 @@ impl RowOp {
     ];
 }
 
+impl Col {
+    /// The language a per-language column (a comment, a message text) shows and writes;
+    /// `None` for the columns that are the same in every language.
+    pub fn lang(self) -> Option<&'static str> {
+        match self {
+            Col::Comment(lang) | Col::Text(lang) => Some(lang),
+            _ => None,
+        }
+    }
+}
+
 impl Sheet {
-    /// The columns, left to right.
+    /// The columns, left to right: a comment (a message's text) once per language, in the
+    /// order of the comments CSV, so that every language can be read and edited side by side.
     pub fn columns(self) -> &'static [Col] {
         match self {
-            Sheet::Symbols(_) => &[Col::Address, Col::Symbol, Col::Comment],
+            Sheet::Symbols(_) => &[
+                Col::Address,
+                Col::Symbol,
+                Col::Comment(ZH),
+                Col::Comment(EN),
+            ],
             Sheet::D | Sheet::DFloat | Sheet::Dt | Sheet::Dc => &[
                 Col::Address,
                 Col::Value,
                 Col::Min,
                 Col::Max,
                 Col::Symbol,
-                Col::Comment,
+                Col::Comment(ZH),
+                Col::Comment(EN),
             ],
-            Sheet::Messages => &[Col::Address, Col::Number, Col::Text],
-            Sheet::Diagnosis | Sheet::Permissions => &[Col::Address, Col::Comment],
-            Sheet::MCodes => &[Col::Code, Col::Comment],
+            Sheet::Messages => &[Col::Address, Col::Number, Col::Text(ZH), Col::Text(EN)],
+            Sheet::Diagnosis | Sheet::Permissions => {
+                &[Col::Address, Col::Comment(ZH), Col::Comment(EN)]
+            }
+            Sheet::MCodes => &[Col::Code, Col::Comment(ZH), Col::Comment(EN)],
         }
     }
 
