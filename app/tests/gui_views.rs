@@ -278,7 +278,8 @@ fn each_block_keeps_its_own_cursor_and_the_status_bar_speaks_of_the_block_shown(
     let (mut h, _) = editor_on(&long_level2(45), "cursor.ldp");
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     h.run();
-    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Operand")
+    // The go-to bar says what it takes.
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Go to network [row]:")
         .type_text("43");
     h.run();
     h.key_press(Key::Enter);

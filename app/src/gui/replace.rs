@@ -20,8 +20,11 @@ pub struct ReplaceDialog {
     /// Why the last replace was refused.
     pub error: Option<String>,
     /// The preview, for the texts and the document change it was made from.
-    plan: Option<((String, String, u64, u64), Result<Vec<Planned>, String>)>,
+    plan: Option<(PlanKey, Result<Vec<Planned>, String>)>,
 }
+
+/// What a preview was made from: the two texts, the document and its change count.
+type PlanKey = (String, String, u64, u64);
 
 /// How a cell reads in the preview: its operands as written.
 fn cell_text(cell: &Cell) -> String {
