@@ -162,6 +162,7 @@ impl LadderApp {
 
     /// The basic toolbar and the ladder toolbar: each button runs what its key runs.
     pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        // Rows wrap in a narrow window: every tool stays on screen.
         let lang = self.settings.lang;
         let button = |app: &mut LadderApp, ui: &mut egui::Ui, c: Command| {
             let r = ui.add_enabled(app.enabled(c), egui::Button::new(c.tool_text().text(lang)));
@@ -173,7 +174,7 @@ impl LadderApp {
                 app.ask(c);
             }
         };
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             for c in BASIC_TOOLBAR {
                 button(self, ui, *c);
             }
@@ -203,7 +204,7 @@ impl LadderApp {
                     }
                 });
         });
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             let mut pen = self.edit.pen;
             if ui
                 .toggle_value(&mut pen, Command::Pen.text().text(lang))
@@ -216,7 +217,7 @@ impl LadderApp {
                 button(self, ui, *c);
             }
         });
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             for c in super::command::ONLINE_TOOLBAR {
                 button(self, ui, *c);
             }

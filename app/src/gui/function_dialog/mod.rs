@@ -18,12 +18,37 @@ use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 
 use super::theme::{CAUTION as ORANGE, ERROR as RED};
-/// The dialog's width.
+
+/// The dialog's widest size and tallest body (at 1280×800 and larger).
 const DIALOG_WIDTH: f32 = 1000.0;
-/// The height of the lists and the operand grid.
+/// The height of the lists and the operand grid, at most.
 const BODY_HEIGHT: f32 = 380.0;
-/// The height of the scrolled part of each column.
-const LIST_HEIGHT: f32 = 340.0;
+
+/// The dialog's sizes for a window: as large as they were designed, smaller in a small
+/// window (900×600 fits whole). They follow the window, never the content, so nothing moves
+/// under the pointer while the choice or the messages change.
+#[derive(Clone, Copy)]
+struct Sizes {
+    width: f32,
+    body: f32,
+    list: f32,
+    categories: f32,
+    names: f32,
+}
+
+fn sizes(ctx: &egui::Context) -> Sizes {
+    let screen = ctx.content_rect();
+    let width = (screen.width() - 48.0).clamp(600.0, DIALOG_WIDTH);
+    let body = (screen.height() - 250.0).clamp(200.0, BODY_HEIGHT);
+    let narrow = width < 900.0;
+    Sizes {
+        width,
+        body,
+        list: body - 40.0,
+        categories: if narrow { 120.0 } else { 150.0 },
+        names: if narrow { 230.0 } else { 300.0 },
+    }
+}
 
 /// The open dialog.
 #[derive(Clone, Debug)]
@@ -404,7 +429,8 @@ impl FunctionDialog {
     fn ui(&mut self, ui: &mut egui::Ui, project: &Project, lang: Lang) -> Action {
         // A fixed size: the dialog is centred, so a size that followed its content would move
         // every widget under the pointer whenever the choice changes.
-        ui.set_width(DIALOG_WIDTH);
+        let size = sizes(ui.ctx());
+        ui.set_width(size.width);
         let title = if self.editing {
             Msg::FnEditTitle
         } else {
@@ -415,14 +441,14 @@ impl FunctionDialog {
         ui.separator();
         let mut search_done = false;
         ui.horizontal_top(|ui| {
-            ui.set_height(BODY_HEIGHT);
+            ui.set_height(size.body);
             ui.vertical(|ui| {
-                ui.set_width(150.0);
+                ui.set_width(size.categories);
                 self.categories_ui(ui, lang);
             });
             ui.separator();
             ui.vertical(|ui| {
-                ui.set_width(300.0);
+                ui.set_width(size.names);
                 search_done = self.list_ui(ui, lang);
             });
             ui.separator();
@@ -489,7 +515,7 @@ impl FunctionDialog {
         ui.strong(Msg::FnCategory.text(lang));
         egui::ScrollArea::vertical()
             .id_salt("fn_categories")
-            .max_height(LIST_HEIGHT)
+            .max_height(sizes(ui.ctx()).list)
             .auto_shrink([false, false])
             .show(ui, |ui| {
                 if ui
@@ -532,7 +558,7 @@ impl FunctionDialog {
         let matches = self.matches();
         egui::ScrollArea::vertical()
             .id_salt("fn_instructions")
-            .max_height(LIST_HEIGHT)
+            .max_height(sizes(ui.ctx()).list)
             .auto_shrink([false, false])
             .show(ui, |ui| {
                 if matches.is_empty() {
@@ -572,7 +598,7 @@ impl FunctionDialog {
         let checks = self.checks(project, lang);
         egui::ScrollArea::vertical()
             .id_salt("fn_operands")
-            .max_height(LIST_HEIGHT)
+            .max_height(sizes(ui.ctx()).list)
             .auto_shrink([false, false])
             .show(ui, |ui| {
                 ui.label(instr_help(spec, lang));
@@ -668,16 +694,20 @@ impl FunctionDialog {
             self.error = None;
             self.line_error = None;
         }
+        // Always two lines, each cut with "…" (the whole text on hover): a message that comes
+        // or goes never changes the row's height, so the rows stay under the pointer.
         ui.vertical(|ui| {
-            ui.set_max_width(300.0);
-            if let Some(spec) = op.spec().operand(i) {
-                ui.add(egui::Label::new(operand_help(spec, lang)).wrap());
-            }
+            ui.set_width(ui.available_width().clamp(160.0, 300.0));
+            let help = op.spec().operand(i).map_or("", |s| operand_help(s, lang));
+            ui.add(egui::Label::new(help).truncate());
             match check {
                 Check::Bad(why) | Check::Warn(why) => {
-                    ui.add(egui::Label::new(RichText::new(why).color(color.unwrap_or(RED))).wrap());
+                    let text = RichText::new(why).color(color.unwrap_or(RED));
+                    ui.add(egui::Label::new(text).truncate());
                 }
-                Check::Ok | Check::Empty => {}
+                Check::Ok | Check::Empty => {
+                    ui.label(" ");
+                }
             }
         });
     }

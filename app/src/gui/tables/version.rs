@@ -21,6 +21,9 @@ pub(super) fn version_ui(
     let current = &doc.project().version;
     ui.heading(t(Msg::VersionInfo));
     let mut commit = false;
+    // Sized from the window, not the text: a Grid gives a TextEdit only its text's width,
+    // which left one character per line in a small window. 900×600 still shows 200 points.
+    let field_width = (ui.available_width() - 200.0).clamp(200.0, 480.0);
     egui::Grid::new("version-info")
         .num_columns(3)
         .spacing([12.0, 8.0])
@@ -40,8 +43,16 @@ pub(super) fn version_ui(
                 } else {
                     egui::TextEdit::singleline(&mut text)
                 };
+                let height = if i == 2 {
+                    6.0 * ui.text_style_height(&egui::TextStyle::Body) + 8.0
+                } else {
+                    ui.spacing().interact_size.y
+                };
                 let r = ui
-                    .add(edit.char_limit(max).desired_width(480.0))
+                    .add_sized(
+                        [field_width, height],
+                        edit.char_limit(max).desired_width(field_width),
+                    )
                     .labelled_by(label.id);
                 if r.changed() {
                     let stamp = state.next_stamp();
@@ -97,8 +108,11 @@ fn password_ui(
         .show(ui, |ui| {
             let field = |ui: &mut egui::Ui, msg: Msg, text: &mut String| {
                 let label = ui.label(t(msg));
-                ui.add(egui::TextEdit::singleline(text).password(true))
-                    .labelled_by(label.id);
+                ui.add_sized(
+                    [240.0, ui.spacing().interact_size.y],
+                    egui::TextEdit::singleline(text).password(true),
+                )
+                .labelled_by(label.id);
                 ui.end_row();
             };
             if is_set {
