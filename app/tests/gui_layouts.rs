@@ -102,6 +102,11 @@ fn the_version_page_and_the_symbol_table_fit_900_by_600() {
             "a version field is too narrow to read: {r:?}"
         );
     }
+    // The password part below the fold can be scrolled to.
+    h.get_by_label("设置密码").scroll_to_me();
+    h.run();
+    let r = h.get_by_label("设置密码").rect();
+    assert!(inside(r), "the password buttons can be reached: {r:?}");
     h.state_mut().view = ladder_studio::gui::place::View::Symbols(0);
     h.run();
     let cells: Vec<egui::Rect> = h

@@ -612,3 +612,32 @@ fn the_output_window_resizes_keeps_its_height_lists_a_branch_once_and_copies_a_l
     let after = h.state().settings.output_height;
     assert!(after > before + 60.0, "{before} → {after}");
 }
+
+#[test]
+fn network_comments_show_a_line_per_language_as_the_csv_has_them() {
+    use ladder_studio::gui::command::Command;
+    let dir = tempfile_dir();
+    let path = dir.join("langs.ldp");
+    let mut p = ladder_engine::il::import("LEVEL1\nNETWORK\nLD X0000.0\nOUT Y0000.0\n")
+        .project
+        .unwrap();
+    let net = &mut p.ladder.blocks[0].networks[0];
+    net.comments.insert("zh".into(), "主轴启动".into());
+    net.comments.insert("en".into(), "Spindle start".into());
+    ladder_engine::file::save(&p, &path).unwrap();
+    let csv = ladder_engine::comments::export(&p, None);
+    assert!(csv.contains("主轴启动") && csv.contains("Spindle start"));
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    assert!(h.state().settings.show_comments);
+    let header = 22.0 * f32::from(h.state().settings.zoom) / 100.0;
+    let first_row = h.state().edit.geometry.rows[0][0];
+    assert_eq!(first_row, 3.0 * header, "title, then a zh and an en line");
+    h.state_mut().ask(Command::ToggleComments);
+    h.run();
+    assert_eq!(
+        h.state().edit.geometry.rows[0][0],
+        header,
+        "hidden: the title only"
+    );
+}

@@ -113,8 +113,8 @@ impl Metrics {
     /// Height of a whole network.
     pub fn network_height(&self, n: &Network, comments: bool) -> f32 {
         let rows: f32 = n.rows.iter().map(|r| self.row_height(&r.cells)).sum();
-        let comment = if comments && !n.comment.is_empty() {
-            self.header
+        let comment = if comments {
+            comment_line_count(n) as f32 * self.header
         } else {
             0.0
         };
@@ -238,11 +238,11 @@ pub struct ViewOptions {
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
-/// when shown, its comment line).
+/// when shown, its comment lines).
 fn row_tops(net: &Network, m: &Metrics, comments: bool) -> Vec<f32> {
     let mut y = m.header;
-    if comments && !net.comment.is_empty() {
-        y += m.header;
+    if comments {
+        y += comment_line_count(net) as f32 * m.header;
     }
     net.rows
         .iter()
@@ -252,6 +252,36 @@ fn row_tops(net: &Network, m: &Metrics, comments: bool) -> Vec<f32> {
             top
         })
         .collect()
+}
+
+/// The comment lines under a network's title: its comment, then one line per language that
+/// has one, in the order of the comments CSV (`zh`, then `en`, then any other), each marked
+/// with its language. Only the first line of a many-line comment is drawn.
+pub fn comment_lines(net: &Network) -> Vec<String> {
+    let mut lines = Vec::new();
+    if let Some(first) = net.comment.lines().next().filter(|l| !l.is_empty()) {
+        lines.push(first.to_string());
+    }
+    let order = |lang: &str| match lang {
+        "zh" => 0,
+        "en" => 1,
+        _ => 2,
+    };
+    let mut langs: Vec<(&String, &String)> = net.comments.iter().collect();
+    langs.sort_by_key(|(l, _)| (order(l), l.as_str()));
+    for (lang, text) in langs {
+        if let Some(first) = text.lines().next().filter(|l| !l.is_empty()) {
+            lines.push(format!("[{lang}] {first}"));
+        }
+    }
+    lines
+}
+
+/// How many lines [`comment_lines`] gives, without building them (every network's height is
+/// worked out every frame).
+fn comment_line_count(net: &Network) -> usize {
+    let shown = |t: &str| t.lines().next().is_some_and(|l| !l.is_empty());
+    usize::from(shown(&net.comment)) + net.comments.values().filter(|t| shown(t)).count()
 }
 
 /// Where a point of the ladder view falls.
@@ -609,5 +639,23 @@ mod tests {
         assert_eq!(boxed(0, &tmrb), theme::INK);
         let wrong = [o("Y0001.0"), o("DT0004"), o("R0300.0")];
         assert_eq!(boxed(0, &wrong), WRONG_TYPE, "TMRB takes a T address first");
+    }
+
+    #[test]
+    fn a_network_shows_its_comment_and_a_line_per_language_in_the_csv_order() {
+        let mut n = Network::new(ladder_engine::model::NetworkId(1), 9);
+        n.comment = "free text\nsecond line".into();
+        n.comments.insert("en".into(), "Spindle start".into());
+        n.comments.insert("zh".into(), "主轴启动".into());
+        n.comments.insert("ja".into(), String::new());
+        let lines = comment_lines(&n);
+        assert_eq!(lines, ["free text", "[zh] 主轴启动", "[en] Spindle start"]);
+        assert_eq!(comment_line_count(&n), lines.len());
+        let m = Metrics::at(100);
+        assert_eq!(
+            m.network_height(&n, true) - m.network_height(&n, false),
+            3.0 * m.header,
+            "room for each line"
+        );
     }
 }

@@ -77,15 +77,17 @@ pub(super) fn network_ui(
         theme::TITLE,
     );
     let mut y = origin.y + m.header;
-    if comments && !net.comment.is_empty() {
-        painter.text(
-            pos2(origin.x + 4.0, y),
-            Align2::LEFT_TOP,
-            net.comment.lines().next().unwrap_or(""),
-            font.clone(),
-            theme::COMMENT,
-        );
-        y += m.header;
+    if comments {
+        for line in super::comment_lines(net) {
+            painter.text(
+                pos2(origin.x + 4.0, y),
+                Align2::LEFT_TOP,
+                line,
+                font.clone(),
+                theme::COMMENT,
+            );
+            y += m.header;
+        }
     }
     let rail_x = origin.x + m.margin;
     let col_x = |c: usize| rail_x + c as f32 * m.cell;

@@ -306,7 +306,14 @@ pub fn tables_ui(
             ui.heading(title.text(lang));
             sheet::sheet_ui(ui, project, state, sheet, lang, &mut events);
         }
-        View::Version => version::version_ui(ui, doc, state, lang, &mut events),
+        // Scrolled: in a small window the password part is below the fold, never out of reach.
+        View::Version => {
+            egui::ScrollArea::vertical()
+                .id_salt("version-page")
+                .show(ui, |ui| {
+                    version::version_ui(ui, doc, state, lang, &mut events)
+                });
+        }
         View::Block(_) | View::RefIndex | View::RefBits | View::RefBytes => {}
     }
     state.seen(view, doc.generation);
