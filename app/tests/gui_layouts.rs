@@ -128,3 +128,34 @@ fn the_version_page_and_the_symbol_table_fit_900_by_600() {
         }
     }
 }
+
+#[test]
+fn a_row_inserted_below_shows_its_address_as_a_suggestion_not_as_typed_text() {
+    let mut h = small(None, Lang::En);
+    h.state_mut().view = ladder_studio::gui::place::View::Symbols(0);
+    h.run();
+    h.get_by_role_and_label(Role::TextInput, "Symbol 1").click();
+    h.run();
+    h.key_press(Key::Escape);
+    h.run();
+    h.get_by_label("Insert row below").click();
+    h.run();
+    let rows = &h.state().doc.as_ref().unwrap().project().symbol_tables[0].rows;
+    assert!(rows[1].name.is_empty(), "a new, blank row 2");
+    let proposed = rows[1].address.to_string();
+    let field = h.get_by_role_and_label(Role::TextInput, "Address 2");
+    assert_eq!(
+        field.value().as_deref(),
+        Some(""),
+        "the address is not written as text"
+    );
+    // Once the row has a name, its address is real data and reads as such.
+    h.get_by_role_and_label(Role::TextInput, "Symbol 2").click();
+    h.run();
+    h.get_by_role_and_label(Role::TextInput, "Symbol 2")
+        .type_text("NEW_SIGNAL");
+    h.key_press(Key::Enter);
+    h.run();
+    let field = h.get_by_role_and_label(Role::TextInput, "Address 2");
+    assert_eq!(field.value().as_deref(), Some(proposed.as_str()));
+}

@@ -9,6 +9,9 @@ use egui_extras::{Column, TableBuilder};
 use ladder_engine::model::Project;
 use ladder_engine::model::sheets::{Col, RowOp, Sheet, cell_text, commit, k_bit, row_op};
 
+/// The ground of a row's error text, so it reads on a selected (blue) row too.
+const ERROR_GROUND: egui::Color32 = egui::Color32::from_rgb(0xff, 0xec, 0xec);
+
 /// What the user did in a frame, carried out once the frame no longer borrows the state.
 pub(super) enum Action {
     /// Text typed into a cell, to commit.
@@ -147,6 +150,18 @@ fn row_op_button(
         .clicked()
 }
 
+/// Whether symbol row `row` has nothing but its address (a row just inserted).
+fn blank_symbol(project: &Project, sheet: Sheet, row: usize) -> bool {
+    let Sheet::Symbols(t) = sheet else {
+        return false;
+    };
+    project
+        .symbol_tables
+        .get(t)
+        .and_then(|t| t.rows.get(row))
+        .is_some_and(|s| s.name.is_empty() && s.comments.values().all(String::is_empty))
+}
+
 /// One editable cell: shows the typed text while there is some, commits it when the field
 /// loses focus (Enter included), drops it on Escape. Returns the field's rectangle when it
 /// has just taken the keyboard, for the grid to bring it into view sideways.
@@ -169,11 +184,21 @@ fn cell_ui(
     let key = (sheet, row, col);
     let pending = state.pending.get(&key);
     let refused = pending.is_some_and(|p| p.error.is_some());
+    // A row just inserted holds only the next free address: shown as a suggestion (grey, in
+    // the hint) until the row gets a name or a comment or the address is typed, so it never
+    // reads as data someone entered.
+    let suggested =
+        pending.is_none() && col == sheet.key_col() && blank_symbol(project, sheet, row);
     let mut text = match pending {
         Some(p) => p.text.clone(),
+        None if suggested => String::new(),
         None => cell_text(project, sheet, row, col),
     };
+    let shown = cell_text(project, sheet, row, col);
     let mut edit = egui::TextEdit::singleline(&mut text).desired_width(f32::INFINITY);
+    if suggested {
+        edit = edit.hint_text(shown);
+    }
     if refused {
         edit = edit.text_color(ERROR_RED);
     }
@@ -331,7 +356,11 @@ fn grid_ui(
                 row.col(|ui| {
                     if let Some(e) = state.row_error(sheet, i) {
                         let e = table_error(e, profile, lang);
-                        ui.colored_label(ERROR_RED, &e).on_hover_text(e);
+                        // On its own pale ground: red on the selection's blue is unreadable.
+                        let text = egui::RichText::new(&e)
+                            .color(ERROR_RED)
+                            .background_color(ERROR_GROUND);
+                        ui.add(egui::Label::new(text).truncate()).on_hover_text(e);
                     }
                 });
             });
