@@ -6,6 +6,8 @@ use egui::Color32;
 
 /// Text of a refusal or an error (the output window, prompts, dialogs, tables).
 pub const ERROR: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
+/// The ground of error text on a table row, so it reads on a selected (blue) row too.
+pub const ERROR_GROUND: Color32 = Color32::from_rgb(0xff, 0xec, 0xec);
 /// Text of an accepted value (a table's check mark).
 pub const OK: Color32 = Color32::from_rgb(0x10, 0x80, 0x10);
 /// An operand that can be used but will not compile yet (an undefined symbol).

@@ -9,9 +9,6 @@ use egui_extras::{Column, TableBuilder};
 use ladder_engine::model::Project;
 use ladder_engine::model::sheets::{Col, RowOp, Sheet, cell_text, commit, k_bit, row_op};
 
-/// The ground of a row's error text, so it reads on a selected (blue) row too.
-const ERROR_GROUND: egui::Color32 = egui::Color32::from_rgb(0xff, 0xec, 0xec);
-
 /// What the user did in a frame, carried out once the frame no longer borrows the state.
 pub(super) enum Action {
     /// Text typed into a cell, to commit.
@@ -359,7 +356,7 @@ fn grid_ui(
                         // On its own pale ground: red on the selection's blue is unreadable.
                         let text = egui::RichText::new(&e)
                             .color(ERROR_RED)
-                            .background_color(ERROR_GROUND);
+                            .background_color(super::super::theme::ERROR_GROUND);
                         ui.add(egui::Label::new(text).truncate()).on_hover_text(e);
                     }
                 });
