@@ -560,3 +560,27 @@ fn the_editor_and_check_agree_on_symbol_areas() {
         assert_eq!(refused_by_editor, ["L1", "P2"].contains(&text));
     }
 }
+
+#[test]
+fn a_comment_too_long_is_reported_at_its_own_languages_column() {
+    use ladder_engine::compiler::Origin;
+    let mut p = symbols(&[("R0.0", "A")]);
+    p.symbol_tables[0].rows[0]
+        .comments
+        .insert("en".into(), "x".repeat(200));
+    p.symbol_tables[0].rows[0]
+        .comments
+        .insert("zh".into(), "字".repeat(43));
+    let mut cols: Vec<(bool, u32)> = compile(&p)
+        .diagnostics
+        .iter()
+        .filter(|d| d.code == Code::W007CommentLength)
+        .filter_map(|d| match d.location.origin {
+            Origin::Cell { col, .. } => Some((d.message.contains("`en`"), col)),
+            _ => None,
+        })
+        .collect();
+    cols.sort();
+    // Address, symbol, then the zh and the en comment columns (0-based 2 and 3).
+    assert_eq!(cols, [(false, 2), (true, 3)]);
+}

@@ -25,10 +25,23 @@ const PERMISSIONS: usize = usize::MAX - 2;
 const MCODES: usize = usize::MAX - 1;
 const VERSION: usize = usize::MAX;
 
-/// Reports every comment of a row longer than the CNC keeps (W007).
+/// Reports every comment of a row longer than the CNC keeps (W007), each at its language's
+/// column: the tables show one comment column per language (`comments::LANGUAGES`, in that
+/// order) from `origin`'s column on; another language counts after them.
 fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
     for (lang, text) in comments {
         if let Err(e) = check_comment(text) {
+            let shift = crate::comments::LANGUAGES
+                .iter()
+                .position(|l| l == lang)
+                .unwrap_or(crate::comments::LANGUAGES.len()) as u32;
+            let origin = match origin {
+                Origin::Cell { row, col } => Origin::Cell {
+                    row,
+                    col: col + shift,
+                },
+                other => other,
+            };
             sink.report(
                 origin,
                 Code::W007CommentLength,
