@@ -43,6 +43,10 @@ fn main() {
         .with_size(egui::vec2(1280.0, 800.0))
         .build_eframe(move |cc| LadderApp::from_creation(cc, Some(path)));
     h.run();
+    // The editor opens on level 1; the stress program is in level 2.
+    h.state_mut()
+        .ask(Command::ShowView(ladder_studio::gui::place::View::Block(1)));
+    h.run();
     let networks = h
         .state()
         .doc
@@ -50,6 +54,17 @@ fn main() {
         .map_or(0, |d| d.project().ladder.blocks[1].networks.len());
     let offline = frames(&mut h, networks);
     print("offline", networks, &offline);
+    // Element comments and both address and symbol: the most text a frame draws.
+    h.state_mut().settings.show_element_comments = true;
+    h.state_mut().settings.display = ladder_studio::gui::settings::DisplayMode::Both;
+    let labelled = frames(&mut h, networks);
+    print(
+        "offline, address+symbol and element comments",
+        networks,
+        &labelled,
+    );
+    h.state_mut().settings.show_element_comments = false;
+    h.state_mut().settings.display = ladder_studio::gui::settings::DisplayMode::Address;
     h.state_mut().ask(Command::Run);
     h.step();
     std::thread::sleep(std::time::Duration::from_millis(200));
