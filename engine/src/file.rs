@@ -265,11 +265,15 @@ pub enum Interrupt {
     MidWrite,
     /// Stop after the temporary file is complete, before the backup and the rename.
     BeforeRename,
+    /// Stop halfway through writing the new backup.
+    MidBackup,
 }
 
 /// Saves atomically: writes a temporary file in the same folder, flushes it to disk, keeps the
-/// previous file as `NAME.ldp.bak`, then renames the new one over the old. A crash at any
-/// point leaves the old file or the new one, never a mix.
+/// previous file as `NAME.ldp.bak` (itself written to a temporary file and renamed, so a crash
+/// never leaves a truncated backup in place of the last good one), then renames the new one
+/// over the old. A crash at any point leaves the old file or the new one, never a mix.
+/// Temporary files that a killed save left beside the project are removed.
 pub fn save(project: &Project, path: &Path) -> Result<(), FileError> {
     save_interruptible(project, path, Interrupt::Never)
 }
@@ -295,6 +299,8 @@ pub fn save_interruptible(
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "project.ldp".into());
     let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let bak_tmp = dir.join(format!(".{name}.bak.{}.tmp", std::process::id()));
+    remove_stale_temporaries(dir, &name);
     let result = (|| {
         let mut f = fs::File::create(&tmp)?;
         if interrupt == Interrupt::MidWrite {
@@ -307,15 +313,65 @@ pub fn save_interruptible(
             return Err(std::io::Error::other("interrupted"));
         }
         if path.exists() {
-            fs::copy(path, dir.join(format!("{name}.bak")))?;
+            let old = fs::read(path)?;
+            let mut b = fs::File::create(&bak_tmp)?;
+            if interrupt == Interrupt::MidBackup {
+                b.write_all(&old[..old.len() / 2])?;
+                return Err(std::io::Error::other("interrupted"));
+            }
+            b.write_all(&old)?;
+            b.sync_all()?;
+            fs::rename(&bak_tmp, dir.join(format!("{name}.bak")))?;
         }
         fs::rename(&tmp, path)
     })();
-    // A real crash leaves the temporary file behind; the simulated one does too.
+    // A real crash leaves the temporary files behind; the simulated one does too.
     if result.is_err() && interrupt == Interrupt::Never {
         let _ = fs::remove_file(&tmp);
+        let _ = fs::remove_file(&bak_tmp);
     }
     result.map_err(io)
+}
+
+/// Removes the temporary files of `name` (`.NAME.<pid>.tmp`, `.NAME.bak.<pid>.tmp`) that no
+/// running save owns: their process is gone (Linux), or they are over an hour old (where the
+/// process cannot be asked). Another save of the same file that is running keeps its own.
+fn remove_stale_temporaries(dir: &Path, name: &str) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    let own = std::process::id();
+    let proc_fs = Path::new("/proc/self").exists();
+    for entry in entries.flatten() {
+        let file = entry.file_name();
+        let Some(file) = file.to_str() else { continue };
+        let Some(rest) = file.strip_prefix('.').and_then(|f| f.strip_prefix(name)) else {
+            continue;
+        };
+        let rest = rest.strip_prefix(".bak").unwrap_or(rest);
+        let Some(pid) = rest
+            .strip_prefix('.')
+            .and_then(|r| r.strip_suffix(".tmp"))
+            .and_then(|p| p.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        let stale = if pid == own {
+            false
+        } else if proc_fs {
+            !Path::new("/proc").join(pid.to_string()).exists()
+        } else {
+            entry
+                .metadata()
+                .and_then(|m| m.modified())
+                .ok()
+                .and_then(|t| t.elapsed().ok())
+                .is_some_and(|age| age.as_secs() > 3600)
+        };
+        if stale {
+            let _ = fs::remove_file(entry.path());
+        }
+    }
 }
 
 #[cfg(test)]

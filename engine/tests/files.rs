@@ -205,6 +205,47 @@ fn an_interrupted_save_leaves_the_old_or_the_new_file() {
 }
 
 #[test]
+fn a_save_killed_while_writing_the_backup_keeps_the_last_good_backup() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("p.ldp");
+    let bak = dir.path().join("p.ldp.bak");
+    let first = full_project();
+    let mut second = first.clone();
+    second.version.set("second", "V2.0", "");
+    let mut third = first.clone();
+    third.version.set("third", "V3.0", "");
+    file::save(&first, &path).unwrap();
+    file::save(&second, &path).unwrap();
+    assert_eq!(file::load(&bak).unwrap(), first);
+    assert!(file::save_interruptible(&third, &path, Interrupt::MidBackup).is_err());
+    assert_eq!(file::load(&path).unwrap(), second, "the file is intact");
+    assert_eq!(
+        file::load(&bak).unwrap(),
+        first,
+        "the backup is whole: the last good one"
+    );
+    // The next save removes what the killed one left, and backs up the file it replaces.
+    let leftovers = |d: &std::path::Path| {
+        std::fs::read_dir(d)
+            .unwrap()
+            .flatten()
+            .filter(|e| e.file_name().to_string_lossy().ends_with(".tmp"))
+            .count()
+    };
+    assert!(leftovers(dir.path()) > 0, "a kill leaves temporary files");
+    // One from a process that is long gone, as a crash of another session leaves.
+    std::fs::write(dir.path().join(".p.ldp.4000000000.tmp"), "half").unwrap();
+    std::fs::write(dir.path().join(".other.ldp.4000000000.tmp"), "not ours").unwrap();
+    file::save(&third, &path).unwrap();
+    assert_eq!(file::load(&bak).unwrap(), second);
+    assert_eq!(
+        leftovers(dir.path()),
+        1,
+        "only another file's temporary stays"
+    );
+}
+
+#[test]
 fn version_1_files_are_migrated() {
     let path = concat!(
         env!("CARGO_MANIFEST_DIR"),
