@@ -4,39 +4,21 @@
 mod common;
 
 use common::*;
+use egui::Key;
 use egui::accesskit::Role;
-use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 
 const SMALL: egui::Vec2 = egui::vec2(900.0, 600.0);
 
 fn small(project: Option<std::path::PathBuf>, lang: Lang) -> Harness<'static, LadderApp> {
-    let mut h = Harness::builder()
-        .with_size(SMALL)
-        .with_step_dt(1.0 / 60.0)
-        .with_max_steps(16)
-        .build_eframe(move |cc| {
-            let mut app = LadderApp::from_creation(cc, project);
-            app.settings.lang = lang;
-            app
-        });
+    let mut h = harness_sized(project, lang, SMALL);
     h.run();
     h
 }
 
 fn inside(r: egui::Rect) -> bool {
     r.left() >= 0.0 && r.top() >= 0.0 && r.right() <= SMALL.x && r.bottom() <= SMALL.y
-}
-
-fn fill(h: &mut Harness<'static, LadderApp>, label: &str, text: &str) {
-    h.get_by_role_and_label(Role::TextInput, label).click();
-    h.run();
-    h.key_press_modifiers(Modifiers::COMMAND, Key::A);
-    h.run();
-    h.get_by_role_and_label(Role::TextInput, label)
-        .type_text(text);
-    h.run();
 }
 
 #[test]

@@ -10,9 +10,18 @@ pub use ladder_studio::gui::tree::View;
 pub use std::path::PathBuf;
 
 pub fn harness(path: Option<PathBuf>, lang: Lang) -> Harness<'static, LadderApp> {
+    harness_sized(path, lang, egui::vec2(1280.0, 800.0))
+}
+
+/// The editor in a window of `size`, as [`harness`] builds it.
+pub fn harness_sized(
+    path: Option<PathBuf>,
+    lang: Lang,
+    size: egui::Vec2,
+) -> Harness<'static, LadderApp> {
     // Frames 1/60 s apart, as on a screen: two clicks a few frames apart are a double-click.
     Harness::builder()
-        .with_size(egui::vec2(1280.0, 800.0))
+        .with_size(size)
         .with_step_dt(1.0 / 60.0)
         // A tooltip fades in over a few frames wherever the mouse rests on an element.
         .with_max_steps(16)
@@ -205,5 +214,18 @@ pub fn double_click(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
         });
         h.step();
     }
+    h.run();
+}
+
+/// Replaces the text of the field labelled `label`.
+pub fn fill(h: &mut Harness<'static, LadderApp>, label: &str, text: &str) {
+    use egui_kittest::kittest::Queryable;
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, label)
+        .click();
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, label)
+        .type_text(text);
     h.run();
 }

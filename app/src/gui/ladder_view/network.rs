@@ -118,6 +118,13 @@ pub(super) fn network_ui(
     let stroke = |on: bool| if on { power } else { wire };
     let forced =
         |o: &Operand| live.is_some_and(|l| address_of(project, o).is_some_and(|a| (l.forced)(a)));
+    let label = BitLabel {
+        project,
+        mode,
+        font: &font,
+        size: m.font,
+        comment: *element_comments,
+    };
     for (r, row) in net.rows.iter().enumerate() {
         let mid = row_tops[r] + m.row * 0.5;
         for (c, cell) in row.cells.iter().enumerate() {
@@ -168,13 +175,6 @@ pub(super) fn network_ui(
                             wire,
                         );
                     }
-                    let label = BitLabel {
-                        project,
-                        mode,
-                        font: &font,
-                        size: m.font,
-                        comment: *element_comments,
-                    };
                     label.draw(
                         painter,
                         drawn,
@@ -206,13 +206,6 @@ pub(super) fn network_ui(
                         );
                     }
                     painter.line_segment([pos2(cx + rad, mid), pos2(right_rail, mid)], wire);
-                    let label = BitLabel {
-                        project,
-                        mode,
-                        font: &font,
-                        size: m.font,
-                        comment: *element_comments,
-                    };
                     // The coil's label may use the whole output column, never past the rail.
                     label.draw(
                         painter,
