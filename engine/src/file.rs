@@ -13,8 +13,10 @@ pub const MAGIC: &str = "LADDER-STUDIO-PROJECT";
 /// The schema version this build writes.
 ///
 /// History: v1 had one symbol list and no other tables; v2 has the symbol tables, data-setting
-/// tables, message, diagnosis, permission and M-code tables and the version information.
-pub const SCHEMA_VERSION: u32 = 2;
+/// tables, message, diagnosis, permission and M-code tables and the version information; v3
+/// keeps an imported network's instruction list as written ([`crate::model::Network::il`]) and
+/// its checksum covers the header too.
+pub const SCHEMA_VERSION: u32 = 3;
 
 /// Why a project file could not be read or written.
 #[derive(Debug, Error)]
@@ -32,7 +34,43 @@ pub enum FileError {
         "not a Ladder Studio project: the first line must start with `{MAGIC} v<version> crc32=<8 hex digits>`"
     )]
     Foreign,
-    /// The header line is malformed.
+    /// A project file whose first word was changed.
+    #[error(
+        "line 1: the project file is damaged: its header `{0}` should start with `{MAGIC}`; restore it from the .bak file beside it, or open it read-only to recover what is left"
+    )]
+    Damaged(String),
+    /// A byte-order mark before the header.
+    #[error(
+        "the project file starts with a byte-order mark (EF BB BF), which Ladder Studio never writes: a text editor added it; save the file as UTF-8 without BOM, or restore it from the .bak file"
+    )]
+    ByteOrderMark,
+    /// Windows line ends.
+    #[error(
+        "the project file has Windows line ends (CR LF), which Ladder Studio never writes: a text tool or git converted it; {}",
+        if *.intact {
+            "its content is intact, convert it back (dos2unix FILE, or git config core.autocrlf false and check it out again)"
+        } else {
+            "and it was changed besides; restore it from the .bak file, or open it read-only to recover what is left"
+        }
+    )]
+    LineEnds {
+        /// Whether the file reads correctly with LF line ends.
+        intact: bool,
+    },
+    /// The last byte, a newline, is missing.
+    #[error(
+        "the project file ends without its final newline: {}",
+        if *.intact {
+            "an editor removed it and nothing else changed; add a newline at the end"
+        } else {
+            "it was cut short; restore it from the .bak file, or open it read-only to recover what is left"
+        }
+    )]
+    FinalNewline {
+        /// Whether the file reads correctly with the newline added.
+        intact: bool,
+    },
+    /// The header is malformed.
     #[error("line 1: malformed header `{0}`: expected `{MAGIC} v<version> crc32=<8 hex digits>`")]
     Header(String),
     /// A version this build does not know.
@@ -43,14 +81,28 @@ pub enum FileError {
         /// The version in the file.
         found: u32,
     },
+    /// The header names an older schema the body does not have.
+    #[error(
+        "line 1 says schema version {version}, but the body is not a version-{version} project (line {line}, column {column}: {message}): the header was changed; restore the file from its .bak, or open it read-only"
+    )]
+    Schema {
+        /// The version the header names.
+        version: u32,
+        /// Line in the file.
+        line: usize,
+        /// Column.
+        column: usize,
+        /// What the parser said.
+        message: String,
+    },
     /// The checksum does not match: the file was changed or cut short.
     #[error(
-        "checksum mismatch: the header says crc32={expected:08x} but the body's is {actual:08x}; the file was damaged or edited by hand (open it read-only to recover what is left)"
+        "checksum mismatch: the header says crc32={expected:08x} but the file's is {actual:08x}; the file was damaged or edited by hand (open it read-only to recover what is left)"
     )]
     Checksum {
         /// From the header.
         expected: u32,
-        /// Of the body.
+        /// Of the file.
         actual: u32,
     },
     /// The body is not a valid project.
@@ -77,8 +129,8 @@ fn checked(p: Project) -> Result<Project, FileError> {
     Ok(p)
 }
 
-/// The "ladder checksum" of the version-information dialog (§3.4.7): the CRC-32 of the saved
-/// body, as the header of the saved file records it.
+/// The "ladder checksum" of the version-information dialog (§3.4.7): the CRC-32 the header
+/// of the saved file records.
 pub fn ladder_checksum(saved: &[u8]) -> Option<u32> {
     let header = saved.split(|b| *b == b'\n').next()?;
     let header = std::str::from_utf8(header).ok()?;
@@ -86,9 +138,38 @@ pub fn ladder_checksum(saved: &[u8]) -> Option<u32> {
     u32::from_str_radix(hex, 16).ok()
 }
 
-/// Whether `text` looks like a project file rather than an instruction list.
+const BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// Whether `text` is (or was, before some damage) a project file rather than an instruction
+/// list: it starts with the header word give or take a few changed bytes, or a byte-order
+/// mark, or its first line names a `crc32=`. No instruction list begins like that, so a
+/// damaged project is reported as damaged, never read as IL.
 pub fn is_project_text(text: &[u8]) -> bool {
-    text.starts_with(MAGIC.as_bytes())
+    let text = text.strip_prefix(BOM).unwrap_or(text);
+    let magic = MAGIC.as_bytes();
+    let first_line = text.split(|b| *b == b'\n').next().unwrap_or(&[]);
+    let changed = text
+        .iter()
+        .take(magic.len())
+        .zip(magic)
+        .filter(|(a, b)| a != b)
+        .count()
+        + magic.len().saturating_sub(text.len());
+    changed <= 3 || first_line.windows(6).any(|w| w == b"crc32=")
+}
+
+/// The checksum the header records: of the body alone up to v2; from v3 of every byte of the
+/// file except the eight hex digits themselves, so that no byte deciding how the file is read
+/// (the version included) can change unnoticed.
+fn checksum(version: u32, body: &str) -> u32 {
+    if version < 3 {
+        return crc32fast::hash(body.as_bytes());
+    }
+    let mut h = crc32fast::Hasher::new();
+    h.update(format!("{MAGIC} v{version} crc32=\n").as_bytes());
+    h.update(body.as_bytes());
+    h.update(b"\n");
+    h.finalize()
 }
 
 /// Serializes a project to the file format.
@@ -99,20 +180,34 @@ pub fn to_string(project: &Project) -> String {
         .depth_limit(7);
     let body = ron::ser::to_string_pretty(project, config)
         .expect("a project always serializes: it holds only plain data");
-    let crc = crc32fast::hash(body.as_bytes());
+    let crc = checksum(SCHEMA_VERSION, &body);
     format!("{MAGIC} v{SCHEMA_VERSION} crc32={crc:08x}\n{body}\n")
 }
 
 /// Parses the file format, verifying header and checksum.
 pub fn from_bytes(bytes: &[u8]) -> Result<Project, FileError> {
-    if !is_project_text(bytes) {
-        return Err(FileError::Foreign);
+    if bytes.starts_with(BOM) && is_project_text(bytes) {
+        return Err(FileError::ByteOrderMark);
+    }
+    if !bytes.starts_with(MAGIC.as_bytes()) {
+        if !is_project_text(bytes) {
+            return Err(FileError::Foreign);
+        }
+        let first = bytes.split(|b| *b == b'\n').next().unwrap_or(&[]);
+        return Err(FileError::Damaged(
+            String::from_utf8_lossy(first).chars().take(80).collect(),
+        ));
     }
     let text = std::str::from_utf8(bytes).map_err(|e| FileError::Encoding(e.valid_up_to()))?;
     let (header, body) = text
         .split_once('\n')
         .ok_or_else(|| FileError::Header(text.chars().take(80).collect()))?;
-    let header = header.trim_end_matches('\r');
+    if header.ends_with('\r') {
+        let lf = text.replace("\r\n", "\n");
+        return Err(FileError::LineEnds {
+            intact: from_bytes(lf.as_bytes()).is_ok(),
+        });
+    }
     let mut parts = header.split(' ');
     let (Some(MAGIC), Some(version), Some(crc), None) =
         (parts.next(), parts.next(), parts.next(), parts.next())
@@ -137,13 +232,15 @@ pub fn from_bytes(bytes: &[u8]) -> Result<Project, FileError> {
         return Err(FileError::Version { found: version });
     }
     let Some(body) = body.strip_suffix('\n') else {
-        return Err(FileError::Checksum {
-            expected,
-            actual: crc32fast::hash(body.as_bytes()),
+        return Err(FileError::FinalNewline {
+            intact: checksum(version, body) == expected,
         });
     };
-    let actual = crc32fast::hash(body.as_bytes());
+    let actual = checksum(version, body);
     if actual != expected {
+        if body.contains("\r\n") && checksum(version, &body.replace("\r\n", "\n")) == expected {
+            return Err(FileError::LineEnds { intact: true });
+        }
         return Err(FileError::Checksum { expected, actual });
     }
     parse_versioned(body, version)
@@ -158,12 +255,51 @@ fn body_error(e: ron::error::SpannedError) -> FileError {
     }
 }
 
-/// Parses a body of a given schema version, migrating older ones.
+/// Parses a body of a given schema version, migrating older ones. A body that does not read
+/// as the older version it claims is refused rather than half read: a changed version digit
+/// must not drop the tables.
 fn parse_versioned(body: &str, version: u32) -> Result<Project, FileError> {
+    // A field the version does not have, or lacks one it must have: another schema's body.
+    let as_schema = |e: ron::error::SpannedError| match (&e.code, body_error(e.clone())) {
+        (
+            ron::Error::NoSuchStructField { .. } | ron::Error::MissingStructField { .. },
+            FileError::Body {
+                line,
+                column,
+                message,
+            },
+        ) if version < SCHEMA_VERSION => FileError::Schema {
+            version,
+            line,
+            column,
+            message,
+        },
+        (_, other) => other,
+    };
     let p = match version {
         1 => ron::from_str::<v1::Project>(body)
             .map(v1::migrate)
-            .map_err(body_error)?,
+            .map_err(as_schema)?,
+        2 => {
+            let p = ron::from_str::<Project>(body).map_err(as_schema)?;
+            // v2 knew no kept instruction lists.
+            if p.ladder
+                .blocks
+                .iter()
+                .flat_map(|b| &b.networks)
+                .any(|n| !n.il.is_empty())
+            {
+                return Err(FileError::Schema {
+                    version,
+                    line: 1,
+                    column: 1,
+                    message:
+                        "a network keeps an instruction list (`il`), which version 3 introduced"
+                            .into(),
+                });
+            }
+            p
+        }
         _ => ron::from_str::<Project>(body).map_err(body_error)?,
     };
     checked(p)
@@ -175,22 +311,29 @@ pub fn parse_body(body: &str) -> Result<Project, FileError> {
 }
 
 /// Opens a damaged file as far as it can be read, for a read-only look: the checksum is not
-/// verified, and an unknown version is read as the current one. The caller must not save
-/// over the original with it.
+/// verified, and the body is read as the version its header names, else as any version that
+/// reads it. The caller must not save over the original with it.
 pub fn recover(bytes: &[u8]) -> Result<Project, FileError> {
     if !is_project_text(bytes) {
         return Err(FileError::Foreign);
     }
-    let text = String::from_utf8_lossy(bytes);
+    let bytes = bytes.strip_prefix(BOM).unwrap_or(bytes);
+    let text = String::from_utf8_lossy(bytes).replace("\r\n", "\n");
     let (header, body) = text.split_once('\n').unwrap_or((&text, ""));
     let version = header
         .split(' ')
         .nth(1)
         .and_then(|v| v.strip_prefix('v'))
         .and_then(|v| v.parse().ok())
-        .unwrap_or(SCHEMA_VERSION);
+        .unwrap_or(SCHEMA_VERSION)
+        .clamp(1, SCHEMA_VERSION);
     let body = body.strip_suffix('\n').unwrap_or(body);
-    parse_versioned(body, version.min(SCHEMA_VERSION))
+    parse_versioned(body, version).or_else(|e| {
+        (1..=SCHEMA_VERSION)
+            .rev()
+            .find_map(|v| parse_versioned(body, v).ok())
+            .ok_or(e)
+    })
 }
 
 /// Schema version 1 and its migration.
@@ -201,6 +344,7 @@ mod v1 {
     use serde::Deserialize;
 
     #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
     pub struct Symbol {
         name: String,
         address: Address,
@@ -209,6 +353,7 @@ mod v1 {
     }
 
     #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
     pub struct Project {
         profile: ProfileId,
         level2_division: u32,
@@ -289,6 +434,12 @@ pub fn save_interruptible(
         path: path.to_path_buf(),
         source,
     };
+    // Every file this program writes opens again: a structurally invalid project is refused
+    // here, before anything on disk changes.
+    project
+        .ladder
+        .check_structure()
+        .map_err(FileError::Structure)?;
     let text = to_string(project);
     let dir = path
         .parent()
@@ -391,7 +542,7 @@ mod tests {
             Err(FileError::Checksum { .. })
         ));
         assert!(matches!(from_bytes(b"LD X1.0\n"), Err(FileError::Foreign)));
-        let future = text.replacen(" v2 ", " v9 ", 1);
+        let future = text.replacen(" v3 ", " v9 ", 1);
         assert!(matches!(
             from_bytes(future.as_bytes()),
             Err(FileError::Version { found: 9 })
@@ -399,7 +550,12 @@ mod tests {
         let cut = &text[..text.len() / 2];
         assert!(matches!(
             from_bytes(cut.as_bytes()),
-            Err(FileError::Checksum { .. })
+            Err(FileError::FinalNewline { intact: false })
+        ));
+        let cut = &text[..text.len() - 1];
+        assert!(matches!(
+            from_bytes(cut.as_bytes()),
+            Err(FileError::FinalNewline { intact: true })
         ));
     }
 

@@ -450,12 +450,21 @@ pub fn import(text: &str) -> Imported {
             network.title = pn.title.clone();
             network.comment = pn.comment.clone();
             network.rows = layout(&rungs, width);
+            network.il = crate::compiler::written::lines_to_keep(&pn.instrs);
             block.networks.push(network);
         }
         ladder.blocks.push(block);
     }
     // Subprograms in P order, as the ladder keeps them.
     ladder.blocks[2..].sort_by_key(|b| b.kind.sub_number());
+    // A project the editor could not open is never made: a subprogram defined twice (L038
+    // says where) has no place in the ladder.
+    if ladder.check_structure().is_err() {
+        return Imported {
+            project: None,
+            compiled,
+        };
+    }
     Imported {
         project: Some(Project { ladder, ..base }),
         compiled,

@@ -125,15 +125,15 @@ fn truncated_foreign_and_future_files_say_which() {
     let text = file::to_string(&full_project());
     assert!(matches!(
         file::from_bytes(&text.as_bytes()[..text.len() - 10]),
-        Err(FileError::Checksum { .. })
+        Err(FileError::FinalNewline { intact: false })
     ));
     assert!(matches!(
         file::from_bytes(b"LD X1.0\nOUT Y1.0\n"),
         Err(FileError::Foreign)
     ));
-    let future = text.replacen(" v2 ", " v3 ", 1);
+    let future = text.replacen(" v3 ", " v4 ", 1);
     let e = file::from_bytes(future.as_bytes()).unwrap_err();
-    assert!(e.to_string().contains("schema version 3 is newer"), "{e}");
+    assert!(e.to_string().contains("schema version 4 is newer"), "{e}");
     // A body that parses badly reports the line and column in the file (header = line 1).
     let body = "(\n profile: Gsk988ta,\n level2_division: x,\n)";
     let bad = format!(
@@ -259,7 +259,7 @@ fn version_1_files_are_migrated() {
         "Motor start/stop (self-holding)"
     );
     assert_eq!(p.symbol_tables.len(), 1);
-    assert!(file::to_string(&p).starts_with("LADDER-STUDIO-PROJECT v2 "));
+    assert!(file::to_string(&p).starts_with("LADDER-STUDIO-PROJECT v3 "));
     let il = il::print(&ladder_engine::compiler::compile(&p).program);
     assert!(il.contains("ANI  X0002.2"));
 }
@@ -330,12 +330,13 @@ fn table_checks_report_bad_symbols_and_messages() {
 }
 
 #[test]
-fn the_ladder_checksum_is_the_crc_of_the_saved_body() {
+fn the_ladder_checksum_is_the_crc_of_the_saved_file_without_its_digits() {
     let text = file::to_string(&full_project());
-    let body = text.split_once('\n').unwrap().1.strip_suffix('\n').unwrap();
+    let body = text.split_once('\n').unwrap().1;
+    let covered = format!("LADDER-STUDIO-PROJECT v3 crc32=\n{body}");
     assert_eq!(
         file::ladder_checksum(text.as_bytes()),
-        Some(crc32fast::hash(body.as_bytes()))
+        Some(crc32fast::hash(covered.as_bytes()))
     );
     assert_eq!(file::ladder_checksum(b"LD X1.0\n"), None);
 }

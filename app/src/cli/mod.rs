@@ -8,9 +8,12 @@ pub use say::Say;
 
 use crate::source::Source;
 use clap::{Parser, Subcommand};
+use ladder_engine::cnc::SimCnc;
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
+use ladder_engine::model::Project;
 use ladder_engine::sim::{self, Script};
+use ladder_engine::vm::Vm;
 use ladder_engine::vm::cnc::Cnc;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
@@ -401,13 +404,20 @@ fn machine(
     };
     let project = match source {
         Source::Project(p) => p,
-        Source::Il { imported, .. } => match imported.project {
-            Some(p) => p,
-            None => {
+        // An instruction list runs exactly as written, drawable or not: its steps decide
+        // where each level-2 slice ends, and its diagnostics name its lines.
+        Source::Il { imported, .. } => {
+            if imported.compiled.errors() > 0 {
                 cannot_run(&imported.compiled, err);
                 return Ok(Err(1));
             }
-        },
+            let base = Project::default();
+            let mut plc = Vm::from_program(&imported.compiled.program, base.profile())
+                .map_err(|e| anyhow::anyhow!("{e}"))?;
+            plc.set_division(base.level2_division);
+            let cnc = cnc.then(|| SimCnc::new(base.profile, &base.messages));
+            return Ok(Ok(Machine::from_parts(plc, cnc)));
+        }
     };
     let compiled = compile(&project);
     if compiled.errors() > 0 {

@@ -77,6 +77,22 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
             FileError::Foreign => format!(
                 "不是 Ladder Studio 工程文件：第一行必须以 `{MAGIC} v<版本> crc32=<8 位十六进制数>` 开头"
             ),
+            FileError::Damaged(h) => format!(
+                "第 1 行：工程文件已损坏：文件头 `{h}` 应以 `{MAGIC}` 开头；请用旁边的 .bak 文件恢复，或只读打开以恢复剩余内容"
+            ),
+            FileError::ByteOrderMark => "工程文件以字节顺序标记（EF BB BF）开头，Ladder Studio 从不写入它：是文本编辑器加上的；请另存为不带 BOM 的 UTF-8，或用 .bak 文件恢复".into(),
+            FileError::LineEnds { intact: true } => "工程文件使用 Windows 换行符（CR LF），Ladder Studio 从不这样写：是文本工具或 git 转换的；内容完好，请转换回来（dos2unix 文件名，或设置 git config core.autocrlf false 后重新检出）".into(),
+            FileError::LineEnds { intact: false } => "工程文件使用 Windows 换行符（CR LF），Ladder Studio 从不这样写，而且内容另有改动；请用 .bak 文件恢复，或只读打开以恢复剩余内容".into(),
+            FileError::FinalNewline { intact: true } => "工程文件缺少结尾的换行符：是编辑器删掉的，其他内容未变；请在文件末尾加一个换行".into(),
+            FileError::FinalNewline { intact: false } => "工程文件缺少结尾的换行符：文件被截短了；请用 .bak 文件恢复，或只读打开以恢复剩余内容".into(),
+            FileError::Schema {
+                version,
+                line,
+                column,
+                message,
+            } => format!(
+                "第 1 行写的是格式版本 {version}，但内容不是版本 {version} 的工程（第 {line} 行第 {column} 列：{message}）：文件头被改动过；请用 .bak 文件恢复，或只读打开"
+            ),
             FileError::Header(h) => format!(
                 "第 1 行：文件头格式错误 `{h}`：应为 `{MAGIC} v<版本> crc32=<8 位十六进制数>`"
             ),
@@ -84,7 +100,7 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
                 "第 1 行：文件格式版本 {found} 比本程序能读的（最高 {SCHEMA_VERSION}）新；请升级 Ladder Studio"
             ),
             FileError::Checksum { expected, actual } => format!(
-                "校验和不符：文件头为 crc32={expected:08x}，内容为 {actual:08x}；文件已损坏或被手工修改（可只读打开，恢复剩余内容）"
+                "校验和不符：文件头为 crc32={expected:08x}，文件为 {actual:08x}；文件已损坏或被手工修改（可只读打开，恢复剩余内容）"
             ),
             FileError::Body {
                 line,
@@ -139,6 +155,18 @@ mod tests {
             },
             FileError::Encoding(7),
             FileError::Structure("row 1 has 10 cells".into()),
+            FileError::Damaged("LADDER-STUDIO-PROJECX v3".into()),
+            FileError::ByteOrderMark,
+            FileError::LineEnds { intact: true },
+            FileError::LineEnds { intact: false },
+            FileError::FinalNewline { intact: true },
+            FileError::FinalNewline { intact: false },
+            FileError::Schema {
+                version: 1,
+                line: 4,
+                column: 2,
+                message: "unexpected field".into(),
+            },
         ] {
             let zh = file_error(&e, Lang::Zh);
             assert!(has_cjk(&zh), "{zh}");

@@ -4,7 +4,7 @@
 //! Phases: [`lower`] reads each network's grid as rung trees (structure checks), [`rung`]
 //! emits their instructions, [`check`] checks operands, labels, calls, stacks and step
 //! limits against the catalogue and the profile. The IL importer runs the other way through
-//! [`decompile`] and [`layout`].
+//! [`decompile`] and [`layout`]; [`written`] keeps an imported network's list as written.
 
 pub mod check;
 pub mod decompile;
@@ -14,6 +14,7 @@ pub mod lower;
 pub mod operands;
 pub mod rung;
 pub mod tables;
+pub mod written;
 #[cfg(test)]
 pub(crate) mod zh_tests;
 
@@ -119,6 +120,10 @@ pub fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
             let rungs = lower::lower_network(net, width, sink);
             let mut instrs = Vec::new();
             rung::emit(&rungs, &mut instrs);
+            // An imported network runs and exports as it was written while it is unchanged.
+            if let Some(kept) = written::as_written(net, &instrs) {
+                instrs = kept;
+            }
             networks.push(ProgramNetwork {
                 title: net.title.clone(),
                 comment: net.comment.clone(),

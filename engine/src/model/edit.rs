@@ -262,7 +262,13 @@ impl Ladder {
                     return Err(EditError::NoSuchPlace("network"));
                 }
                 network.check_width(width).map_err(EditError::WrongWidth)?;
-                b.networks.insert(index, *network);
+                // Ids stay unique whatever the caller built the network from.
+                let mut network = *network;
+                if self.find_network(network.id).is_some() {
+                    network.id = self.new_network_id();
+                }
+                let b = &mut self.blocks[block];
+                b.networks.insert(index, network);
                 Ok(Edit::DeleteNetwork { block, index })
             }
             Edit::DeleteNetwork { block, index } => {

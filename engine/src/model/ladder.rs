@@ -83,10 +83,20 @@ impl Ladder {
             }
             last = Some(n);
         }
+        let mut ids = std::collections::HashMap::new();
         for b in &self.blocks {
             for (i, n) in b.networks.iter().enumerate() {
                 n.check_width(self.width)
                     .map_err(|e| format!("{} network {}: {e}", b.kind, i + 1))?;
+                // The id is what undo, the monitor and the settings know a network by.
+                if let Some(first) = ids.insert(n.id, format!("{} network {}", b.kind, i + 1)) {
+                    return Err(format!(
+                        "{} network {} has the id {} of {first}: give it an id no other network has",
+                        b.kind,
+                        i + 1,
+                        n.id.0
+                    ));
+                }
             }
         }
         Ok(())

@@ -81,6 +81,13 @@ pub struct Network {
     pub comments: BTreeMap<String, String>,
     /// The grid, top to bottom.
     pub rows: Vec<Row>,
+    /// The instruction list this network was imported from, one instruction per line, when it
+    /// differs from the list the drawing compiles to. While the drawing still reads as this
+    /// list, the compiler emits it as written (its steps, its stack instructions), so an
+    /// imported list exports and runs unchanged; once an edit changes what the drawing reads
+    /// as, the drawing is the truth (docs/files.md, "Imported instruction lists").
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub il: Vec<String>,
 }
 
 impl Network {
@@ -112,6 +119,7 @@ impl Network {
             comment: String::new(),
             comments: BTreeMap::new(),
             rows: vec![Row::empty(width)],
+            il: Vec::new(),
         }
     }
 

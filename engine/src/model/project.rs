@@ -10,8 +10,10 @@ use crate::profile::{Profile, ProfileId};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
-/// A whole project: what a `.ldp` file holds.
+/// A whole project: what a `.ldp` file holds. Unknown fields are refused, so that a body of
+/// another schema is never half read (docs/files.md, "Project files (.ldp)").
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct Project {
     /// The target controller.
     pub profile: ProfileId,
