@@ -1,5 +1,5 @@
-//! Networks imported from an instruction list keep the list as written (docs/files.md,
-//! "Imported instruction lists").
+//! Networks imported from an instruction list keep the list as written (docs/plc.md, "What
+//! import keeps").
 //!
 //! Other tools and controllers write the same logic in several ways (`LD a / MPS / OUT b /
 //! MPP / OUT c` or `LD a / OUT b / OUT c`; `LD a / LD b / ANB` or `LD a / AND b`). The editor

@@ -85,7 +85,7 @@ pub struct Network {
     /// differs from the list the drawing compiles to. While the drawing still reads as this
     /// list, the compiler emits it as written (its steps, its stack instructions), so an
     /// imported list exports and runs unchanged; once an edit changes what the drawing reads
-    /// as, the drawing is the truth (docs/files.md, "Imported instruction lists").
+    /// as, the drawing is the truth (docs/plc.md, "What import keeps").
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub il: Vec<String>,
 }
