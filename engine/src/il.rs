@@ -432,28 +432,42 @@ pub fn import(text: &str) -> Imported {
         blocks.push((pb, nets));
     }
     let base = Project::default();
+    let mut ladder = Ladder::new(width.min(MAX_WIDTH));
+    ladder.blocks.clear();
+    if drawable && width <= MAX_WIDTH {
+        let mut next_id = 1;
+        for (b, (pb, nets)) in blocks.into_iter().enumerate() {
+            let label = pb.kind.label();
+            let mut block = Block::new(pb.kind.clone());
+            for (n, (pn, rungs)) in nets.into_iter().enumerate() {
+                let mut network = Network::new(crate::model::NetworkId(next_id), width);
+                next_id += 1;
+                network.title = pn.title.clone();
+                network.comment = pn.comment.clone();
+                network.rows = layout(&rungs, width);
+                network.il = crate::compiler::written::lines_to_keep(&pn.instrs);
+                // The drawing must give the list back, or the import would change it unseen.
+                if !crate::compiler::written::reads_back(&network, width, &pn.instrs) {
+                    sink.at(b, &label, n);
+                    sink.report(
+                        pn.instrs.first().map(|i| i.origin).unwrap_or(Origin::None),
+                        Code::L017NotDrawable,
+                        "the ladder drawn from this network does not read back as its instruction list, so it cannot be imported unchanged: write its branches with MPS/MRD/MPP and its blocks with ORB/ANB",
+                        "由该网络画出的梯形图读回后与其指令表不一致，无法原样导入：请用 MPS/MRD/MPP 写分支、用 ORB/ANB 写逻辑块",
+                    );
+                    drawable = false;
+                }
+                block.networks.push(network);
+            }
+            ladder.blocks.push(block);
+        }
+    }
     let compiled = compile_program(program.clone(), &base, sink);
     if !drawable || width > MAX_WIDTH {
         return Imported {
             project: None,
             compiled,
         };
-    }
-    let mut ladder = Ladder::new(width);
-    ladder.blocks.clear();
-    let mut next_id = 1;
-    for (pb, nets) in blocks {
-        let mut block = Block::new(pb.kind.clone());
-        for (pn, rungs) in nets {
-            let mut network = Network::new(crate::model::NetworkId(next_id), width);
-            next_id += 1;
-            network.title = pn.title.clone();
-            network.comment = pn.comment.clone();
-            network.rows = layout(&rungs, width);
-            network.il = crate::compiler::written::lines_to_keep(&pn.instrs);
-            block.networks.push(network);
-        }
-        ladder.blocks.push(block);
     }
     // Subprograms in P order, as the ladder keeps them.
     ladder.blocks[2..].sort_by_key(|b| b.kind.sub_number());

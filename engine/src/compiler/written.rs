@@ -45,6 +45,19 @@ pub fn lines_to_keep(instrs: &[Instr]) -> Vec<String> {
         .collect()
 }
 
+/// Whether a network drawn from `instrs` compiles back to them: through its kept lines, or,
+/// keeping none, through the drawing's own emission.
+pub fn reads_back(network: &Network, width: usize, instrs: &[Instr]) -> bool {
+    let rungs = super::lower::lower_network(network, width, &mut Sink::default());
+    let mut drawn = Vec::new();
+    emit(&rungs, &mut drawn);
+    if network.il.is_empty() {
+        same_list(&drawn, instrs)
+    } else {
+        as_written(network, &drawn).is_some_and(|kept| same_list(&kept, instrs))
+    }
+}
+
 /// Whether two lists hold the same instructions, wherever they came from.
 fn same_list(a: &[Instr], b: &[Instr]) -> bool {
     a.len() == b.len()
