@@ -57,6 +57,9 @@ struct RawNetwork {
     comment: Vec<String>,
     instrs: Vec<Instr>,
     broken: bool,
+    /// MPS not yet closed by MPP, kept as the lines come so a list without NETWORK lines
+    /// is split in one pass rather than by rescanning the network at every line.
+    open_mps: i32,
 }
 
 impl RawNetwork {
@@ -66,7 +69,17 @@ impl RawNetwork {
             comment: Vec::new(),
             instrs: Vec::new(),
             broken: false,
+            open_mps: 0,
         }
+    }
+
+    fn push(&mut self, instr: Instr) {
+        match instr.op {
+            Op::Mps => self.open_mps += 1,
+            Op::Mpp => self.open_mps -= 1,
+            _ => {}
+        }
+        self.instrs.push(instr);
     }
 }
 
@@ -196,6 +209,7 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
             _ => {
                 let Some(op) = Op::from_name(&upper) else {
                     let (hint, hint_zh) = suggestion(&upper);
+                    let word = shown(word);
                     sink.report(
                         origin,
                         Code::L010UnknownInstruction,
@@ -243,14 +257,12 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                 };
                 let nets = &mut blocks[current].2;
                 if nets.is_empty()
-                    || (!has_network_lines
-                        && starts_network(nets.last().map(|n| &n.instrs[..]).unwrap_or(&[]), op))
+                    || (!has_network_lines && nets.last().is_some_and(|n| starts_network(n, op)))
                 {
                     nets.push(RawNetwork::new(String::new()));
                 }
                 nets.last_mut()
                     .expect("a network was just ensured")
-                    .instrs
                     .push(instr);
             }
         }
@@ -276,18 +288,14 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
 
 /// Without NETWORK lines: a network starts at an LD/LDI after an output when no MPS is open;
 /// LBL and CALLU stand alone, and so does whatever follows them.
-fn starts_network(prev: &[Instr], op: Op) -> bool {
-    let Some(last) = prev.last() else {
+fn starts_network(prev: &RawNetwork, op: Op) -> bool {
+    let Some(last) = prev.instrs.last() else {
         return false;
     };
     if !last.op.spec().needs_act() || !op.spec().needs_act() {
         return true;
     }
-    let mps_open = prev.iter().fold(0i32, |d, i| match i.op {
-        Op::Mps => d + 1,
-        Op::Mpp => d - 1,
-        _ => d,
-    }) > 0;
+    let mps_open = prev.open_mps > 0;
     matches!(op, Op::Ld | Op::Ldi)
         && matches!(
             last.op.spec().class,
@@ -315,8 +323,12 @@ fn suggestion(upper: &str) -> (String, String) {
         }
         prev[b.len()]
     }
+    // The distance is at least the difference in length, so only names within two
+    // characters of the word's length can be close enough; a long word costs one count.
+    let len = upper.chars().count();
     crate::catalog::CATALOG
         .iter()
+        .filter(|s| s.name.len().abs_diff(len) <= 2)
         .map(|s| (distance(upper, s.name), s.name))
         .min()
         .filter(|(d, _)| *d <= 2)
@@ -327,6 +339,17 @@ fn suggestion(upper: &str) -> (String, String) {
                 "：请查阅手册中的指令表（LD、AND、OUT、TMRB 等）".into(),
             )
         })
+}
+
+/// Characters of an unknown word echoed in its message; the rest is elided.
+const SHOWN_CHARS: usize = 40;
+
+/// A word as a message quotes it: a line-long word is cut so the message stays readable.
+fn shown(word: &str) -> std::borrow::Cow<'_, str> {
+    match word.char_indices().nth(SHOWN_CHARS) {
+        Some((at, _)) => format!("{}…", &word[..at]).into(),
+        None => word.into(),
+    }
 }
 
 fn escape(s: &str) -> String {

@@ -187,12 +187,28 @@ pub fn context(project: &Project, r: &Reference) -> String {
                 }
             )
         }
-        Some(c) => c
-            .output_instruction()
-            .map(|(op, operands)| instr_text(op, &operands))
-            .unwrap_or_default(),
-        None => String::new(),
+        Some(Cell::Coil { negated, operand }) => instr_text(
+            if *negated { Op::Outn } else { Op::Out },
+            std::slice::from_ref(operand),
+        ),
+        Some(Cell::Box { op, operands }) => box_context(*op, operands),
+        _ => String::new(),
     }
+}
+
+/// Operands shown in a box's context before the rest is counted.
+const CONTEXT_OPERANDS: usize = 8;
+
+/// A box as context: its first operands and how many more there are. Every reference of a
+/// box shares this text, so it is bounded — a full CODB table on each of its references
+/// would make the index grow with the square of the table.
+fn box_context(op: Op, operands: &[Operand]) -> String {
+    if operands.len() <= CONTEXT_OPERANDS {
+        return instr_text(op, operands);
+    }
+    let mut s = instr_text(op, &operands[..CONTEXT_OPERANDS]);
+    let _ = write!(s, " … (+{})", operands.len() - CONTEXT_OPERANDS);
+    s
 }
 
 /// The reference index as text: one line per reference.
