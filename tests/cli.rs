@@ -270,6 +270,68 @@ fn bench_prints_its_figures_last() {
 }
 
 #[test]
+fn bench_takes_one_to_a_hundred_million_scans() {
+    for bad in ["0", "100000001", "18446744073709551615"] {
+        let r = run(&["bench", &il_path("valid/functions.il"), "--scans", bad]);
+        assert_eq!(r.code, 2, "--scans {bad}: {r:?}");
+        assert!(r.stderr.contains("--scans"), "{}", r.stderr);
+    }
+}
+
+#[test]
+fn a_script_line_longer_than_a_hundred_million_ticks_is_refused_before_anything_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("long.script");
+    std::fs::write(&script, "scan 1\nrun 10000000000000\n").unwrap();
+    let r = run(&[
+        "sim",
+        &il_path("valid/functions.il"),
+        "--script",
+        script.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 2, "{r:?}");
+    assert!(
+        r.stderr.contains(
+            "long.script:2: `10000000000000` is longer than one line may run: at most 800000s"
+        ),
+        "{}",
+        r.stderr
+    );
+}
+
+#[test]
+fn sim_streams_its_trace_and_keeps_none_without_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("t.script");
+    std::fs::write(&script, "watch R0000\nwatch X0000\nscan 3\n").unwrap();
+    let trace = dir.path().join("t.csv");
+    let il = il_path("valid/functions.il");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        script.to_str().unwrap(),
+        "--trace",
+        trace.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    let csv = std::fs::read_to_string(&trace).unwrap();
+    assert_eq!(csv.lines().count(), 4, "{csv}");
+    assert!(csv.starts_with("tick,ms,R0000,X0000\n1,8,"), "{csv}");
+    let missing = dir.path().join("no/such/folder/t.csv");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        script.to_str().unwrap(),
+        "--trace",
+        missing.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 2, "{r:?}");
+    assert!(r.stderr.contains("cannot write"), "{}", r.stderr);
+}
+
+#[test]
 fn xref_prints_the_index_and_both_usage_tables() {
     let il = il_path("valid/branches.il");
     let r = run(&["xref", &il]);

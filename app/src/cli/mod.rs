@@ -2,6 +2,7 @@
 //! input that fails (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad
 //! arguments).
 
+mod running;
 mod say;
 
 pub use say::Say;
@@ -12,9 +13,8 @@ use ladder_engine::cnc::SimCnc;
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
 use ladder_engine::model::Project;
-use ladder_engine::sim::{self, Script};
+use ladder_engine::sim;
 use ladder_engine::vm::Vm;
-use ladder_engine::vm::cnc::Cnc;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
 use std::io::Write;
@@ -105,8 +105,9 @@ pub enum Command {
     Bench {
         /// A project (.ldp) or an instruction list (.il).
         path: PathBuf,
-        /// Scans to time.
-        #[arg(long, default_value_t = 10_000)]
+        /// Scans to time, 1 to 100000000.
+        #[arg(long, default_value_t = 10_000,
+              value_parser = clap::value_parser!(u64).range(1..=sim::MAX_TICKS))]
         scans: u64,
         /// Run the simulated CNC too, and time its exchange.
         #[arg(long)]
@@ -240,13 +241,13 @@ where
             script,
             trace,
             cnc,
-        }) => sim(&path, &script, trace.as_deref(), cnc, say, out, err),
+        }) => running::sim(&path, &script, trace.as_deref(), cnc, say, out, err),
         Some(Command::Bench {
             path,
             scans,
             cnc,
             script,
-        }) => bench(&path, scans, cnc, script.as_deref(), say, out, err),
+        }) => running::bench(&path, scans, cnc, script.as_deref(), say, out, err),
         Some(Command::ExportComments { path, output }) => {
             export_comments(&path, lang, output.as_deref(), say, out, err)
         }
@@ -427,190 +428,6 @@ fn machine(
     Ok(Ok(
         Machine::new(&project, cnc).map_err(|e| anyhow::anyhow!("{e}"))?
     ))
-}
-
-/// Reads and parses a stimulus script (`cnc program-file` paths relative to its folder), or
-/// reports its first bad line (exit 2).
-fn read_script(
-    script_path: &Path,
-    machine: &Machine,
-    cnc: bool,
-    say: Say,
-    err: &mut dyn Write,
-) -> anyhow::Result<Result<Script, i32>> {
-    let text = std::fs::read_to_string(script_path)
-        .map_err(|e| anyhow::anyhow!(say.cannot_read(script_path, e)))?;
-    let folder = script_path
-        .parent()
-        .map(Path::to_path_buf)
-        .unwrap_or_default();
-    let read_file = |p: &str| -> Result<String, String> {
-        let full = folder.join(p);
-        std::fs::read_to_string(&full).map_err(|e| say.cannot_read(&full, e))
-    };
-    let options = sim::Options {
-        cnc,
-        read_file: &read_file,
-    };
-    match Script::parse_with(&text, machine.plc.profile(), &options) {
-        Ok(s) => Ok(Ok(s)),
-        Err(e) => {
-            let message = e.message_in(say.zh);
-            let _ = writeln!(err, "{}:{}: {message}", script_path.display(), e.line);
-            Ok(Err(2))
-        }
-    }
-}
-
-fn sim(
-    path: &Path,
-    script_path: &Path,
-    trace: Option<&Path>,
-    cnc: bool,
-    say: Say,
-    out: &mut dyn Write,
-    err: &mut dyn Write,
-) -> anyhow::Result<i32> {
-    if !script_path.is_file() {
-        anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
-    }
-    let mut machine = match machine(path, cnc, say, err)? {
-        Ok(m) => m,
-        Err(code) => return Ok(code),
-    };
-    let script = match read_script(script_path, &machine, cnc, say, err)? {
-        Ok(s) => s,
-        Err(code) => return Ok(code),
-    };
-    let name = script_path.display().to_string();
-    let outcome = sim::run(&mut machine, &script, &name, trace.is_some());
-    for line in &outcome.output {
-        let _ = writeln!(out, "{line}");
-    }
-    if let Some(t) = trace {
-        std::fs::write(t, &outcome.trace_csv)
-            .map_err(|e| anyhow::anyhow!(say.cannot_write(t, e)))?;
-    }
-    let (passed, failed) = (outcome.passed, outcome.failed);
-    let _ = writeln!(
-        out,
-        "{}",
-        say.pick(
-            format!("{passed} passed, {failed} failed"),
-            format!("{passed} 项通过，{failed} 项失败")
-        )
-    );
-    Ok(i32::from(outcome.failed > 0))
-}
-
-fn bench(
-    path: &Path,
-    scans: u64,
-    cnc: bool,
-    setup: Option<&Path>,
-    say: Say,
-    out: &mut dyn Write,
-    err: &mut dyn Write,
-) -> anyhow::Result<i32> {
-    let mut machine = match machine(path, cnc, say, err)? {
-        Ok(m) => m,
-        Err(code) => return Ok(code),
-    };
-    if let Some(script_path) = setup {
-        let script = match read_script(script_path, &machine, cnc, say, err)? {
-            Ok(s) => s,
-            Err(code) => return Ok(code),
-        };
-        let name = script_path.display().to_string();
-        let outcome = sim::run(&mut machine, &script, &name, false);
-        if outcome.failed > 0 {
-            for line in &outcome.output {
-                let _ = writeln!(err, "{line}");
-            }
-            let _ = writeln!(
-                err,
-                "{}",
-                say.pick(
-                    "the set-up script failed; nothing was timed",
-                    "准备脚本失败；未计时"
-                )
-            );
-            return Ok(1);
-        }
-    }
-    let scans = scans.max(1);
-    // Warm up caches and branch predictors before timing.
-    for _ in 0..scans.min(1000) {
-        machine.tick();
-    }
-    let before = machine.plc.executed_steps();
-    let start = std::time::Instant::now();
-    for _ in 0..scans {
-        machine.tick();
-    }
-    let elapsed = start.elapsed().as_nanos() as f64;
-    if let Some(h) = machine.plc.halt() {
-        let why = h.text(say.zh);
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                format!("the PLC halted during the benchmark: {why}"),
-                format!("计时中 PLC 停止：{why}")
-            )
-        );
-        return Ok(1);
-    }
-    let steps = (machine.plc.executed_steps() - before) as f64 / scans as f64;
-    let ns_per_scan = elapsed / scans as f64;
-    if let Some(cnc) = &mut machine.cnc {
-        // The exchange alone, timed inside the same kind of run (the clock read adds a few
-        // tens of ns to each figure).
-        let mut timed = TimedCnc { cnc, nanos: 0 };
-        for _ in 0..scans {
-            machine.plc.tick(&mut timed);
-        }
-        let per = timed.nanos as f64 / scans as f64;
-        let hour = ns_per_scan * 450_000.0 / 1e9;
-        let _ = writeln!(
-            out,
-            "cnc_ns_per_exchange={per:.1} machine_ns_per_tick={ns_per_scan:.1} one_hour_s={hour:.3}"
-        );
-    }
-    let _ = writeln!(
-        out,
-        "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3}",
-        steps.round() as u64,
-        ns_per_scan,
-        ns_per_scan / steps.max(1.0)
-    );
-    Ok(0)
-}
-
-/// The simulated CNC with a stopwatch on its exchange, for `bench --cnc`.
-struct TimedCnc<'a> {
-    cnc: &'a mut ladder_engine::cnc::SimCnc,
-    nanos: u128,
-}
-
-impl Cnc for TimedCnc<'_> {
-    fn window_is_low_speed(&self, function: i32) -> bool {
-        self.cnc.window_is_low_speed(function)
-    }
-    fn window(&mut self, block: &mut [i32]) {
-        self.cnc.window(block);
-    }
-    fn machine_position(&self, axis: u32) -> Option<i64> {
-        self.cnc.machine_position(axis)
-    }
-    fn axis_status(&self, group: u8, ebuf: bool) -> ladder_engine::vm::cnc::AxisStatus {
-        self.cnc.axis_status(group, ebuf)
-    }
-    fn exchange(&mut self, now_ms: u64, g: &[u8], a: &[u8], f: &mut [u8]) {
-        let t = std::time::Instant::now();
-        self.cnc.exchange(now_ms, g, a, f);
-        self.nanos += t.elapsed().as_nanos();
-    }
 }
 
 /// The project a PATH holds (an IL file drawn as a ladder), or the exit code when it has none.

@@ -1,19 +1,24 @@
 //! Stimulus scripts (docs/scripts.md; docs/cnc.md, "Script commands" for the `cnc` lines): parsed
 //! whole before anything runs, so a typo on line 40 is reported before line 1 executes;
-//! then run against a [`Machine`], counting `expect`s. Every line that acts on the machine
+//! then run against a [`Machine`](crate::machine::Machine), counting `expect`s. Every line that acts on the machine
 //! becomes a [`MachineCommand`], the same commands the editor sends to a running machine.
 
 mod lex;
+mod run;
 
 use crate::address::{Address, AddressError, Area};
 use crate::cnc::command::{CncCommand, CncKey, CncValue};
-use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
+use crate::machine::{MachineCommand, Probe};
 use crate::profile::Profile;
 use crate::vm::TICK_MS;
-use std::fmt::Write as _;
 use thiserror::Error;
 
 pub use crate::machine::Target;
+pub use run::{Control, Outcome, Progress, Stopped, run, run_with};
+
+/// The most ticks one `scan` or `run` line may ask for: 100 000 000 ticks are 800 000 s
+/// (nine days) of virtual time, a few minutes of a real one.
+pub const MAX_TICKS: u64 = 100_000_000;
 
 /// One script line.
 #[derive(Clone, Debug, PartialEq)]
@@ -255,10 +260,22 @@ fn duration(text: &str) -> Result<u64, Msg> {
         (text, 1.0)
     };
     let v: f64 = number.parse().map_err(|_| bad())?;
-    if !v.is_finite() || v < 0.0 || v * scale > 1e13 {
+    if !v.is_finite() || v < 0.0 {
         return Err(bad());
     }
-    Ok(((v * scale) / TICK_MS as f64).ceil() as u64)
+    let ticks = ((v * scale) / TICK_MS as f64).ceil();
+    if ticks > MAX_TICKS as f64 {
+        let most = MAX_TICKS * TICK_MS / 1000;
+        return Err(msg(
+            format!(
+                "`{text}` is longer than one line may run: at most {most}s ({MAX_TICKS} ticks); split it over several lines"
+            ),
+            format!(
+                "`{text}` 超过一行允许的运行时间：最多 {most}s（{MAX_TICKS} 个节拍）；请分成几行"
+            ),
+        ));
+    }
+    Ok(ticks as u64)
 }
 
 fn real(text: &str) -> Result<f32, Msg> {
@@ -373,16 +390,25 @@ fn parse_line(
         "scan" => {
             want(0..=1, "scan [N]")?;
             let n = match args.first() {
-                Some(n) => n
-                    .parse::<u64>()
-                    .ok()
-                    .filter(|n| *n <= 100_000_000)
-                    .ok_or_else(|| {
+                Some(n) => {
+                    let count = n.parse::<u64>().map_err(|_| {
                         msg(
                             format!("`{n}` is not a number of scans"),
                             format!("`{n}` 不是扫描次数"),
                         )
-                    })?,
+                    })?;
+                    if count > MAX_TICKS {
+                        return Err(msg(
+                            format!(
+                                "`scan {n}` is more than one line may run: at most {MAX_TICKS} scans; split it over several lines"
+                            ),
+                            format!(
+                                "`scan {n}` 超过一行允许的次数：最多 {MAX_TICKS} 次；请分成几行"
+                            ),
+                        ));
+                    }
+                    count
+                }
                 None => 1,
             };
             act(MachineCommand::Tick(n))
@@ -474,144 +500,6 @@ fn parse_line(
             ))
         }
     }
-}
-
-/// What running a script produced.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Outcome {
-    /// Lines to print (expect failures, `print`s, halts, refused commands), in order.
-    pub output: Vec<String>,
-    /// `expect`/`expectf` that held.
-    pub passed: usize,
-    /// `expect`/`expectf` that did not, and commands that could not apply.
-    pub failed: usize,
-    /// The trace as CSV (header and one row per tick), when asked for and anything was
-    /// watched.
-    pub trace_csv: String,
-}
-
-fn masked(v: i64, bytes: u32) -> u64 {
-    if bytes >= 8 {
-        v as u64
-    } else {
-        (v as u64) & ((1u64 << (8 * bytes)) - 1)
-    }
-}
-
-fn trace_row(m: &Machine, out: &mut String) {
-    let watched = m.watches();
-    if watched.is_empty() {
-        return;
-    }
-    if out.is_empty() {
-        out.push_str("tick,ms");
-        for p in watched {
-            let _ = write!(out, ",{}", p.text());
-        }
-        out.push('\n');
-    }
-    let _ = write!(out, "{},{}", m.plc.ticks(), m.plc.now_ms());
-    for p in watched {
-        match m.read(p) {
-            Ok(v) => {
-                let _ = write!(out, ",{v}");
-            }
-            Err(_) => out.push(','),
-        }
-    }
-    out.push('\n');
-}
-
-/// Runs a parsed script. `name` prefixes failure lines (`SCRIPT:LINE: expect …`); the trace
-/// CSV is kept only when `trace` is set.
-pub fn run(machine: &mut Machine, script: &Script, name: &str, trace: bool) -> Outcome {
-    let mut out = Outcome::default();
-    let mut reported_halt = false;
-    for (line, command) in &script.commands {
-        match command {
-            Command::Do(MachineCommand::Tick(n)) => {
-                let mut csv = std::mem::take(&mut out.trace_csv);
-                for _ in 0..*n {
-                    machine.tick();
-                    if trace {
-                        trace_row(machine, &mut csv);
-                    }
-                    if let Some(h) = machine.plc.halt()
-                        && !reported_halt
-                    {
-                        out.output.push(format!("{name}:{line}: PLC halted at {h}"));
-                        reported_halt = true;
-                    }
-                }
-                out.trace_csv = csv;
-            }
-            Command::Do(c) => {
-                if matches!(c, MachineCommand::PowerCycle) {
-                    reported_halt = false;
-                }
-                if let Err(e) = machine.apply(c) {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
-                    out.failed += 1;
-                }
-            }
-            Command::Print(p) => match machine.read(p) {
-                Ok(v) => out.output.push(format!("{} = {v}", p.text())),
-                Err(e) => {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
-                    out.failed += 1;
-                }
-            },
-            Command::Expect(t, want) => {
-                let got = machine.plc.read(t.address, t.bytes);
-                if masked(got, t.bytes) == masked(*want, t.bytes) {
-                    out.passed += 1;
-                } else {
-                    // Show the value the way the expectation was written.
-                    let shown = if *want >= 0 {
-                        masked(got, t.bytes).to_string()
-                    } else {
-                        got.to_string()
-                    };
-                    out.output.push(format!(
-                        "{name}:{line}: expect {} = {want}, got {shown}",
-                        t.text()
-                    ));
-                    out.failed += 1;
-                }
-            }
-            Command::ExpectCnc(key, want, written) => match machine.read(&Probe::Cnc(*key)) {
-                Ok(ProbeValue::Cnc(got)) if got == *want => out.passed += 1,
-                Ok(got) => {
-                    out.output.push(format!(
-                        "{name}:{line}: expect {} = {written}, got {got}",
-                        key.text()
-                    ));
-                    out.failed += 1;
-                }
-                Err(e) => {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
-                    out.failed += 1;
-                }
-            },
-            Command::ExpectReal(a, want, tol) => {
-                let got = machine.plc.read_real(*a);
-                let tol = tol.unwrap_or(1e-4);
-                let ok = if *want == 0.0 {
-                    got.abs() <= tol
-                } else {
-                    ((got - want) / want).abs() <= tol
-                };
-                if ok && !got.is_nan() {
-                    out.passed += 1;
-                } else {
-                    out.output
-                        .push(format!("{name}:{line}: expect {a} = {want}, got {got}"));
-                    out.failed += 1;
-                }
-            }
-        }
-    }
-    out
 }
 
 #[cfg(test)]
@@ -737,6 +625,24 @@ mod tests {
     }
 
     #[test]
+    fn a_line_runs_at_most_a_hundred_million_ticks() {
+        assert!(parse("scan 100000000\nrun 800000s").is_ok());
+        let e = parse("scan 100000001").unwrap_err();
+        assert!(
+            e.message.contains("at most 100000000 scans"),
+            "{}",
+            e.message
+        );
+        assert_bilingual(&e.message, &e.message_zh);
+        let e = parse("scan 1\nrun 10000000000000").unwrap_err();
+        assert_eq!(e.line, 2);
+        assert!(e.message.contains("at most 800000s"), "{}", e.message);
+        assert_bilingual(&e.message, &e.message_zh);
+        let e = parse("scan -1").unwrap_err();
+        assert!(e.message.contains("not a number of scans"), "{}", e.message);
+    }
+
+    #[test]
     fn durations_round_up_to_ticks() {
         let s = parse("run 250ms\nrun 2s\nrun 9\nscan 3 ; three\nrun 0").unwrap();
         let ticks: Vec<u64> = s
@@ -748,11 +654,5 @@ mod tests {
             })
             .collect();
         assert_eq!(ticks, vec![32, 250, 2, 3, 0]);
-    }
-
-    #[test]
-    fn both_spellings_of_a_byte_match() {
-        assert_eq!(masked(255, 1), masked(-1, 1));
-        assert_ne!(masked(255, 2), masked(-1, 2));
     }
 }

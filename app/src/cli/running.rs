@@ -1,0 +1,349 @@
+//! The commands that run the program: `sim` under a stimulus script and `bench`. Both can
+//! run for a long time, so both show progress on standard error once a run takes more than a
+//! moment, and both stop cleanly on Ctrl+C with what they have (docs/scripts.md, "Long runs").
+
+use super::{Say, machine};
+use ladder_engine::machine::Machine;
+use ladder_engine::sim::{self, Control, Progress, Script};
+use ladder_engine::vm::cnc::Cnc;
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+/// The exit code of a run stopped by Ctrl+C (128 + SIGINT, as a shell reports it).
+const STOPPED: i32 = 130;
+
+/// How long a run goes quietly before its first progress line, and between two lines.
+const PROGRESS_AFTER: Duration = Duration::from_secs(2);
+
+/// Set by Ctrl+C.
+static STOP: AtomicBool = AtomicBool::new(false);
+
+/// Listens for Ctrl+C from now on and returns the flag it sets. A second Ctrl+C ends the
+/// process at once, for a run stuck where the flag is not read.
+fn stop_on_ctrl_c() -> &'static AtomicBool {
+    static INSTALL: std::sync::Once = std::sync::Once::new();
+    INSTALL.call_once(|| {
+        // Without a handler (none can be installed) Ctrl+C ends the process as usual.
+        let _ = ctrlc::set_handler(|| {
+            if STOP.swap(true, Ordering::SeqCst) {
+                std::process::exit(STOPPED);
+            }
+        });
+    });
+    STOP.store(false, Ordering::SeqCst);
+    &STOP
+}
+
+/// Writes a progress line at most every [`PROGRESS_AFTER`], the first one only once the run
+/// has taken that long, so short runs stay quiet.
+struct Ticker {
+    next: Instant,
+}
+
+impl Ticker {
+    fn new() -> Ticker {
+        Ticker {
+            next: Instant::now() + PROGRESS_AFTER,
+        }
+    }
+
+    /// Whether a line is due now.
+    fn due(&mut self) -> bool {
+        let now = Instant::now();
+        if now < self.next {
+            return false;
+        }
+        self.next = now + PROGRESS_AFTER;
+        true
+    }
+}
+
+fn percent(done: u64, of: u64) -> u64 {
+    (done as u128 * 100 / u128::from(of.max(1))) as u64
+}
+
+/// Reads and parses a stimulus script (`cnc program-file` paths relative to its folder), or
+/// reports its first bad line (exit 2).
+fn read_script(
+    script_path: &Path,
+    machine: &Machine,
+    cnc: bool,
+    say: Say,
+    err: &mut dyn Write,
+) -> anyhow::Result<Result<Script, i32>> {
+    let text = std::fs::read_to_string(script_path)
+        .map_err(|e| anyhow::anyhow!(say.cannot_read(script_path, e)))?;
+    let folder = script_path
+        .parent()
+        .map(Path::to_path_buf)
+        .unwrap_or_default();
+    let read_file = |p: &str| -> Result<String, String> {
+        let full = folder.join(p);
+        std::fs::read_to_string(&full).map_err(|e| say.cannot_read(&full, e))
+    };
+    let options = sim::Options {
+        cnc,
+        read_file: &read_file,
+    };
+    match Script::parse_with(&text, machine.plc.profile(), &options) {
+        Ok(s) => Ok(Ok(s)),
+        Err(e) => {
+            let message = e.message_in(say.zh);
+            let _ = writeln!(err, "{}:{}: {message}", script_path.display(), e.line);
+            Ok(Err(2))
+        }
+    }
+}
+
+/// `sim PATH --script S [--trace OUT.csv] [--cnc]`: runs the script, streaming the trace.
+pub(super) fn sim(
+    path: &Path,
+    script_path: &Path,
+    trace: Option<&Path>,
+    cnc: bool,
+    say: Say,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    if !script_path.exists() {
+        anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
+    }
+    let mut machine = match machine(path, cnc, say, err)? {
+        Ok(m) => m,
+        Err(code) => return Ok(code),
+    };
+    let script = match read_script(script_path, &machine, cnc, say, err)? {
+        Ok(s) => s,
+        Err(code) => return Ok(code),
+    };
+    let name = script_path.display().to_string();
+    // The trace goes to its file tick by tick: a long run with many watches would not fit
+    // in memory.
+    let mut trace_file = match trace {
+        Some(t) => Some(std::io::BufWriter::new(
+            std::fs::File::create(t).map_err(|e| anyhow::anyhow!(say.cannot_write(t, e)))?,
+        )),
+        None => None,
+    };
+    let mut ticker = Ticker::new();
+    let mut progress = |p: Progress| {
+        if ticker.due() {
+            let _ = writeln!(
+                err,
+                "{}",
+                say.pick(
+                    format!(
+                        "{name}:{}: {} of {} ticks ({}%); Ctrl+C stops with the results so far",
+                        p.line,
+                        p.done,
+                        p.of,
+                        percent(p.done, p.of)
+                    ),
+                    format!(
+                        "{name}:{}：已运行 {} / {} 个节拍（{}%）；按 Ctrl+C 停止并给出已有结果",
+                        p.line,
+                        p.done,
+                        p.of,
+                        percent(p.done, p.of)
+                    )
+                )
+            );
+        }
+    };
+    let control = Control {
+        trace: trace_file.as_mut().map(|w| w as &mut dyn Write),
+        stop: Some(stop_on_ctrl_c()),
+        progress: Some(&mut progress),
+    };
+    let outcome = sim::run_with(&mut machine, &script, &name, control);
+    let outcome = match (outcome, trace) {
+        (Ok(o), _) => o,
+        (Err(e), Some(t)) => anyhow::bail!(say.cannot_write(t, e)),
+        (Err(e), None) => return Err(e.into()),
+    };
+    for line in &outcome.output {
+        let _ = writeln!(out, "{line}");
+    }
+    if let Some(s) = outcome.stopped {
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!(
+                    "{name}:{}: stopped by Ctrl+C after {} of {} ticks of this line, {} in all; the results so far:",
+                    s.line, s.done, s.of, s.ticks
+                ),
+                format!(
+                    "{name}:{}：按 Ctrl+C 停止，本行已运行 {} / {} 个节拍，共 {} 个；已有结果如下：",
+                    s.line, s.done, s.of, s.ticks
+                )
+            )
+        );
+    }
+    let (passed, failed) = (outcome.passed, outcome.failed);
+    let _ = writeln!(
+        out,
+        "{}",
+        say.pick(
+            format!("{passed} passed, {failed} failed"),
+            format!("{passed} 项通过，{failed} 项失败")
+        )
+    );
+    if outcome.stopped.is_some() {
+        return Ok(STOPPED);
+    }
+    Ok(i32::from(outcome.failed > 0))
+}
+
+/// `bench PATH [--scans N] [--cnc] [--script S]`: times the scan; Ctrl+C ends the timing
+/// early and the figures cover the scans timed.
+pub(super) fn bench(
+    path: &Path,
+    scans: u64,
+    cnc: bool,
+    setup: Option<&Path>,
+    say: Say,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let mut machine = match machine(path, cnc, say, err)? {
+        Ok(m) => m,
+        Err(code) => return Ok(code),
+    };
+    if let Some(script_path) = setup {
+        let script = match read_script(script_path, &machine, cnc, say, err)? {
+            Ok(s) => s,
+            Err(code) => return Ok(code),
+        };
+        let name = script_path.display().to_string();
+        let outcome = sim::run(&mut machine, &script, &name, false);
+        if outcome.failed > 0 {
+            for line in &outcome.output {
+                let _ = writeln!(err, "{line}");
+            }
+            let _ = writeln!(
+                err,
+                "{}",
+                say.pick(
+                    "the set-up script failed; nothing was timed",
+                    "准备脚本失败；未计时"
+                )
+            );
+            return Ok(1);
+        }
+    }
+    let stop = stop_on_ctrl_c();
+    let scans = scans.max(1);
+    // Warm up caches and branch predictors before timing.
+    for _ in 0..scans.min(1000) {
+        machine.tick();
+    }
+    let mut ticker = Ticker::new();
+    let before = machine.plc.executed_steps();
+    let start = Instant::now();
+    let mut timed = 0u64;
+    // The clock and the flag are read once a block, so the figure stays the scan's.
+    const BLOCK: u64 = 1024;
+    while timed < scans && !stop.load(Ordering::Relaxed) {
+        let n = BLOCK.min(scans - timed);
+        for _ in 0..n {
+            machine.tick();
+        }
+        timed += n;
+        if ticker.due() {
+            let _ = writeln!(
+                err,
+                "{}",
+                say.pick(
+                    format!(
+                        "{timed} of {scans} scans ({}%); Ctrl+C stops with the figures so far",
+                        percent(timed, scans)
+                    ),
+                    format!(
+                        "已计时 {timed} / {scans} 次扫描（{}%）；按 Ctrl+C 停止并给出已有结果",
+                        percent(timed, scans)
+                    )
+                )
+            );
+        }
+    }
+    let elapsed = start.elapsed().as_nanos() as f64;
+    if let Some(h) = machine.plc.halt() {
+        let why = h.text(say.zh);
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!("the PLC halted during the benchmark: {why}"),
+                format!("计时中 PLC 停止：{why}")
+            )
+        );
+        return Ok(1);
+    }
+    let stopped = timed < scans;
+    if stopped {
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                format!(
+                    "stopped by Ctrl+C after {timed} of {scans} scans; the figures cover those"
+                ),
+                format!("按 Ctrl+C 停止，已计时 {timed} / {scans} 次扫描；结果按已计时的扫描计算")
+            )
+        );
+    }
+    let scans = timed.max(1);
+    let steps = (machine.plc.executed_steps() - before) as f64 / scans as f64;
+    let ns_per_scan = elapsed / scans as f64;
+    if !stopped && let Some(cnc) = &mut machine.cnc {
+        // The exchange alone, timed inside the same kind of run (the clock read adds a few
+        // tens of ns to each figure).
+        let mut timed = TimedCnc { cnc, nanos: 0 };
+        for _ in 0..scans {
+            machine.plc.tick(&mut timed);
+        }
+        let per = timed.nanos as f64 / scans as f64;
+        let hour = ns_per_scan * 450_000.0 / 1e9;
+        let _ = writeln!(
+            out,
+            "cnc_ns_per_exchange={per:.1} machine_ns_per_tick={ns_per_scan:.1} one_hour_s={hour:.3}"
+        );
+    }
+    let _ = writeln!(
+        out,
+        "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3}",
+        steps.round() as u64,
+        ns_per_scan,
+        ns_per_scan / steps.max(1.0)
+    );
+    Ok(if stopped { STOPPED } else { 0 })
+}
+
+/// The simulated CNC with a stopwatch on its exchange, for `bench --cnc`.
+struct TimedCnc<'a> {
+    cnc: &'a mut ladder_engine::cnc::SimCnc,
+    nanos: u128,
+}
+
+impl Cnc for TimedCnc<'_> {
+    fn window_is_low_speed(&self, function: i32) -> bool {
+        self.cnc.window_is_low_speed(function)
+    }
+    fn window(&mut self, block: &mut [i32]) {
+        self.cnc.window(block);
+    }
+    fn machine_position(&self, axis: u32) -> Option<i64> {
+        self.cnc.machine_position(axis)
+    }
+    fn axis_status(&self, group: u8, ebuf: bool) -> ladder_engine::vm::cnc::AxisStatus {
+        self.cnc.axis_status(group, ebuf)
+    }
+    fn exchange(&mut self, now_ms: u64, g: &[u8], a: &[u8], f: &mut [u8]) {
+        let t = std::time::Instant::now();
+        self.cnc.exchange(now_ms, g, a, f);
+        self.nanos += t.elapsed().as_nanos();
+    }
+}

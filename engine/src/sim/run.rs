@@ -1,0 +1,338 @@
+//! Running a parsed script against a machine (docs/scripts.md, "Running"): the lines in
+//! order, the `expect`s counted, the trace written row by row as the ticks run, and a way to
+//! stop a long run between two ticks with what it has.
+
+use super::{Command, Script};
+use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
+use std::io::Write;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// What running a script produced.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Outcome {
+    /// Lines to print (expect failures, `print`s, halts, refused commands), in order.
+    pub output: Vec<String>,
+    /// `expect`/`expectf` that held.
+    pub passed: usize,
+    /// `expect`/`expectf` that did not, and commands that could not apply.
+    pub failed: usize,
+    /// The trace as CSV (header and one row per tick), when [`run`] was asked for it and
+    /// anything was watched; [`run_with`] streams it instead and leaves this empty.
+    pub trace_csv: String,
+    /// Where the run was stopped before the end of the script, if it was.
+    pub stopped: Option<Stopped>,
+}
+
+/// Where a run was stopped early.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stopped {
+    /// The `scan` or `run` line that was running.
+    pub line: usize,
+    /// Ticks of that line that ran.
+    pub done: u64,
+    /// Ticks the line asked for.
+    pub of: u64,
+    /// Ticks run since the start of the script.
+    pub ticks: u64,
+}
+
+/// How far a long `scan` or `run` line has got, for a progress line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Progress {
+    /// The script line.
+    pub line: usize,
+    /// Ticks of the line run so far.
+    pub done: u64,
+    /// Ticks the line asks for.
+    pub of: u64,
+}
+
+/// Ticks between two progress calls: often enough for a line a second, rare enough to cost
+/// nothing beside a tick.
+const PROGRESS_EVERY: u64 = 1 << 14;
+
+/// What a run writes to and listens to besides the machine.
+#[derive(Default)]
+pub struct Control<'a> {
+    /// Where the trace CSV goes, row by row; `None` keeps no trace.
+    pub trace: Option<&'a mut dyn Write>,
+    /// Read after every tick: once set, the run stops there (Ctrl+C).
+    pub stop: Option<&'a AtomicBool>,
+    /// Called every few thousand ticks of a `scan` or `run` line.
+    pub progress: Option<&'a mut dyn FnMut(Progress)>,
+}
+
+fn masked(v: i64, bytes: u32) -> u64 {
+    if bytes >= 8 {
+        v as u64
+    } else {
+        (v as u64) & ((1u64 << (8 * bytes)) - 1)
+    }
+}
+
+/// Writes the trace row of the tick just run, and the header before the first row.
+fn trace_row(m: &Machine, header: &mut bool, out: &mut dyn Write) -> std::io::Result<()> {
+    let watched = m.watches();
+    if watched.is_empty() {
+        return Ok(());
+    }
+    if !*header {
+        out.write_all(b"tick,ms")?;
+        for p in watched {
+            write!(out, ",{}", p.text())?;
+        }
+        out.write_all(b"\n")?;
+        *header = true;
+    }
+    write!(out, "{},{}", m.plc.ticks(), m.plc.now_ms())?;
+    for p in watched {
+        match m.read(p) {
+            Ok(v) => write!(out, ",{v}")?,
+            Err(_) => out.write_all(b",")?,
+        }
+    }
+    out.write_all(b"\n")
+}
+
+/// Runs a parsed script, keeping the trace in [`Outcome::trace_csv`] when `trace` is set.
+/// `name` prefixes failure lines (`SCRIPT:LINE: expect …`).
+pub fn run(machine: &mut Machine, script: &Script, name: &str, trace: bool) -> Outcome {
+    let mut csv = Vec::new();
+    let control = Control {
+        trace: if trace { Some(&mut csv) } else { None },
+        ..Control::default()
+    };
+    let mut out = run_with(machine, script, name, control).expect("a Vec takes every write");
+    out.trace_csv = String::from_utf8(csv).expect("the trace is text");
+    out
+}
+
+/// Runs a parsed script, streaming the trace and listening for a stop. The only error is a
+/// failed trace write; the run stops at the tick it failed on.
+pub fn run_with(
+    machine: &mut Machine,
+    script: &Script,
+    name: &str,
+    mut control: Control<'_>,
+) -> std::io::Result<Outcome> {
+    let mut out = Outcome::default();
+    let mut reported_halt = false;
+    let mut header = false;
+    let mut ticks = 0u64;
+    let stop = control.stop;
+    let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
+    for (line, command) in &script.commands {
+        if stopped() {
+            out.stopped = Some(Stopped {
+                line: *line,
+                done: 0,
+                of: 0,
+                ticks,
+            });
+            break;
+        }
+        match command {
+            Command::Do(MachineCommand::Tick(n)) => {
+                for done in 0..*n {
+                    if stopped() {
+                        out.stopped = Some(Stopped {
+                            line: *line,
+                            done,
+                            of: *n,
+                            ticks,
+                        });
+                        break;
+                    }
+                    machine.tick();
+                    ticks += 1;
+                    if let Some(t) = control.trace.as_deref_mut() {
+                        trace_row(machine, &mut header, t)?;
+                    }
+                    if let Some(h) = machine.plc.halt()
+                        && !reported_halt
+                    {
+                        out.output.push(format!("{name}:{line}: PLC halted at {h}"));
+                        reported_halt = true;
+                    }
+                    if (done + 1) % PROGRESS_EVERY == 0
+                        && let Some(p) = control.progress.as_deref_mut()
+                    {
+                        p(Progress {
+                            line: *line,
+                            done: done + 1,
+                            of: *n,
+                        });
+                    }
+                }
+                if out.stopped.is_some() {
+                    break;
+                }
+            }
+            Command::Do(c) => {
+                if matches!(c, MachineCommand::PowerCycle) {
+                    reported_halt = false;
+                }
+                if let Err(e) = machine.apply(c) {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            }
+            Command::Print(p) => match machine.read(p) {
+                Ok(v) => out.output.push(format!("{} = {v}", p.text())),
+                Err(e) => {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            },
+            Command::Expect(t, want) => {
+                let got = machine.plc.read(t.address, t.bytes);
+                if masked(got, t.bytes) == masked(*want, t.bytes) {
+                    out.passed += 1;
+                } else {
+                    // Show the value the way the expectation was written.
+                    let shown = if *want >= 0 {
+                        masked(got, t.bytes).to_string()
+                    } else {
+                        got.to_string()
+                    };
+                    out.output.push(format!(
+                        "{name}:{line}: expect {} = {want}, got {shown}",
+                        t.text()
+                    ));
+                    out.failed += 1;
+                }
+            }
+            Command::ExpectCnc(key, want, written) => match machine.read(&Probe::Cnc(*key)) {
+                Ok(ProbeValue::Cnc(got)) if got == *want => out.passed += 1,
+                Ok(got) => {
+                    out.output.push(format!(
+                        "{name}:{line}: expect {} = {written}, got {got}",
+                        key.text()
+                    ));
+                    out.failed += 1;
+                }
+                Err(e) => {
+                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    out.failed += 1;
+                }
+            },
+            Command::ExpectReal(a, want, tol) => {
+                let got = machine.plc.read_real(*a);
+                let tol = tol.unwrap_or(1e-4);
+                let ok = if *want == 0.0 {
+                    got.abs() <= tol
+                } else {
+                    ((got - want) / want).abs() <= tol
+                };
+                if ok && !got.is_nan() {
+                    out.passed += 1;
+                } else {
+                    out.output
+                        .push(format!("{name}:{line}: expect {a} = {want}, got {got}"));
+                    out.failed += 1;
+                }
+            }
+        }
+    }
+    if let Some(t) = control.trace {
+        t.flush()?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::Project;
+    use crate::profile::Profile;
+
+    /// A machine running a one-rung list (R0000.0 follows X0000.0) and a script on it.
+    fn machine_and(script: &str) -> (Machine, Script) {
+        let imported = crate::il::import("LEVEL1\nNETWORK\nLD X0000.0\nOUT R0000.0\nLEVEL2\n");
+        let project: Project = imported.project.expect("the list draws");
+        let m = Machine::new(&project, false).expect("the list runs");
+        let s = Script::parse(script, Profile::get(project.profile)).expect("the script parses");
+        (m, s)
+    }
+
+    #[test]
+    fn the_streamed_trace_is_the_kept_one() {
+        let text = "watch R0000.0\nwatch X0000.0\nscan 2\nset X0000.0 1\nscan 3\n";
+        let (mut m, s) = machine_and(text);
+        let kept = run(&mut m, &s, "s", true).trace_csv;
+        let (mut m, s) = machine_and(text);
+        let mut streamed = Vec::new();
+        let control = Control {
+            trace: Some(&mut streamed),
+            ..Control::default()
+        };
+        let out = run_with(&mut m, &s, "s", control).unwrap();
+        assert!(out.trace_csv.is_empty(), "nothing kept while streaming");
+        assert_eq!(String::from_utf8(streamed).unwrap(), kept);
+        assert_eq!(kept.lines().count(), 6, "{kept}");
+        assert_eq!(kept.lines().last(), Some("5,40,1,1"));
+    }
+
+    #[test]
+    fn without_a_trace_nothing_is_kept() {
+        let (mut m, s) = machine_and("watch R0000.0\nscan 50\n");
+        assert_eq!(run(&mut m, &s, "s", false).trace_csv, "");
+    }
+
+    #[test]
+    fn a_stop_ends_the_run_between_ticks_with_the_results_so_far() {
+        let (mut m, s) = machine_and(
+            "set X0000.0 1\nscan 1\nexpect R0000.0 1\nscan 100000000\nexpect R0000.0 0\n",
+        );
+        let flag = AtomicBool::new(false);
+        let mut calls = Vec::new();
+        let mut progress = |p: Progress| {
+            calls.push(p);
+            if p.done >= 2 * PROGRESS_EVERY {
+                flag.store(true, Ordering::Relaxed);
+            }
+        };
+        let control = Control {
+            trace: None,
+            stop: Some(&flag),
+            progress: Some(&mut progress),
+        };
+        let out = run_with(&mut m, &s, "s", control).unwrap();
+        assert_eq!(
+            (out.passed, out.failed),
+            (1, 0),
+            "the last expect did not run"
+        );
+        assert_eq!(
+            out.stopped,
+            Some(Stopped {
+                line: 4,
+                done: 2 * PROGRESS_EVERY,
+                of: 100_000_000,
+                ticks: 2 * PROGRESS_EVERY + 1,
+            })
+        );
+        assert_eq!(m.plc.ticks(), 2 * PROGRESS_EVERY + 1);
+        assert_eq!(calls.len(), 2);
+        assert_eq!(calls[0].line, 4);
+    }
+
+    #[test]
+    fn a_stop_before_a_line_runs_nothing_more() {
+        let (mut m, s) = machine_and("scan 3\nexpect R0000.0 0\n");
+        let flag = AtomicBool::new(true);
+        let control = Control {
+            stop: Some(&flag),
+            ..Control::default()
+        };
+        let out = run_with(&mut m, &s, "s", control).unwrap();
+        assert_eq!(out.stopped.map(|s| (s.line, s.ticks)), Some((1, 0)));
+        assert_eq!((out.passed, m.plc.ticks()), (0, 0));
+    }
+
+    #[test]
+    fn both_spellings_of_a_byte_match() {
+        assert_eq!(masked(255, 1), masked(-1, 1));
+        assert_ne!(masked(255, 2), masked(-1, 2));
+    }
+}
