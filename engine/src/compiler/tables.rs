@@ -255,12 +255,19 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     format!("{} = {} 超出其上下限 {lo}…{hi}", row.address, row.value),
                 );
             }
-            if area == Area::C && row.value < 0 {
+            // DC holds counter presets, and a counter counts 0…N (docs/plc.md, CTRC).
+            if area == Area::Dc && row.value < 0 {
                 sink.report(
                     at(r, 1),
                     Code::T004DataValue,
-                    "a counter value is 0…2147483647",
-                    "计数器的值为 0…2147483647",
+                    format!(
+                        "{} = {}: a counter preset is 0…2147483647",
+                        row.address, row.value
+                    ),
+                    format!(
+                        "{} = {}：计数器预置值为 0…2147483647",
+                        row.address, row.value
+                    ),
                 );
             }
         }
@@ -420,6 +427,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
 mod tests {
     use super::*;
     use crate::compiler::compile;
+    use crate::model::DataRow;
     use crate::profile::ProfileId;
 
     fn t005(p: &Project) -> Vec<String> {
@@ -446,5 +454,36 @@ mod tests {
         assert!(found[0].contains("A0030.0 is beyond this controller's A range"));
         p.profile = ProfileId::Gsk988ta;
         assert!(t005(&p).is_empty(), "the 988TA has A0–A49");
+    }
+
+    #[test]
+    fn a_negative_counter_preset_in_the_dc_table_is_refused_at_its_value() {
+        let mut p = Project::default();
+        p.data
+            .dc
+            .push(DataRow::new(Address::parse("DC0001").unwrap(), 5));
+        p.data
+            .dc
+            .push(DataRow::new(Address::parse("DC0002").unwrap(), -5));
+        // A negative D or DT value is no counter preset.
+        p.data
+            .d
+            .push(DataRow::new(Address::parse("D0001").unwrap(), -5));
+        p.data
+            .dt
+            .push(DataRow::new(Address::parse("DT0001").unwrap(), -5));
+        let found: Vec<_> = compile(&p)
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.code == Code::T004DataValue)
+            .collect();
+        assert_eq!(found.len(), 1, "{found:?}");
+        let d = &found[0];
+        assert_eq!(
+            (d.location.block_label.as_str(), d.location.network),
+            ("DATA", 2)
+        );
+        assert_eq!(d.location.origin, Origin::Cell { row: 1, col: 1 });
+        assert!(d.message.starts_with("DC0002 = -5"), "{}", d.message);
     }
 }
