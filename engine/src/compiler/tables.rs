@@ -456,6 +456,55 @@ mod tests {
         assert!(t005(&p).is_empty(), "the 988TA has A0–A49");
     }
 
+    /// (table number, row, column) of every diagnostic of `code`, in order.
+    fn places(p: &Project, code: Code) -> Vec<(usize, u32, u32)> {
+        compile(p)
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == code)
+            .map(|d| match d.location.origin {
+                Origin::Cell { row, col } => (d.location.network, row, col),
+                other => panic!("a table diagnostic without a cell: {other:?}"),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_data_address_listed_twice_is_refused_at_the_later_row() {
+        let a = |t: &str| Address::parse(t).unwrap();
+        let mut p = Project::default();
+        p.data.d = vec![DataRow::new(a("D0001"), 1), DataRow::new(a("D0001"), 2)];
+        p.data.dt = vec![DataRow::new(a("DT0001"), 1), DataRow::new(a("DT0001"), 2)];
+        p.data.dc = vec![DataRow::new(a("DC0001"), 1), DataRow::new(a("DC0001"), 2)];
+        // D_FLOAT shares the D addresses: D0001 is a third time there.
+        p.data.d_float = vec![crate::model::RealRow::new(a("D0001"), 1.0)];
+        assert_eq!(
+            places(&p, Code::T003DataAddress),
+            [(0, 1, 0), (1, 1, 0), (2, 1, 0), (3, 0, 0)]
+        );
+    }
+
+    #[test]
+    fn an_m_code_or_an_alarm_number_listed_twice_is_refused_at_the_later_row() {
+        let m_codes = [3, 8, 3]
+            .into_iter()
+            .map(|code| crate::model::MCodeRow {
+                code,
+                comments: Default::default(),
+            })
+            .collect();
+        let mut p = Project {
+            m_codes,
+            ..Project::default()
+        };
+        assert_eq!(places(&p, Code::T008TableKey), [(0, 2, 0)]);
+        for (k, n) in [(1, 1001), (2, 1002), (5, 1001)] {
+            p.messages.rows[k].number = Some(n);
+            p.messages.rows[k].texts.insert("zh".into(), "报警".into());
+        }
+        assert_eq!(places(&p, Code::T005MessageNumber), [(0, 5, 1)]);
+    }
+
     #[test]
     fn a_negative_counter_preset_in_the_dc_table_is_refused_at_its_value() {
         let mut p = Project::default();
