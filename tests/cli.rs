@@ -426,6 +426,41 @@ fn comments_export_and_import_all_or_nothing() {
 }
 
 #[test]
+fn an_import_of_comments_that_check_would_reject_is_refused_at_its_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let ldp = dir.path().join("p.ldp");
+    let il = il_path("valid/self-holding.il");
+    assert_eq!(
+        run(&["import-il", &il, "-o", ldp.to_str().unwrap()]).code,
+        0
+    );
+    let csv = dir.path().join("c.csv");
+    let head = "kind,table,key,symbol,zh,en\n";
+    std::fs::write(&csv, format!("{head}message,,A0000.1,1001,甲,a\n")).unwrap();
+    let import = || {
+        run(&[
+            "import-comments",
+            ldp.to_str().unwrap(),
+            csv.to_str().unwrap(),
+        ])
+    };
+    assert_eq!(import().code, 0);
+    let before = read(&ldp);
+    std::fs::write(&csv, format!("{head}message,,A0000.2,1001,乙,b\n")).unwrap();
+    let r = import();
+    assert_eq!(r.code, 1, "{r:?}");
+    assert!(
+        r.stderr.contains(
+            ":2: alarm number 1001 would be used by both A0000.1 and A0000.2, which `check` refuses (T005)"
+        ),
+        "{}",
+        r.stderr
+    );
+    assert_eq!(read(&ldp), before, "nothing changed");
+    assert_eq!(run(&["check", ldp.to_str().unwrap()]).code, 0);
+}
+
+#[test]
 fn the_editor_online_options_refuse_what_cannot_work() {
     let lathe = here().join("../projects/lathe-988ta.ldp");
     let lathe = lathe.to_str().unwrap();

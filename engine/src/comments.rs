@@ -4,11 +4,16 @@
 //! Columns: `kind,table,key,symbol,<lang>…`. `kind` is `symbol` (table: the symbol table),
 //! `network` (table: LEVEL1/LEVEL2/P0001, key: network number, symbol: its title), `message`
 //! (key: the A bit, symbol: the alarm number), `data` (table: D/DT/DC/D_FLOAT), `diagnosis`,
-//! `permission` or `mcode` (key: the M code). Import changes nothing unless every row applies.
+//! `permission` or `mcode` (key: the M code). Import changes nothing unless every row applies
+//! and the result gives `check` no error it did not have before.
+
+mod guard;
 
 use crate::address::Address;
-use crate::model::tables::{Comments, MessageTable, Symbol, SymbolTable};
+use crate::model::sheets::{check_symbol_area, check_symbol_form};
+use crate::model::tables::{Comments, MessageTable, Symbol, SymbolTable, message_rows};
 use crate::model::{Operand, Project, is_symbol_name};
+use guard::{Target, Touch};
 use thiserror::Error;
 
 /// The languages exported when none is chosen.
@@ -167,7 +172,7 @@ pub fn import(
         .collect();
     let mut work = project.clone();
     let mut rejected = Vec::new();
-    let mut applied = 0;
+    let mut touches = Vec::new();
     for record in reader.records() {
         let record = record.map_err(|e| CommentsError::Csv {
             line: e.position().map_or(0, |p| p.line()),
@@ -187,28 +192,32 @@ pub fn import(
             &get(symbol_c),
             &langs,
         ) {
-            Ok(()) => applied += 1,
+            Ok((target, names)) => touches.push(Touch {
+                line,
+                target,
+                names,
+            }),
             Err(m) => rejected.push((line, m)),
         }
     }
-    // Symbols must still be unique and well formed after all rows.
-    let mut seen = std::collections::HashSet::new();
-    for s in work.symbols() {
-        if !s.name.is_empty() && !seen.insert(s.name.clone()) {
-            rejected.push((0, format!("symbol `{}` would be defined twice", s.name)));
-        }
+    if rejected.is_empty() {
+        rejected = guard::refusals(project, &work, &touches);
     }
     if !rejected.is_empty() {
+        rejected.sort();
+        rejected.dedup();
         return Err(CommentsError::Rejected(rejected));
     }
     *project = work;
-    Ok(applied)
+    Ok(touches.len())
 }
 
 fn address(key: &str) -> Result<Address, String> {
     Address::parse(key).map_err(|e| e.to_string())
 }
 
+/// Applies one row: what it changed, with the names it gave or took away, or why it cannot
+/// apply.
 fn apply_row(
     p: &mut Project,
     kind: &str,
@@ -216,7 +225,7 @@ fn apply_row(
     key: &str,
     symbol: &str,
     langs: &[(String, String)],
-) -> Result<(), String> {
+) -> Result<(Target, Vec<String>), String> {
     let profile = p.profile();
     match kind {
         "symbol" => {
@@ -227,6 +236,11 @@ fn apply_row(
             {
                 return Err(format!("`{symbol}` is not a valid symbol name"));
             }
+            check_symbol_area(a).map_err(|e| {
+                format!(
+                    "{e}: labels have no symbols, and a subprogram is named in its block (T007)"
+                )
+            })?;
             let name = if table.is_empty() {
                 "符号表1"
             } else {
@@ -246,20 +260,21 @@ fn apply_row(
                 }
             };
             let rows = &mut p.symbol_tables[t].rows;
-            let row = match rows.iter().position(|s| s.address == a) {
-                Some(i) => &mut rows[i],
-                None => {
-                    rows.push(Symbol {
-                        name: String::new(),
-                        address: a,
-                        comments: Comments::new(),
-                    });
-                    rows.last_mut().expect("just pushed")
-                }
-            };
-            row.name = symbol.to_string();
+            let r = rows.iter().position(|s| s.address == a).unwrap_or_else(|| {
+                rows.push(Symbol {
+                    name: String::new(),
+                    address: a,
+                    comments: Comments::new(),
+                });
+                rows.len() - 1
+            });
+            let row = &mut rows[r];
+            let old = std::mem::replace(&mut row.name, symbol.to_string());
             set_langs(&mut row.comments, langs);
-            Ok(())
+            Ok((
+                Target::Symbol { table: t, row: r },
+                vec![old, symbol.into()],
+            ))
         }
         "network" => {
             let block = p
@@ -277,12 +292,19 @@ fn apply_row(
                 .ok_or_else(|| format!("{table} has no network {n}"))?;
             net.title = symbol.to_string();
             set_langs(&mut net.comments, langs);
-            Ok(())
+            Ok((Target::Other, Vec::new()))
         }
         "message" => {
             let a = address(key)?;
             let k = MessageTable::row_of(a)
                 .ok_or_else(|| format!("{a} is not a message row (an A bit)"))?;
+            let rows = message_rows(profile);
+            if k >= rows {
+                return Err(format!(
+                    "{a} is beyond this controller's A range (A0000.0–{}), which `check` refuses (T005): use an A bit of that range",
+                    MessageTable::address(rows - 1)
+                ));
+            }
             let number = if symbol.is_empty() {
                 None
             } else {
@@ -299,41 +321,59 @@ fn apply_row(
                 .rows
                 .get_mut(k)
                 .ok_or_else(|| format!("{a} is not a message row"))?;
-            m.number = number;
+            let old = std::mem::replace(&mut m.number, number);
             set_langs(&mut m.texts, langs);
-            Ok(())
+            let names = [old, number]
+                .into_iter()
+                .flatten()
+                .map(|n| n.to_string())
+                .collect();
+            Ok((Target::Message(k), names))
         }
         "data" => {
             let a = address(key)?;
+            if !symbol.is_empty() && check_symbol_form(symbol).is_err() {
+                return Err(format!(
+                    "`{symbol}` is not a valid symbol name, which `check` refuses (T001)"
+                ));
+            }
             let d = &mut p.data;
-            let (sym, comments) = match table {
-                "D_FLOAT" => d
-                    .d_float
-                    .iter_mut()
-                    .find(|r| r.address == a)
-                    .map(|r| (&mut r.symbol, &mut r.comments)),
+            // The table's number as `check` counts the data tables: 0 D, 1 DT, 2 DC, 3 D_FLOAT.
+            let (n, found) = match table {
+                "D_FLOAT" => (
+                    3,
+                    d.d_float
+                        .iter_mut()
+                        .enumerate()
+                        .find(|(_, r)| r.address == a)
+                        .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
+                ),
                 "D" | "DT" | "DC" => {
-                    let rows = match table {
-                        "D" => &mut d.d,
-                        "DT" => &mut d.dt,
-                        _ => &mut d.dc,
+                    let (n, rows) = match table {
+                        "D" => (0, &mut d.d),
+                        "DT" => (1, &mut d.dt),
+                        _ => (2, &mut d.dc),
                     };
-                    rows.iter_mut()
-                        .find(|r| r.address == a)
-                        .map(|r| (&mut r.symbol, &mut r.comments))
+                    (
+                        n,
+                        rows.iter_mut()
+                            .enumerate()
+                            .find(|(_, r)| r.address == a)
+                            .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
+                    )
                 }
                 _ => {
                     return Err(format!(
                         "`{table}` is not a data table (D, D_FLOAT, DT, DC)"
                     ));
                 }
-            }
-            .ok_or_else(|| {
+            };
+            let (r, sym, comments) = found.ok_or_else(|| {
                 format!("the {table} table has no row {a}; add the row in the table first")
             })?;
-            *sym = symbol.to_string();
+            let old = std::mem::replace(sym, symbol.to_string());
             set_langs(comments, langs);
-            Ok(())
+            Ok((Target::Data { table: n, row: r }, vec![old, symbol.into()]))
         }
         "diagnosis" | "permission" => {
             let a = address(key)?;
@@ -347,7 +387,7 @@ fn apply_row(
                 .find(|r| r.address == a)
                 .ok_or_else(|| format!("the {kind} table has no row {a}"))?;
             set_langs(&mut row.comments, langs);
-            Ok(())
+            Ok((Target::Other, Vec::new()))
         }
         "mcode" => {
             let code: u32 = key
@@ -360,10 +400,13 @@ fn apply_row(
                 .find(|r| r.code == code)
                 .ok_or_else(|| format!("the M-code table has no M{code:02}"))?;
             set_langs(&mut row.comments, langs);
-            Ok(())
+            Ok((Target::Other, Vec::new()))
         }
         other => Err(format!(
             "unknown kind `{other}` (symbol, network, message, data, diagnosis, permission, mcode)"
         )),
     }
 }
+
+#[cfg(test)]
+mod tests;

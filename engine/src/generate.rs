@@ -46,6 +46,7 @@ pub enum Mix {
 struct Gen {
     rng: SplitMix64,
     next_coil: u32,
+    next_box_byte: u32,
     next_timer: u32,
     next_counter: u32,
     steps: u32,
@@ -68,6 +69,18 @@ impl Gen {
         // R0500.0 onwards, wrapping inside R (a repeated coil only warns).
         let byte = 500 + (n / 8) % 500;
         format!("R{byte:04}.{}", n % 8)
+    }
+
+    /// A byte of its own for a CMP or DECB result, R0100–R0499 (wrapping), away from the
+    /// coils: DECB writes its byte at every execution, so sharing one with a coil or another
+    /// box would be a real double write (W008).
+    fn box_byte(&mut self) -> u32 {
+        // The draw that once chose the byte is still made, so the rest of a program (and the
+        // benchmarks' figures) stays what it was for the same seed.
+        let _ = self.rng.below(490);
+        let n = self.next_box_byte;
+        self.next_box_byte += 1;
+        100 + n % 400
     }
 
     fn line(&mut self, text: &str, steps: u32) {
@@ -118,11 +131,11 @@ impl Gen {
                 self.line(&format!("ADDB 4 D{d:04} 1 {r} D{d:04} {e}"), 7);
             }
             4 => {
-                let byte = 500 + self.rng.below(490);
+                let byte = self.box_byte();
                 self.line(&format!("CMP  4 D{d:04} 100 R{byte:04}.0"), 5);
             }
             _ => {
-                let byte = 500 + self.rng.below(490);
+                let byte = self.box_byte();
                 let src = self.rng.below(500);
                 self.line(&format!("DECB 1 R{src:04} 0 R{byte:04}"), 5);
             }
@@ -136,6 +149,7 @@ pub fn program_il(steps: u32, mix: Mix, seed: u64) -> String {
     let mut g = Gen {
         rng: SplitMix64::new(seed),
         next_coil: 0,
+        next_box_byte: 0,
         next_timer: 0,
         next_counter: 0,
         steps: 0,

@@ -134,7 +134,7 @@ impl OperandSpec {
 }
 
 /// What an operand stands for, for the code that looks for it rather than for its position:
-/// the compiler's shared-timer warning, the instruction reference.
+/// the compiler's shared-timer, shared-output and preset warnings, the instruction reference.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Role {
     /// Nothing beyond its kind.
@@ -145,6 +145,10 @@ pub enum Role {
     CounterNumber,
     /// The preset a timer or counter reaches (PT, N).
     Preset,
+    /// An output the instruction writes at every execution, whatever ACT, as a coil does
+    /// (TMRB's, DECB's, PARI's, DIFU's and DIFD's OUT, WINDR's ERR): a second instruction
+    /// writing the same address loses its value to this one every scan (W008).
+    Driven,
 }
 
 impl Role {
@@ -153,7 +157,7 @@ impl Role {
         match self {
             Role::TimerNumber => Some(Area::T),
             Role::CounterNumber => Some(Area::C),
-            Role::Plain | Role::Preset => None,
+            Role::Plain | Role::Preset | Role::Driven => None,
         }
     }
 }

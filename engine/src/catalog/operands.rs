@@ -394,38 +394,47 @@ pub(super) const SHIFT: &[OperandSpec] = &[
         "Result address",
     ),
 ];
-pub(super) const TIMER: &[OperandSpec] = &[
-    with_role(
-        spec(
-            "T",
-            OperandKind::Timer,
-            T_ONLY,
-            Width::Bytes(4),
-            Access::ReadWrite,
-            "定时器号 T0–T199",
-            "Timer number T0–T199",
-        ),
-        Role::TimerNumber,
+const TIMER_T: OperandSpec = with_role(
+    spec(
+        "T",
+        OperandKind::Timer,
+        T_ONLY,
+        Width::Bytes(4),
+        Access::ReadWrite,
+        "定时器号 T0–T199",
+        "Timer number T0–T199",
     ),
-    with_role(
+    Role::TimerNumber,
+);
+// A negative preset counts as 0 (docs/plc.md, "Timer/counter"), so a constant is 0 or more,
+// as CTRC's N.
+const TIMER_PT: OperandSpec = with_role(
+    with_range(
         spec(
             "PT",
             OperandKind::ConstOrByte,
             DT_ONLY,
             Width::Bytes(4),
             Access::Read,
-            "设定时间（ms）：常数或 DT 地址",
-            "Preset time (ms): constant or DT address",
+            "设定时间（ms）：0–2147483647 的常数或 DT 地址",
+            "Preset time (ms): constant 0–2147483647 or DT address",
         ),
-        Role::Preset,
+        0,
+        CONST_MAX,
     ),
-    bit_out(
-        "OUT",
-        BITS_WRITE,
-        "定时到输出",
-        "Output when the time is up",
-    ),
-];
+    Role::Preset,
+);
+const TIMER_OUT: OperandSpec = bit_out(
+    "OUT",
+    BITS_WRITE,
+    "定时到输出",
+    "Output when the time is up",
+);
+/// TMRB clears OUT whenever ACT = 0, so its OUT is written at every execution.
+pub(super) const TMRB_OPERANDS: &[OperandSpec] =
+    &[TIMER_T, TIMER_PT, with_role(TIMER_OUT, Role::Driven)];
+/// TMRC keeps T and OUT while ACT = 0.
+pub(super) const TMRC_OPERANDS: &[OperandSpec] = &[TIMER_T, TIMER_PT, TIMER_OUT];
 pub(super) const TRIG: &[OperandSpec] = &[
     real_in(
         "IN",
@@ -436,11 +445,10 @@ pub(super) const TRIG: &[OperandSpec] = &[
     RST_ERR,
     REAL_ERR_LATCHED,
 ];
-pub(super) const ONE_BIT_OUT: &[OperandSpec] = &[bit_out(
-    "OUT",
-    BITS_WRITE,
-    "输出位地址",
-    "Output bit address",
+/// DIFU's and DIFD's OUT: 1 for the scan of the edge, 0 at every other execution.
+pub(super) const ONE_BIT_OUT: &[OperandSpec] = &[with_role(
+    bit_out("OUT", BITS_WRITE, "输出位地址", "Output bit address"),
+    Role::Driven,
 )];
 
 impl OperandSpec {

@@ -145,6 +145,7 @@ fn kind(o: &OperandSpec) -> String {
         Role::TimerNumber => format!("{kind}: the timer it runs"),
         Role::CounterNumber => format!("{kind}: the counter it runs"),
         Role::Preset => format!("{kind}: the preset"),
+        Role::Driven => format!("{kind}, written at every execution whatever ACT"),
     }
 }
 

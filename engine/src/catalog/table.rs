@@ -145,9 +145,9 @@ catalog! {
             real_in("IN2", "比较实数 2：常数或 D 地址", "Real 2: constant or D address"),
             bits3_out(CMPR_OUT, "结果：OUT=IN1>IN2，OUT+1=相等，OUT+2=IN1<IN2", "Result: OUT = IN1>IN2, OUT+1 = equal, OUT+2 = IN1<IN2"),
         ] list? "实数比较" "Compare real numbers";
-        Tmrb "TMRB" Function TimerCounter [TIMER] shared?
+        Tmrb "TMRB" Function TimerCounter [TMRB_OPERANDS] shared?
             "定时器：ACT=1 计时，T≥PT 时 OUT=1；ACT=0 时 T、OUT 清 0" "On-delay timer: times while ACT = 1, OUT = 1 once T ≥ PT; ACT = 0 clears T and OUT";
-        Tmrc "TMRC" Function TimerCounter [TIMER] shared?
+        Tmrc "TMRC" Function TimerCounter [TMRC_OPERANDS] shared?
             "累计定时器：ACT=0 时保持 T 与 OUT" "Retentive timer: ACT = 0 keeps T and OUT";
         Ctrc "CTRC" Function TimerCounter [
             digits("FMT", 1, "格式 00ab：b=0 加计数/1 减计数，a=初始值 0/1", "Format 00ab: b = 0 up / 1 down, a = initial value 0 / 1"),
@@ -169,7 +169,7 @@ catalog! {
             SIZE_STD,
             byte_in("IN", Width::SizeOf(0), "译码数据地址", "Address of the code to decode"),
             konst("BASE", -CONST_MAX, CONST_MAX, "译码基数", "Base of the decoded range"),
-            byte_out("OUT", RELAYS_WRITE, Width::Bytes(1), "译码结果字节：IN=BASE+k 时位 k 为 1", "Result byte: bit k is 1 when IN = BASE+k"),
+            with_role(byte_out("OUT", RELAYS_WRITE, Width::Bytes(1), "译码结果字节：IN=BASE+k 时位 k 为 1", "Result byte: bit k is 1 when IN = BASE+k"), Role::Driven),
         ] list? "二进制译码：判断 IN 是否为 BASE…BASE+7" "Decode binary: tests IN against BASE…BASE+7";
         Codb "CODB" Function DataTransfer table { first: 4, count: 1, entry: CODB_TABLE_ENTRY } [
             size("SIZE1：输出数据长度 1、2 或 4 字节", "SIZE1: output size 1, 2 or 4 bytes"),
@@ -198,7 +198,7 @@ catalog! {
             digits("OE", 1, "0000 偶校验，0001 奇校验", "0000 even, 0001 odd parity"),
             rst("复位：为 1 时 OUT := 0", "Reset: 1 makes OUT := 0"),
             only(byte_in("IN", Width::Bytes(1), "校验数据（1 字节）", "Data to check (1 byte)"), RELAYS_AND_D),
-            bit_out("OUT", BITS_WRITE, "校验出错输出", "Parity-error output"),
+            with_role(bit_out("OUT", BITS_WRITE, "校验出错输出", "Parity-error output"), Role::Driven),
         ] list? "奇偶校验" "Parity check";
         Addb "ADDB" Function IntegerMath [ARITH_B] shared? "二进制加法：OUT := IN1 + IN2" "Binary add: OUT := IN1 + IN2";
         Addr "ADDR" Function RealMath [ARITH_R] shared? "实数加法" "Real add";
@@ -231,7 +231,7 @@ catalog! {
         Divr "DIVR" Function RealMath [MUL_DIV_R] shared? "实数除法" "Real divide";
         Windr "WINDR" Function Cnc [
             spec("IN", OperandKind::Byte, D_ONLY, Width::Table, Access::ReadWrite, "窗口数据块首地址（D）", "First D address of the window block"),
-            spec("ERR", OperandKind::BitOrByte, BYTES_WRITE, Width::Bytes(1), Access::Write, "完成输出：处理结束时为 1", "Completion output: 1 when processing has ended"),
+            with_role(spec("ERR", OperandKind::BitOrByte, BYTES_WRITE, Width::Bytes(1), Access::Write, "完成输出：处理结束时为 1", "Completion output: 1 when processing has ended"), Role::Driven),
         ] list? "读写 CNC 窗口数据" "CNC window read/write";
         Axctl "AXCTL" Function Cnc [
             with_range(unsigned_in("GRP", Width::Bytes(1), 4, "控制组 1–4（A–D）", "Control group 1–4 (A–D)"), 1, 4),

@@ -105,3 +105,28 @@ fn timers_and_counters_name_their_number_and_preset() {
         }
     }
 }
+
+#[test]
+fn the_outputs_written_whatever_act_are_marked_driven() {
+    // What the VM writes at ACT = 0 too (docs/plc.md, "Common rules"); W008 reads the mark.
+    let driven: Vec<String> = CATALOG
+        .iter()
+        .flat_map(|s| {
+            s.operands
+                .iter()
+                .filter(|o| o.role == Role::Driven)
+                .map(move |o| format!("{} {}", s.name, o.name))
+        })
+        .collect();
+    assert_eq!(
+        driven,
+        [
+            "TMRB OUT",
+            "DECB OUT",
+            "PARI OUT",
+            "DIFU OUT",
+            "DIFD OUT",
+            "WINDR ERR"
+        ]
+    );
+}

@@ -17,9 +17,9 @@ pub const BLOCK_STACK_DEPTH: usize = 32;
 pub const BRANCH_STACK_DEPTH: usize = 16;
 
 /// Where an instruction is: (block, network, origin).
-type Place = (usize, usize, Origin);
+pub(super) type Place = (usize, usize, Origin);
 
-fn place_text(program: &Program, p: Place) -> String {
+pub(super) fn place_text(program: &Program, p: Place) -> String {
     let block = program.blocks[p.0].kind.label();
     match p.2 {
         Origin::Line(l) => format!("line {l}"),
@@ -36,7 +36,7 @@ fn place_text(program: &Program, p: Place) -> String {
 }
 
 /// The place of `p` in Chinese, as a diagnostic's location reads.
-fn place_text_zh(program: &Program, p: Place) -> String {
+pub(super) fn place_text_zh(program: &Program, p: Place) -> String {
     Location {
         block: p.0,
         block_label: program.blocks[p.0].kind.label(),
@@ -160,6 +160,9 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
             check_stacks(&program.blocks[b].networks[n].instrs, sink);
         }
     }
+
+    super::writes::check_writes(program, profile, sink);
+    super::presets::check_presets(program, project, sink);
 
     // Jumps and calls, now that every label and subprogram is known.
     let mut calls: BTreeMap<usize, Vec<(usize, Place)>> = BTreeMap::new();

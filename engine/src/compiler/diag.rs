@@ -101,6 +101,8 @@ pub enum Code {
     W005MessageHalf,
     W006VersionLength,
     W007CommentLength,
+    W008OutputTwice,
+    W009PresetRange,
 }
 
 impl Code {
@@ -151,6 +153,8 @@ impl Code {
         Code::W005MessageHalf,
         Code::W006VersionLength,
         Code::W007CommentLength,
+        Code::W008OutputTwice,
+        Code::W009PresetRange,
     ];
 
     /// What is wrong, in one Chinese phrase in the words of the GSK manual (docs/diagnostics.md
@@ -278,6 +282,14 @@ impl Code {
                 "注释超过 CNC 保存的 127 字节",
                 "comment longer than 127 bytes",
             ),
+            Code::W008OutputTwice => (
+                "功能指令的输出地址被另一条指令覆盖",
+                "box output also written by another instruction",
+            ),
+            Code::W009PresetRange => (
+                "数据表中的定时器或计数器预置值超出范围",
+                "table preset out of its instruction's range",
+            ),
         }
     }
 
@@ -326,6 +338,8 @@ impl Code {
             Code::W005MessageHalf => "W005",
             Code::W006VersionLength => "W006",
             Code::W007CommentLength => "W007",
+            Code::W008OutputTwice => "W008",
+            Code::W009PresetRange => "W009",
             Code::W001CoilTwice => "W001",
             Code::W002TimerTwice => "W002",
             Code::W003BitsSpill => "W003",

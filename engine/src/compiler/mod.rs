@@ -3,7 +3,8 @@
 //!
 //! Phases: [`lower`] reads each network's grid as rung trees (structure checks), [`rung`]
 //! emits their instructions, [`check`] checks operands, labels, calls, stacks and step
-//! limits against the catalogue and the profile. The IL importer runs the other way through
+//! limits against the catalogue and the profile, [`writes`] looks for outputs two instructions
+//! fight over, [`presets`] for table presets out of their instruction's range. The IL importer runs the other way through
 //! [`decompile`] and [`layout`]; [`written`] keeps an imported network's list as written.
 
 pub mod check;
@@ -12,8 +13,12 @@ pub mod diag;
 pub mod layout;
 pub mod lower;
 pub mod operands;
+pub mod presets;
 pub mod rung;
 pub mod tables;
+#[cfg(test)]
+mod warn_tests;
+pub mod writes;
 pub mod written;
 #[cfg(test)]
 pub(crate) mod zh_tests;

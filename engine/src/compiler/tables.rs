@@ -255,12 +255,19 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     format!("{} = {} 超出其上下限 {lo}…{hi}", row.address, row.value),
                 );
             }
-            if area == Area::C && row.value < 0 {
+            // DC holds counter presets, and a counter counts 0…N (docs/plc.md, CTRC).
+            if area == Area::Dc && row.value < 0 {
                 sink.report(
                     at(r, 1),
                     Code::T004DataValue,
-                    "a counter value is 0…2147483647",
-                    "计数器的值为 0…2147483647",
+                    format!(
+                        "{} = {}: a counter preset is 0…2147483647",
+                        row.address, row.value
+                    ),
+                    format!(
+                        "{} = {}：计数器预置值为 0…2147483647",
+                        row.address, row.value
+                    ),
                 );
             }
         }
@@ -420,6 +427,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
 mod tests {
     use super::*;
     use crate::compiler::compile;
+    use crate::model::DataRow;
     use crate::profile::ProfileId;
 
     fn t005(p: &Project) -> Vec<String> {
@@ -446,5 +454,85 @@ mod tests {
         assert!(found[0].contains("A0030.0 is beyond this controller's A range"));
         p.profile = ProfileId::Gsk988ta;
         assert!(t005(&p).is_empty(), "the 988TA has A0–A49");
+    }
+
+    /// (table number, row, column) of every diagnostic of `code`, in order.
+    fn places(p: &Project, code: Code) -> Vec<(usize, u32, u32)> {
+        compile(p)
+            .diagnostics
+            .iter()
+            .filter(|d| d.code == code)
+            .map(|d| match d.location.origin {
+                Origin::Cell { row, col } => (d.location.network, row, col),
+                other => panic!("a table diagnostic without a cell: {other:?}"),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_data_address_listed_twice_is_refused_at_the_later_row() {
+        let a = |t: &str| Address::parse(t).unwrap();
+        let mut p = Project::default();
+        p.data.d = vec![DataRow::new(a("D0001"), 1), DataRow::new(a("D0001"), 2)];
+        p.data.dt = vec![DataRow::new(a("DT0001"), 1), DataRow::new(a("DT0001"), 2)];
+        p.data.dc = vec![DataRow::new(a("DC0001"), 1), DataRow::new(a("DC0001"), 2)];
+        // D_FLOAT shares the D addresses: D0001 is a third time there.
+        p.data.d_float = vec![crate::model::RealRow::new(a("D0001"), 1.0)];
+        assert_eq!(
+            places(&p, Code::T003DataAddress),
+            [(0, 1, 0), (1, 1, 0), (2, 1, 0), (3, 0, 0)]
+        );
+    }
+
+    #[test]
+    fn an_m_code_or_an_alarm_number_listed_twice_is_refused_at_the_later_row() {
+        let m_codes = [3, 8, 3]
+            .into_iter()
+            .map(|code| crate::model::MCodeRow {
+                code,
+                comments: Default::default(),
+            })
+            .collect();
+        let mut p = Project {
+            m_codes,
+            ..Project::default()
+        };
+        assert_eq!(places(&p, Code::T008TableKey), [(0, 2, 0)]);
+        for (k, n) in [(1, 1001), (2, 1002), (5, 1001)] {
+            p.messages.rows[k].number = Some(n);
+            p.messages.rows[k].texts.insert("zh".into(), "报警".into());
+        }
+        assert_eq!(places(&p, Code::T005MessageNumber), [(0, 5, 1)]);
+    }
+
+    #[test]
+    fn a_negative_counter_preset_in_the_dc_table_is_refused_at_its_value() {
+        let mut p = Project::default();
+        p.data
+            .dc
+            .push(DataRow::new(Address::parse("DC0001").unwrap(), 5));
+        p.data
+            .dc
+            .push(DataRow::new(Address::parse("DC0002").unwrap(), -5));
+        // A negative D or DT value is no counter preset.
+        p.data
+            .d
+            .push(DataRow::new(Address::parse("D0001").unwrap(), -5));
+        p.data
+            .dt
+            .push(DataRow::new(Address::parse("DT0001").unwrap(), -5));
+        let found: Vec<_> = compile(&p)
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.code == Code::T004DataValue)
+            .collect();
+        assert_eq!(found.len(), 1, "{found:?}");
+        let d = &found[0];
+        assert_eq!(
+            (d.location.block_label.as_str(), d.location.network),
+            ("DATA", 2)
+        );
+        assert_eq!(d.location.origin, Origin::Cell { row: 1, col: 1 });
+        assert!(d.message.starts_with("DC0002 = -5"), "{}", d.message);
     }
 }

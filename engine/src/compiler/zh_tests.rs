@@ -123,6 +123,7 @@ const IL_CODES: &[Code] = &[
     Code::W001CoilTwice,
     Code::W002TimerTwice,
     Code::W003BitsSpill,
+    Code::W008OutputTwice,
 ];
 
 /// The codes the drawn networks reach.
@@ -152,6 +153,7 @@ const TABLE_CODES: &[Code] = &[
     Code::W005MessageHalf,
     Code::W006VersionLength,
     Code::W007CommentLength,
+    Code::W009PresetRange,
 ];
 
 #[test]
@@ -297,6 +299,11 @@ fn every_diagnostic_of_the_tables_is_in_chinese_with_its_specifics() {
     p.data.dt.push(DataRow::new(addr("DT5"), 0));
     p.data.dt[3].symbol = "1ST".into();
     p.data.dc.push(DataRow::new(addr("DT6"), 0));
+    // A timer reading a negative preset from the DT table.
+    p.data.dt.push(DataRow::new(addr("DT7"), -5));
+    p.ladder = Ladder::new(4);
+    let timer = drawn(1, 4, &["X1.0 - - - [TMRB_T1_DT7_R1.0]"]);
+    p.ladder.blocks[1].networks.push(timer);
     p.messages.rows[0].number = Some(999);
     p.messages.rows[1].number = Some(1001);
     p.messages.rows[1].texts = comments("zh", "报警");
