@@ -1,4 +1,4 @@
-//! Large inputs stay linear (docs/plc.md, "Input size"): what each command makes of a huge
+//! Large inputs stay linear (docs/files.md, "Input size"): what each command makes of a huge
 //! box, a long ORB chain, a list without NETWORK lines or a line-long unknown word is bounded
 //! by the input, never by its square. The times are measured by `cargo bench --bench size`;
 //! these tests check the shapes that made them quadratic.
