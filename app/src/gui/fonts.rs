@@ -4,7 +4,8 @@
 use egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
 use egui::{FontData, FontFamily};
 
-static CJK: &[u8] = include_bytes!("../../../assets/fonts/wqy-microhei.ttc");
+/// The same bytes the printed documents embed: one copy of the 5 MB font in the program.
+static CJK: &[u8] = ladder_print::FONT;
 
 /// Adds the CJK font to a context (before the first frame).
 pub fn install(ctx: &egui::Context) {

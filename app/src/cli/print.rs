@@ -1,0 +1,268 @@
+//! `print PATH -o OUT.pdf|OUT.svg`: the project as a printed document (docs/printing.md).
+
+use super::{Say, project_of};
+use clap::ValueEnum;
+use ladder_print::{Blocks, Labels, Lang, Options, Paper};
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+/// Paper sizes on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum PaperArg {
+    /// ISO A4.
+    A4,
+    /// ISO A3.
+    A3,
+    /// US Letter.
+    Letter,
+}
+
+/// How operands are printed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum OperandsArg {
+    /// Addresses.
+    Address,
+    /// Symbols where they exist.
+    Symbol,
+    /// Address and symbol.
+    Both,
+}
+
+/// The document's language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum LanguageArg {
+    /// Chinese.
+    Zh,
+    /// English.
+    En,
+    /// Chinese and English.
+    Both,
+}
+
+/// A block on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum BlockArg {
+    /// Level 1.
+    Level1,
+    /// Level 2.
+    Level2,
+    /// Every subprogram.
+    Subs,
+}
+
+/// What `print` was asked for.
+pub struct PrintArgs<'a> {
+    pub path: &'a Path,
+    pub output: &'a Path,
+    pub blocks: &'a [BlockArg],
+    pub network: Option<&'a str>,
+    pub tables: bool,
+    pub xref: bool,
+    pub paper: PaperArg,
+    pub landscape: bool,
+    pub language: Option<LanguageArg>,
+    pub operands: OperandsArg,
+    pub no_comments: bool,
+    pub page: Option<usize>,
+    pub date: Option<&'a str>,
+}
+
+enum Kind {
+    Pdf,
+    Svg,
+}
+
+/// Finds `BLOCK:N` (`LEVEL2:3`, `P0001:1`) in the project: (block index, network index).
+fn find_network(
+    project: &ladder_engine::model::Project,
+    text: &str,
+) -> Result<(usize, usize), String> {
+    let (block, n) = text
+        .split_once(':')
+        .ok_or_else(|| format!("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3"))?;
+    let b = project
+        .ladder
+        .blocks
+        .iter()
+        .position(|b| b.kind.label().eq_ignore_ascii_case(block))
+        .ok_or_else(|| {
+            format!("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")
+        })?;
+    let count = project.ladder.blocks[b].networks.len();
+    match n.parse::<usize>() {
+        Ok(n) if (1..=count).contains(&n) => Ok((b, n - 1)),
+        _ => Err(format!("`{n}`: {block} has networks 1 to {count}")),
+    }
+}
+
+/// Writes `bytes` to `path` through a temporary file beside it, so a failed write never
+/// leaves half a document under the name asked for.
+fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    std::fs::write(&tmp, bytes)?;
+    std::fs::rename(&tmp, path).inspect_err(|_| {
+        let _ = std::fs::remove_file(&tmp);
+    })
+}
+
+/// Runs `print`.
+pub(super) fn print(
+    args: &PrintArgs<'_>,
+    say: Say,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> anyhow::Result<i32> {
+    let kind = match args
+        .output
+        .extension()
+        .map(|e| e.to_string_lossy().to_ascii_lowercase())
+        .as_deref()
+    {
+        Some("pdf") => Kind::Pdf,
+        Some("svg") => Kind::Svg,
+        _ => anyhow::bail!(say.pick(
+            format!(
+                "{}: the output is a .pdf or a .svg file",
+                args.output.display()
+            ),
+            format!("{}：输出文件须为 .pdf 或 .svg", args.output.display())
+        )),
+    };
+    if let Some(d) = args.date
+        && !valid_date(d)
+    {
+        anyhow::bail!(say.pick(
+            format!("--date {d}: write the date as YYYY-MM-DD, e.g. 2026-12-02"),
+            format!("--date {d}：日期应写成 YYYY-MM-DD，例如 2026-12-02")
+        ));
+    }
+    let project = match project_of(args.path, say, err)? {
+        Ok(p) => p,
+        Err(code) => return Ok(code),
+    };
+    let only = match args.network {
+        Some(text) => Some(vec![find_network(&project, text).map_err(|e| {
+            anyhow::anyhow!(say.pick(format!("--network {e}"), format!("--network {e}")))
+        })?]),
+        None => None,
+    };
+    let blocks = if args.blocks.is_empty() {
+        Blocks::default()
+    } else {
+        Blocks {
+            level1: args.blocks.contains(&BlockArg::Level1),
+            level2: args.blocks.contains(&BlockArg::Level2),
+            subs: args.blocks.contains(&BlockArg::Subs),
+        }
+    };
+    let lang = match args.language {
+        Some(LanguageArg::Zh) => Lang::Zh,
+        Some(LanguageArg::En) => Lang::En,
+        Some(LanguageArg::Both) => Lang::Both,
+        None if say.zh => Lang::Zh,
+        None => Lang::En,
+    };
+    let options = Options {
+        paper: match args.paper {
+            PaperArg::A4 => Paper::A4,
+            PaperArg::A3 => Paper::A3,
+            PaperArg::Letter => Paper::Letter,
+        },
+        landscape: args.landscape,
+        lang,
+        labels: match args.operands {
+            OperandsArg::Address => Labels::Address,
+            OperandsArg::Symbol => Labels::Symbol,
+            OperandsArg::Both => Labels::Both,
+        },
+        element_comments: !args.no_comments,
+        blocks,
+        title_page: only.is_none(),
+        only,
+        tables: args.tables,
+        xref: args.xref,
+        date: args.date.map_or_else(ladder_print::today, str::to_string),
+    };
+    let name = args
+        .path
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let doc = ladder_print::document(&project, &name, &options);
+    let total = doc.pages.len();
+    if let Some(p) = args.page
+        && !(1..=total).contains(&p)
+    {
+        anyhow::bail!(say.pick(
+            format!("--page {p}: the document has pages 1 to {total}"),
+            format!("--page {p}：文档只有第 1 至 {total} 页")
+        ));
+    }
+    let cannot = |p: &Path, e: std::io::Error| anyhow::anyhow!(say.cannot_write(p, e));
+    match kind {
+        Kind::Pdf => {
+            let mut doc = doc;
+            if let Some(p) = args.page {
+                doc.pages = vec![doc.pages.swap_remove(p - 1)];
+            }
+            let bytes = ladder_print::pdf(&doc).map_err(|e| anyhow::anyhow!("{e}"))?;
+            write_atomic(args.output, &bytes).map_err(|e| cannot(args.output, e))?;
+            let n = doc.pages.len();
+            let _ = writeln!(
+                out,
+                "{}",
+                say.pick(
+                    format!("{}: {n} pages", args.output.display()),
+                    format!("{}：{n} 页", args.output.display())
+                )
+            );
+        }
+        Kind::Svg => {
+            let pages: Vec<usize> = match args.page {
+                Some(p) => vec![p - 1],
+                None => (0..total).collect(),
+            };
+            let single = pages.len() == 1;
+            for i in pages {
+                let path = if single {
+                    args.output.to_path_buf()
+                } else {
+                    numbered(args.output, i + 1)
+                };
+                let svg = ladder_print::page_svg(&doc, &doc.pages[i]);
+                write_atomic(&path, svg.as_bytes()).map_err(|e| cannot(&path, e))?;
+                let _ = writeln!(out, "{}", path.display());
+            }
+        }
+    }
+    Ok(0)
+}
+
+/// `OUT.svg` → `OUT-N.svg`, one file per page.
+fn numbered(output: &Path, n: usize) -> PathBuf {
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    output.with_file_name(format!("{stem}-{n}.svg"))
+}
+
+/// Whether `d` reads as `YYYY-MM-DD` with a month 1–12 and a day 1–31.
+fn valid_date(d: &str) -> bool {
+    let parts: Vec<&str> = d.split('-').collect();
+    let num = |s: &str, len: usize| {
+        (s.len() == len && s.bytes().all(|b| b.is_ascii_digit()))
+            .then(|| s.parse::<u32>().ok())
+            .flatten()
+    };
+    matches!(
+        parts.as_slice(),
+        [y, m, day] if num(y, 4).is_some()
+            && num(m, 2).is_some_and(|m| (1..=12).contains(&m))
+            && num(day, 2).is_some_and(|d| (1..=31).contains(&d))
+    )
+}

@@ -1,0 +1,136 @@
+//! The bundled CJK font and the widths of texts set in it: layout measures with the very
+//! font the PDF embeds, so a label that fits on the page fits in print.
+
+use std::collections::HashMap;
+
+/// WenQuanYi Micro Hei (a TrueType collection; face 0 is used), for Chinese and Latin alike.
+pub static FONT: &[u8] = include_bytes!("../../assets/fonts/wqy-microhei.ttc");
+
+/// Advance widths of the font's characters, in em, looked up once each.
+pub struct Metrics {
+    face: ttf_parser::Face<'static>,
+    em: f32,
+    cache: HashMap<char, f32>,
+}
+
+impl Metrics {
+    /// The metrics of the bundled font.
+    pub fn new() -> Metrics {
+        let face = ttf_parser::Face::parse(FONT, 0).expect("the bundled font parses");
+        let em = f32::from(face.units_per_em());
+        Metrics {
+            face,
+            em,
+            cache: HashMap::new(),
+        }
+    }
+
+    fn advance(&mut self, c: char) -> f32 {
+        if let Some(a) = self.cache.get(&c) {
+            return *a;
+        }
+        let a = self
+            .face
+            .glyph_index(c)
+            .and_then(|g| self.face.glyph_hor_advance(g))
+            .map_or(if c.is_ascii() { 0.55 } else { 1.0 }, |a| {
+                f32::from(a) / self.em
+            });
+        self.cache.insert(c, a);
+        a
+    }
+
+    /// The width of `text` at `size` points.
+    pub fn width(&mut self, text: &str, size: f32) -> f32 {
+        text.chars().map(|c| self.advance(c)).sum::<f32>() * size
+    }
+
+    /// `text` cut to fit `width` at `size`, with `…` where it was cut.
+    pub fn fit(&mut self, text: &str, size: f32, width: f32) -> String {
+        if self.width(text, size) <= width {
+            return text.to_string();
+        }
+        let room = width - self.width("…", size);
+        let mut used = 0.0;
+        let mut out = String::new();
+        for c in text.chars() {
+            let a = self.advance(c) * size;
+            if used + a > room {
+                break;
+            }
+            used += a;
+            out.push(c);
+        }
+        out.push('…');
+        out
+    }
+
+    /// `text` broken into lines of at most `width` at `size`: at spaces where it can, inside
+    /// a word (or between Chinese characters) where it must.
+    pub fn wrap(&mut self, text: &str, size: f32, width: f32) -> Vec<String> {
+        let mut lines = Vec::new();
+        for para in text.lines() {
+            let mut line = String::new();
+            let mut used = 0.0;
+            let mut last_space: Option<usize> = None;
+            for c in para.chars() {
+                let a = self.advance(c) * size;
+                if used + a > width && !line.is_empty() {
+                    match last_space.filter(|_| c != ' ') {
+                        Some(at) => {
+                            let rest = line.split_off(at + 1);
+                            lines.push(line.trim_end().to_string());
+                            line = rest;
+                        }
+                        None => lines.push(std::mem::take(&mut line)),
+                    }
+                    used = self.width(&line, size);
+                    last_space = None;
+                    if c == ' ' && line.is_empty() {
+                        continue;
+                    }
+                }
+                if c == ' ' {
+                    last_space = Some(line.len());
+                }
+                line.push(c);
+                used += a;
+            }
+            lines.push(line);
+        }
+        lines
+    }
+}
+
+impl Default for Metrics {
+    fn default() -> Self {
+        Metrics::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn chinese_is_wider_than_latin_and_long_text_is_cut() {
+        let mut m = Metrics::new();
+        assert!(m.width("主轴", 10.0) > m.width("ab", 10.0));
+        let cut = m.fit("Spindle forward rotation", 10.0, 40.0);
+        assert!(cut.ends_with('…') && m.width(&cut, 10.0) <= 40.0, "{cut}");
+        assert_eq!(m.fit("X0002.1", 10.0, 100.0), "X0002.1");
+    }
+
+    #[test]
+    fn wrapping_breaks_at_spaces_and_keeps_every_word() {
+        let mut m = Metrics::new();
+        let lines = m.wrap("the spindle turns when the door is closed", 10.0, 80.0);
+        assert!(lines.len() > 1, "{lines:?}");
+        assert_eq!(lines.join(" "), "the spindle turns when the door is closed");
+        for l in &lines {
+            assert!(m.width(l, 10.0) <= 80.0, "{l}");
+        }
+        let zh = m.wrap("主轴正转时防护门必须关闭否则报警", 10.0, 50.0);
+        assert_eq!(zh.concat(), "主轴正转时防护门必须关闭否则报警");
+    }
+}
