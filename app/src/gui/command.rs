@@ -120,6 +120,14 @@ commands! {
     ExportComments => ExportComments;
     /// Import comments from CSV.
     ImportComments => ImportComments;
+    /// The page setup of printing.
+    PageSetup => PageSetup;
+    /// The pages as they will print.
+    PrintPreview => PrintPreview;
+    /// Print: to the system's print queue, else to a PDF file.
+    Print => Print, COMMAND P;
+    /// Write the printed document as PDF or SVG pages.
+    ExportDocument => ExportDocument;
     /// Quit.
     Exit => Exit, ALT F4;
     /// Take back the last change.
@@ -317,6 +325,11 @@ pub const FILE_MENU: &[Option<Command>] = &[
     Some(Command::ExportIl),
     Some(Command::ExportComments),
     Some(Command::ImportComments),
+    None,
+    Some(Command::PageSetup),
+    Some(Command::PrintPreview),
+    Some(Command::Print),
+    Some(Command::ExportDocument),
 ];
 
 /// The View menu's switches.

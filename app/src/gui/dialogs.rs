@@ -24,6 +24,8 @@ pub enum DialogKind {
     ImportComments,
     /// Pick where to write the signal trace (CSV, the `sim --trace` format).
     ExportTrace,
+    /// Pick where to write the printed document (PDF, or SVG pages).
+    ExportDocument,
 }
 
 impl DialogKind {
@@ -35,6 +37,7 @@ impl DialogKind {
                 | DialogKind::ExportIl
                 | DialogKind::ExportComments
                 | DialogKind::ExportTrace
+                | DialogKind::ExportDocument
         )
     }
 
@@ -46,6 +49,7 @@ impl DialogKind {
             DialogKind::ExportComments | DialogKind::ImportComments | DialogKind::ExportTrace => {
                 ("CSV", &["csv"])
             }
+            DialogKind::ExportDocument => ("PDF / SVG", &["pdf", "svg"]),
         }
     }
 }

@@ -184,6 +184,7 @@ fn texts(d: egui_file::FileDialog, kind: DialogKind, lang: Lang) -> egui_file::F
         DialogKind::ExportComments => Msg::ExportComments,
         DialogKind::ImportComments => Msg::ImportComments,
         DialogKind::ExportTrace => Msg::TraceExport,
+        DialogKind::ExportDocument => Msg::ExportDocument,
     };
     d.title(title.text(lang))
         .open_button_text(t(Msg::DialogOpen))

@@ -17,6 +17,7 @@ pub mod menus;
 pub mod online;
 pub mod place;
 pub mod pointer;
+pub mod printing;
 pub mod replace;
 pub mod selection;
 pub mod settings;
@@ -83,6 +84,8 @@ pub struct LadderApp {
     pub tables: tables::TableState,
     /// The cross-reference views: the index filter and what was derived from the project.
     pub xref: xref_view::XrefState,
+    /// Printing: the page setup, the preview, the print queue.
+    pub print: printing::PrintState,
     /// The egui context, for starting dialogs outside a frame's closures.
     pub ctx: Option<egui::Context>,
     /// Commands asked for during this frame; they run after it.
@@ -117,6 +120,7 @@ impl LadderApp {
             help: None,
             tables: tables::TableState::default(),
             xref: Default::default(),
+            print: Default::default(),
             ctx: None,
             pending: Vec::new(),
             last_change: 0,
@@ -645,6 +649,7 @@ impl eframe::App for LadderApp {
             self.function_dialog_ui(&ctx);
         }
         self.help_ui(&ctx);
+        self.print_ui(&ctx);
         self.value_window_ui(&ctx);
         self.run_pending();
     }

@@ -71,3 +71,8 @@ pub const TRACE_BIT: Color32 = Color32::from_rgb(0x10, 0xa0, 0x40);
 pub const TRACE_VALUE: Color32 = Color32::from_rgb(0x30, 0x70, 0xe0);
 /// The cursor line of the signal trace.
 pub const TRACE_CURSOR: Color32 = Color32::from_rgb(0xe0, 0x30, 0x30);
+
+/// The grey ink of printed pages (comments, headers) in the print preview.
+pub const PRINT_GREY: Color32 = Color32::from_gray(96);
+/// Around the pages of the print preview.
+pub const PRINT_DESK: Color32 = Color32::from_gray(150);
