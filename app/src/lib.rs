@@ -2,6 +2,7 @@
 //! this library so that tests drive it without a process or a window; `main.rs` only passes
 //! the arguments in.
 
+mod atomic;
 pub mod cli;
 pub mod gui;
 pub mod source;

@@ -18,4 +18,4 @@ pub use font::{FONT, Metrics};
 pub use options::{Blocks, Labels, Lang, Options, Paper, today};
 pub use page::{Anchor, Document, Ink, Item, Page, Pt, Seg};
 pub use pdf::{PdfError, pdf};
-pub use svg::page_svg;
+pub use svg::{page_svg, svg_page_path};

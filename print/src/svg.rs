@@ -3,6 +3,7 @@
 
 use crate::page::{Anchor, Document, Item, Page, Seg};
 use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
 
 fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
@@ -76,4 +77,17 @@ pub fn page_svg(doc: &Document, page: &Page) -> String {
     }
     out.push_str("</g>\n</svg>\n");
     out
+}
+
+/// Where page `index` (from 0) of a document of `count` pages goes when `output` is asked
+/// for: `output` itself for a single page, else `STEM-N.svg` beside it, N from 1.
+pub fn svg_page_path(output: &Path, index: usize, count: usize) -> PathBuf {
+    if count == 1 {
+        return output.to_path_buf();
+    }
+    let stem = output
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    output.with_file_name(format!("{stem}-{}.svg", index + 1))
 }

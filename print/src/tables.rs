@@ -33,6 +33,26 @@ fn opt<T: ToString>(v: Option<T>) -> String {
     v.map(|v| v.to_string()).unwrap_or_default()
 }
 
+/// One row of a data-setting table, integer or real.
+fn data_row<T: ToString>(
+    address: ladder_engine::Address,
+    value: T,
+    min: Option<T>,
+    max: Option<T>,
+    symbol: &str,
+    c: &Comments,
+    options: &Options,
+) -> Vec<String> {
+    vec![
+        address.to_string(),
+        value.to_string(),
+        opt(min),
+        opt(max),
+        symbol.to_string(),
+        comments(c, options),
+    ]
+}
+
 /// Lays a table out on pages, a new page first.
 fn put(
     table: &Table,
@@ -183,20 +203,77 @@ pub(crate) fn tables(
         (symbol.clone(), 0.18),
         (comment.clone(), 0.38),
     ];
-    for (name, rows) in [("D", &data.d), ("DT", &data.dt), ("DC", &data.dc)] {
-        let rows = rows
-            .iter()
-            .map(|r| {
-                vec![
-                    r.address.to_string(),
-                    r.value.to_string(),
-                    opt(r.min),
-                    opt(r.max),
-                    r.symbol.clone(),
-                    comments(&r.comments, options),
-                ]
-            })
-            .collect();
+    let tables: [(&str, Vec<Vec<String>>); 4] = [
+        (
+            "D",
+            data.d
+                .iter()
+                .map(|r| {
+                    data_row(
+                        r.address,
+                        r.value,
+                        r.min,
+                        r.max,
+                        &r.symbol,
+                        &r.comments,
+                        options,
+                    )
+                })
+                .collect(),
+        ),
+        (
+            "DT",
+            data.dt
+                .iter()
+                .map(|r| {
+                    data_row(
+                        r.address,
+                        r.value,
+                        r.min,
+                        r.max,
+                        &r.symbol,
+                        &r.comments,
+                        options,
+                    )
+                })
+                .collect(),
+        ),
+        (
+            "DC",
+            data.dc
+                .iter()
+                .map(|r| {
+                    data_row(
+                        r.address,
+                        r.value,
+                        r.min,
+                        r.max,
+                        &r.symbol,
+                        &r.comments,
+                        options,
+                    )
+                })
+                .collect(),
+        ),
+        (
+            "D_FLOAT",
+            data.d_float
+                .iter()
+                .map(|r| {
+                    data_row(
+                        r.address,
+                        r.value,
+                        r.min,
+                        r.max,
+                        &r.symbol,
+                        &r.comments,
+                        options,
+                    )
+                })
+                .collect(),
+        ),
+    ];
+    for (name, rows) in tables {
         put(
             &Table {
                 title: lang.say(&format!("{name} data table"), &format!("{name} 数据表")),
@@ -208,30 +285,6 @@ pub(crate) fn tables(
             contents,
         );
     }
-    let rows = data
-        .d_float
-        .iter()
-        .map(|r| {
-            vec![
-                r.address.to_string(),
-                r.value.to_string(),
-                opt(r.min),
-                opt(r.max),
-                r.symbol.clone(),
-                comments(&r.comments, options),
-            ]
-        })
-        .collect();
-    put(
-        &Table {
-            title: lang.say("D_FLOAT data table", "D_FLOAT 数据表"),
-            columns,
-            rows,
-        },
-        pages,
-        metrics,
-        contents,
-    );
     let rows = project
         .messages
         .rows

@@ -118,46 +118,7 @@ pub enum Command {
         script: Option<PathBuf>,
     },
     /// Print the project: a PDF document, or SVG pages.
-    Print {
-        /// A project (.ldp) or an instruction list (.il).
-        path: PathBuf,
-        /// The document to write: OUT.pdf, or OUT.svg (one file per page, OUT-1.svg …).
-        #[arg(short, long)]
-        output: PathBuf,
-        /// The blocks to print (default: all).
-        #[arg(long, value_delimiter = ',', value_enum)]
-        blocks: Vec<print::BlockArg>,
-        /// Only this network, as BLOCK:N (LEVEL2:3, P0001:1), without the title page.
-        #[arg(long)]
-        network: Option<String>,
-        /// Also the symbol, data-setting and message tables.
-        #[arg(long)]
-        tables: bool,
-        /// Also the cross-reference index.
-        #[arg(long)]
-        xref: bool,
-        /// Paper size.
-        #[arg(long, value_enum, default_value = "a4")]
-        paper: print::PaperArg,
-        /// Landscape pages.
-        #[arg(long)]
-        landscape: bool,
-        /// The document's language (default: that of the messages).
-        #[arg(long, value_enum)]
-        language: Option<print::LanguageArg>,
-        /// How operands are printed.
-        #[arg(long, value_enum, default_value = "address")]
-        operands: print::OperandsArg,
-        /// Leave out the element comments under contacts and coils.
-        #[arg(long)]
-        no_comments: bool,
-        /// Only this page (1 is the title page).
-        #[arg(long)]
-        page: Option<usize>,
-        /// The date printed (YYYY-MM-DD; default: today).
-        #[arg(long)]
-        date: Option<String>,
-    },
+    Print(print::PrintArgs),
     /// Build a project whose ladder diagram is drawn from an instruction list.
     ImportIl {
         /// The instruction list.
@@ -299,40 +260,7 @@ where
         Some(Command::Xref {
             path, bits, bytes, ..
         }) => xref(&path, bits, bytes, say, out, err),
-        Some(Command::Print {
-            path,
-            output,
-            blocks,
-            network,
-            tables,
-            xref,
-            paper,
-            landscape,
-            language,
-            operands,
-            no_comments,
-            page,
-            date,
-        }) => print::print(
-            &print::PrintArgs {
-                path: &path,
-                output: &output,
-                blocks: &blocks,
-                network: network.as_deref(),
-                tables,
-                xref,
-                paper,
-                landscape,
-                language,
-                operands,
-                no_comments,
-                page,
-                date: date.as_deref(),
-            },
-            say,
-            out,
-            err,
-        ),
+        Some(Command::Print(args)) => print::print(&args, say, out, err),
     };
     match result {
         Ok(code) => code,

@@ -1,6 +1,7 @@
 //! `print PATH -o OUT.pdf|OUT.svg`: the project as a printed document (docs/printing.md).
 
 use super::{Say, project_of};
+use crate::atomic::write_atomic;
 use clap::ValueEnum;
 use ladder_print::{Blocks, Labels, Lang, Options, Paper};
 use std::io::Write;
@@ -50,21 +51,47 @@ pub enum BlockArg {
     Subs,
 }
 
-/// What `print` was asked for.
-pub struct PrintArgs<'a> {
-    pub path: &'a Path,
-    pub output: &'a Path,
-    pub blocks: &'a [BlockArg],
-    pub network: Option<&'a str>,
+/// What `print` was asked for: its command-line arguments.
+#[derive(clap::Args, Debug)]
+pub struct PrintArgs {
+    /// A project (.ldp) or an instruction list (.il).
+    pub path: PathBuf,
+    /// The document to write: OUT.pdf, or OUT.svg (one file per page, OUT-1.svg …).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// The blocks to print (default: all).
+    #[arg(long, value_delimiter = ',', value_enum)]
+    pub blocks: Vec<BlockArg>,
+    /// Only this network, as BLOCK:N (LEVEL2:3, P0001:1), without the title page.
+    #[arg(long)]
+    pub network: Option<String>,
+    /// Also the symbol, data-setting and message tables.
+    #[arg(long)]
     pub tables: bool,
+    /// Also the cross-reference index.
+    #[arg(long)]
     pub xref: bool,
+    /// Paper size.
+    #[arg(long, value_enum, default_value = "a4")]
     pub paper: PaperArg,
+    /// Landscape pages.
+    #[arg(long)]
     pub landscape: bool,
+    /// The document's language (default: that of the messages).
+    #[arg(long, value_enum)]
     pub language: Option<LanguageArg>,
+    /// How operands are printed.
+    #[arg(long, value_enum, default_value = "address")]
     pub operands: OperandsArg,
+    /// Leave out the element comments under contacts and coils.
+    #[arg(long)]
     pub no_comments: bool,
+    /// Only this page (1 is the title page).
+    #[arg(long)]
     pub page: Option<usize>,
-    pub date: Option<&'a str>,
+    /// The date printed (YYYY-MM-DD; default: today).
+    #[arg(long)]
+    pub date: Option<String>,
 }
 
 enum Kind {
@@ -95,23 +122,9 @@ fn find_network(
     }
 }
 
-/// Writes `bytes` to `path` through a temporary file beside it, so a failed write never
-/// leaves half a document under the name asked for.
-fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = path.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
-    std::fs::write(&tmp, bytes)?;
-    std::fs::rename(&tmp, path).inspect_err(|_| {
-        let _ = std::fs::remove_file(&tmp);
-    })
-}
-
 /// Runs `print`.
 pub(super) fn print(
-    args: &PrintArgs<'_>,
+    args: &PrintArgs,
     say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -132,7 +145,7 @@ pub(super) fn print(
             format!("{}：输出文件须为 .pdf 或 .svg", args.output.display())
         )),
     };
-    if let Some(d) = args.date
+    if let Some(d) = args.date.as_deref()
         && !valid_date(d)
     {
         anyhow::bail!(say.pick(
@@ -140,11 +153,11 @@ pub(super) fn print(
             format!("--date {d}：日期应写成 YYYY-MM-DD，例如 2026-12-02")
         ));
     }
-    let project = match project_of(args.path, say, err)? {
+    let project = match project_of(&args.path, say, err)? {
         Ok(p) => p,
         Err(code) => return Ok(code),
     };
-    let only = match args.network {
+    let only = match args.network.as_deref() {
         Some(text) => Some(vec![find_network(&project, text).map_err(|e| {
             anyhow::anyhow!(say.pick(format!("--network {e}"), format!("--network {e}")))
         })?]),
@@ -185,7 +198,7 @@ pub(super) fn print(
         only,
         tables: args.tables,
         xref: args.xref,
-        date: args.date.map_or_else(ladder_print::today, str::to_string),
+        date: args.date.clone().unwrap_or_else(ladder_print::today),
     };
     let name = args
         .path
@@ -210,7 +223,7 @@ pub(super) fn print(
                 doc.pages = vec![doc.pages.swap_remove(p - 1)];
             }
             let bytes = ladder_print::pdf(&doc).map_err(|e| anyhow::anyhow!("{e}"))?;
-            write_atomic(args.output, &bytes).map_err(|e| cannot(args.output, e))?;
+            write_atomic(&args.output, &bytes).map_err(|e| cannot(&args.output, e))?;
             let n = doc.pages.len();
             let _ = writeln!(
                 out,
@@ -226,13 +239,9 @@ pub(super) fn print(
                 Some(p) => vec![p - 1],
                 None => (0..total).collect(),
             };
-            let single = pages.len() == 1;
+            let count = pages.len();
             for i in pages {
-                let path = if single {
-                    args.output.to_path_buf()
-                } else {
-                    numbered(args.output, i + 1)
-                };
+                let path = ladder_print::svg_page_path(&args.output, i, count);
                 let svg = ladder_print::page_svg(&doc, &doc.pages[i]);
                 write_atomic(&path, svg.as_bytes()).map_err(|e| cannot(&path, e))?;
                 let _ = writeln!(out, "{}", path.display());
@@ -240,15 +249,6 @@ pub(super) fn print(
         }
     }
     Ok(0)
-}
-
-/// `OUT.svg` → `OUT-N.svg`, one file per page.
-fn numbered(output: &Path, n: usize) -> PathBuf {
-    let stem = output
-        .file_stem()
-        .map(|s| s.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    output.with_file_name(format!("{stem}-{n}.svg"))
 }
 
 /// Whether `d` reads as `YYYY-MM-DD` with a month 1–12 and a day 1–31.

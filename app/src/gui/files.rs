@@ -74,21 +74,7 @@ fn remove_copy(copy: &Path) {
 /// Writes `text` to `path` through a temporary file in the same folder and a rename, so a
 /// crash leaves the old file or the new one.
 pub(super) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
-    write_bytes_atomic(path, text.as_bytes())
-}
-
-/// Writes `bytes` through a temporary file beside `path` and renames it over `path`, so a
-/// failed write never leaves half a file under the name asked for.
-pub(super) fn write_bytes_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    use std::io::Write;
-    let name = path
-        .file_name()
-        .map_or("out".into(), |n| n.to_string_lossy());
-    let tmp = path.with_file_name(format!(".{name}.tmp"));
-    let mut f = std::fs::File::create(&tmp)?;
-    f.write_all(bytes)?;
-    f.sync_all()?;
-    std::fs::rename(&tmp, path)
+    crate::atomic::write_atomic(path, text.as_bytes())
 }
 
 impl LadderApp {

@@ -274,30 +274,21 @@ impl LadderApp {
             .extension()
             .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
         let written = if svg {
-            let stem = path
-                .file_stem()
-                .map(|s| s.to_string_lossy().into_owned())
-                .unwrap_or_default();
-            let mut first = None;
-            let mut result = Ok(());
+            let count = doc.pages.len();
+            let mut result = Ok(ladder_print::svg_page_path(path, 0, count));
             for (i, page) in doc.pages.iter().enumerate() {
-                let p = if doc.pages.len() == 1 {
-                    path.to_path_buf()
-                } else {
-                    path.with_file_name(format!("{stem}-{}.svg", i + 1))
-                };
-                result = super::files::write_atomic(&p, &ladder_print::page_svg(&doc, page));
-                first.get_or_insert(p);
-                if result.is_err() {
+                let p = ladder_print::svg_page_path(path, i, count);
+                if let Err(e) =
+                    crate::atomic::write_atomic(&p, ladder_print::page_svg(&doc, page).as_bytes())
+                {
+                    result = Err(e);
                     break;
                 }
             }
-            result.map(|()| first.unwrap_or_else(|| path.to_path_buf()))
+            result
         } else {
             match ladder_print::pdf(&doc) {
-                Ok(bytes) => {
-                    super::files::write_bytes_atomic(path, &bytes).map(|()| path.to_path_buf())
-                }
+                Ok(bytes) => crate::atomic::write_atomic(path, &bytes).map(|()| path.to_path_buf()),
                 Err(e) => return self.say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true),
             }
         };
