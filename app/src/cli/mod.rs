@@ -189,17 +189,15 @@ where
                 );
                 return 2;
             }
-            let nc = match cli.nc.as_deref().map(std::fs::read_to_string) {
+            let read = ladder_engine::cnc::program::read_program_file;
+            let nc = match cli.nc.as_deref().map(read) {
                 Some(Ok(text)) => Some(text),
                 Some(Err(e)) => {
                     let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
                     let _ = writeln!(
                         err,
                         "ladder-studio: {}",
-                        say.pick(
-                            format!("cannot read the NC program {}: {e}", nc.display()),
-                            format!("无法读取 NC 程序 {}：{e}", nc.display())
-                        )
+                        say.pick(e.message(nc, false), e.message(nc, true))
                     );
                     return 2;
                 }

@@ -81,7 +81,8 @@ fn read_script(
         .unwrap_or_default();
     let read_file = |p: &str| -> Result<String, String> {
         let full = folder.join(p);
-        std::fs::read_to_string(&full).map_err(|e| say.cannot_read(&full, e))
+        ladder_engine::cnc::program::read_program_file(&full)
+            .map_err(|e| say.pick(e.message(&full, false), e.message(&full, true)))
     };
     let options = sim::Options {
         cnc,

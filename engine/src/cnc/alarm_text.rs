@@ -37,6 +37,11 @@ pub const TEXTS: &[AlarmText] = &[
     text(ps::NO_PROGRAM, "子程序未找到", "Subprogram not found"),
     text(ps::NESTING, "子程序嵌套过多", "Subprograms nested too deep"),
     text(
+        ps::NO_PROGRESS,
+        "程序只有跳过的程序段（无可执行程序段）",
+        "Program loops through skipped blocks only",
+    ),
+    text(
         ps::NO_REFERENCE,
         "未建立参考点",
         "Reference point not established",

@@ -43,6 +43,9 @@ impl RunState {
     ];
 }
 
+/// Blocks skipped (or subprogram ends passed) in a row before P/S 0079 is raised.
+const PASS_LIMIT: u32 = 100_000;
+
 /// Program index of the MDI buffer in a [`Cursor`].
 const MDI: usize = usize::MAX;
 
@@ -313,8 +316,10 @@ impl SimCnc {
         let mut guard = 0u32;
         loop {
             guard += 1;
-            if guard > 100_000 {
-                self.auto_to_idle();
+            if guard > PASS_LIMIT {
+                // Skipped blocks and M99 returns only: the program would never execute a
+                // block again. Stop with an alarm rather than hang or end silently.
+                self.program_error(ps::NO_PROGRESS);
                 return;
             }
             let cur = self.auto.cursor;
@@ -378,16 +383,18 @@ impl SimCnc {
         let mut call = None;
         if special_m(w.ms()).is_none() && w.ms().contains(&98) {
             let p = w.p.ok_or(ps::NO_PROGRAM)?;
-            let number = p % 10_000;
-            let k = self
-                .programs
-                .iter()
-                .position(|prog| prog.number == number)
-                .ok_or(ps::NO_PROGRAM)?;
+            let find = |number: u32| self.programs.iter().position(|prog| prog.number == number);
+            // P names the program itself when one has that number; else its last four
+            // digits are the program and the digits before them the count (docs/gcode.md).
+            let (k, count) = match find(p) {
+                Some(k) => (k, 1),
+                None => (find(p % 10_000).ok_or(ps::NO_PROGRAM)?, (p / 10_000).max(1)),
+            };
             if self.auto.stack.len() >= 4 {
                 return Err(ps::NESTING);
             }
-            call = Some((k, (p / 10_000).max(1)));
+            let times = w.l.map_or(count, |l| l.max(1));
+            call = Some((k, times));
         }
         if !w.dwell {
             for k in 0..3 {

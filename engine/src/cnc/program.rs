@@ -26,6 +26,52 @@ pub mod ps {
     pub const PLC_AXIS: u16 = 130;
     /// An axis claimed by both the CNC and the PLC.
     pub const AXIS_CLAIM: u16 = 139;
+    /// 100 000 blocks skipped or returned through (M99) without one executing: the program
+    /// loops without doing anything (the simulator's number, docs/gcode.md "Reader").
+    pub const NO_PROGRESS: u16 = 79;
+}
+
+/// Largest program file read (docs/gcode.md, "Reader"): 16 MiB.
+pub const FILE_MAX: u64 = 16 * 1024 * 1024;
+
+/// Why a program file could not be read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ProgramFileError {
+    /// The file is larger than [`FILE_MAX`] bytes (its size given); nothing was read.
+    TooLarge(u64),
+    /// The system's error reading it.
+    Io(String),
+}
+
+impl ProgramFileError {
+    /// The message in English (`zh` false) or Chinese, naming the path and what to do.
+    pub fn message(&self, path: &std::path::Path, zh: bool) -> String {
+        let p = path.display();
+        match (self, zh) {
+            (ProgramFileError::TooLarge(n), false) => format!(
+                "the NC program {p} is {n} bytes; programs over 16 MiB ({FILE_MAX} bytes) are refused: split it into programs called with M98"
+            ),
+            (ProgramFileError::TooLarge(n), true) => format!(
+                "NC 程序 {p} 有 {n} 字节，超过 16 MiB（{FILE_MAX} 字节）的程序不读入：请拆成用 M98 调用的子程序"
+            ),
+            (ProgramFileError::Io(e), false) => format!("cannot read the NC program {p}: {e}"),
+            (ProgramFileError::Io(e), true) => format!("无法读取 NC 程序 {p}：{e}"),
+        }
+    }
+}
+
+/// Reads a program file as a CNC reads a tape: bytes, so comments may hold any encoding
+/// (Latin-1, GBK…; bytes that are not UTF-8 become U+FFFD, which only comments may hold).
+/// A file over [`FILE_MAX`] is refused before it is read.
+pub fn read_program_file(path: &std::path::Path) -> Result<String, ProgramFileError> {
+    let size = std::fs::metadata(path)
+        .map_err(|e| ProgramFileError::Io(e.to_string()))?
+        .len();
+    if size > FILE_MAX {
+        return Err(ProgramFileError::TooLarge(size));
+    }
+    let bytes = std::fs::read(path).map_err(|e| ProgramFileError::Io(e.to_string()))?;
+    Ok(String::from_utf8_lossy(&bytes).into_owned())
 }
 
 /// Largest coordinate, in increments (±99999.999 mm).
@@ -58,6 +104,8 @@ pub struct Words {
     pub m_count: u8,
     /// P, an integer (G04 ms, M98 program).
     pub p: Option<u32>,
+    /// L, an integer (M98 repeat count).
+    pub l: Option<u32>,
     /// G04 time given with X or U, seconds.
     pub dwell_s: Option<f64>,
 }
@@ -92,7 +140,7 @@ pub struct NcBlock {
 /// One program: O number and blocks.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct NcProgram {
-    /// O number (0 for text before the first O line; 10000 for MDI).
+    /// O number, 1–99999999 (0 for text before the first O line; [`MDI_NUMBER`] for MDI).
     pub number: u32,
     /// Blocks in order (O lines, blank lines and comments are not blocks).
     pub blocks: Vec<NcBlock>,
@@ -101,20 +149,43 @@ pub struct NcProgram {
 /// Program number reported for the MDI buffer.
 pub const MDI_NUMBER: u32 = 10_000;
 
-/// Splits text into programs: `O`n starts one; text before the first O is O0000.
+/// Whether a line is a tape mark: `%` (or the full-width `％`) first on the line.
+fn tape_mark(line: &str) -> bool {
+    let t = line.trim_start();
+    t.starts_with('%') || t.starts_with('％')
+}
+
+/// The lines of the tape with their 1-based numbers: when the text has a `%` line, the
+/// text before the first one is leader and the text after the second one is past the end of
+/// the tape; both are ignored (docs/gcode.md, "Reader").
+fn tape(text: &str) -> impl Iterator<Item = (usize, &str)> {
+    let marks = text.lines().filter(|l| tape_mark(l)).take(2).count();
+    let mut seen = 0;
+    text.lines().enumerate().filter_map(move |(i, l)| {
+        if tape_mark(l) {
+            seen += 1;
+            return None;
+        }
+        let inside = marks == 0 || seen == 1;
+        inside.then_some((i + 1, l))
+    })
+}
+
+/// Splits text into programs: `O`n or `:`n (n of 1–8 digits) starts one; text before the
+/// first is O0000.
 pub fn parse_programs(text: &str) -> Vec<NcProgram> {
     let mut programs: Vec<NcProgram> = Vec::new();
     for (line, segment) in segments(text) {
         let clean = clean(segment);
-        if clean.is_empty() || clean.starts_with('%') {
+        if clean.is_empty() {
             continue;
         }
         let mut body = clean.as_str();
-        if let Some(rest) = body.strip_prefix('O') {
+        if let Some(rest) = body.strip_prefix('O').or_else(|| body.strip_prefix(':')) {
             let digits = rest.bytes().take_while(u8::is_ascii_digit).count();
             let number: Option<u32> = rest[..digits].parse().ok().filter(|_| digits <= 8);
             match number {
-                Some(o) if (1..=9999).contains(&o) => {
+                Some(o) if o >= 1 => {
                     programs.push(NcProgram {
                         number: o,
                         blocks: Vec::new(),
@@ -126,7 +197,7 @@ pub fn parse_programs(text: &str) -> Vec<NcProgram> {
                 }
                 _ => {
                     // A malformed O line is a block that cannot execute.
-                    let alarm = if digits > 4 { ps::DIGITS } else { ps::ADDRESS };
+                    let alarm = if digits > 8 { ps::DIGITS } else { ps::ADDRESS };
                     push(
                         &mut programs,
                         NcBlock {
@@ -167,9 +238,7 @@ pub fn parse_mdi(text: &str) -> NcProgram {
 
 /// Blocks of text with their 1-based lines: `;` and newlines end blocks.
 fn segments(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    text.lines()
-        .enumerate()
-        .flat_map(|(i, l)| l.split(';').map(move |s| (i + 1, s)))
+    tape(text).flat_map(|(i, l)| l.split(';').map(move |s| (i, s)))
 }
 
 /// Upper case, without spaces and `( … )` comments.
@@ -320,6 +389,7 @@ fn words(mut body: &str) -> Result<Words, u16> {
             'S' => w.s = Some(integer(99_999_999.0)?),
             'T' => w.t = Some(integer(9999.0)?),
             'P' => w.p = Some(integer(99_999_999.0)?),
+            'L' => w.l = Some(integer(9999.0)?),
             'M' => {
                 let max = if w.m_count == 0 {
                     99_999_999.0
@@ -408,12 +478,72 @@ mod tests {
 
     #[test]
     fn programs_split_at_o_lines_and_text_before_is_o0000() {
-        let p = parse_programs("G00 X1;\n%\nO0001 (MAIN)\nM03 S800;T0202\n\nO12;M99");
+        let p = parse_programs("G00 X1;\nO0001 (MAIN)\nM03 S800;T0202\n\nO12;M99");
         assert_eq!(p.len(), 3);
         assert_eq!((p[0].number, p[0].blocks.len()), (0, 1));
         assert_eq!((p[1].number, p[1].blocks.len()), (1, 2));
         assert_eq!(p[2].number, 12);
-        assert_eq!(p[1].blocks[1].line, 4);
+        assert_eq!(p[1].blocks[1].line, 3);
+    }
+
+    #[test]
+    fn the_tape_runs_from_the_first_percent_line_to_the_second() {
+        // Leader before the first `%` (any text, even what would be an error), the tape,
+        // and text after the second `%` are told apart; lines keep their numbers.
+        let text = "LEADER X1..2 #@!\n%\nO0007\nN1 G00 X1\n%\nTRAILER Q\n";
+        let p = parse_programs(text);
+        assert_eq!(p.len(), 1);
+        assert_eq!(p[0].number, 7);
+        assert_eq!(p[0].blocks.len(), 1);
+        assert_eq!(p[0].blocks[0].line, 4);
+        // A full-width percent sign counts, and one `%` alone opens a tape to the end.
+        let p = parse_programs("junk\n\u{ff05}\nO8;N2 M30");
+        assert_eq!((p[0].number, p[0].blocks.len()), (8, 1));
+        // Without any `%` every line is program text, as before.
+        assert_eq!(parse_programs("N1;N2")[0].blocks.len(), 2);
+    }
+
+    #[test]
+    fn program_numbers_have_one_to_eight_digits_after_o_or_colon() {
+        let p = parse_programs("O12345678;N1;:2001 (COLON);N2");
+        assert_eq!(p[0].number, 12_345_678);
+        assert_eq!(p[1].number, 2001);
+        assert_eq!(p[1].blocks.len(), 1);
+        let p = parse_programs("O123456789;N1");
+        assert_eq!(p[0].blocks[0].words, Err(ps::DIGITS));
+        let p = parse_programs("O0;N1");
+        assert_eq!(p[0].blocks[0].words, Err(ps::ADDRESS));
+    }
+
+    #[test]
+    fn comments_may_hold_any_text_and_l_is_a_count() {
+        let b = block("N5 M98 P1234 L3 (\u{fffd}\u{fffd} GBK \u{5200}\u{5177} %;)");
+        let w = b.words.unwrap();
+        assert_eq!((w.p, w.l), (Some(1234), Some(3)));
+    }
+
+    #[test]
+    fn a_program_file_is_read_as_bytes_and_a_huge_one_is_refused_unread() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("gbk.nc");
+        // "O0001 (刀具)" with the comment in GBK, then a block.
+        let mut bytes = b"O0001 (".to_vec();
+        bytes.extend_from_slice(&[0xB5, 0xB6, 0xBE, 0xDF]);
+        bytes.extend_from_slice(b")\nN10 G00 X5\n");
+        std::fs::write(&path, &bytes).unwrap();
+        let text = read_program_file(&path).unwrap();
+        let p = parse_programs(&text);
+        assert_eq!((p[0].number, p[0].blocks[0].n), (1, Some(10)));
+        assert!(p[0].blocks[0].words.is_ok());
+        let big = dir.path().join("big.nc");
+        let f = std::fs::File::create(&big).unwrap();
+        f.set_len(FILE_MAX + 1).unwrap();
+        let e = read_program_file(&big).unwrap_err();
+        assert_eq!(e, ProgramFileError::TooLarge(FILE_MAX + 1));
+        assert!(e.message(&big, false).contains("16 MiB"));
+        assert!(e.message(&big, true).contains("超过 16 MiB"));
+        let missing = read_program_file(&dir.path().join("none.nc")).unwrap_err();
+        assert!(matches!(missing, ProgramFileError::Io(_)));
     }
 
     #[test]
@@ -437,6 +567,7 @@ mod tests {
         let cases = [
             ("N10 G01 X1 X2", 9),
             ("N10 Q5", 9),
+            ("N10 L1.5", 9),
             ("N10 X", 9),
             ("N10 X1..2", 9),
             ("N10 G02 X1", 10),
