@@ -28,7 +28,9 @@ fn program_errors_show_their_own_text() {
     let cases = [
         ("N10 T12345", 3, "Too many digits"),
         ("N10 G01 W-1 X1 X2", 9, "Improper address or value"),
-        ("N10 G02 X1", 10, "Improper G code"),
+        ("N10 G02.5 X1", 10, "Improper G code"),
+        ("N10 G02 W-1 F1", 22, "Arc without R or I, K"),
+        ("N10 G02 W-30 R10 F1", 20, "Arc radius out of tolerance"),
         ("N10 G01 W-5", 11, "No feedrate commanded"),
         ("N10 M1 M2 M3 M4", 14, "Too many M codes"),
         ("N10 M98 P55", 76, "Subprogram not found"),

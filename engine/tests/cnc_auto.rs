@@ -234,14 +234,15 @@ fn m98_calls_a_subprogram_repeatedly_and_returns() {
 fn program_errors_raise_their_alarm_and_show_the_block() {
     let cases = [
         ("N10 G01 W-1 X1 X2", 9),
-        ("N10 G02 X1", 10),
+        ("N10 G02.5 X1", 10),
+        ("N10 G02 X1 F1", 22),
         ("N10 G01 W-5", 11),
         ("N10 M1 M2 M3 M4", 14),
         ("N10 M98 P55", 76),
         ("N10 G28 U0", 90),
         ("N10 Y5", 9),
         ("N10 T12345", 3),
-        ("N10 G90 X1", 10),
+        ("N10 G31 X1", 10),
         ("N10 M98", 76),
     ];
     for (block, alarm) in cases {

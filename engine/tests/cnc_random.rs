@@ -44,6 +44,10 @@ fn program(rng: &mut Rng) -> String {
     if rng.chance(700) {
         text.push_str("O0001;");
     }
+    if rng.chance(400) {
+        // A valid opening, so some programs reach their strobes before a random error.
+        text.push_str("G50 S2000;M03 S500 T0101;");
+    }
     for _ in 0..rng.below(12) + 1 {
         if rng.chance(100) {
             text.push('/');
@@ -54,8 +58,16 @@ fn program(rng: &mut Rng) -> String {
         for _ in 0..rng.below(5) {
             let letter = rng.pick(&[
                 "G", "X", "Z", "Y", "U", "W", "V", "F", "S", "T", "M", "P", "Q", "#", "G", "M",
+                "I", "K", "R", "D", "L",
             ]);
             let number = match letter {
+                "G" if rng.chance(250) => rng
+                    .pick(&[
+                        "3", "10", "20", "21", "32", "50", "53", "70", "71", "72", "73", "74",
+                        "75", "76", "80", "83", "84", "85", "87", "88", "89", "90", "92", "94",
+                        "96", "40", "41", "42",
+                    ])
+                    .to_string(),
                 "G" => rng
                     .pick(&[
                         "0", "1", "4", "28", "54", "55", "98", "99", "2", "13.1", "97", "7",
@@ -64,7 +76,12 @@ fn program(rng: &mut Rng) -> String {
                 "M" => rng
                     .pick(&["3", "5", "8", "0", "1", "30", "2", "98", "99", "123456789"])
                     .to_string(),
-                "P" => rng.pick(&["1", "2", "20001", "100", "9"]).to_string(),
+                "P" => rng
+                    .pick(&[
+                        "1", "2", "20001", "100", "9", "0", "10", "1.5", "10001", "010060",
+                    ])
+                    .to_string(),
+                "L" => rng.pick(&["1", "2", "10", "11", "3"]).to_string(),
                 _ => {
                     let v = rng.below(40_000) as f64 / 100.0 - 100.0;
                     if rng.chance(100) {
@@ -102,7 +119,11 @@ fn command(rng: &mut Rng) -> Option<CncCommand> {
             format!("{}", rng.below(5) + 1),
             format!("{}", rng.below(9000)),
         ],
-        4 => vec!["param".into(), "3003".into(), format!("{}", rng.below(256))],
+        4 => vec![
+            "param".into(),
+            rng.pick(&["3003", "3401", "3402", "3410", "5130"]).into(),
+            format!("{}", rng.below(128)),
+        ],
         5 => vec![
             "offset".into(),
             format!("{}", rng.below(99) + 1),

@@ -34,6 +34,13 @@ pub const TEXTS: &[AlarmText] = &[
     text(ps::G_CODE, "G代码错误", "Improper G code"),
     text(ps::NO_FEED, "未指定进给速度", "No feedrate commanded"),
     text(ps::M_COUNT, "M代码过多", "Too many M codes"),
+    text(
+        ps::ARC_RADIUS,
+        "圆弧半径误差过大",
+        "Arc radius out of tolerance",
+    ),
+    text(ps::NO_RADIUS, "圆弧未指定R或I、K", "Arc without R or I, K"),
+    text(ps::G10_P, "G10的P或L指令错误", "Improper P or L in G10"),
     text(ps::NO_PROGRAM, "子程序未找到", "Subprogram not found"),
     text(ps::NESTING, "子程序嵌套过多", "Subprograms nested too deep"),
     text(

@@ -3,10 +3,13 @@
 //! the output of a block's M/S/T functions, and program motion; `mst.rs` runs the
 //! handshake.
 
-use super::motion::{Motion, MotionKind};
+use super::cycle::CycleMemory;
+use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
-use super::params::{P1240, P1410, P1420, P1421, P6711, P6712};
-use super::program::{MDI_NUMBER, NcBlock, NcProgram, Words, ps};
+use super::params::{P6711, P6712};
+use super::path::{SegKind, Segment};
+use super::program::{MDI_NUMBER, NcBlock, NcProgram, ps};
+use super::word::{OneShot, Words};
 use super::{AXES, Mode, SimCnc};
 
 /// The automatic operation state.
@@ -67,11 +70,20 @@ struct Frame {
 /// The executing block.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Exec {
+    /// The motion of the current segment.
     pub(super) motion: Option<Motion>,
-    /// G28: 0 none, 1 first segment, 2 second segment.
-    pub(super) g28_stage: u8,
-    pub(super) g28_axes: u8,
-    pub(super) first_done_at: u64,
+    /// What the current segment is.
+    pub(super) kind: SegKind,
+    /// Index of the next segment in `Auto::segs`.
+    pub(super) seg: u16,
+    /// Segments of the block.
+    pub(super) seg_count: u16,
+    /// The exchange the last segment ended in.
+    pub(super) done_at: u64,
+    /// Axes the current segment brings to reference point 1.
+    pub(super) ref_axes: u8,
+    /// The current thread segment waits for the one-rotation signal.
+    pub(super) wait_rev: bool,
     pub(super) dwell_ms: f64,
     pub(super) dwell_total: f64,
     pub(super) feed: f64,
@@ -86,10 +98,14 @@ pub(super) struct Exec {
 }
 
 impl Exec {
+    /// The current segment's motion and dwell are over.
+    pub(super) fn segment_done(&self) -> bool {
+        self.motion.is_none_or(|m| m.done()) && self.dwell_ms >= self.dwell_total
+    }
+
+    /// Every segment of the block is over.
     pub(super) fn motion_done(&self) -> bool {
-        self.motion.is_none_or(|m| m.done())
-            && self.g28_stage != 1
-            && self.dwell_ms >= self.dwell_total
+        self.segment_done() && self.seg >= self.seg_count
     }
 
     /// The machine target minus position of the executing motion, per axis.
@@ -102,14 +118,24 @@ impl Exec {
 /// Modal state of the program.
 #[derive(Clone, Copy, Debug, Default)]
 pub(super) struct Modal {
-    /// Group 01: 0 G00, 1 G01.
+    /// Group 01 G number: 0, 1, 2, 3, 32, 90, 92, 94.
     pub motion: u8,
     /// G99.
     pub per_rev: bool,
     /// G54 + work.
     pub work: u8,
-    /// F (0 = none).
+    /// F in mm/min or mm/rev (0 = none).
     pub feed: f64,
+    /// G20.
+    pub inch: bool,
+    /// G96.
+    pub css: bool,
+    /// G96's surface speed, m/min.
+    pub css_speed: f64,
+    /// G50 S: the highest spindle speed under G96, r/min (0: none).
+    pub s_max: u32,
+    /// The last single cycle's end point and taper.
+    pub cycle: CycleMemory,
 }
 
 /// Automatic operation.
@@ -121,7 +147,15 @@ pub(super) struct Auto {
     cursor: Cursor,
     stack: Vec<Frame>,
     pub exec: Option<Exec>,
-    interrupted: bool,
+    /// The executing block's segments (kept to reuse its allocation).
+    pub segs: Vec<Segment>,
+    /// G50 X/Z coordinate shift per axis, part of the workpiece offset.
+    pub shift: [i64; AXES],
+    /// The last motion segment started was a thread.
+    pub prev_thread: bool,
+    /// Feed hold came during a thread: it takes effect when the thread ends.
+    hold_after_thread: bool,
+    pub interrupted: bool,
     pending_stop: bool,
     pub last_n: u32,
     pub modal: Modal,
@@ -140,6 +174,8 @@ impl Auto {
         self.exec = None;
         self.interrupted = false;
         self.pending_stop = false;
+        self.prev_thread = false;
+        self.hold_after_thread = false;
     }
 
     /// A reset condition: IDLE and rewound; modal data, S and the tool offset are kept.
@@ -266,8 +302,14 @@ impl SimCnc {
     pub(super) fn automatic(&mut self) {
         self.auto.dm99 = false;
         let inp = self.inp;
-        if self.auto.state == RunState::Run && inp.feed_hold {
-            self.auto.state = RunState::Hold;
+        if self.auto.state == RunState::Run && (inp.feed_hold || self.auto.hold_after_thread) {
+            // Feed hold during a thread takes effect at the thread's end.
+            if self.threading() {
+                self.auto.hold_after_thread = true;
+            } else {
+                self.auto.state = RunState::Hold;
+                self.auto.hold_after_thread = false;
+            }
         }
         let fall = self.prev.st && !inp.st;
         let auto_mode = matches!(self.mode, Mode::Mem | Mode::Mdi);
@@ -354,27 +396,26 @@ impl SimCnc {
             }
         };
         let motion_mode = words.motion.unwrap_or(self.auto.modal.motion);
-        let cutting = motion_mode == 1 && words.moves() && !words.dwell && !words.g28;
+        let arc_ik = matches!(motion_mode, 2 | 3) && (words.i.is_some() || words.k.is_some());
+        let cutting = motion_mode != 0 && words.one_shot.is_none() && (words.moves() || arc_ik);
         if cutting && self.check(1) && self.inp.csl {
             return;
         }
         if let Some(n) = n {
             self.auto.last_n = n;
         }
-        let call = match self.check_block(&words, cutting) {
-            Ok(call) => call,
-            Err(alarm) => {
-                self.program_error(alarm);
-                return;
-            }
-        };
-        self.execute(&words, line, call);
+        let planned = self
+            .check_block(&words, cutting)
+            .and_then(|call| self.execute(&words, line, call));
+        if let Err(alarm) = planned {
+            self.program_error(alarm);
+        }
     }
 
     /// The checks that depend on the machine (docs/cnc.md, "Program errors"); returns the
     /// program an M98 calls.
     fn check_block(&self, w: &Words, cutting: bool) -> Result<Option<(usize, u32)>, u16> {
-        if !w.dwell && w.axes[2].is_some() && self.axis_count() < 3 {
+        if w.axes[2].is_some() && self.axis_count() < 3 {
             return Err(ps::ADDRESS);
         }
         if cutting && w.f.unwrap_or(self.auto.modal.feed) <= 0.0 {
@@ -396,35 +437,38 @@ impl SimCnc {
             let times = w.l.map_or(count, |l| l.max(1));
             call = Some((k, times));
         }
-        if !w.dwell {
+        if w.g28() {
             for k in 0..3 {
-                if w.axes[k].is_none() {
-                    continue;
-                }
-                if w.g28 && !self.axes[k].zrf {
+                if w.axes[k].is_some() && !self.axes[k].zrf {
                     return Err(ps::NO_REFERENCE);
-                }
-                if self.inp.eax >> k & 1 == 1 && (w.g28 || self.word_moves(w, k)) {
-                    return Err(ps::AXIS_CLAIM);
                 }
             }
         }
         Ok(call)
     }
 
-    /// Whether the axis word of slot `k` moves that axis (a G28 always may).
-    fn word_moves(&self, w: &Words, k: usize) -> bool {
-        let cur = self.axes[k].m - self.axes[k].sh;
-        match w.axes[k] {
-            Some((v, true)) => v != 0,
-            Some((v, false)) => v + self.tool_offset_along(k) + self.work_offset(k) != cur,
-            None => false,
+    /// P/S 0139 when a planned segment would move an axis the PLC holds (EAX = 1); a G28
+    /// counts for every axis it names.
+    fn check_claims(&self, w: &Words, cur: [i64; AXES]) -> Result<(), u16> {
+        for (k, &from) in cur.iter().enumerate().take(3) {
+            if self.inp.eax >> k & 1 == 0 {
+                continue;
+            }
+            let named = w.g28() && w.axes[k].is_some();
+            let moves =
+                self.auto.segs.iter().any(|s| {
+                    s.target[k] != from || (k < 2 && matches!(s.kind, SegKind::Arc { .. }))
+                });
+            if named || moves {
+                return Err(ps::AXIS_CLAIM);
+            }
         }
+        Ok(())
     }
 
-    fn execute(&mut self, w: &Words, line: usize, call: Option<(usize, u32)>) {
-        let inp = self.inp;
-        let modal = &mut self.auto.modal;
+    /// The block's modal state once its G codes and F are read.
+    fn modal_after(&self, w: &Words) -> Modal {
+        let mut modal = self.auto.modal;
         if let Some(m) = w.motion {
             modal.motion = m;
         }
@@ -434,18 +478,54 @@ impl SimCnc {
         if let Some(k) = w.work {
             modal.work = k;
         }
+        if let Some(inch) = w.inch {
+            modal.inch = inch;
+        }
         if let Some(f) = w.f {
-            modal.feed = f;
+            modal.feed = self.units(modal.inch).feed(f);
         }
-        let modal = *modal;
-        if let Some(s) = w.s {
-            self.spindle.s_cmd = s;
+        if let Some(css) = w.css {
+            modal.css = css;
         }
+        modal
+    }
+
+    fn execute(&mut self, w: &Words, line: usize, call: Option<(usize, u32)>) -> Result<(), u16> {
+        let inp = self.inp;
+        let mut modal = self.modal_after(w);
+        let cur = self.frame_position();
+        let fx = self.plan(w, &mut modal)?;
+        self.check_claims(w, cur)?;
+        // Checked: from here the block takes effect.
+        let g50 = w.one_shot == Some(OneShot::Coord);
+        if let Some(shift) = fx.shift {
+            self.auto.shift = shift;
+        }
+        if w.one_shot == Some(OneShot::Data) {
+            self.apply_g10(w, modal.inch);
+        }
+        match w.s {
+            Some(s) if g50 => modal.s_max = s,
+            Some(s) if modal.css => {
+                let per_unit = if modal.inch { 0.3048 } else { 1.0 };
+                modal.css_speed = f64::from(s) * per_unit;
+            }
+            Some(s) => self.spindle.s_cmd = s,
+            None => {}
+        }
+        if self.auto.modal.css && !modal.css && w.s.is_none() {
+            // G97 without S keeps the speed constant surface speed last gave.
+            self.spindle.s_cmd = self.spindle.s_css;
+        }
+        self.auto.modal = modal;
         let mut e = Exec {
             motion: None,
-            g28_stage: 0,
-            g28_axes: 0,
-            first_done_at: 0,
+            kind: SegKind::Rapid,
+            seg: 0,
+            seg_count: self.auto.segs.len() as u16,
+            done_at: self.exchange_no,
+            ref_axes: 0,
+            wait_rev: false,
             dwell_ms: 0.0,
             dwell_total: 0.0,
             feed: modal.feed,
@@ -458,45 +538,6 @@ impl SimCnc {
             offset: None,
             line,
         };
-        if w.dwell {
-            e.dwell_total = match (w.p, w.dwell_s) {
-                (Some(p), _) => f64::from(p),
-                (None, Some(s)) => (s * 1000.0).round(),
-                _ => 0.0,
-            };
-        } else if w.moves() {
-            let cur: [i64; AXES] = std::array::from_fn(|n| self.axes[n].m - self.axes[n].sh);
-            let mut target = cur;
-            for (k, word) in w.axes.iter().enumerate() {
-                if let Some((v, inc)) = *word {
-                    target[k] = if inc {
-                        cur[k] + v
-                    } else {
-                        v + self.tool_offset_along(k) + self.work_offset(k)
-                    };
-                }
-            }
-            let kind = if w.g28 || modal.motion == 0 {
-                MotionKind::Rapid
-            } else {
-                MotionKind::Cut
-            };
-            let m = Motion::new(kind, cur, target, self.diameters());
-            if w.g28 {
-                e.g28_stage = 1;
-                e.g28_axes = w
-                    .axes
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, a)| a.is_some())
-                    .fold(0, |acc, (k, _)| acc | 1 << k);
-            }
-            if !m.is_empty() {
-                e.motion = Some(m);
-            } else if w.g28 {
-                self.g28_second(&mut e);
-            }
-        }
         // The M/S/T sequence.
         let ms = w.ms();
         let mut mst = Mst {
@@ -520,6 +561,7 @@ impl SimCnc {
         }
         if let Some(s) = w.s
             && !inp.afl
+            && !g50
         {
             mst.s = s;
             mst.strobes |= SF;
@@ -535,149 +577,8 @@ impl SimCnc {
         mst.open = mst.strobes != 0;
         e.mst = mst;
         self.auto.exec = Some(e);
-    }
-
-    /// Starts the second segment of a G28: rapid to reference point 1 of the named axes.
-    fn g28_second(&mut self, e: &mut Exec) {
-        let cur: [i64; AXES] = std::array::from_fn(|n| self.axes[n].m - self.axes[n].sh);
-        let mut target = cur;
-        for (n, t) in target.iter_mut().enumerate() {
-            if e.g28_axes >> n & 1 == 1 {
-                *t = self.params.get(P1240, n) - self.axes[n].sh;
-            }
-        }
-        e.g28_stage = 2;
-        let m = Motion::new(MotionKind::Rapid, cur, target, self.diameters());
-        e.motion = (!m.is_empty()).then_some(m);
-        if e.motion.is_none() {
-            e.first_done_at = self.exchange_no;
-            self.g28_arrived(e.g28_axes);
-        }
-    }
-
-    /// The named axes of a G28 are at reference point 1: ZP, and the shift is cleared.
-    fn g28_arrived(&mut self, axes: u8) {
-        if self.inp.mlk {
-            return;
-        }
-        for n in 0..AXES {
-            if axes >> n & 1 == 1 {
-                self.axes[n].sh = 0;
-                self.axes[n].zp = true;
-            }
-        }
-    }
-
-    /// The rapid rate of axis slot `n` with the rapid override (F0: #1421).
-    pub(super) fn rapid_rate(&self, n: usize) -> f64 {
-        match self.inp.rov {
-            3 => self.params.one(P1421) as f64,
-            r => self.params.get(P1420, n) as f64 * [1.0, 0.5, 0.25][usize::from(r)],
-        }
-    }
-
-    /// Cutting feed override, 0–1.5.
-    pub(super) fn fov(&self) -> f64 {
-        if self.inp.ovc {
-            1.0
-        } else {
-            f64::from(self.inp.fv.min(15)) / 10.0
-        }
-    }
-
-    /// JOG override, 0–1.5.
-    pub(super) fn jov(&self) -> f64 {
-        f64::from(self.inp.jv.min(15)) / 10.0
-    }
-
-    fn program_speed(&self, m: &Motion, feed: f64, per_rev: bool) -> f64 {
-        match m.kind {
-            MotionKind::Rapid => m.rapid_speed(|n| self.rapid_rate(n)),
-            MotionKind::Cut if self.inp.drn => {
-                if self.inp.rt {
-                    (0..AXES)
-                        .filter(|n| m.axes >> n & 1 == 1)
-                        .map(|n| self.rapid_rate(n))
-                        .fold(f64::INFINITY, f64::min)
-                } else {
-                    self.params.one(P1410) as f64 * self.jov()
-                }
-            }
-            MotionKind::Cut if per_rev => feed * f64::from(self.spindle.s_out) * self.fov(),
-            MotionKind::Cut => feed * self.fov(),
-        }
-    }
-
-    /// Step (e) for the program: its dwell and motion advance by 8 ms.
-    pub(super) fn advance_program(&mut self) {
-        let a = &self.auto;
-        if self.flags.halted || a.state != RunState::Run || a.interrupted {
-            return;
-        }
-        let Some(mut e) = a.exec else { return };
-        if e.dwell_ms < e.dwell_total {
-            e.dwell_ms += 8.0;
-        }
-        if e.g28_stage == 1
-            && e.motion.is_none_or(|m| m.done())
-            && e.first_done_at < self.exchange_no
-        {
-            self.g28_second(&mut e);
-        }
-        self.auto.exec = Some(e);
-        let Some(mut m) = e.motion.filter(|m| !m.done()) else {
-            return;
-        };
-        let inp = self.inp;
-        if self.check(0) && inp.interlock {
-            return;
-        }
-        if self.check(2) && m.axes & inp.axis_interlock != 0 {
-            return;
-        }
-        let v = self.program_speed(&m, e.feed, e.per_rev);
-        if v <= 0.0 || !v.is_finite() {
-            return;
-        }
-        let covered = m.next_covered(v);
-        let mut delta = [0i64; AXES];
-        for (n, d) in delta.iter_mut().enumerate() {
-            *d = m.position_at(n, covered) - m.position_at(n, m.covered);
-        }
-        if !inp.mlk {
-            for (n, &d) in delta.iter().enumerate() {
-                if d == 0 {
-                    continue;
-                }
-                let dir = usize::from(d < 0);
-                if self.axes[n].hard_limit[dir] {
-                    return;
-                }
-                let from = self.axes[n].m;
-                if let Some(stop) = self.stroke_stop(n, from, from + d) {
-                    self.apply_delta(n, stop - from, false, false);
-                    self.stroke_alarm(n, dir);
-                    return;
-                }
-            }
-        }
-        for (n, &d) in delta.iter().enumerate() {
-            self.apply_delta(n, d, inp.mlk, false);
-        }
-        m.covered = covered;
-        match m.kind {
-            MotionKind::Rapid => self.flags.rapid = true,
-            MotionKind::Cut => self.flags.cut = true,
-        }
-        self.flags.path_speed = v;
-        if m.done() {
-            e.first_done_at = self.exchange_no;
-            if e.g28_stage == 2 {
-                self.g28_arrived(e.g28_axes);
-            }
-        }
-        e.motion = Some(m);
-        self.auto.exec = Some(e);
+        self.next_segment();
+        Ok(())
     }
 
     /// Step (g): the executing block ends when its motion, dwell and MST sequence are done.

@@ -9,24 +9,31 @@
 //! integer or f64 arithmetic with fixed formulas, so a run is reproducible byte for byte.
 //!
 //! The module is split by responsibility: `signals` (G sampled, F written), `params`,
-//! `data` (offsets, macros, clock), `program` (NC text), `motion` (straight lines), `auto`
+//! `data` (offsets, macros, clock), `program` (NC text), `word` (a block's words and units),
+//! `block` (a block planned into segments), `cycle` (threads and single cycles), `path` (the
+//! segment queue), `arc` and `motion` (straight and circular moves), `auto`
 //! (automatic operation), `mst` (the M/S/T handshake), `manual` (JOG, handwheel, reference
 //! return, overtravel), `plc_axes` (AXCTL groups), `windr` (the window functions), `command`
 //! (what scripts and the editor do to a running CNC) and `keys` (the values they read back).
 
 pub mod alarm_text;
+pub mod arc;
 mod auto;
+mod block;
 pub mod command;
+mod cycle;
 pub mod data;
 mod keys;
 mod manual;
 pub mod motion;
 mod mst;
 pub mod params;
+mod path;
 mod plc_axes;
 pub mod program;
 pub mod signals;
 mod windr;
+pub mod word;
 
 use crate::model::tables::MessageTable;
 use crate::profile::ProfileId;
@@ -145,6 +152,8 @@ struct Flags {
     rapid: bool,
     /// A cutting feed advanced.
     cut: bool,
+    /// A thread was cut.
+    thread: bool,
     /// Path speed of program motion, mm/min.
     path_speed: f64,
 }
@@ -158,6 +167,12 @@ struct Spindle {
     s_out: u32,
     /// Maximum of the selected gear.
     g_max: u32,
+    /// The speed constant surface speed gave at the last exchange, r/min (before override).
+    s_css: u32,
+    /// Angle, in revolutions (0–1), from S_out.
+    angle: f64,
+    /// The one-rotation signal came at this exchange.
+    one_rev: bool,
 }
 
 /// The simulated CNC.
@@ -337,7 +352,12 @@ impl SimCnc {
     }
 
     fn work_offset(&self, n: usize) -> i64 {
-        self.work[0][n] + self.work[1 + usize::from(self.auto.modal.work)][n]
+        self.work_offset_of(n, self.auto.modal.work) + self.auto.shift[n]
+    }
+
+    /// EXT plus the offset of workpiece system G54 + `work` on axis slot `n`.
+    fn work_offset_of(&self, n: usize, work: u8) -> i64 {
+        self.work[0][n] + self.work[1 + usize::from(work)][n]
     }
 
     /// The virtual time of the last exchange, ms.
@@ -374,6 +394,7 @@ impl SimCnc {
         self.alarms.clear();
         self.pending_alarms.clear();
         self.auto = Auto::default();
+        self.auto.modal.per_rev = self.fpm_per_rev();
         self.manual = Manual::default();
         self.groups = Default::default();
         self.spindle = Spindle::default();
@@ -396,6 +417,11 @@ impl SimCnc {
         self.eaxsl = false;
         self.prev_a.clear();
         self.flags = Flags::default();
+    }
+
+    /// The feed mode of power-on and reset: #3402 bit 4 FPM = 1 G98, 0 G99.
+    fn fpm_per_rev(&self) -> bool {
+        !self.params.bit(params::P3402, 0, 4)
     }
 
     /// Alarm sources and reset: step (b) of an exchange.
@@ -462,6 +488,7 @@ impl SimCnc {
     /// A reset condition (docs/cnc.md, "Reset").
     fn reset(&mut self) {
         self.auto.reset();
+        self.auto.modal.per_rev = self.fpm_per_rev();
         self.manual.stop_all();
         self.flags.halted = true;
         self.alarms
@@ -508,10 +535,45 @@ impl SimCnc {
             (f64::from(inp.ri) * f64::from(g_max) / 4095.0).round() as u32
         } else {
             let sov = f64::from(inp.sov.clamp(5, 12)) / 10.0;
-            ((f64::from(self.spindle.s_cmd) * sov).round() as u32).min(g_max)
+            let s = if self.auto.modal.css {
+                self.spindle.s_css = self.css_speed(g_max);
+                self.spindle.s_css
+            } else {
+                self.spindle.s_cmd
+            };
+            ((f64::from(s) * sov).round() as u32).min(g_max)
         };
         self.spindle.s_out = s_out;
         self.spindle.g_max = g_max;
+        // The position coder: one rotation signal each time the angle passes zero.
+        let sp = &mut self.spindle;
+        sp.angle += f64::from(s_out) * 8.0 / 60_000.0;
+        sp.one_rev = sp.angle >= 1.0;
+        sp.angle = sp.angle.fract();
+    }
+
+    /// The spindle speed G96 asks for at the tool's diameter (the end point's during a
+    /// rapid): 1000 · V / (π · D) r/min, no more than G50 S (when set) and `g_max`.
+    fn css_speed(&self, g_max: u32) -> u32 {
+        let m = &self.auto.modal;
+        let x = match self.auto.exec.and_then(|e| e.motion) {
+            Some(mo) if mo.kind == motion::MotionKind::Rapid => {
+                mo.target[0] - self.tool_offset_along(0) - self.work_offset(0)
+            }
+            _ => self.absolute(0),
+        };
+        let d_mm = if self.diameter(0) { 1.0 } else { 2.0 } * (x as f64 / 1000.0).abs();
+        let limit = if m.s_max > 0 {
+            m.s_max.min(g_max)
+        } else {
+            g_max
+        };
+        let s = 1000.0 * m.css_speed / (std::f64::consts::PI * d_mm);
+        if s.is_finite() {
+            (s.round() as u32).min(limit)
+        } else {
+            limit
+        }
     }
 
     fn bookkeeping(&mut self) {
@@ -542,7 +604,10 @@ impl SimCnc {
         img.bit(1, 1, self.rst);
         img.bit(1, 7, !cnc_alarm);
         img.bit(1, 4, self.spindle.s_out != 0);
+        img.bit(2, 0, self.auto.modal.inch);
         img.bit(2, 1, self.flags.rapid);
+        img.bit(2, 2, self.auto.modal.css);
+        img.bit(2, 3, self.flags.thread);
         img.bit(2, 6, self.flags.cut);
         img.bit(2, 7, inp.drn);
         let (byte, b) = match self.mode {

@@ -5,6 +5,7 @@
 //! holds everywhere.
 
 use super::AXES;
+use super::arc::ArcPath;
 
 /// Millimetres covered in one exchange at 1 mm/min.
 pub const MM_PER_EXCHANGE: f64 = 8.0 / 60_000.0;
@@ -35,6 +36,16 @@ pub struct Motion {
     pub length: f64,
     /// Distance covered, mm.
     pub covered: f64,
+    /// For circular motion, the arc that X (slot 0) and Z (slot 1) follow; the other axes move
+    /// linearly with it.
+    pub arc: Option<ArcPath>,
+    /// Increments per mm of X and Z, to turn the arc's points into positions.
+    pub scale: [f64; 2],
+}
+
+/// Increments per mm of radius on axis slot `n`.
+fn per_mm(diameter: &[bool; AXES], n: usize) -> f64 {
+    if diameter[n] { 2000.0 } else { 1000.0 }
 }
 
 impl Motion {
@@ -66,7 +77,42 @@ impl Motion {
             axis_mm,
             length: sum.sqrt(),
             covered: 0.0,
+            arc: None,
+            scale: [per_mm(&diameter, 0), per_mm(&diameter, 1)],
         }
+    }
+
+    /// A cutting motion along an arc from `start` to `target` around `center` (X, Z in
+    /// increments as the axes count them), clockwise when `cw`; a closed arc is a full turn
+    /// when `full`. Other axes move linearly (a helix).
+    pub fn arc(
+        start: [i64; AXES],
+        target: [i64; AXES],
+        center: [i64; 2],
+        cw: bool,
+        full: bool,
+        diameter: [bool; AXES],
+    ) -> Motion {
+        let mut m = Motion::new(MotionKind::Cut, start, target, diameter);
+        let plane = |p: [i64; AXES]| {
+            [
+                p[1] as f64 / per_mm(&diameter, 1),
+                p[0] as f64 / per_mm(&diameter, 0),
+            ]
+        };
+        let c = [
+            center[1] as f64 / per_mm(&diameter, 1),
+            center[0] as f64 / per_mm(&diameter, 0),
+        ];
+        let path = ArcPath::new(plane(start), plane(target), c, cw, full);
+        if path.sweep == 0.0 {
+            return m;
+        }
+        let other: f64 = (2..AXES).map(|n| m.axis_mm[n] * m.axis_mm[n]).sum();
+        m.axes |= 0b11;
+        m.length = path.length().hypot(other.sqrt());
+        m.arc = Some(path);
+        m
     }
 
     /// Whether the motion has nothing to do.
@@ -88,6 +134,12 @@ impl Motion {
             return self.target[n];
         }
         let f = (covered / self.length).min(1.0);
+        if let Some(a) = &self.arc
+            && n < 2
+        {
+            // The arc works in (Z, X) mm: slot 0 (X) is its second coordinate.
+            return (a.point(f)[1 - n] * self.scale[n]).round() as i64;
+        }
         self.start[n] + ((self.target[n] - self.start[n]) as f64 * f).round() as i64
     }
 

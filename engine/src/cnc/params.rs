@@ -72,7 +72,7 @@ const BIG: i64 = 99_999_999;
 const FEED: i64 = 240_000;
 
 /// The GSK988TA parameters the simulator knows, in number order.
-pub static TABLE: [ParamSpec; 32] = [
+pub static TABLE: [ParamSpec; 36] = [
     p(71, Word, NoSel, false, 0, 0, 60_000),
     ParamSpec {
         number: 1006,
@@ -99,10 +99,14 @@ pub static TABLE: [ParamSpec; 32] = [
     p(1424, Word, Axis, false, 6000, 0, FEED),
     p(1425, Word, Axis, false, 120, 0, FEED),
     p(3003, Bit, NoSel, false, 35, 0, 255),
+    p(3401, Bit, NoSel, false, 1, 0, 255),
+    p(3402, Bit, NoSel, false, 16, 0, 255),
+    p(3410, Word, NoSel, false, 20, 0, BIG),
     p(3741, Word, Spindle, false, 2000, 0, 99_999),
     p(3742, Word, Spindle, false, 3000, 0, 99_999),
     p(3743, Word, Spindle, false, 4000, 0, 99_999),
     p(3744, Word, Spindle, false, 5000, 0, 99_999),
+    p(5130, Word, NoSel, false, 10, 0, 127),
     p(6711, Word, NoSel, false, 0, 0, BIG),
     p(6712, Word, NoSel, false, 0, 0, BIG),
     p(6713, Word, NoSel, false, 0, 0, BIG),
@@ -154,7 +158,8 @@ macro_rules! idx {
 idx! {
     P0071 = 71, P1006 = 1006, P1240 = 1240, P1301 = 1301, P1320 = 1320, P1321 = 1321,
     P1326 = 1326, P1327 = 1327, P1410 = 1410, P1420 = 1420, P1421 = 1421, P1423 = 1423,
-    P1424 = 1424, P1425 = 1425, P3003 = 3003, P3741 = 3741, P6711 = 6711, P6712 = 6712,
+    P1424 = 1424, P1425 = 1425, P3003 = 3003, P3401 = 3401, P3402 = 3402, P3410 = 3410,
+    P3741 = 3741, P5130 = 5130, P6711 = 6711, P6712 = 6712,
     P6713 = 6713, P7103 = 7103, P7113 = 7113, P7114 = 7114, P8002 = 8002, P8010 = 8010,
     P8130 = 8130,
 }

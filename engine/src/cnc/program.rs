@@ -4,6 +4,8 @@
 //! block is about to execute. Errors that depend on the machine state (an axis beyond #8130,
 //! G01 without F, M98 to a missing program…) are checked at that moment by `auto.rs`.
 
+use super::word::{Words, number, words};
+
 /// P/S alarm numbers of program errors.
 pub mod ps {
     /// Too many digits.
@@ -16,6 +18,13 @@ pub mod ps {
     pub const NO_FEED: u16 = 11;
     /// More than three M codes.
     pub const M_COUNT: u16 = 14;
+    /// An arc whose start and end radii differ by more than #3410, or an R arc whose chord
+    /// is longer than 2R by more than #3410.
+    pub const ARC_RADIUS: u16 = 20;
+    /// G02/G03 with neither R nor I/K.
+    pub const NO_RADIUS: u16 = 22;
+    /// G10 with a P (or L) that names no offset or workpiece system.
+    pub const G10_P: u16 = 31;
     /// M98: no such program.
     pub const NO_PROGRAM: u16 = 76;
     /// M98 nested too deep.
@@ -72,54 +81,6 @@ pub fn read_program_file(path: &std::path::Path) -> Result<String, ProgramFileEr
     }
     let bytes = std::fs::read(path).map_err(|e| ProgramFileError::Io(e.to_string()))?;
     Ok(String::from_utf8_lossy(&bytes).into_owned())
-}
-
-/// Largest coordinate, in increments (±99999.999 mm).
-const COORD_MAX: f64 = 99_999_999.0;
-
-/// One block's words, as read from the text.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Words {
-    /// Group 01: 0 (G00) or 1 (G01).
-    pub motion: Option<u8>,
-    /// G04 dwell.
-    pub dwell: bool,
-    /// G28 reference return.
-    pub g28: bool,
-    /// Group 14: 0 (G54) … 5 (G59).
-    pub work: Option<u8>,
-    /// Group 03: `Some(false)` G98, `Some(true)` G99.
-    pub per_rev: Option<bool>,
-    /// X, Z, Y: the value in increments and whether it is incremental (U, W, V).
-    pub axes: [Option<(i64, bool)>; 3],
-    /// F, mm/min or mm/rev.
-    pub f: Option<f64>,
-    /// S, r/min.
-    pub s: Option<u32>,
-    /// T, TTOO.
-    pub t: Option<u32>,
-    /// M codes in order (up to three).
-    pub m: [u32; 3],
-    /// How many M codes.
-    pub m_count: u8,
-    /// P, an integer (G04 ms, M98 program).
-    pub p: Option<u32>,
-    /// L, an integer (M98 repeat count).
-    pub l: Option<u32>,
-    /// G04 time given with X or U, seconds.
-    pub dwell_s: Option<f64>,
-}
-
-impl Words {
-    /// The M codes of the block.
-    pub fn ms(&self) -> &[u32] {
-        &self.m[..usize::from(self.m_count)]
-    }
-
-    /// Whether any axis word is given (outside G04, where X/U are the time).
-    pub fn moves(&self) -> bool {
-        self.axes.iter().any(Option::is_some)
-    }
 }
 
 /// One block.
@@ -257,45 +218,6 @@ fn clean(segment: &str) -> String {
     out
 }
 
-/// A number as written after a letter.
-struct Number {
-    value: f64,
-    decimal: bool,
-    text_len: usize,
-}
-
-fn number(s: &str) -> Option<Number> {
-    let b = s.as_bytes();
-    let mut i = 0;
-    if i < b.len() && (b[i] == b'+' || b[i] == b'-') {
-        i += 1;
-    }
-    let int_start = i;
-    while i < b.len() && b[i].is_ascii_digit() {
-        i += 1;
-    }
-    let mut digits = i - int_start;
-    let mut decimal = false;
-    if i < b.len() && b[i] == b'.' {
-        decimal = true;
-        i += 1;
-        let f = i;
-        while i < b.len() && b[i].is_ascii_digit() {
-            i += 1;
-        }
-        digits += i - f;
-    }
-    if digits == 0 {
-        return None;
-    }
-    let value: f64 = s[..i].parse().ok()?;
-    Some(Number {
-        value,
-        decimal,
-        text_len: i,
-    })
-}
-
 fn parse_block(line: usize, text: &str, body: &str) -> NcBlock {
     let (slash, body) = match body.strip_prefix('/') {
         Some(rest) => (true, rest),
@@ -319,152 +241,6 @@ fn parse_block(line: usize, text: &str, body: &str) -> NcBlock {
     }
     block.words = words(body);
     block
-}
-
-fn words(mut body: &str) -> Result<Words, u16> {
-    let mut w = Words::default();
-    let mut seen = [false; 26];
-    let mut groups = [false; 11];
-    while let Some(letter) = body.chars().next() {
-        if !letter.is_ascii_uppercase() {
-            return Err(ps::ADDRESS);
-        }
-        let rest = &body[1..];
-        let num = number(rest).ok_or(ps::ADDRESS)?;
-        body = &rest[num.text_len..];
-        let slot = (letter as u8 - b'A') as usize;
-        if letter != 'G' && letter != 'M' {
-            if seen[slot] {
-                return Err(ps::ADDRESS);
-            }
-            seen[slot] = true;
-        }
-        let v = num.value;
-        let integer = |max: f64| -> Result<u32, u16> {
-            if num.decimal || v < 0.0 {
-                Err(ps::ADDRESS)
-            } else if v > max {
-                Err(ps::DIGITS)
-            } else {
-                Ok(v as u32)
-            }
-        };
-        match letter {
-            'N' => {
-                if num.decimal || v < 1.0 {
-                    return Err(ps::ADDRESS);
-                }
-                if v > 99_999.0 {
-                    return Err(ps::DIGITS);
-                }
-            }
-            'G' => {
-                let code = &rest[..num.text_len];
-                g_code(code, &mut w, &mut groups)?;
-            }
-            'X' | 'Z' | 'Y' | 'U' | 'W' | 'V' => {
-                let incr = (v * 1000.0).round();
-                if incr.abs() > COORD_MAX {
-                    return Err(ps::DIGITS);
-                }
-                let (k, inc) = match letter {
-                    'X' => (0, false),
-                    'Z' => (1, false),
-                    'Y' => (2, false),
-                    'U' => (0, true),
-                    'W' => (1, true),
-                    _ => (2, true),
-                };
-                if w.axes[k].is_some() {
-                    return Err(ps::ADDRESS);
-                }
-                w.axes[k] = Some((incr as i64, inc));
-            }
-            'F' => {
-                if v < 0.0 || !v.is_finite() {
-                    return Err(ps::ADDRESS);
-                }
-                w.f = Some(v);
-            }
-            'S' => w.s = Some(integer(99_999_999.0)?),
-            'T' => w.t = Some(integer(9999.0)?),
-            'P' => w.p = Some(integer(99_999_999.0)?),
-            'L' => w.l = Some(integer(9999.0)?),
-            'M' => {
-                let max = if w.m_count == 0 {
-                    99_999_999.0
-                } else {
-                    65_535.0
-                };
-                let m = integer(max)?;
-                if w.m_count == 3 {
-                    return Err(ps::M_COUNT);
-                }
-                w.m[usize::from(w.m_count)] = m;
-                w.m_count += 1;
-            }
-            _ => return Err(ps::ADDRESS),
-        }
-    }
-    if w.dwell {
-        // G04 X/U: the time in seconds, not a coordinate.
-        if let Some((v, _)) = w.axes[0].take() {
-            w.dwell_s = Some(v as f64 / 1000.0);
-        }
-    }
-    Ok(w)
-}
-
-fn g_code(code: &str, w: &mut Words, groups: &mut [bool; 11]) -> Result<(), u16> {
-    let value: f64 = code.parse().map_err(|_| ps::G_CODE)?;
-    let tenths = (value * 10.0).round();
-    if (value * 10.0 - tenths).abs() > 1e-9 || code.starts_with(['+', '-']) {
-        return Err(ps::G_CODE);
-    }
-    // Groups: 0 one-shot (G04, G28), 1 motion, 2 feed mode, 3 workpiece, 4+ accepted ones.
-    let group = match tenths as i64 {
-        0 => {
-            w.motion = Some(0);
-            1
-        }
-        10 => {
-            w.motion = Some(1);
-            1
-        }
-        40 => {
-            w.dwell = true;
-            0
-        }
-        280 => {
-            w.g28 = true;
-            0
-        }
-        540 | 550 | 560 | 570 | 580 | 590 => {
-            w.work = Some(((tenths as i64 - 540) / 10) as u8);
-            3
-        }
-        980 => {
-            w.per_rev = Some(false);
-            2
-        }
-        990 => {
-            w.per_rev = Some(true);
-            2
-        }
-        131 => 4,
-        150 => 5,
-        180 => 6,
-        210 => 7,
-        400 => 8,
-        670 => 9,
-        970 => 10,
-        _ => return Err(ps::G_CODE),
-    };
-    if groups[group] {
-        return Err(ps::G_CODE);
-    }
-    groups[group] = true;
-    Ok(())
 }
 
 #[cfg(test)]
@@ -553,12 +329,16 @@ mod tests {
         assert_eq!(b.n, Some(20));
         let w = b.words.unwrap();
         assert_eq!(w.motion, Some(1));
-        assert_eq!(w.axes[0], Some((10_000, false)));
-        assert_eq!(w.axes[1], Some((-5_500, true)));
+        let num = |value, decimal| super::super::word::Num { value, decimal };
+        assert_eq!(w.axes[0], Some((num(10.0, false), false)));
+        assert_eq!(w.axes[1], Some((num(-5.5, true), true)));
         assert_eq!(w.ms(), &[3, 8]);
         assert_eq!((w.s, w.t, w.f), (Some(800), Some(202), Some(100.0)));
         let w = block("G04 X1.5").words.unwrap();
-        assert_eq!((w.dwell, w.dwell_s, w.axes[0]), (true, Some(1.5), None));
+        assert_eq!(
+            (w.dwell(), w.dwell_x, w.axes[0]),
+            (true, Some(num(1.5, true)), None)
+        );
         assert!(block("g13.1 g18 g21 g40 g67 g97 g15").words.is_ok());
     }
 
@@ -566,13 +346,13 @@ mod tests {
     fn text_errors_give_their_alarm_and_keep_the_n() {
         let cases = [
             ("N10 G01 X1 X2", 9),
-            ("N10 Q5", 9),
+            ("N10 E5", 9),
             ("N10 L1.5", 9),
             ("N10 X", 9),
             ("N10 X1..2", 9),
-            ("N10 G02 X1", 10),
+            ("N10 G02.5 X1", 10),
             ("N10 G00 G01 X1", 10),
-            ("N10 X100000", 3),
+            ("N10 X123456789", 3),
             ("N10 T12345", 3),
             ("N10 M1 M2 M3 M4", 14),
             ("N10 M1 M70000", 3),

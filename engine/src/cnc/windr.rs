@@ -268,9 +268,9 @@ impl SimCnc {
                     b,
                     &[
                         i64::from(m.motion),
-                        97,
+                        if m.css { 96 } else { 97 },
                         if m.per_rev { 99 } else { 98 },
-                        21,
+                        if m.inch { 20 } else { 21 },
                         40,
                         67,
                         54 + i64::from(m.work),
