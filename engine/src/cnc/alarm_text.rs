@@ -41,6 +41,36 @@ pub const TEXTS: &[AlarmText] = &[
     ),
     text(ps::NO_RADIUS, "圆弧未指定R或I、K", "Arc without R or I, K"),
     text(ps::G10_P, "G10的P或L指令错误", "Improper P or L in G10"),
+    text(
+        ps::CYCLE_PQ,
+        "复合循环中未指定P或Q",
+        "P or Q missing in a multiple repetitive cycle",
+    ),
+    text(
+        ps::CYCLE_VALUE,
+        "复合循环指令值错误",
+        "Improper value in a multiple repetitive cycle",
+    ),
+    text(
+        ps::NO_SEQUENCE,
+        "未找到P或Q指定的程序段",
+        "Block of sequence number P or Q not found",
+    ),
+    text(
+        ps::NOT_MONOTONIC_Z,
+        "精加工形状Z方向非单调变化",
+        "Finishing shape not monotonic along Z",
+    ),
+    text(
+        ps::CYCLE_FIRST_BLOCK,
+        "精加工形状首段无G00或G01",
+        "No G00 or G01 in the first block of the shape",
+    ),
+    text(
+        ps::CYCLE_COMMAND,
+        "精加工形状中有不可用的指令",
+        "Unavailable command in the shape blocks",
+    ),
     text(ps::NO_PROGRAM, "子程序未找到", "Subprogram not found"),
     text(ps::NESTING, "子程序嵌套过多", "Subprograms nested too deep"),
     text(
@@ -62,6 +92,11 @@ pub const TEXTS: &[AlarmText] = &[
         ps::AXIS_CLAIM,
         "PLC控制轴冲突",
         "Axis claimed by both CNC and PLC",
+    ),
+    text(
+        ps::NOT_MONOTONIC_X,
+        "精加工形状X方向非单调变化",
+        "Finishing shape not monotonic along X",
     ),
     text(
         ALARM_STROKE[0],

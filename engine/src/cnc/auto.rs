@@ -4,6 +4,7 @@
 //! handshake.
 
 use super::cycle::CycleMemory;
+use super::drill::DrillMemory;
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
@@ -65,6 +66,9 @@ struct Frame {
     ret: Cursor,
     sub: usize,
     repeats: u32,
+    /// A G70 profile: the index of its last block (Q), after which the G70 block is
+    /// returned to, and the cycle's start point.
+    until: Option<(usize, [i64; AXES])>,
 }
 
 /// The executing block.
@@ -95,6 +99,10 @@ pub(super) struct Exec {
     pub(super) ret: bool,
     pub(super) offset: Option<u8>,
     pub(super) line: usize,
+    /// G70: run blocks P to Q (indices), then come back to the start point.
+    pub(super) g70: Option<(usize, usize, [i64; AXES])>,
+    /// G71–G73: the block the program goes on at.
+    pub(super) resume: Option<usize>,
 }
 
 impl Exec {
@@ -136,6 +144,8 @@ pub(super) struct Modal {
     pub s_max: u32,
     /// The last single cycle's end point and taper.
     pub cycle: CycleMemory,
+    /// The drilling cycle in effect and its data.
+    pub drill: DrillMemory,
 }
 
 /// Automatic operation.
@@ -153,6 +163,8 @@ pub(super) struct Auto {
     pub shift: [i64; AXES],
     /// The last motion segment started was a thread.
     pub prev_thread: bool,
+    /// The G70 block returned to after its profile: the start point it moves back to.
+    pub g70_return: Option<[i64; AXES]>,
     /// Feed hold came during a thread: it takes effect when the thread ends.
     hold_after_thread: bool,
     pub interrupted: bool,
@@ -176,6 +188,7 @@ impl Auto {
         self.pending_stop = false;
         self.prev_thread = false;
         self.hold_after_thread = false;
+        self.g70_return = None;
     }
 
     /// A reset condition: IDLE and rewound; modal data, S and the tool offset are kept.
@@ -246,6 +259,12 @@ impl SimCnc {
 
     fn block_at(&self, c: Cursor) -> Option<&NcBlock> {
         self.program_ref(c.prog)?.blocks.get(c.block)
+    }
+
+    /// The program being run and the index of the block at the cursor.
+    pub(super) fn running_program(&self) -> Option<(&NcProgram, usize)> {
+        let c = self.auto.cursor;
+        Some((self.program_ref(c.prog)?, c.block))
     }
 
     /// The O number `cnc.prog` reports.
@@ -471,6 +490,14 @@ impl SimCnc {
         let mut modal = self.auto.modal;
         if let Some(m) = w.motion {
             modal.motion = m;
+            // A group 01 code cancels a drilling cycle.
+            modal.drill = DrillMemory::default();
+        }
+        match w.drill {
+            Some(80) => modal.drill = DrillMemory::default(),
+            // The cycle's data stay until G80 or a group 01 code.
+            Some(g) => modal.drill.g = g,
+            None => {}
         }
         if let Some(p) = w.per_rev {
             modal.per_rev = p;
@@ -537,6 +564,8 @@ impl SimCnc {
             ret: false,
             offset: None,
             line,
+            g70: fx.g70,
+            resume: fx.resume,
         };
         // The M/S/T sequence.
         let ms = w.ms();
@@ -605,7 +634,15 @@ impl SimCnc {
             return;
         }
         let a = &mut self.auto;
-        if let Some((sub, times)) = e.call {
+        if let Some((first, last, home)) = e.g70 {
+            a.stack.push(Frame {
+                ret: a.cursor,
+                sub: a.cursor.prog,
+                repeats: 0,
+                until: Some((last, home)),
+            });
+            a.cursor.block = first;
+        } else if let Some((sub, times)) = e.call {
             let ret = Cursor {
                 block: a.cursor.block + 1,
                 ..a.cursor
@@ -614,6 +651,7 @@ impl SimCnc {
                 ret,
                 sub,
                 repeats: times - 1,
+                until: None,
             });
             a.cursor = Cursor {
                 prog: sub,
@@ -621,6 +659,16 @@ impl SimCnc {
             };
         } else if e.ret {
             a.return_from_sub();
+        } else if let Some(k) = e.resume {
+            a.cursor.block = k;
+        } else if let Some(f) = a.stack.last()
+            && f.sub == a.cursor.prog
+            && f.until.is_some_and(|(last, _)| last == a.cursor.block)
+        {
+            // The end of a G70 profile: back to the G70 block, which returns to its start.
+            a.g70_return = f.until.map(|(_, home)| home);
+            a.cursor = f.ret;
+            a.stack.pop();
         } else {
             a.cursor.block += 1;
         }

@@ -17,6 +17,10 @@ use super::program::ps::G10_P as PS_G10_P;
 pub(super) struct Effects {
     /// G50 X/Z: the new coordinate shift per axis.
     pub shift: Option<[i64; AXES]>,
+    /// G70: the blocks P and Q (indices in the running program) and the start point.
+    pub g70: Option<(usize, usize, [i64; AXES])>,
+    /// G71–G73 whose profile follows it: the block index the program goes on at.
+    pub resume: Option<usize>,
 }
 
 impl SimCnc {
@@ -35,7 +39,7 @@ impl SimCnc {
     }
 
     /// The end point of a block's axis words from `cur`.
-    fn end_point(
+    pub(super) fn end_point(
         &self,
         w: &Words,
         u: Units,
@@ -134,13 +138,19 @@ impl SimCnc {
                 self.check_g10(w, u)?;
                 return Ok(fx);
             }
-            Some(OneShot::Cycle(_)) => return Err(ps::G_CODE),
+            Some(OneShot::Cycle(g)) => {
+                return self.plan_repetitive(g, w, modal, u, cur, segs);
+            }
             None => {}
         }
-        if w.drill.is_some_and(|d| d != 80) {
-            return Err(ps::G_CODE);
-        }
         let target = self.end_point(w, u, modal, cur)?;
+        if matches!(modal.drill.g, 83..=89) {
+            if w.moves() && modal.feed <= 0.0 {
+                return Err(ps::NO_FEED);
+            }
+            self.plan_drill(w, modal, u, cur, target, segs)?;
+            return Ok(fx);
+        }
         match modal.motion {
             0 if w.moves() => segs.push(Segment::to(SegKind::Rapid, target)),
             1 if w.moves() => segs.push(self.cut(SegKind::Line, target, modal)),
@@ -178,7 +188,7 @@ impl SimCnc {
 
     /// The segment of a G02/G03 from `cur` to `target`: its centre from R or from I/K
     /// (I radius-valued), checked against #3410.
-    fn arc_kind(
+    pub(super) fn arc_kind(
         &self,
         w: &Words,
         u: Units,

@@ -392,6 +392,10 @@ impl SimCnc {
                     let (i, slot) = Params::check(*number, *selector, *value)
                         .map_err(|e| param_error(e, *number))?;
                     self.params.set(i, slot, *value);
+                    if i == params::P3402 && self.auto.state == RunState::Idle {
+                        // Set up before a run, the feed mode is the one power-on would give.
+                        self.auto.modal.per_rev = self.fpm_per_rev();
+                    }
                 }
             }
             CncCommand::Offset {

@@ -10,7 +10,8 @@
 //!
 //! The module is split by responsibility: `signals` (G sampled, F written), `params`,
 //! `data` (offsets, macros, clock), `program` (NC text), `word` (a block's words and units),
-//! `block` (a block planned into segments), `cycle` (threads and single cycles), `path` (the
+//! `block` (a block planned into segments), `cycle` (threads and single cycles), `profile`,
+//! `rough`, `repeat` and `drill` (the compound and drilling cycles), `path` (the
 //! segment queue), `arc` and `motion` (straight and circular moves), `auto`
 //! (automatic operation), `mst` (the M/S/T handshake), `manual` (JOG, handwheel, reference
 //! return, overtravel), `plc_axes` (AXCTL groups), `windr` (the window functions), `command`
@@ -23,6 +24,7 @@ mod block;
 pub mod command;
 mod cycle;
 pub mod data;
+mod drill;
 mod keys;
 mod manual;
 pub mod motion;
@@ -30,8 +32,12 @@ mod mst;
 pub mod params;
 mod path;
 mod plc_axes;
+mod profile;
 pub mod program;
+mod repeat;
+mod rough;
 pub mod signals;
+mod spindle;
 mod windr;
 pub mod word;
 
@@ -45,6 +51,7 @@ use params::{P0071, P1006, P3003, Params};
 use plc_axes::Group;
 use program::{NcProgram, parse_mdi, parse_programs};
 use signals::{FImage, GroupInputs, Inputs};
+use spindle::Spindle;
 
 pub use auto::RunState;
 
@@ -156,23 +163,6 @@ struct Flags {
     thread: bool,
     /// Path speed of program motion, mm/min.
     path_speed: f64,
-}
-
-/// Spindle state.
-#[derive(Clone, Copy, Debug, Default)]
-struct Spindle {
-    /// The last S commanded.
-    s_cmd: u32,
-    /// The output speed, r/min.
-    s_out: u32,
-    /// Maximum of the selected gear.
-    g_max: u32,
-    /// The speed constant surface speed gave at the last exchange, r/min (before override).
-    s_css: u32,
-    /// Angle, in revolutions (0–1), from S_out.
-    angle: f64,
-    /// The one-rotation signal came at this exchange.
-    one_rev: bool,
 }
 
 /// The simulated CNC.
@@ -520,60 +510,6 @@ impl SimCnc {
         self.auto.mode_change(new);
         self.manual.stop_all();
         self.mode = new;
-    }
-
-    /// The spindle output (docs/cnc.md, "Spindle").
-    fn update_spindle(&mut self) {
-        let inp = self.inp;
-        let g_max = self
-            .params
-            .get(params::P3741 + usize::from(inp.gear), 0)
-            .max(0) as u32;
-        let s_out = if inp.estop || inp.sstp {
-            0
-        } else if inp.sind {
-            (f64::from(inp.ri) * f64::from(g_max) / 4095.0).round() as u32
-        } else {
-            let sov = f64::from(inp.sov.clamp(5, 12)) / 10.0;
-            let s = if self.auto.modal.css {
-                self.spindle.s_css = self.css_speed(g_max);
-                self.spindle.s_css
-            } else {
-                self.spindle.s_cmd
-            };
-            ((f64::from(s) * sov).round() as u32).min(g_max)
-        };
-        self.spindle.s_out = s_out;
-        self.spindle.g_max = g_max;
-        // The position coder: one rotation signal each time the angle passes zero.
-        let sp = &mut self.spindle;
-        sp.angle += f64::from(s_out) * 8.0 / 60_000.0;
-        sp.one_rev = sp.angle >= 1.0;
-        sp.angle = sp.angle.fract();
-    }
-
-    /// The spindle speed G96 asks for at the tool's diameter (the end point's during a
-    /// rapid): 1000 · V / (π · D) r/min, no more than G50 S (when set) and `g_max`.
-    fn css_speed(&self, g_max: u32) -> u32 {
-        let m = &self.auto.modal;
-        let x = match self.auto.exec.and_then(|e| e.motion) {
-            Some(mo) if mo.kind == motion::MotionKind::Rapid => {
-                mo.target[0] - self.tool_offset_along(0) - self.work_offset(0)
-            }
-            _ => self.absolute(0),
-        };
-        let d_mm = if self.diameter(0) { 1.0 } else { 2.0 } * (x as f64 / 1000.0).abs();
-        let limit = if m.s_max > 0 {
-            m.s_max.min(g_max)
-        } else {
-            g_max
-        };
-        let s = 1000.0 * m.css_speed / (std::f64::consts::PI * d_mm);
-        if s.is_finite() {
-            (s.round() as u32).min(limit)
-        } else {
-            limit
-        }
     }
 
     fn bookkeeping(&mut self) {

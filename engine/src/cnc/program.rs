@@ -25,6 +25,20 @@ pub mod ps {
     pub const NO_RADIUS: u16 = 22;
     /// G10 with a P (or L) that names no offset or workpiece system.
     pub const G10_P: u16 = 31;
+    /// G70–G73 without P or Q.
+    pub const CYCLE_PQ: u16 = 61;
+    /// A multiple repetitive cycle with an impossible value (depth 0, count 0, no height…).
+    pub const CYCLE_VALUE: u16 = 62;
+    /// No block with the sequence number P or Q of G70–G73, or Q before P.
+    pub const NO_SEQUENCE: u16 = 63;
+    /// The profile of G71–G73 does not change monotonically along Z.
+    pub const NOT_MONOTONIC_Z: u16 = 64;
+    /// The first block of a profile (P) holds neither G00 nor G01.
+    pub const CYCLE_FIRST_BLOCK: u16 = 65;
+    /// A profile block holds a command a cycle cannot follow (a one-shot G code, G32, a cycle).
+    pub const CYCLE_COMMAND: u16 = 66;
+    /// The profile of a type I G71/G72 does not change monotonically along X.
+    pub const NOT_MONOTONIC_X: u16 = 329;
     /// M98: no such program.
     pub const NO_PROGRAM: u16 = 76;
     /// M98 nested too deep.
