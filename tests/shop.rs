@@ -46,6 +46,13 @@ struct Outcome {
 /// Sets the sample lathe up as the shop runs it and runs `nc` until it ends, stops on an
 /// alarm, or `limit` scans pass.
 fn run_program(nc: &str, limit: u64) -> Outcome {
+    run_on_sample(&here().join("nc").join(nc), true, limit)
+}
+
+/// Runs the program at `path` on the sample lathe; `fanuc` sets #3401 = 0, #3402 bit 4 = 0 and
+/// K0000.1 = 0 first, otherwise the sample's own settings stay.
+fn run_on_sample(path: &std::path::Path, fanuc: bool, limit: u64) -> Outcome {
+    let nc = path.display().to_string();
     let project = file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample");
     let mut m = Machine::new(&project, true).expect("builds");
     // A healthy machine: E-stop released, limits closed, spindle ready, dogs off, overrides.
@@ -57,24 +64,21 @@ fn run_program(nc: &str, limit: u64) -> Outcome {
     m.plc.write(a("X0005"), 1, 15);
     m.plc.write(a("X0006"), 1, 5);
     m.plc.write(a("X0007"), 1, 3);
-    m.plc.write(a("K0000.1"), 1, 0);
-    cnc(
-        &mut m,
-        CncCommand::Param {
-            number: 3401,
-            selector: None,
-            value: 0,
-        },
-    );
-    cnc(
-        &mut m,
-        CncCommand::Param {
-            number: 3402,
-            selector: None,
-            value: 0,
-        },
-    );
-    let text = read_program_file(&here().join("nc").join(nc)).expect("the program");
+    if fanuc {
+        m.plc.write(a("K0000.1"), 1, 0);
+        for number in [3401, 3402] {
+            let value = 0;
+            cnc(
+                &mut m,
+                CncCommand::Param {
+                    number,
+                    selector: None,
+                    value,
+                },
+            );
+        }
+    }
+    let text = read_program_file(path).expect("the program");
     cnc(&mut m, CncCommand::Program(text));
     m.run_ticks(2, |_| {});
     // Reference return on the dogs.
@@ -140,4 +144,10 @@ fn a_typing_error_stops_the_program_with_a_ps_alarm_naming_its_block() {
         assert_eq!(o.block, "30", "{nc}: the alarm names N30");
         assert_eq!(o.parts, "0");
     }
+}
+
+#[test]
+fn the_sample_job_runs_to_m30_with_the_sample_s_own_settings() {
+    let o = run_on_sample(&here().join("../projects/lathe-988ta.nc"), false, 400_000);
+    assert_eq!((o.alarms.as_str(), o.parts.as_str()), ("0", "1"), "{o:?}");
 }

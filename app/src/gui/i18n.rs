@@ -495,6 +495,14 @@ messages! {
     CncSendMdi => "送入 MDI", "Send MDI";
     CncReset => "复位", "RESET";
     CncCurrentLine => "当前程序段：第", "Current block: line";
+    CncPickedLine => "点选程序段：第", "Picked block: line";
+    CncToolpath => "刀具轨迹", "Toolpath";
+    CncToolpathPlot => "刀具轨迹图（点击轨迹选程序段）", "Toolpath plot (click the path to pick its block)";
+    CncFit => "适合窗口", "Fit";
+    CncBlocks => "个程序段", "blocks";
+    CncToolpathStops => "空运行停在第", "The dry run stops at line";
+    CncExecuted => "已走轨迹", "Executed";
+    CncToolPoint => "刀尖", "Tool";
     CncAxis => "轴", "Axis";
     CncMachinePos => "机床坐标", "Machine";
     CncAbsolutePos => "绝对坐标", "Absolute";

@@ -65,6 +65,22 @@ pub const PANEL_RIM: Color32 = Color32::from_gray(0x20);
 pub const CNC_LAMP_ON: Color32 = Color32::from_rgb(0x20, 0xc0, 0x40);
 /// The background of the NC block being executed in the program listing.
 pub const CNC_CURRENT_LINE: Color32 = Color32::from_rgb(0xff, 0xe8, 0x80);
+/// The background of the NC block picked on the toolpath.
+pub const CNC_PICKED_LINE: Color32 = Color32::from_rgb(0xfa, 0xd4, 0xe8);
+/// Toolpath: rapids (dashed).
+pub const TOOLPATH_RAPID: Color32 = Color32::from_rgb(0x90, 0x90, 0x90);
+/// Toolpath: cutting feed.
+pub const TOOLPATH_FEED: Color32 = Color32::from_rgb(0x20, 0x50, 0xc0);
+/// Toolpath: threads.
+pub const TOOLPATH_THREAD: Color32 = Color32::from_rgb(0x90, 0x30, 0xb0);
+/// Toolpath: the path the tool has taken.
+pub const TOOLPATH_EXECUTED: Color32 = Color32::from_rgb(0x10, 0xa0, 0x40);
+/// Toolpath: the block executing.
+pub const TOOLPATH_CURRENT: Color32 = Color32::from_rgb(0xff, 0x8c, 0x00);
+/// Toolpath: the block a click picked.
+pub const TOOLPATH_PICKED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x80);
+/// Toolpath: the tool's point.
+pub const TOOLPATH_TOOL: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
 /// A bit's lane in the signal trace.
 pub const TRACE_BIT: Color32 = Color32::from_rgb(0x10, 0xa0, 0x40);
 /// A value's lane in the signal trace.

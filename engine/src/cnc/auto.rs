@@ -62,7 +62,7 @@ pub(super) struct Cursor {
 
 /// A caller of a subprogram.
 #[derive(Clone, Copy, Debug)]
-struct Frame {
+pub(super) struct Frame {
     ret: Cursor,
     sub: usize,
     repeats: u32,
@@ -155,7 +155,7 @@ pub(super) struct Auto {
     /// The program run or resumed is the MDI buffer.
     mdi: bool,
     cursor: Cursor,
-    stack: Vec<Frame>,
+    pub(super) stack: Vec<Frame>,
     pub exec: Option<Exec>,
     /// The executing block's segments (kept to reuse its allocation).
     pub segs: Vec<Segment>,
@@ -373,7 +373,7 @@ impl SimCnc {
         }
     }
 
-    fn start_next_block(&mut self) {
+    pub(super) fn start_next_block(&mut self) {
         let mut guard = 0u32;
         loop {
             guard += 1;

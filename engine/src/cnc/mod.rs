@@ -38,6 +38,7 @@ mod repeat;
 mod rough;
 pub mod signals;
 mod spindle;
+pub mod toolpath;
 mod windr;
 pub mod word;
 
@@ -202,6 +203,7 @@ pub struct SimCnc {
     groups: [Group; 4],
     flags: Flags,
     eaxsl: bool,
+    toolpath: toolpath::ToolpathCache,
 }
 
 /// Seconds from 1970 of the clock's origin, 2026-01-01 00:00:00.
@@ -259,6 +261,7 @@ impl SimCnc {
             groups: Default::default(),
             flags: Flags::default(),
             eaxsl: false,
+            toolpath: Default::default(),
         }
     }
 
@@ -357,6 +360,7 @@ impl SimCnc {
 
     /// Replaces every memory program and rewinds.
     fn load_programs(&mut self, text: &str) {
+        self.toolpath = Default::default();
         self.programs = parse_programs(text);
         self.program_text = text.to_string();
         self.auto.rewind_all();
@@ -616,6 +620,7 @@ impl SimCnc {
             spindle: self.spindle.s_out,
             alarms: self.alarms.clone(),
             mst: self.mst_status(),
+            toolpath: (!self.programs.is_empty()).then(|| self.toolpath.get(|| self.toolpath())),
         }
     }
 }
@@ -647,6 +652,8 @@ pub struct CncStatus {
     pub alarms: Vec<u16>,
     /// M/S/T lamps.
     pub mst: MstStatus,
+    /// The loaded program's path, run dry once per load (docs/gcode.md, "Toolpath").
+    pub toolpath: Option<std::sync::Arc<toolpath::Toolpath>>,
 }
 
 /// The M/S/T interface as lamps and codes.

@@ -153,6 +153,22 @@ impl Inputs {
         }
     }
 
+    /// A machine with nothing holding the program back: no E-stop, feed hold, interlock or
+    /// limit, overrides at 100 %, the spindle enabled (the dry run of the toolpath).
+    pub fn healthy() -> Inputs {
+        let mut g = [0u8; 218];
+        g[8] = 0b0011_1011;
+        g[12] = 10;
+        g[10] = 10;
+        g[30] = 10;
+        g[29] = 1 << 6;
+        g[114] = 0xFF;
+        g[116] = 0xFF;
+        g[130] = 0xFF;
+        g[196] = 0xFF;
+        Inputs::read(&g)
+    }
+
     /// The state of every G before exchange 1 (all 0).
     pub fn zero() -> Inputs {
         Inputs::read(&[])

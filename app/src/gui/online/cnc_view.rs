@@ -6,6 +6,7 @@
 //! which the caller owns so they outlive a machine, and returns [`CncEvent`]s that the
 //! application sends to the CNC.
 
+use super::toolpath_view::{ToolpathView, toolpath_ui};
 use crate::gui::i18n::{Lang, Msg};
 use crate::gui::theme;
 use egui::accesskit::Role;
@@ -29,6 +30,8 @@ pub struct CncTexts {
     pub program: String,
     /// The MDI text.
     pub mdi: String,
+    /// Scroll the program listing to this line at the next frame (a toolpath click).
+    pub jump: Option<usize>,
 }
 
 /// The name of a mode in the UI language.
@@ -69,6 +72,7 @@ pub fn cnc_ui(
     ui: &mut egui::Ui,
     status: Option<&CncStatus>,
     texts: &mut CncTexts,
+    view: &mut ToolpathView,
     lang: Lang,
     alarm_text: &dyn Fn(u16) -> String,
 ) -> Vec<CncEvent> {
@@ -78,9 +82,47 @@ pub fn cnc_ui(
         None => {
             ui.label(t(Msg::CncNotRunning));
         }
-        Some(s) => status_ui(ui, s, lang, alarm_text),
+        Some(s) => {
+            status_ui(ui, s, lang, alarm_text);
+            view.update(s);
+        }
     }
     ui.separator();
+    let path = status.filter(|s| s.toolpath.is_some());
+    let mut jump = None;
+    match path {
+        // Wide enough: the editors on the left, the toolpath on the right.
+        Some(s) if ui.available_width() >= 820.0 => {
+            ui.columns(2, |cols| {
+                editors_ui(&mut cols[0], status, texts, view.picked, lang, &mut events);
+                let h = cols[1].available_height().clamp(200.0, 520.0);
+                jump = toolpath_ui(&mut cols[1], s, view, lang, h);
+            });
+        }
+        Some(s) => {
+            editors_ui(ui, status, texts, view.picked, lang, &mut events);
+            jump = toolpath_ui(ui, s, view, lang, 240.0);
+        }
+        None => editors_ui(ui, status, texts, None, lang, &mut events),
+    }
+    if let Some(line) = jump {
+        // Scroll the listing to the picked block at the next frame.
+        texts.jump = Some(line);
+        ui.ctx().request_repaint();
+    }
+    events
+}
+
+/// The program and MDI editors with their buttons.
+fn editors_ui(
+    ui: &mut egui::Ui,
+    status: Option<&CncStatus>,
+    texts: &mut CncTexts,
+    picked: Option<usize>,
+    lang: Lang,
+    events: &mut Vec<CncEvent>,
+) {
+    let t = |m: Msg| m.text(lang);
     // The block being executed is in the program or in the MDI buffer.
     let program_line = status.filter(|s| !s.mdi).and_then(|s| s.line);
     let mdi_line = status.filter(|s| s.mdi).and_then(|s| s.line);
@@ -95,13 +137,25 @@ pub fn cnc_ui(
         if let Some(line) = status.and_then(|s| s.line) {
             ui.label(format!("{} {line}", t(Msg::CncCurrentLine)));
         }
+        if let Some(line) = picked {
+            let text = texts.program.split('\n').nth(line - 1).unwrap_or("").trim();
+            ui.colored_label(
+                theme::TOOLPATH_PICKED,
+                format!("{} {line}: {text}", t(Msg::CncPickedLine)),
+            );
+        }
         heading.id
     });
+    let jump = texts.jump.take();
     nc_editor(
         ui,
         "cnc-program",
         &mut texts.program,
-        program_line,
+        Marks {
+            current: program_line,
+            picked,
+            jump,
+        },
         12,
         heading.inner,
     );
@@ -112,8 +166,23 @@ pub fn cnc_ui(
         }
         heading.id
     });
-    nc_editor(ui, "cnc-mdi", &mut texts.mdi, mdi_line, 3, heading.inner);
-    events
+    let marks = Marks {
+        current: mdi_line,
+        picked: None,
+        jump: None,
+    };
+    nc_editor(ui, "cnc-mdi", &mut texts.mdi, marks, 3, heading.inner);
+}
+
+/// The lines an NC editor marks.
+#[derive(Clone, Copy, Debug, Default)]
+struct Marks {
+    /// The executing block.
+    current: Option<usize>,
+    /// The block picked on the toolpath.
+    picked: Option<usize>,
+    /// Scroll to this line now.
+    jump: Option<usize>,
 }
 
 /// Mode, state, positions, spindle, M/S/T and alarms.
@@ -224,10 +293,11 @@ fn nc_editor(
     ui: &mut egui::Ui,
     id: &str,
     text: &mut String,
-    current: Option<usize>,
+    marks: Marks,
     rows: usize,
     label: egui::Id,
 ) {
+    let current = marks.current;
     let font = egui::TextStyle::Monospace.resolve(ui.style());
     let colour = ui.visuals().text_color();
     let lines = text.split('\n').count().max(rows);
@@ -245,38 +315,45 @@ fn nc_editor(
             if Some(k + 1) == current {
                 format.background = theme::CNC_CURRENT_LINE;
                 format.color = theme::INK;
+            } else if Some(k + 1) == marks.picked {
+                format.background = theme::CNC_PICKED_LINE;
+                format.color = theme::INK;
             }
             job.append(line, 0.0, format);
         }
         job.wrap.max_width = wrap;
         ui.fonts_mut(|f| f.layout_job(job))
     };
-    egui::ScrollArea::vertical()
+    let row = ui.text_style_height(&egui::TextStyle::Monospace);
+    let mut area = egui::ScrollArea::vertical()
         .id_salt(id)
-        .max_height(ui.text_style_height(&egui::TextStyle::Monospace) * (rows as f32 + 1.0))
-        .show(ui, |ui| {
-            ui.horizontal_top(|ui| {
-                // The gutter's top margin is the editor's, so the numbers stay on their rows.
-                egui::Frame::NONE
-                    .inner_margin(egui::Margin::symmetric(0, MARGIN.y as i8))
-                    .show(ui, |ui| {
-                        ui.add(
-                            egui::Label::new(egui::RichText::new(gutter).monospace().weak())
-                                .selectable(false),
-                        );
-                    });
-                ui.add(
-                    egui::TextEdit::multiline(text)
-                        .id_salt(id)
-                        .code_editor()
-                        .margin(MARGIN)
-                        .desired_rows(rows)
-                        .desired_width(f32::INFINITY)
-                        .layouter(&mut layouter),
-                )
-                .labelled_by(label);
-            });
+        .max_height(row * (rows as f32 + 1.0));
+    if let Some(line) = marks.jump {
+        area = area.vertical_scroll_offset(row * line.saturating_sub(3) as f32);
+    }
+    area.show(ui, |ui| {
+        ui.horizontal_top(|ui| {
+            // The gutter's top margin is the editor's, so the numbers stay on their rows.
+            egui::Frame::NONE
+                .inner_margin(egui::Margin::symmetric(0, MARGIN.y as i8))
+                .show(ui, |ui| {
+                    ui.add(
+                        egui::Label::new(egui::RichText::new(gutter).monospace().weak())
+                            .selectable(false),
+                    );
+                });
+            ui.add(
+                egui::TextEdit::multiline(text)
+                    .id_salt(id)
+                    .code_editor()
+                    .margin(MARGIN)
+                    .desired_rows(rows)
+                    .desired_width(f32::INFINITY)
+                    .layouter(&mut layouter),
+            )
+            .labelled_by(label);
         });
+    });
 }
 
 #[cfg(test)]
@@ -287,20 +364,59 @@ mod tests {
     use egui_kittest::kittest::{NodeT, Queryable};
     use ladder_engine::cnc::MstStatus;
 
-    type Shown = (Option<CncStatus>, CncTexts, Vec<CncEvent>);
+    type Shown = (Option<CncStatus>, CncTexts, ToolpathView, Vec<CncEvent>);
 
     fn harness(status: Option<CncStatus>) -> Harness<'static, Shown> {
         let mut h = Harness::builder()
             .with_size(egui::vec2(900.0, 800.0))
             .build_ui_state(
-                |ui, (status, texts, events): &mut Shown| {
+                |ui, (status, texts, view, events): &mut Shown| {
                     let alarm = |n: u16| format!("alarm text {n}");
-                    events.extend(cnc_ui(ui, status.as_ref(), texts, Lang::En, &alarm));
+                    let e = cnc_ui(ui, status.as_ref(), texts, view, Lang::En, &alarm);
+                    events.extend(e);
                 },
-                (status, CncTexts::default(), Vec::new()),
+                (
+                    status,
+                    CncTexts::default(),
+                    ToolpathView::default(),
+                    Vec::new(),
+                ),
             );
         h.run();
         h
+    }
+
+    #[test]
+    fn the_toolpath_is_drawn_and_a_click_on_it_picks_its_block() {
+        use ladder_engine::cnc::SimCnc;
+        use ladder_engine::cnc::command::CncCommand;
+        let mut cnc = SimCnc::new(
+            ladder_engine::ProfileId::Gsk988ta,
+            &ladder_engine::model::tables::MessageTable::default(),
+        );
+        let program = "O1\nG01 Z-100 F500\nG00 X10\nG00 X-10\nM30";
+        cnc.apply(&CncCommand::Program(program.into())).unwrap();
+        let status = cnc.status();
+        assert!(status.toolpath.is_some());
+        let mut h = harness(Some(status));
+        h.state_mut().1.program = program.into();
+        h.run();
+        h.get_by_label_contains("4 blocks");
+        // The cut along Z at X0 runs through the middle of the fitted plot (X from -10 to 10).
+        let centre = h.get_by_label_contains("Toolpath plot").rect().center();
+        h.event(egui::Event::PointerMoved(centre));
+        h.run();
+        for pressed in [true, false] {
+            h.event(egui::Event::PointerButton {
+                pos: centre,
+                button: egui::PointerButton::Primary,
+                pressed,
+                modifiers: egui::Modifiers::default(),
+            });
+        }
+        h.run();
+        h.get_by_label_contains("Picked block: line 2: G01 Z-100 F500");
+        assert_eq!(h.state().2.picked, Some(2));
     }
 
     #[test]
@@ -317,12 +433,12 @@ mod tests {
         h.get_by_label("Load program").click();
         h.run();
         assert_eq!(
-            h.state().2,
+            h.state().3,
             [CncEvent::Program("O0001\nG00 X10\nM30".into())]
         );
         h.get_by_label("Send MDI").click();
         h.run();
-        assert_eq!(h.state().2[1], CncEvent::Mdi(String::new()));
+        assert_eq!(h.state().3[1], CncEvent::Mdi(String::new()));
         assert!(h.query_by_label("RESET").is_none(), "no CNC to reset");
     }
 
@@ -362,7 +478,7 @@ mod tests {
         assert_eq!(lamp(&h, "FIN"), Some(Toggled::False));
         h.get_by_label("RESET").click();
         h.run();
-        assert_eq!(h.state().2, [CncEvent::Reset]);
+        assert_eq!(h.state().3, [CncEvent::Reset]);
     }
 
     #[test]

@@ -107,7 +107,15 @@ impl LadderApp {
             ladder_engine::cnc::alarm_text::alarm_text(n, lang == super::super::i18n::Lang::Zh)
                 .into_owned()
         };
-        let events = cnc_ui(ui, status.as_ref(), &mut self.online.cnc, lang, &alarm);
+        let online = &mut self.online;
+        let events = cnc_ui(
+            ui,
+            status.as_ref(),
+            &mut online.cnc,
+            &mut online.toolpath,
+            lang,
+            &alarm,
+        );
         for e in events {
             let c = match e {
                 CncEvent::Program(text) => CncCommand::Program(text),

@@ -11,6 +11,7 @@ pub mod live;
 mod machine;
 pub mod panel_view;
 pub mod session;
+pub mod toolpath_view;
 pub mod trace_view;
 mod ui;
 pub mod values;
@@ -87,6 +88,8 @@ pub struct OnlineState {
     pub panel: panel_view::PanelViewState,
     /// The CNC page's program and MDI texts.
     pub cnc: cnc_view::CncTexts,
+    /// The CNC screen's toolpath plot.
+    pub toolpath: toolpath_view::ToolpathView,
     /// The signal trace.
     pub trace: TraceUi,
     /// Bytes the panel's power-on values wrote, until the machine answers.
