@@ -296,3 +296,45 @@ fn g92_threads_with_a_45_degree_chamfer_of_one_lead() {
     assert!(p.contains(&(19_400, -18_500)), "N4 repeats at X19.4");
     assert_eq!((r.m(0), r.m(1)), (30_000, 5_000));
 }
+
+#[test]
+fn chamfer_and_corner_r_cut_the_corner_to_the_next_g01() {
+    // Up the face to X20, then along Z: ,C2 from X16 Z0 to X20 Z-2; ,R2 the same points joined
+    // by a quarter circle around X16 Z-2 (radius 8), through X18.828 Z-0.586.
+    let mut r = mem("O1;N1 G01 X20 ,C2 F600;N2 Z-20;N3");
+    r.start();
+    let p = path_of(&mut r, "1", 10);
+    assert!(
+        p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)),
+        "{p:?}"
+    );
+    let mut r = mem("O1;N1 G01 X20 ,R2 F600;N2 Z-20;N3");
+    r.start();
+    let p = path_of(&mut r, "1", 10);
+    assert!(p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)));
+    let near = |&(x, z): &(i64, i64)| (x - 18_828).abs() <= 60 && (z + 586).abs() <= 60;
+    assert!(p.iter().any(near), "the arc bulges out: {p:?}");
+    // Too large for the moves, or not followed by a G01: FANUC's 0055 and 0052.
+    for (text, alarm) in [
+        ("O1;N1 G01 X20 ,C12 F600;N2 Z-20", 55),
+        ("O1;N1 G01 X20 ,C2 F600;N2 G00 Z-20", 52),
+    ] {
+        let mut r = mem(text);
+        run(&mut r, 10);
+        assert_eq!(r.v(&format!("cnc.alarm.{alarm}")), "1", "{text}");
+    }
+}
+
+#[test]
+fn g30_returns_to_the_second_reference_point() {
+    let mut r = mem("O1;N1 G30 U0 W0;N2");
+    r.home(&[0, 1]);
+    r.mode(Mode::Mem);
+    r.x();
+    r.cmd(&["param", "1241", "1", "100000"]);
+    r.cmd(&["param", "1241", "2", "50000"]);
+    r.start();
+    r.until(1000, |r| r.v("cnc.block") == "2");
+    assert_eq!((r.m(0), r.m(1)), (100_000, 50_000));
+    assert_eq!(r.f[96] & 3, 3, "ZP21, ZP22");
+}

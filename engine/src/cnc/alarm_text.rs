@@ -42,6 +42,16 @@ pub const TEXTS: &[AlarmText] = &[
     text(ps::NO_RADIUS, "圆弧未指定R或I、K", "Arc without R or I, K"),
     text(ps::G10_P, "G10的P或L指令错误", "Improper P or L in G10"),
     text(
+        ps::CORNER_NEXT,
+        "倒角或拐角圆弧后不是G01",
+        "No G01 after a chamfer or corner R",
+    ),
+    text(
+        ps::CORNER_SIZE,
+        "倒角或拐角圆弧过大",
+        "Chamfer or corner R too large",
+    ),
+    text(
         ps::CYCLE_PQ,
         "复合循环中未指定P或Q",
         "P or Q missing in a multiple repetitive cycle",

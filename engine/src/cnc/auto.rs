@@ -8,7 +8,7 @@ use super::drill::DrillMemory;
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
-use super::path::{SegKind, Segment};
+use super::path::{Home, SegKind, Segment};
 use super::program::{MDI_NUMBER, NcBlock, NcProgram, ps};
 use super::word::{OneShot, Words};
 use super::{AXES, Mode, SimCnc};
@@ -85,7 +85,7 @@ pub(super) struct Exec {
     /// The exchange the last segment ended in.
     pub(super) done_at: u64,
     /// Axes the current segment brings to reference point 1.
-    pub(super) ref_axes: u8,
+    pub(super) home: Home,
     /// The current thread segment waits for the one-rotation signal.
     pub(super) wait_rev: bool,
     pub(super) dwell_ms: f64,
@@ -551,7 +551,7 @@ impl SimCnc {
             seg: 0,
             seg_count: self.auto.segs.len() as u16,
             done_at: self.exchange_no,
-            ref_axes: 0,
+            home: Home::NONE,
             wait_rev: false,
             dwell_ms: 0.0,
             dwell_total: 0.0,

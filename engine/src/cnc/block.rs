@@ -5,7 +5,7 @@
 use super::arc::{ArcPath, center_from_radius};
 use super::auto::Modal;
 use super::params::{P1240, P3401, P3410};
-use super::path::{SegKind, Segment};
+use super::path::{Home, SegKind, Segment};
 use super::program::ps;
 use super::word::{Num, OneShot, Units, Words};
 use super::{AXES, SimCnc};
@@ -91,19 +91,27 @@ impl SimCnc {
                 ));
                 return Ok(fx);
             }
-            Some(OneShot::Ref) => {
+            Some(OneShot::Ref) | Some(OneShot::Ref2) => {
+                // G28: point 1; G30: P2 (default), P3 or P4 (#1241–#1243).
+                let point = match (w.one_shot, w.p) {
+                    (Some(OneShot::Ref), _) => 1,
+                    (_, None) => 2,
+                    (_, Some(p @ 2..=4)) => p as u8,
+                    _ => return Err(ps::ADDRESS),
+                };
                 let mid = self.end_point(w, u, modal, cur)?;
                 segs.push(Segment::to(SegKind::Rapid, mid));
-                let mut home = mid;
+                let mut target = mid;
                 let mut axes = 0u8;
                 for (k, a) in w.axes.iter().enumerate() {
                     if a.is_some() {
                         axes |= 1 << k;
-                        home[k] = self.params.get(P1240, k) - self.axes[k].sh;
+                        let p = P1240 + usize::from(point) - 1;
+                        target[k] = self.params.get(p, k) - self.axes[k].sh;
                     }
                 }
-                let mut s = Segment::to(SegKind::Rapid, home);
-                s.ref_axes = axes;
+                let mut s = Segment::to(SegKind::Rapid, target);
+                s.home = Home { axes, point };
                 segs.push(s);
                 return Ok(fx);
             }
@@ -153,6 +161,10 @@ impl SimCnc {
         }
         match modal.motion {
             0 if w.moves() => segs.push(Segment::to(SegKind::Rapid, target)),
+            1 if w.moves() && (w.chamfer.is_some() || w.corner.is_some()) => {
+                self.plan_corner(w, modal, u, cur, target, segs)?;
+            }
+            _ if w.chamfer.is_some() || w.corner.is_some() => return Err(ps::CORNER_NEXT),
             1 if w.moves() => segs.push(self.cut(SegKind::Line, target, modal)),
             2 | 3 if w.moves() || w.i.is_some() || w.k.is_some() => {
                 let kind = self.arc_kind(w, u, modal.motion == 2, cur, target)?;
@@ -170,7 +182,7 @@ impl SimCnc {
             target,
             feed: modal.feed,
             per_rev: modal.per_rev,
-            ref_axes: 0,
+            home: Home::NONE,
         }
     }
 

@@ -5,7 +5,7 @@
 
 use super::auto::Modal;
 use super::params::P5130;
-use super::path::{SegKind, Segment};
+use super::path::{Home, SegKind, Segment};
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
 
@@ -74,7 +74,7 @@ impl SimCnc {
             target: p,
             feed: modal.feed,
             per_rev: modal.per_rev,
-            ref_axes: 0,
+            home: Home::NONE,
         };
         let taper = m.r * self.x_per_radius();
         match modal.motion {
@@ -106,7 +106,7 @@ impl SimCnc {
             target,
             feed: lead,
             per_rev: true,
-            ref_axes: 0,
+            home: Home::NONE,
         }
     }
 

@@ -22,6 +22,7 @@ pub mod arc;
 mod auto;
 mod block;
 pub mod command;
+mod corner;
 mod cycle;
 pub mod data;
 mod drill;

@@ -51,8 +51,22 @@ pub struct Segment {
     pub feed: f64,
     /// The feed is per revolution.
     pub per_rev: bool,
-    /// Axes that arrive at reference point 1 at its end (G28's second leg).
-    pub ref_axes: u8,
+    /// The reference point its end arrives at (G28's and G30's second leg).
+    pub home: Home,
+}
+
+/// Axes arriving at a reference point at the end of a segment.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Home {
+    /// The axes (bit n−1 for axis n); 0: no arrival.
+    pub axes: u8,
+    /// Reference point 1 (G28) or 2–4 (G30 P2–P4).
+    pub point: u8,
+}
+
+impl Home {
+    /// No arrival.
+    pub const NONE: Home = Home { axes: 0, point: 0 };
 }
 
 impl Segment {
@@ -63,7 +77,7 @@ impl Segment {
             target,
             feed: 0.0,
             per_rev: false,
-            ref_axes: 0,
+            home: Home::NONE,
         }
     }
 }
@@ -84,7 +98,7 @@ impl SimCnc {
         while e.seg < e.seg_count {
             let s = self.auto.segs[usize::from(e.seg)];
             e.seg += 1;
-            e.ref_axes = s.ref_axes;
+            e.home = s.home;
             e.feed = s.feed;
             e.per_rev = s.per_rev;
             e.kind = s.kind;
@@ -106,9 +120,7 @@ impl SimCnc {
                 _ => Motion::new(MotionKind::Cut, start, s.target, diam),
             };
             if m.is_empty() {
-                if s.ref_axes != 0 {
-                    self.g28_arrived(s.ref_axes);
-                }
+                self.arrived(s.home);
                 continue;
             }
             // A thread waits for the one-rotation signal, unless it follows a thread
@@ -133,15 +145,22 @@ impl SimCnc {
         })
     }
 
-    /// The named axes of a G28 are at reference point 1: ZP, and the shift is cleared.
-    fn g28_arrived(&mut self, axes: u8) {
+    /// The named axes of a G28 are at reference point 1: ZP, and the shift is cleared; those
+    /// of a G30 at point 2–4: ZP2–ZP4.
+    fn arrived(&mut self, home: Home) {
         if self.inp.mlk {
             return;
         }
         for n in 0..AXES {
-            if axes >> n & 1 == 1 {
-                self.axes[n].sh = 0;
-                self.axes[n].zp = true;
+            if home.axes >> n & 1 == 1 {
+                match home.point {
+                    1 => {
+                        self.axes[n].sh = 0;
+                        self.axes[n].zp = true;
+                    }
+                    p @ 2..=4 => self.axes[n].zp_n[usize::from(p) - 2] = true,
+                    _ => {}
+                }
             }
         }
     }
@@ -268,9 +287,7 @@ impl SimCnc {
         self.flags.path_speed = v;
         if m.done() {
             e.done_at = self.exchange_no;
-            if e.ref_axes != 0 {
-                self.g28_arrived(e.ref_axes);
-            }
+            self.arrived(e.home);
         }
         e.motion = Some(m);
         self.auto.exec = Some(e);

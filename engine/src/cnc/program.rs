@@ -23,6 +23,10 @@ pub mod ps {
     pub const ARC_RADIUS: u16 = 20;
     /// G02/G03 with neither R nor I/K.
     pub const NO_RADIUS: u16 = 22;
+    /// `,C` or `,R` whose next block is not a G01 move.
+    pub const CORNER_NEXT: u16 = 52;
+    /// `,C` or `,R` larger than the move before or after the corner.
+    pub const CORNER_SIZE: u16 = 55;
     /// G10 with a P (or L) that names no offset or workpiece system.
     pub const G10_P: u16 = 31;
     /// G70–G73 without P or Q.

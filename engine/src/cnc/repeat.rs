@@ -7,7 +7,7 @@
 use super::auto::Modal;
 use super::block::Effects;
 use super::params::{P5130, P5132, P5133, P5135, P5136, P5137, P5139, P5140, P5141, P5142, P5143};
-use super::path::{SegKind, Segment};
+use super::path::{Home, SegKind, Segment};
 use super::profile::{Profile, find_sequence};
 use super::program::ps;
 use super::rough::Rough;
@@ -287,7 +287,7 @@ pub(super) fn cut(kind: SegKind, target: [i64; AXES], feed: f64, per_rev: bool) 
         target,
         feed,
         per_rev,
-        ref_axes: 0,
+        home: Home::NONE,
     }
 }
 

@@ -6,7 +6,7 @@
 //! allowance profile.
 
 use super::arc::ArcPath;
-use super::path::{SegKind, Segment};
+use super::path::{Home, SegKind, Segment};
 use super::profile::{Elem, Profile};
 use super::program::ps;
 use super::{AXES, SimCnc};
@@ -325,7 +325,7 @@ impl Out<'_> {
             target,
             feed: self.r.feed,
             per_rev: self.r.per_rev,
-            ref_axes: 0,
+            home: Home::NONE,
         }
     }
 

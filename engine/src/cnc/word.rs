@@ -88,6 +88,8 @@ pub enum OneShot {
     Data,
     /// G28 reference return.
     Ref,
+    /// G30 return to reference point 2, 3 or 4 (P).
+    Ref2,
     /// G50 coordinate setting or spindle clamp.
     Coord,
     /// G53 machine coordinates.
@@ -127,6 +129,10 @@ pub struct Words {
     pub d: Option<Num>,
     /// A: thread angle, degrees.
     pub a: Option<Num>,
+    /// `,C`: a chamfer to the next block, the distance from the corner.
+    pub chamfer: Option<Num>,
+    /// `,R`: a corner radius to the next block.
+    pub corner: Option<Num>,
     /// F as written (mm/min, mm/rev, or the unit of G20; thread lead).
     pub f: Option<f64>,
     /// S as written: r/min, or m/min (ft/min) under G96; G50's clamp.
@@ -163,9 +169,9 @@ impl Words {
         self.one_shot == Some(OneShot::Dwell)
     }
 
-    /// G28.
+    /// G28 or G30: a return to a reference point.
     pub fn g28(&self) -> bool {
-        self.one_shot == Some(OneShot::Ref)
+        matches!(self.one_shot, Some(OneShot::Ref | OneShot::Ref2))
     }
 }
 
@@ -225,6 +231,26 @@ pub(super) fn words(mut body: &str) -> Result<Words, u16> {
     let mut groups = [false; GROUPS];
     let mut p_decimal = None;
     while let Some(letter) = body.chars().next() {
+        if letter == ',' {
+            // `,C` chamfer and `,R` corner rounding (FANUC's direct input).
+            let rest = &body[1..];
+            let kind = rest.chars().next().ok_or(ps::ADDRESS)?;
+            let num = number(&rest[1..]).ok_or(ps::ADDRESS)?;
+            body = &rest[1 + num.text_len..];
+            let v = Some(Num {
+                value: num.value,
+                decimal: num.decimal,
+            });
+            if num.value < 0.0 || w.chamfer.is_some() || w.corner.is_some() {
+                return Err(ps::ADDRESS);
+            }
+            match kind {
+                'C' => w.chamfer = v,
+                'R' => w.corner = v,
+                _ => return Err(ps::ADDRESS),
+            }
+            continue;
+        }
         if !letter.is_ascii_uppercase() {
             return Err(ps::ADDRESS);
         }
@@ -351,6 +377,7 @@ fn g_code(code: &str, w: &mut Words, groups: &mut [bool; GROUPS]) -> Result<(), 
         40 => one_shot(w, OneShot::Dwell),
         100 => one_shot(w, OneShot::Data),
         280 => one_shot(w, OneShot::Ref),
+        300 => one_shot(w, OneShot::Ref2),
         500 => one_shot(w, OneShot::Coord),
         530 => one_shot(w, OneShot::Machine),
         700..=760 if t % 10 == 0 => one_shot(w, OneShot::Cycle((t / 10) as u8)),

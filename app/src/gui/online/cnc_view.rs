@@ -78,33 +78,40 @@ pub fn cnc_ui(
 ) -> Vec<CncEvent> {
     let t = |m: Msg| m.text(lang);
     let mut events = Vec::new();
-    match status {
-        None => {
-            ui.label(t(Msg::CncNotRunning));
-        }
-        Some(s) => {
-            status_ui(ui, s, lang, alarm_text);
-            view.update(s);
-        }
-    }
-    ui.separator();
-    let path = status.filter(|s| s.toolpath.is_some());
     let mut jump = None;
-    match path {
-        // Wide enough: the editors on the left, the toolpath on the right.
-        Some(s) if ui.available_width() >= 820.0 => {
-            ui.columns(2, |cols| {
-                editors_ui(&mut cols[0], status, texts, view.picked, lang, &mut events);
-                let h = cols[1].available_height().clamp(200.0, 520.0);
-                jump = toolpath_ui(&mut cols[1], s, view, lang, h);
-            });
-        }
-        Some(s) => {
-            editors_ui(ui, status, texts, view.picked, lang, &mut events);
-            jump = toolpath_ui(ui, s, view, lang, 240.0);
-        }
-        None => editors_ui(ui, status, texts, None, lang, &mut events),
-    }
+    // The page scrolls when the panel is short: nothing of it is out of reach.
+    egui::ScrollArea::vertical()
+        .id_salt("cnc-page")
+        .auto_shrink(false)
+        .show(ui, |ui| {
+            match status {
+                None => {
+                    ui.label(t(Msg::CncNotRunning));
+                }
+                Some(s) => {
+                    status_ui(ui, s, lang, alarm_text);
+                    view.update(s);
+                }
+            }
+            ui.separator();
+            let path = status.filter(|s| s.toolpath.is_some());
+            match path {
+                // Wide enough: the editors on the left, the toolpath on the right.
+                Some(s) if ui.available_width() >= 820.0 => {
+                    ui.columns(2, |cols| {
+                        editors_ui(&mut cols[0], status, texts, view.picked, lang, &mut events);
+                        jump = toolpath_ui(&mut cols[1], s, view, lang, 420.0);
+                    });
+                }
+                // Narrow: the toolpath first, under the status, then the editors.
+                Some(s) => {
+                    jump = toolpath_ui(ui, s, view, lang, 260.0);
+                    ui.separator();
+                    editors_ui(ui, status, texts, view.picked, lang, &mut events);
+                }
+                None => editors_ui(ui, status, texts, None, lang, &mut events),
+            }
+        });
     if let Some(line) = jump {
         // Scroll the listing to the picked block at the next frame.
         texts.jump = Some(line);
@@ -321,11 +328,16 @@ fn nc_editor(
             }
             job.append(line, 0.0, format);
         }
-        job.wrap.max_width = wrap;
+        // A listing does not wrap: a long comment scrolls sideways, and the gutter's numbers
+        // stay on their lines.
+        let _ = wrap;
+        job.wrap.max_width = f32::INFINITY;
         ui.fonts_mut(|f| f.layout_job(job))
     };
     let row = ui.text_style_height(&egui::TextStyle::Monospace);
-    let mut area = egui::ScrollArea::vertical()
+    // The editor fills the visible width at least (the gutter takes about six characters).
+    let width = ui.available_width() - 7.0 * ui.fonts_mut(|f| f.glyph_width(&font, '0'));
+    let mut area = egui::ScrollArea::both()
         .id_salt(id)
         .max_height(row * (rows as f32 + 1.0));
     if let Some(line) = marks.jump {
@@ -348,7 +360,7 @@ fn nc_editor(
                     .code_editor()
                     .margin(MARGIN)
                     .desired_rows(rows)
-                    .desired_width(f32::INFINITY)
+                    .desired_width(width)
                     .layouter(&mut layouter),
             )
             .labelled_by(label);

@@ -1,0 +1,60 @@
+//! Frame-time benchmark of the CNC page's toolpath plot: `cargo bench -p ladder-studio --bench
+//! toolpath`.
+//!
+//! Works out the toolpath of a 30 000-block turning program with the CNC's dry run, then times
+//! UI passes (headless, egui_kittest, no GPU) drawing it in the plot at 1280x800 while the
+//! executed trail grows, as the CNC page does while the program runs. Target: 4 ms a frame.
+
+use egui_kittest::Harness;
+use ladder_engine::ProfileId;
+use ladder_engine::cnc::SimCnc;
+use ladder_engine::cnc::command::CncCommand;
+use ladder_engine::model::tables::MessageTable;
+use ladder_studio::gui::i18n::Lang;
+use ladder_studio::gui::online::toolpath_view::{ToolpathView, toolpath_ui};
+use std::fmt::Write;
+use std::time::Instant;
+
+fn main() {
+    let mut p = String::from("O1\nG00 X60 Z2\n");
+    for k in 0..7_500 {
+        let x = 20.0 + (k % 20) as f64;
+        let _ = writeln!(
+            p,
+            "G00 X{x} Z2\nG01 Z-20 F300\nG02 X{} Z-25 R5\nG00 X60",
+            x + 10.0
+        );
+    }
+    p.push_str("M30\n");
+    let mut cnc = SimCnc::new(ProfileId::Gsk988ta, &MessageTable::default());
+    cnc.apply(&CncCommand::Program(p)).expect("loads");
+    let t = Instant::now();
+    let status = cnc.status();
+    let dry_ms = t.elapsed().as_secs_f64() * 1e3;
+    let points = status.toolpath.as_ref().map_or(0, |t| t.points.len());
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1280.0, 800.0))
+        .build_ui_state(
+            |ui, (status, view): &mut (ladder_engine::cnc::CncStatus, ToolpathView)| {
+                view.update(status);
+                toolpath_ui(ui, status, view, Lang::En, 700.0);
+            },
+            (status, ToolpathView::default()),
+        );
+    h.run();
+    let mut times = Vec::new();
+    for k in 0..200 {
+        // The tool moves on: the trail grows by a point a frame.
+        h.state_mut().0.machine[1] = -(k as i64) * 100;
+        let t = Instant::now();
+        h.step();
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+    }
+    times.sort_by(f64::total_cmp);
+    println!(
+        "toolpath plot, 30000 blocks ({points} points, dry run {dry_ms:.1} ms), 1280x800: median_ms_per_frame={:.3} p95_ms={:.3} max_ms={:.3} (target 4 ms)",
+        times[times.len() / 2],
+        times[times.len() * 95 / 100],
+        times[times.len() - 1]
+    );
+}
