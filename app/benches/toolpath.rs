@@ -11,6 +11,7 @@ use ladder_engine::cnc::SimCnc;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::model::tables::MessageTable;
 use ladder_studio::gui::i18n::Lang;
+use ladder_studio::gui::online::toolpath_raster::rasterise;
 use ladder_studio::gui::online::toolpath_view::{ToolpathView, toolpath_ui};
 use std::fmt::Write;
 use std::time::Instant;
@@ -51,6 +52,49 @@ fn main() {
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     times.sort_by(f64::total_cmp);
+    // A frame that zooms or pans draws the image again: time that alone.
+    let path = h.state().0.toolpath.clone().expect("a path");
+    let frame = egui::Rect::from_min_size(egui::pos2(0.0, 0.0), egui::vec2(1200.0, 700.0));
+    let bounds = egui_plot::PlotBounds::from_min_max([-30.0, 0.0], [5.0, 65.0]);
+    let transform = egui_plot::PlotTransform::new(frame, bounds, egui::Vec2b::FALSE);
+    let mut raster: Vec<f64> = (0..20)
+        .map(|_| {
+            let t = Instant::now();
+            std::hint::black_box(rasterise(&path, &transform, 1.0));
+            t.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    raster.sort_by(f64::total_cmp);
+    println!(
+        "toolpath image drawn again (a zoom or pan frame), 1200x700: median_ms={:.3}",
+        raster[raster.len() / 2]
+    );
+    // The same without repetition: every pass of the program at its own diameter.
+    let mut p = String::from("O1\nG00 X60 Z2\n");
+    for k in 0..7_500 {
+        let x = 20.0 + k as f64 * 0.002;
+        let _ = writeln!(
+            p,
+            "G00 X{x:.3} Z2\nG01 Z-20 F300\nG02 X{:.3} Z-25 R5\nG00 X60",
+            x + 10.0
+        );
+    }
+    p.push_str("M30\n");
+    let mut cnc = SimCnc::new(ProfileId::Gsk988ta, &MessageTable::default());
+    cnc.apply(&CncCommand::Program(p)).expect("loads");
+    let unique = cnc.status().toolpath.expect("a path");
+    let mut raster: Vec<f64> = (0..10)
+        .map(|_| {
+            let t = Instant::now();
+            std::hint::black_box(rasterise(&unique, &transform, 1.0));
+            t.elapsed().as_secs_f64() * 1e3
+        })
+        .collect();
+    raster.sort_by(f64::total_cmp);
+    println!(
+        "the same, 30000 blocks that never repeat: median_ms={:.3}",
+        raster[raster.len() / 2]
+    );
     println!(
         "toolpath plot, 30000 blocks ({points} points, dry run {dry_ms:.1} ms), 1280x800: median_ms_per_frame={:.3} p95_ms={:.3} max_ms={:.3} (target 4 ms)",
         times[times.len() / 2],

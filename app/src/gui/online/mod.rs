@@ -11,6 +11,7 @@ pub mod live;
 mod machine;
 pub mod panel_view;
 pub mod session;
+pub mod toolpath_raster;
 pub mod toolpath_view;
 pub mod trace_view;
 mod ui;

@@ -4,29 +4,34 @@
 //! since the program started, the tool's point, and the current block in its own colour. A
 //! click on the path picks the block that made it; the plot zooms, pans and fits.
 
+use super::toolpath_raster::{RasterKey, rasterise};
 use crate::gui::i18n::{Lang, Msg};
 use crate::gui::theme;
-use egui_plot::{Line, LineStyle, Plot, PlotPoint, PlotPoints, Points};
-use ladder_engine::cnc::toolpath::{PieceKind, Toolpath};
+use egui_plot::{Line, Plot, PlotBounds, PlotImage, PlotPoint, PlotPoints, Points};
+use ladder_engine::cnc::toolpath::Toolpath;
 use ladder_engine::cnc::{CncStatus, RunState};
 use std::sync::Arc;
 
 /// Most trail points kept; beyond, every other one is dropped.
 const TRAIL_MAX: usize = 200_000;
 
-/// One polyline of the drawn path: pieces of one kind in a row.
-#[derive(Clone, Debug)]
-struct Run {
-    kind: PieceKind,
-    points: Vec<PlotPoint>,
+/// The path's image on the GPU.
+#[derive(Clone)]
+struct Texture(egui::TextureHandle);
+
+impl std::fmt::Debug for Texture {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Texture({:?})", self.0.id())
+    }
 }
 
 /// The plot's state, kept by the caller between frames (UI state only).
 #[derive(Clone, Debug, Default)]
 pub struct ToolpathView {
-    /// The path drawn, and its polylines built once.
+    /// The path drawn, its bounding box (min, max of (Z, X)), and its image for the view.
     shown: Option<Arc<Toolpath>>,
-    runs: Vec<Run>,
+    bbox: Option<([f64; 2], [f64; 2])>,
+    raster: Option<(RasterKey, Texture)>,
     /// Where the tool has been since the program started, (Z, X) mm.
     trail: Vec<PlotPoint>,
     last_run: RunState,
@@ -47,7 +52,8 @@ impl ToolpathView {
             _ => false,
         };
         if !same {
-            self.runs = path.as_deref().map(polylines).unwrap_or_default();
+            self.bbox = path.as_deref().and_then(bounding_box);
+            self.raster = None;
             self.shown = path;
             self.trail.clear();
             self.fit = true;
@@ -76,23 +82,31 @@ fn tool_point(status: &CncStatus) -> PlotPoint {
     )
 }
 
-/// The pieces joined into polylines of one kind each.
-fn polylines(t: &Toolpath) -> Vec<Run> {
-    let mut runs: Vec<Run> = Vec::new();
-    for p in &t.pieces {
-        let pts = &t.points[p.start as usize..p.end as usize];
-        match runs.last_mut() {
-            Some(r) if r.kind == p.kind => {
-                r.points
-                    .extend(pts.iter().skip(1).map(|q| PlotPoint::new(q[0], q[1])));
-            }
-            _ => runs.push(Run {
-                kind: p.kind,
-                points: pts.iter().map(|q| PlotPoint::new(q[0], q[1])).collect(),
-            }),
-        }
-    }
-    runs
+/// The smallest box holding every point of the path.
+fn bounding_box(t: &Toolpath) -> Option<([f64; 2], [f64; 2])> {
+    let first = *t.points.first()?;
+    Some(t.points.iter().fold((first, first), |(lo, hi), p| {
+        (
+            [lo[0].min(p[0]), lo[1].min(p[1])],
+            [hi[0].max(p[0]), hi[1].max(p[1])],
+        )
+    }))
+}
+
+/// The plot bounds that show the whole box with a margin in a frame of `size` (points), one
+/// millimetre as long across as up.
+fn fitted(bbox: ([f64; 2], [f64; 2]), size: egui::Vec2) -> PlotBounds {
+    let (lo, hi) = bbox;
+    let span = [(hi[0] - lo[0]).max(1.0), (hi[1] - lo[1]).max(1.0)];
+    let (w, h) = (f64::from(size.x.max(1.0)), f64::from(size.y.max(1.0)));
+    // mm per point: the larger of what either direction needs, plus 5 %.
+    let scale = (span[0] / w).max(span[1] / h) * 1.1;
+    let centre = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0];
+    let half = [scale * w / 2.0, scale * h / 2.0];
+    PlotBounds::from_min_max(
+        [centre[0] - half[0], centre[1] - half[1]],
+        [centre[0] + half[0], centre[1] + half[1]],
+    )
 }
 
 /// Draws the plot and its legend line; returns the line a click picked.
@@ -118,33 +132,31 @@ pub fn toolpath_ui(
             );
         }
     });
-    let mut plot = Plot::new("cnc-toolpath")
+    // The bounds are the view's own: fitted to the path on demand, then as the user zooms and
+    // pans (auto bounds would grow around the path's image every frame).
+    let plot = Plot::new("cnc-toolpath")
         .height(height)
         .data_aspect(1.0)
+        .auto_bounds(false)
+        .allow_double_click_reset(false)
         .x_axis_label("Z")
         .y_axis_label("X")
         .allow_boxed_zoom(true)
         .show_grid(true);
-    if std::mem::take(&mut view.fit) {
-        plot = plot.reset();
-    }
+    let fit = std::mem::take(&mut view.fit);
     let current = status.line;
     let tool = tool_point(status);
     let picked = view.picked;
+    let bbox = view.bbox;
+    let raster = &mut view.raster;
     let response = plot.show(ui, |pui| {
-        for (k, r) in view.runs.iter().enumerate() {
-            let (colour, style) = match r.kind {
-                PieceKind::Rapid => (theme::TOOLPATH_RAPID, LineStyle::dashed_loose()),
-                PieceKind::Feed => (theme::TOOLPATH_FEED, LineStyle::Solid),
-                PieceKind::Thread => (theme::TOOLPATH_THREAD, LineStyle::Solid),
-            };
-            pui.line(
-                Line::new(format!("path-{k}"), PlotPoints::Borrowed(&r.points))
-                    .color(colour)
-                    .style(style)
-                    .width(1.0)
-                    .allow_hover(false),
-            );
+        let frame = pui.transform().frame().size();
+        let mut fit_later = false;
+        match bbox {
+            // The frame's size is known from the second frame on.
+            Some(_) if fit && frame.x < 2.0 => fit_later = true,
+            Some(b) if fit => pui.set_plot_bounds(fitted(b, frame)),
+            _ => draw_image(pui, &path, raster),
         }
         for (name, line, colour) in [
             ("current", current, theme::TOOLPATH_CURRENT),
@@ -173,8 +185,16 @@ pub fn toolpath_ui(
                 .color(theme::TOOLPATH_TOOL)
                 .radius(5.0),
         );
+        fit_later
     });
+    if response.inner {
+        view.fit = true;
+        ui.ctx().request_repaint();
+    }
     let r = &response.response;
+    if r.double_clicked() {
+        view.fit = true;
+    }
     let label = t(Msg::CncToolpathPlot);
     r.widget_info(|| egui::WidgetInfo::labeled(egui::Role::Canvas, true, label));
     if r.clicked()
@@ -188,4 +208,48 @@ pub fn toolpath_ui(
         return view.picked;
     }
     None
+}
+
+/// Puts the path's image in the plot, drawn again when the bounds or the size have changed
+/// since it was made (the transform is the last frame's, so the image fits the bounds it was
+/// drawn for and is placed by them).
+fn draw_image(
+    pui: &mut egui_plot::PlotUi<'_>,
+    path: &Toolpath,
+    raster: &mut Option<(RasterKey, Texture)>,
+) {
+    let t = *pui.transform();
+    if t.frame().width() < 2.0 || t.frame().height() < 2.0 {
+        return;
+    }
+    let ppp = pui.ctx().pixels_per_point();
+    let want = RasterKey {
+        bounds: [t.bounds().min(), t.bounds().max()],
+        size: [
+            ((t.frame().width() * ppp).round() as usize).clamp(1, 8192),
+            ((t.frame().height() * ppp).round() as usize).clamp(1, 8192),
+        ],
+        path: std::ptr::from_ref(path) as usize,
+    };
+    if raster.as_ref().is_none_or(|(k, _)| *k != want) {
+        let (img, key) = rasterise(path, &t, ppp);
+        let options = egui::TextureOptions::NEAREST;
+        match raster {
+            Some((k, tex)) => {
+                tex.0.set(img, options);
+                *k = key;
+            }
+            None => {
+                let tex = pui.ctx().load_texture("cnc-toolpath", img, options);
+                *raster = Some((key, Texture(tex)));
+            }
+        }
+    }
+    let Some((key, tex)) = raster.as_ref() else {
+        return;
+    };
+    let [lo, hi] = key.bounds;
+    let centre = PlotPoint::new((lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0);
+    let size = egui::vec2((hi[0] - lo[0]) as f32, (hi[1] - lo[1]) as f32);
+    pui.image(PlotImage::new("path", tex.0.id(), centre, size).allow_hover(false));
 }
