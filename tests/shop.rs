@@ -125,6 +125,8 @@ fn shop_programs_in_every_style_run_to_their_end_without_an_alarm() {
         "gsk-flange.nc",
         "face-drilling.nc",
         "subprogram-grooves.nc",
+        "fanuc-flange-g72.nc",
+        "gsk-taper-g90.nc",
     ] {
         let o = run_program(nc, 400_000);
         assert_eq!(

@@ -220,6 +220,8 @@ fn bad_cycles_raise_fanuc_s_alarms() {
         ("N20 G71 P30 Q40 D0 F600;N30 G00 X20;N40 G01 Z-10", 62),
         ("N20 G71 P30 Q40 F600;N30 G00 X20;N40 G04 P5", 66),
         ("N20 G76 X28 Z-20 K0 D400 F1.5", 62),
+        // A million pecks of 0.001 mm: refused, not planned.
+        ("N20 G74 Z-1000 Q1 F600", 62),
     ];
     for (cycle, alarm) in cases {
         let mut r = mem(&format!("O1;N1 G00 X50 Z2;{cycle};N90 M30"));
@@ -281,4 +283,32 @@ fn drilling_cycles_peck_dwell_and_stay_modal_until_g80() {
         at_bottom >= 1 && rising == 125,
         "10 mm up to Z0 at 0.08 mm: {rising}"
     );
+}
+
+#[test]
+fn g71_bores_from_inside_with_a_negative_allowance() {
+    // From X18 Z2 (a drilled hole) out to a bore of X40, stepping in to X30: U-0.4 leaves the
+    // allowance on the inside. Levels at radius 11 and 13 run to Z-29.9 (the profile ends at
+    // radius 14.8); 15, 17 and 19 meet the moved taper from radius 19.8 at Z-9.9 to 14.8 at
+    // Z-19.9: at Z-19.5, -15.5 and -11.5.
+    let text = "O1;N1 G00 X18 Z2;N20 G71 P30 Q60 U-0.4 W0.1 D2000 F600;\
+                N30 G00 X40;N40 G01 Z-10;N50 X30 Z-20;N60 Z-30;N70 M30";
+    let mut r = mem(text);
+    let (path, _) = run(&mut r, 400_000);
+    assert_eq!(r.v("cnc.alarms"), "0");
+    let inside = path.iter().filter(|p| p.1 < 0);
+    assert!(
+        inside.clone().all(|&(x, _)| x <= 39_600),
+        "never past the allowance"
+    );
+    for (x, z) in [
+        (22_000, -29_900),
+        (26_000, -29_900),
+        (30_000, -19_500),
+        (34_000, -15_500),
+        (38_000, -11_500),
+    ] {
+        assert!(path.contains(&(x, z)), "level X{x} ends at Z{z}");
+    }
+    assert_eq!(path.last(), Some(&(18_000, 2_000)));
 }

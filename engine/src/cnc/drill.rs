@@ -4,7 +4,7 @@
 //! R point, peck, dwell and bottom kept.
 
 use super::auto::Modal;
-use super::path::{SegKind, Segment};
+use super::path::{SegKind, Segment, room};
 use super::repeat::cut;
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
@@ -76,6 +76,7 @@ impl SimCnc {
             if matches!(m.g, 83 | 87) && m.q > 0 {
                 let mut done = 0;
                 while done < total {
+                    room(segs)?;
                     let next = (done + m.q).min(total);
                     if done > 0 {
                         segs.push(Segment::to(SegKind::Rapid, at(pos, r_point + dir * done)));

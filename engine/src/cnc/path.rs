@@ -10,6 +10,19 @@ use super::motion::{Motion, MotionKind};
 use super::params::{P1410, P1420, P1421};
 use super::{AXES, SimCnc};
 
+/// Most segments one block may plan: a cycle asked for more (a peck of 0.001 mm over a metre)
+/// is refused with P/S 0062 instead of filling memory.
+pub const SEG_MAX: usize = 200_000;
+
+/// Room for more segments in `segs`, or P/S 0062.
+pub fn room(segs: &[Segment]) -> Result<(), u16> {
+    if segs.len() >= SEG_MAX {
+        Err(super::program::ps::CYCLE_VALUE)
+    } else {
+        Ok(())
+    }
+}
+
 /// What one segment does.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum SegKind {

@@ -7,7 +7,7 @@
 use super::auto::Modal;
 use super::block::Effects;
 use super::params::{P5130, P5132, P5133, P5135, P5136, P5137, P5139, P5140, P5141, P5142, P5143};
-use super::path::{Home, SegKind, Segment};
+use super::path::{Home, SegKind, Segment, room};
 use super::profile::{Profile, find_sequence};
 use super::program::ps;
 use super::rough::Rough;
@@ -122,7 +122,7 @@ impl SimCnc {
                     (feed, modal.per_rev),
                     cur,
                     segs,
-                );
+                )?;
                 fx.resume = profile.resume;
             }
             74 | 75 if !w.moves() => {
@@ -243,9 +243,10 @@ impl SimCnc {
         (feed, per_rev): (f64, bool),
         cur: [i64; AXES],
         segs: &mut Vec<Segment>,
-    ) {
+    ) -> Result<(), u16> {
         let start = self.plane_incr(p.start, cur);
         for k in 1..=count {
+            room(segs)?;
             let f = if count > 1 {
                 (count - k) as f64 / (count - 1) as f64
             } else {
@@ -277,6 +278,7 @@ impl SimCnc {
             }
             segs.push(Segment::to(SegKind::Rapid, start));
         }
+        Ok(())
     }
 }
 
@@ -355,6 +357,7 @@ impl SimCnc {
             segs.push(Segment::to(SegKind::Rapid, at(s[pk], q)));
             let mut done = 0.0;
             while done < depth_total - 1e-9 {
+                room(segs)?;
                 let next = (done + peck).min(depth_total);
                 segs.push(cut(
                     SegKind::Line,

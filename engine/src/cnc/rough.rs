@@ -6,7 +6,7 @@
 //! allowance profile.
 
 use super::arc::ArcPath;
-use super::path::{Home, SegKind, Segment};
+use super::path::{Home, SegKind, Segment, room};
 use super::profile::{Elem, Profile};
 use super::program::ps;
 use super::{AXES, SimCnc};
@@ -204,6 +204,7 @@ impl SimCnc {
             if v <= v_min + EPS {
                 break;
             }
+            room(out.segs)?;
             crossings.clear();
             crossings.push(s[0]);
             crossings.push(u_end);
