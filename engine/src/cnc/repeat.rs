@@ -130,35 +130,7 @@ impl SimCnc {
                     self.set_cycle_param(P5139, e)?;
                 }
             }
-            74 | 75 => {
-                let target = self.end_point(w, u, modal, cur)?;
-                let step_x = match (w.p, w.i) {
-                    (Some(p), _) => u.fixed(Num {
-                        value: f64::from(p),
-                        decimal: false,
-                    })?,
-                    (None, Some(i)) => u.fixed(i)?,
-                    _ => 0,
-                };
-                let step_z = match (w.q, w.k) {
-                    (Some(q), _) | (None, Some(q)) => u.fixed(q)?,
-                    _ => 0,
-                };
-                let relief = match (w.p.is_some() || w.q.is_some(), w.r, w.d) {
-                    (true, Some(r), _) => u.len(r)?,
-                    (_, _, Some(d)) => u.fixed(d)?,
-                    _ => 0,
-                };
-                let feed = self.cycle_feed(modal)?;
-                let groove = Groove {
-                    along_x: g == 75,
-                    step: [step_z as f64 / 1000.0, step_x as f64 / 1000.0],
-                    relief: relief as f64 / 1000.0,
-                    escape: self.param_mm(P5139),
-                    feed: (feed, modal.per_rev),
-                };
-                self.plan_groove(&groove, cur, target, segs)?;
-            }
+            74 | 75 => self.plan_g74_block(g, w, modal, u, cur, segs)?,
             76 if !w.moves() => {
                 if let Some(p) = w.p {
                     let (m, r, a) = (p / 10_000, p / 100 % 100, p % 100);
@@ -173,38 +145,90 @@ impl SimCnc {
                     self.set_cycle_param(P5141, r)?;
                 }
             }
-            _ => {
-                let target = self.end_point(w, u, modal, cur)?;
-                let one_block = w.k.is_some() || w.d.is_some();
-                let fixed = |n: Option<Num>| n.map_or(Ok(0), |v| u.fixed(v));
-                let (height, first, taper, angle) = if one_block {
-                    let angle = w.a.map_or(self.params.one(P5143) as f64, |a| a.value);
-                    (fixed(w.k)?, fixed(w.d)?, len(w.i)?.unwrap_or(0), angle)
-                } else {
-                    let p = w.p.map(|p| Num {
-                        value: f64::from(p),
-                        decimal: false,
-                    });
-                    let angle = self.params.one(P5143) as f64;
-                    (fixed(p)?, fixed(w.q)?, len(w.r)?.unwrap_or(0), angle)
-                };
-                if modal.feed <= 0.0 {
-                    return Err(ps::NO_FEED);
-                }
-                let t = Thread76 {
-                    height: height as f64 / 1000.0,
-                    first: first as f64 / 1000.0,
-                    taper: taper as f64 / 1000.0,
-                    angle,
-                    lead: modal.feed,
-                    min_step: self.param_mm(P5140),
-                    finish: self.param_mm(P5141),
-                    finish_passes: self.params.one(P5142),
-                };
-                self.plan_thread76(&t, cur, target, segs)?;
-            }
+            _ => self.plan_g76_block(w, modal, u, cur, segs)?,
         }
         Ok(fx)
+    }
+
+    /// The second block of G74/G75 (or its one-block form).
+    fn plan_g74_block(
+        &self,
+        g: u8,
+        w: &Words,
+        modal: &Modal,
+        u: Units,
+        cur: [i64; AXES],
+        segs: &mut Vec<Segment>,
+    ) -> Result<(), u16> {
+        let target = self.end_point(w, u, modal, cur)?;
+        let step_x = match (w.p, w.i) {
+            (Some(p), _) => u.fixed(Num {
+                value: f64::from(p),
+                decimal: false,
+            })?,
+            (None, Some(i)) => u.fixed(i)?,
+            _ => 0,
+        };
+        let step_z = match (w.q, w.k) {
+            (Some(q), _) | (None, Some(q)) => u.fixed(q)?,
+            _ => 0,
+        };
+        let relief = match (w.p.is_some() || w.q.is_some(), w.r, w.d) {
+            (true, Some(r), _) => u.len(r)?,
+            (_, _, Some(d)) => u.fixed(d)?,
+            _ => 0,
+        };
+        let feed = self.cycle_feed(modal)?;
+        let groove = Groove {
+            along_x: g == 75,
+            step: [step_z as f64 / 1000.0, step_x as f64 / 1000.0],
+            relief: relief as f64 / 1000.0,
+            escape: self.param_mm(P5139),
+            feed: (feed, modal.per_rev),
+        };
+        self.plan_groove(&groove, cur, target, segs)?;
+        Ok(())
+    }
+
+    /// The second block of G76, or its one-block form (told by K or D).
+    fn plan_g76_block(
+        &self,
+        w: &Words,
+        modal: &Modal,
+        u: Units,
+        cur: [i64; AXES],
+        segs: &mut Vec<Segment>,
+    ) -> Result<(), u16> {
+        let len = |n: Option<Num>| n.map_or(Ok(None), |v| u.len(v).map(Some));
+        let target = self.end_point(w, u, modal, cur)?;
+        let one_block = w.k.is_some() || w.d.is_some();
+        let fixed = |n: Option<Num>| n.map_or(Ok(0), |v| u.fixed(v));
+        let (height, first, taper, angle) = if one_block {
+            let angle = w.a.map_or(self.params.one(P5143) as f64, |a| a.value);
+            (fixed(w.k)?, fixed(w.d)?, len(w.i)?.unwrap_or(0), angle)
+        } else {
+            let p = w.p.map(|p| Num {
+                value: f64::from(p),
+                decimal: false,
+            });
+            let angle = self.params.one(P5143) as f64;
+            (fixed(p)?, fixed(w.q)?, len(w.r)?.unwrap_or(0), angle)
+        };
+        if modal.feed <= 0.0 {
+            return Err(ps::NO_FEED);
+        }
+        let t = Thread76 {
+            height: height as f64 / 1000.0,
+            first: first as f64 / 1000.0,
+            taper: taper as f64 / 1000.0,
+            angle,
+            lead: modal.feed,
+            min_step: self.param_mm(P5140),
+            finish: self.param_mm(P5141),
+            finish_passes: self.params.one(P5142),
+        };
+        self.plan_thread76(&t, cur, target, segs)?;
+        Ok(())
     }
 
     /// P and Q of G70–G73 as sequence numbers.
