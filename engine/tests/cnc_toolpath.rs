@@ -56,3 +56,23 @@ fn the_dry_run_stops_at_the_first_alarm_and_names_its_line() {
     let t = r.cnc.toolpath();
     assert_eq!((t.pieces.len(), t.alarm), (2, None));
 }
+
+#[test]
+fn a_parameter_or_offset_set_after_loading_redraws_the_path() {
+    let mut r = Rig::new();
+    r.x();
+    r.program("O1\nG00 X10000 Z-5000\nM30");
+    let before = r.cnc.status().toolpath.unwrap();
+    assert_eq!(
+        before.points.last(),
+        Some(&[-5000.0, 10000.0]),
+        "DPI = 1: mm"
+    );
+    r.cmd(&["param", "3401", "0"]);
+    let after = r.cnc.status().toolpath.unwrap();
+    assert_eq!(
+        after.points.last(),
+        Some(&[-5.0, 10.0]),
+        "DPI = 0: increments"
+    );
+}

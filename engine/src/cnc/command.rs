@@ -365,6 +365,13 @@ impl SimCnc {
     /// Carries out a command between ticks; its effect on F appears at the next exchange.
     /// A command that cannot apply now says why.
     pub fn apply(&mut self, cmd: &CncCommand) -> Result<(), String> {
+        if matches!(
+            cmd,
+            CncCommand::Param { .. } | CncCommand::Offset { .. } | CncCommand::Workpiece { .. }
+        ) {
+            // The drawn path depends on these (DPI, offsets): work it out again when next asked.
+            self.toolpath = Default::default();
+        }
         match cmd {
             CncCommand::Program(text) | CncCommand::Mdi(text) => {
                 if self.auto.state != RunState::Idle {

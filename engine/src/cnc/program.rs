@@ -217,7 +217,28 @@ pub fn parse_mdi(text: &str) -> NcProgram {
 
 /// Blocks of text with their 1-based lines: `;` and newlines end blocks.
 fn segments(text: &str) -> impl Iterator<Item = (usize, &str)> {
-    tape(text).flat_map(|(i, l)| l.split(';').map(move |s| (i, s)))
+    tape(text).flat_map(|(i, l)| blocks_of_line(l).map(move |s| (i, s)))
+}
+
+/// A line's blocks: split at each `;` outside a `( … )` comment.
+fn blocks_of_line(line: &str) -> impl Iterator<Item = &str> {
+    let mut depth = 0u32;
+    let mut start = 0;
+    let mut ends = Vec::new();
+    for (k, c) in line.char_indices() {
+        match c {
+            '(' => depth += 1,
+            ')' => depth = depth.saturating_sub(1),
+            ';' if depth == 0 => ends.push(k),
+            _ => {}
+        }
+    }
+    ends.push(line.len());
+    ends.into_iter().map(move |e| {
+        let s = &line[start..e];
+        start = (e + 1).min(line.len());
+        s
+    })
 }
 
 /// Upper case, without spaces and `( … )` comments.
@@ -314,6 +335,10 @@ mod tests {
         let b = block("N5 M98 P1234 L3 (\u{fffd}\u{fffd} GBK \u{5200}\u{5177} %;)");
         let w = b.words.unwrap();
         assert_eq!((w.p, w.l), (Some(1234), Some(3)));
+        // A `;` inside a comment does not end the block; outside one it does.
+        let p = parse_programs("N1 G00 X1 (ROUGH; THEN FINISH);N2 M30");
+        assert_eq!(p[0].blocks.len(), 2);
+        assert!(p[0].blocks.iter().all(|b| b.words.is_ok()));
     }
 
     #[test]
