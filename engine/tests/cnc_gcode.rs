@@ -338,3 +338,20 @@ fn g30_returns_to_the_second_reference_point() {
     assert_eq!((r.m(0), r.m(1)), (100_000, 50_000));
     assert_eq!(r.f[96] & 3, 3, "ZP21, ZP22");
 }
+
+#[test]
+fn c_and_r_without_a_comma_chamfer_and_round_a_g01_corner() {
+    let mut r = mem("O1;N1 G01 X20 C2 F600;N2 Z-20;N3");
+    r.start();
+    let p = path_of(&mut r, "1", 10);
+    assert!(p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)));
+    let mut r = mem("O1;N1 G01 X20 R2 F600;N2 Z-20;N3");
+    r.start();
+    let p = path_of(&mut r, "1", 10);
+    let near = |&(x, z): &(i64, i64)| (x - 18_828).abs() <= 60 && (z + 586).abs() <= 60;
+    assert!(p.iter().any(near));
+    // C means nothing outside G01.
+    let mut r = mem("O1;N1 G00 X20 C2;N2");
+    run(&mut r, 10);
+    assert_eq!(r.v("cnc.alarm.9"), "1");
+}

@@ -80,3 +80,19 @@ fn a_program_that_only_skips_blocks_ends_with_an_alarm_not_a_silent_stop() {
     assert_eq!(t.iter().filter(|s| *s == "1").count(), 2, "{t:?}");
     assert_eq!(r.v("cnc.alarms"), "0");
 }
+
+#[test]
+fn m97_calls_a_block_of_the_same_program_and_m99_returns() {
+    // Haas's local call: M97 P100 runs from N100 to its M99, L2 twice; M97 is not put out.
+    let mut r = mem("O1;N1 M97 P100 L2;N2 M30;N100;N110 M99");
+    let t = trace(&mut r, 50);
+    assert_eq!(t[..6], ["1", "100", "110", "100", "110", "2"]);
+    assert_eq!(r.v("cnc.alarms"), "0");
+    // M97 without P is an M code for the ladder; with a P no block has: P/S 0063.
+    let mut r = mem("O1;N1 M97 P555;N2 M30");
+    trace(&mut r, 10);
+    assert_eq!(r.v("cnc.alarm.63"), "1");
+    let mut r = mem("O1;N1 M97;N2 M30");
+    r.start();
+    assert!(r.fb(7, 0) && r.fv(10, 4) == 97, "MF with M97");
+}

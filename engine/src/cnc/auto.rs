@@ -65,6 +65,8 @@ pub(super) struct Cursor {
 pub(super) struct Frame {
     ret: Cursor,
     sub: usize,
+    /// The block the call starts at (0; an M97's sequence number's block).
+    start: usize,
     repeats: u32,
     /// A G70 profile: the index of its last block (Q), after which the G70 block is
     /// returned to, and the cycle's start point.
@@ -95,7 +97,8 @@ pub(super) struct Exec {
     pub(super) mst: Mst,
     pub(super) stop_after: bool,
     pub(super) end: bool,
-    pub(super) call: Option<(usize, u32)>,
+    /// M98/M97: the program and block called, and how many times.
+    pub(super) call: Option<(usize, usize, u32)>,
     pub(super) ret: bool,
     pub(super) offset: Option<u8>,
     pub(super) line: usize,
@@ -232,7 +235,7 @@ impl Auto {
                 f.repeats -= 1;
                 self.cursor = Cursor {
                     prog: f.sub,
-                    block: 0,
+                    block: f.start,
                 };
             }
             Some(f) => {
@@ -433,7 +436,7 @@ impl SimCnc {
 
     /// The checks that depend on the machine (docs/cnc.md, "Program errors"); returns the
     /// program an M98 calls.
-    fn check_block(&self, w: &Words, cutting: bool) -> Result<Option<(usize, u32)>, u16> {
+    fn check_block(&self, w: &Words, cutting: bool) -> Result<Option<(usize, usize, u32)>, u16> {
         if w.axes[2].is_some() && self.axis_count() < 3 {
             return Err(ps::ADDRESS);
         }
@@ -454,7 +457,16 @@ impl SimCnc {
                 return Err(ps::NESTING);
             }
             let times = w.l.map_or(count, |l| l.max(1));
-            call = Some((k, times));
+            call = Some((k, 0, times));
+        } else if special_m(w.ms()).is_none() && w.ms().contains(&97) && w.p.is_some() {
+            // M97 P: the block numbered P of this program as a subprogram (Haas's local call).
+            let (prog, here) = self.running_program().ok_or(ps::NO_SEQUENCE)?;
+            let n = w.p.unwrap_or(0);
+            let block = super::profile::find_sequence(prog, n, here + 1).ok_or(ps::NO_SEQUENCE)?;
+            if self.auto.stack.len() >= 4 {
+                return Err(ps::NESTING);
+            }
+            call = Some((self.auto.cursor.prog, block, w.l.map_or(1, |l| l.max(1))));
         }
         if w.g28() {
             for k in 0..3 {
@@ -517,7 +529,12 @@ impl SimCnc {
         modal
     }
 
-    fn execute(&mut self, w: &Words, line: usize, call: Option<(usize, u32)>) -> Result<(), u16> {
+    fn execute(
+        &mut self,
+        w: &Words,
+        line: usize,
+        call: Option<(usize, usize, u32)>,
+    ) -> Result<(), u16> {
         let inp = self.inp;
         let mut modal = self.modal_after(w);
         let cur = self.frame_position();
@@ -580,7 +597,9 @@ impl SimCnc {
             e.end = sp >= 2;
         } else {
             if !inp.afl {
-                for (i, m) in ms.iter().filter(|m| !matches!(m, 98 | 99)).enumerate() {
+                // M98, M99 and an M97 with P (a local call) are the CNC's own.
+                let called = |m: u32| matches!(m, 98 | 99) || (m == 97 && w.p.is_some());
+                for (i, m) in ms.iter().filter(|m| !called(**m)).enumerate() {
                     mst.m[i] = *m;
                     mst.strobes |= [MF, MF2, MF3][i];
                 }
@@ -638,11 +657,12 @@ impl SimCnc {
             a.stack.push(Frame {
                 ret: a.cursor,
                 sub: a.cursor.prog,
+                start: first,
                 repeats: 0,
                 until: Some((last, home)),
             });
             a.cursor.block = first;
-        } else if let Some((sub, times)) = e.call {
+        } else if let Some((sub, start, times)) = e.call {
             let ret = Cursor {
                 block: a.cursor.block + 1,
                 ..a.cursor
@@ -650,12 +670,13 @@ impl SimCnc {
             a.stack.push(Frame {
                 ret,
                 sub,
+                start,
                 repeats: times - 1,
                 until: None,
             });
             a.cursor = Cursor {
                 prog: sub,
-                block: 0,
+                block: start,
             };
         } else if e.ret {
             a.return_from_sub();

@@ -151,6 +151,18 @@ impl SimCnc {
             }
             None => {}
         }
+        // C and R in a G01 block are a chamfer and a corner R, as `,C` and `,R` (the form
+        // without a comma); C means nothing elsewhere.
+        let mut w = *w;
+        if modal.motion == 1 && w.drill.is_none() {
+            w.chamfer = w.chamfer.or(w.c);
+            if w.i.is_none() && w.k.is_none() {
+                w.corner = w.corner.or(w.r);
+            }
+        } else if w.c.is_some() {
+            return Err(ps::ADDRESS);
+        }
+        let w = &w;
         let target = self.end_point(w, u, modal, cur)?;
         if matches!(modal.drill.g, 83..=89) {
             if w.moves() && modal.feed <= 0.0 {

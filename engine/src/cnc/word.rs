@@ -129,6 +129,8 @@ pub struct Words {
     pub d: Option<Num>,
     /// A: thread angle, degrees.
     pub a: Option<Num>,
+    /// C: in a G01 block, a chamfer as `,C` (the form without a comma).
+    pub c: Option<Num>,
     /// `,C`: a chamfer to the next block, the distance from the corner.
     pub chamfer: Option<Num>,
     /// `,R`: a corner radius to the next block.
@@ -315,6 +317,7 @@ pub(super) fn words(mut body: &str) -> Result<Words, u16> {
             'Q' => w.q = Some(raw),
             'D' => w.d = Some(raw),
             'A' => w.a = Some(raw),
+            'C' => w.c = Some(raw),
             'F' => {
                 if v < 0.0 || !v.is_finite() {
                     return Err(ps::ADDRESS);
