@@ -13,20 +13,13 @@ use ladder_engine::model::tables::MessageTable;
 use ladder_studio::gui::i18n::Lang;
 use ladder_studio::gui::online::toolpath_raster::rasterise;
 use ladder_studio::gui::online::toolpath_view::{ToolpathView, toolpath_ui};
-use std::fmt::Write;
 use std::time::Instant;
 
+#[path = "../../engine/benches/common/programs.rs"]
+mod programs;
+
 fn main() {
-    let mut p = String::from("O1\nG00 X60 Z2\n");
-    for k in 0..7_500 {
-        let x = 20.0 + (k % 20) as f64;
-        let _ = writeln!(
-            p,
-            "G00 X{x} Z2\nG01 Z-20 F300\nG02 X{} Z-25 R5\nG00 X60",
-            x + 10.0
-        );
-    }
-    p.push_str("M30\n");
+    let p = programs::turning_30000(0.0);
     let mut cnc = SimCnc::new(ProfileId::Gsk988ta, &MessageTable::default());
     cnc.apply(&CncCommand::Program(p)).expect("loads");
     let t = Instant::now();
@@ -70,16 +63,7 @@ fn main() {
         raster[raster.len() / 2]
     );
     // The same without repetition: every pass of the program at its own diameter.
-    let mut p = String::from("O1\nG00 X60 Z2\n");
-    for k in 0..7_500 {
-        let x = 20.0 + k as f64 * 0.002;
-        let _ = writeln!(
-            p,
-            "G00 X{x:.3} Z2\nG01 Z-20 F300\nG02 X{:.3} Z-25 R5\nG00 X60",
-            x + 10.0
-        );
-    }
-    p.push_str("M30\n");
+    let p = programs::turning_30000(0.002);
     let mut cnc = SimCnc::new(ProfileId::Gsk988ta, &MessageTable::default());
     cnc.apply(&CncCommand::Program(p)).expect("loads");
     let unique = cnc.status().toolpath.expect("a path");

@@ -11,6 +11,9 @@ use ladder_engine::model::tables::MessageTable;
 use std::fmt::Write;
 use std::time::Instant;
 
+#[path = "common/programs.rs"]
+mod programs;
+
 /// A G71 over a 50-block profile: steps down from X20 to X120 with arcs at the corners.
 fn g71_program() -> String {
     let mut p = String::from("O1\nG00 X130 Z2\nG71 U2 R0.5\nG71 P100 Q149 U0.4 W0.1 F600\n");
@@ -27,21 +30,6 @@ fn g71_program() -> String {
         }
     }
     let _ = writeln!(p, "N149 G01 X130");
-    p.push_str("M30\n");
-    p
-}
-
-/// 30 000 blocks of turning: rapids, lines and arcs.
-fn long_program() -> String {
-    let mut p = String::from("O1\nG00 X60 Z2\n");
-    for k in 0..7_500 {
-        let x = 20.0 + (k % 20) as f64;
-        let _ = writeln!(
-            p,
-            "G00 X{x} Z2\nG01 Z-20 F300\nG02 X{} Z-25 R5\nG00 X60",
-            x + 10.0
-        );
-    }
     p.push_str("M30\n");
     p
 }
@@ -76,7 +64,7 @@ fn main() {
         "g71_50_block_profile: pieces={} median_ms={ms:.3} (target 1 ms)",
         t.pieces.len()
     );
-    let cnc = cnc_with(&long_program());
+    let cnc = cnc_with(&programs::turning_30000(0.0));
     let t = cnc.toolpath();
     assert!(t.alarm.is_none(), "{:?}", t.alarm);
     let ms = median_ms(5, || {

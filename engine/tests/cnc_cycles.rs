@@ -5,16 +5,6 @@
 mod common;
 
 use common::Rig;
-use ladder_engine::cnc::Mode;
-
-fn mem(text: &str) -> Rig {
-    let mut r = Rig::new();
-    r.mode(Mode::Mem);
-    r.x();
-    r.program(text);
-    r.auto_fin = true;
-    r
-}
 
 /// Runs the program to its end (at most `limit` exchanges) and returns every (X, Z) machine
 /// position and every block N seen.
@@ -47,7 +37,7 @@ fn g71_cuts_levels_two_mm_apart_down_to_the_allowance_profile() {
         "N20 G71 P30 Q60 U0.4 W0.1 D2000 F600",
     ] {
         let text = format!("O1;N1 G00 X50 Z2;{cycle};{PROFILE}");
-        let mut r = mem(&text);
+        let mut r = Rig::mem(&text);
         let (path, blocks) = run(&mut r, 200_000);
         assert_eq!(r.v("cnc.alarms"), "0", "{cycle}");
         assert_eq!(r.v("cnc.run"), "IDLE", "{cycle}: reached M30");
@@ -90,7 +80,7 @@ fn g71_cuts_levels_two_mm_apart_down_to_the_allowance_profile() {
 fn g70_runs_the_profile_blocks_and_returns_to_its_start() {
     let text = "O1;N1 G00 X50 Z2;N20 G71 P30 Q60 U0.4 W0.1 F600;N30 G00 X20;N40 G01 Z-10 F300;\
                 N50 X40 Z-20;N60 Z-30;N80 G70 P30 Q60;N90 M30";
-    let mut r = mem(text);
+    let mut r = Rig::mem(text);
     let (path, blocks) = run(&mut r, 200_000);
     assert_eq!(r.v("cnc.alarms"), "0");
     let after: Vec<&str> = blocks
@@ -112,7 +102,7 @@ fn g72_faces_in_levels_along_z() {
     // From X50 Z2, Δd 2 in Z: Z0 to the end X10, Z-2 and Z-4 to the shoulder X30.
     let text = "O1;N1 G00 X50 Z2;N10 G72 W2 R0.5;N20 G72 P30 Q60 F600;\
                 N30 G00 Z-6;N40 G01 X30;N50 Z-2;N60 X10;N70 M30";
-    let mut r = mem(text);
+    let mut r = Rig::mem(text);
     let (path, _) = run(&mut r, 200_000);
     assert_eq!(r.v("cnc.alarms"), "0");
     for p in [
@@ -136,7 +126,7 @@ fn g73_repeats_the_profile_closer_each_time() {
         "N20 G73 P30 Q60 I3 K0 U0.4 W0 D3 F600",
     ] {
         let text = format!("O1;N1 G00 X50 Z2;{cycle};{PROFILE}");
-        let mut r = mem(&text);
+        let mut r = Rig::mem(&text);
         let (path, _) = run(&mut r, 200_000);
         assert_eq!(r.v("cnc.alarms"), "0", "{cycle}");
         for x in [26_400, 23_400, 20_400] {
@@ -148,7 +138,7 @@ fn g73_repeats_the_profile_closer_each_time() {
 #[test]
 fn g74_pecks_with_the_return_of_its_first_block() {
     // From X0 Z2 to Z-20 in pecks of 5 mm, back 1 mm after each.
-    let mut r = mem("O1;N1 G00 X0 Z2;N10 G74 R1;N20 G74 Z-20 Q5000 F600;N30 M30");
+    let mut r = Rig::mem("O1;N1 G00 X0 Z2;N10 G74 R1;N20 G74 Z-20 Q5000 F600;N30 M30");
     let (path, _) = run(&mut r, 200_000);
     assert_eq!(r.v("cnc.alarms"), "0");
     let mut turns = Vec::new();
@@ -176,7 +166,7 @@ fn g76_cuts_seven_passes_to_the_root_in_both_forms() {
         "N20 G76 X28.05 Z-20 K975 D400 F1.5 A60",
     ] {
         let text = format!("O1;N1 M03 S600;N2 G00 X32 Z5;{cycle};N30 M30");
-        let mut r = mem(&text);
+        let mut r = Rig::mem(&text);
         let (path, _) = run(&mut r, 400_000);
         assert_eq!(r.v("cnc.alarms"), "0", "{cycle}");
         // The passes start between Z5 and Z4.67 (the flank infeed moves them up to
@@ -224,14 +214,14 @@ fn bad_cycles_raise_fanuc_s_alarms() {
         ("N20 G74 Z-1000 Q1 F600", 62),
     ];
     for (cycle, alarm) in cases {
-        let mut r = mem(&format!("O1;N1 G00 X50 Z2;{cycle};N90 M30"));
+        let mut r = Rig::mem(&format!("O1;N1 G00 X50 Z2;{cycle};N90 M30"));
         run(&mut r, 10_000);
         assert_eq!(r.v(&format!("cnc.alarm.{alarm}")), "1", "{cycle}");
         assert_eq!(r.v("cnc.block"), "20", "{cycle}");
         assert_eq!((r.m(0), r.m(1)), (50_000, 2_000), "{cycle}: nothing moved");
     }
     // A type II profile (both axes in block P) may dip: no alarm.
-    let mut r = mem(
+    let mut r = Rig::mem(
         "O1;N1 G00 X50 Z2;N20 G71 P30 Q60 U0 W0 D2000 F600;N30 G00 X20 Z2;N40 G01 X30 Z-10;N50 X25 Z-20;N60 X40 Z-30;N70 M30",
     );
     let (path, _) = run(&mut r, 200_000);
@@ -247,7 +237,7 @@ fn drilling_cycles_peck_dwell_and_stay_modal_until_g80() {
     // G83 from Z5 (the initial level): R-3 to the R point Z2, pecks of 4 mm to Z-8 (4 + 4 +
     // 2), each followed by a return to Z2; then back to Z5. The next block drills at X10.
     let text = "O1;N1 G00 X0 Z5;N2 G83 Z-8 R-3 Q4000 P100 F600;N3 X10;N4 G80;N5 G00 X30;N6 M30";
-    let mut r = mem(text);
+    let mut r = Rig::mem(text);
     let (path, blocks) = run(&mut r, 100_000);
     assert_eq!(r.v("cnc.alarms"), "0");
     let zs: Vec<i64> = path
@@ -272,7 +262,7 @@ fn drilling_cycles_peck_dwell_and_stay_modal_until_g80() {
         "G80, then a plain rapid"
     );
     // G85 bores out at feed: the way back from the bottom to R takes as long as the way in.
-    let mut r = mem("O1;N1 G00 X0 Z2;N2 G85 Z-10 R0 F600;N3 M30");
+    let mut r = Rig::mem("O1;N1 G00 X0 Z2;N2 G85 Z-10 R0 F600;N3 M30");
     let (path, _) = run(&mut r, 100_000);
     let at_bottom = path.iter().filter(|p| p.1 == -10_000).count();
     let rising = path
@@ -293,7 +283,7 @@ fn g71_bores_from_inside_with_a_negative_allowance() {
     // Z-19.9: at Z-19.5, -15.5 and -11.5.
     let text = "O1;N1 G00 X18 Z2;N20 G71 P30 Q60 U-0.4 W0.1 D2000 F600;\
                 N30 G00 X40;N40 G01 Z-10;N50 X30 Z-20;N60 Z-30;N70 M30";
-    let mut r = mem(text);
+    let mut r = Rig::mem(text);
     let (path, _) = run(&mut r, 400_000);
     assert_eq!(r.v("cnc.alarms"), "0");
     let inside = path.iter().filter(|p| p.1 < 0);

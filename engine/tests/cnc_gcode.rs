@@ -7,15 +7,6 @@ mod common;
 use common::Rig;
 use ladder_engine::cnc::Mode;
 
-fn mem(text: &str) -> Rig {
-    let mut r = Rig::new();
-    r.mode(Mode::Mem);
-    r.x();
-    r.program(text);
-    r.auto_fin = true;
-    r
-}
-
 /// Runs until automatic operation leaves RUN (at most `limit` exchanges after the start).
 fn run(r: &mut Rig, limit: u64) {
     r.start();
@@ -26,14 +17,14 @@ fn run(r: &mut Rig, limit: u64) {
 fn a_quarter_arc_by_r_ends_on_its_point_after_197_exchanges() {
     // docs/gcode.md, "Arcs": X0 Z0 → X20 Z-10, R10 at F600: 15.708 mm at 0.08 mm per
     // exchange.
-    let mut r = mem("O1;N1 G02 X20 Z-10 R10 F600;N2");
+    let mut r = Rig::mem("O1;N1 G02 X20 Z-10 R10 F600;N2");
     let s = r.start();
     r.until(400, |r| r.v("cnc.block") == "2");
     // The motion's last exchange is s + 196; the next block starts at the one after.
     assert_eq!(r.n, s + 197);
     assert_eq!((r.m(0), r.m(1)), (20_000, -10_000));
     // Half way the tool is on the circle around Z0 X(radius)10, below the chord: concave.
-    let mut r = mem("O1;N1 G02 X20 Z-10 R10 F600;N2");
+    let mut r = Rig::mem("O1;N1 G02 X20 Z-10 R10 F600;N2");
     r.start();
     r.xs(97);
     let (x, z) = (r.m(0) as f64 / 2000.0, r.m(1) as f64 / 1000.0);
@@ -48,7 +39,7 @@ fn a_quarter_arc_by_r_ends_on_its_point_after_197_exchanges() {
 fn g03_with_i_k_and_a_full_circle() {
     // From X20 Z0, I-5: centre X(radius)5, a full turn of 31.416 mm at F600 in 393
     // exchanges, through X0 half way.
-    let mut r = mem("O1;N1 G00 X20;N2 G03 I-5 F600;N3");
+    let mut r = Rig::mem("O1;N1 G00 X20;N2 G03 I-5 F600;N3");
     r.start();
     r.until(100, |r| r.v("cnc.block") == "2");
     let s = r.n;
@@ -61,7 +52,7 @@ fn g03_with_i_k_and_a_full_circle() {
     assert_eq!((r.m(0), r.m(1)), (20_000, 0));
     assert!(least_x.abs() <= 2, "{least_x}");
     // I/K whose end radius differs from the start's by more than #3410 (0.020 mm): P/S 0020.
-    let mut r = mem("O1;N1 G02 X20 Z-10 I10 K0.05 F600");
+    let mut r = Rig::mem("O1;N1 G02 X20 Z-10 I10 K0.05 F600");
     run(&mut r, 10);
     assert_eq!(r.v("cnc.alarm.20"), "1");
     assert_eq!((r.m(0), r.m(1)), (0, 0), "nothing moved");
@@ -70,7 +61,7 @@ fn g03_with_i_k_and_a_full_circle() {
 #[test]
 fn inch_scales_lengths_and_feed_and_sets_inch() {
     // G20: U1. is 25.4 mm of diameter, W-0.5 12.7 mm; F10 is 254 mm/min. Positions stay mm.
-    let mut r = mem("O1;N1 G20 G01 U1. W-0.5 F10;N2 G21;N3");
+    let mut r = Rig::mem("O1;N1 G20 G01 U1. W-0.5 F10;N2 G21;N3");
     r.start();
     assert!(r.fb(2, 0), "INCH F2.0");
     r.until(1000, |r| r.v("cnc.block") == "2");
@@ -87,15 +78,15 @@ fn inch_scales_lengths_and_feed_and_sets_inch() {
 #[test]
 fn dpi_decides_what_a_number_without_a_point_means() {
     // #3401 bit 0 = 1 (default): X10 is 10 mm. = 0: X10000 is 10 mm, X10. is 10 mm too.
-    let mut r = mem("O1;N1 G00 X10 W-5;N2");
+    let mut r = Rig::mem("O1;N1 G00 X10 W-5;N2");
     run(&mut r, 1000);
     assert_eq!((r.m(0), r.m(1)), (10_000, -5_000));
-    let mut r = mem("O1;N1 G00 X10000 W-5.;N2 G04 X500;N3");
+    let mut r = Rig::mem("O1;N1 G00 X10000 W-5.;N2 G04 X500;N3");
     r.cmd(&["param", "3401", "0"]);
     run(&mut r, 1000);
     assert_eq!((r.m(0), r.m(1)), (10_000, -5_000));
     // Under DPI = 0, G04 X500 is 500 ms, P1.5 is 1.5 s whatever DPI says.
-    let mut r = mem("O1;N1 G04 X500;N2 G04 P1.5;N3");
+    let mut r = Rig::mem("O1;N1 G04 X500;N2 G04 P1.5;N3");
     r.cmd(&["param", "3401", "0"]);
     let s = r.start();
     r.until(100, |r| r.v("cnc.block") == "2");
@@ -109,7 +100,7 @@ fn dpi_decides_what_a_number_without_a_point_means() {
 fn fpm_chooses_the_feed_mode_of_power_on_and_reset() {
     // #3402 bit 4 = 0: G99 from power-on, F0.1 at 600 r/min is 60 mm/min: 1 mm in 125
     // exchanges.
-    let mut r = mem("O1;N1 M03 S600;N2 G01 W-1 F0.1;N3");
+    let mut r = Rig::mem("O1;N1 M03 S600;N2 G01 W-1 F0.1;N3");
     r.cmd(&["param", "3402", "0"]);
     r.cnc.power_cycle();
     r.mode(Mode::Mem);
@@ -120,12 +111,12 @@ fn fpm_chooses_the_feed_mode_of_power_on_and_reset() {
     r.until(500, |r| r.v("cnc.block") == "3");
     assert_eq!(r.n - s, 125);
     // Bit 4 = 1 (default) is G98: the same block feeds 0.1 mm/min and is still moving.
-    let mut r = mem("O1;N1 M03 S600;N2 G01 W-1 F0.1;N3");
+    let mut r = Rig::mem("O1;N1 M03 S600;N2 G01 W-1 F0.1;N3");
     r.start();
     r.xs(500);
     assert_eq!(r.v("cnc.block"), "2");
     // A reset returns to #3402's mode: G99 written, reset, then per minute again.
-    let mut r = mem("O1;N1 G99;N2");
+    let mut r = Rig::mem("O1;N1 G99;N2");
     run(&mut r, 10);
     r.cmd(&["reset"]);
     r.x();
@@ -137,7 +128,7 @@ fn fpm_chooses_the_feed_mode_of_power_on_and_reset() {
 
 #[test]
 fn g50_sets_the_coordinates_of_the_tool_and_g53_moves_in_machine_coordinates() {
-    let mut r = mem("O1;N1 G50 X100 Z50;N2 G04 P100;N3 G00 X80 Z40;N4 G04 P8;N5 G53 X0 Z0;N6");
+    let mut r = Rig::mem("O1;N1 G50 X100 Z50;N2 G04 P100;N3 G00 X80 Z40;N4 G04 P8;N5 G53 X0 Z0;N6");
     r.start();
     r.until(100, |r| r.v("cnc.block") == "2");
     assert_eq!(
@@ -153,7 +144,7 @@ fn g50_sets_the_coordinates_of_the_tool_and_g53_moves_in_machine_coordinates() {
 
 #[test]
 fn g10_sets_workpiece_and_tool_offsets() {
-    let mut r = mem(
+    let mut r = Rig::mem(
         "O1;N1 G10 L2 P1 X0 Z-120.;N2 G10 P10003 X-150. Z-300. R0.4;N3 G10 P3 U0.02 W-0.01;N4 G10 P3 U0.02;N5",
     );
     run(&mut r, 100);
@@ -162,7 +153,7 @@ fn g10_sets_workpiece_and_tool_offsets() {
     assert_eq!(r.v("cnc.offset.3.R"), "0.400");
     assert_eq!(r.v("cnc.offset.3.WX"), "0.040", "U adds");
     assert_eq!(r.v("cnc.offset.3.WZ"), "-0.010");
-    let mut r = mem("O1;N1 G10 L2 P7 X0;N2");
+    let mut r = Rig::mem("O1;N1 G10 L2 P7 X0;N2");
     run(&mut r, 10);
     assert_eq!(r.v("cnc.alarm.31"), "1");
 }
@@ -171,8 +162,9 @@ fn g10_sets_workpiece_and_tool_offsets() {
 fn constant_surface_speed_follows_the_diameter_under_the_g50_clamp() {
     // docs/gcode.md, "Constant surface speed": 200 m/min at D100 is 637 r/min, at D50
     // 1273, at D20 3183 clamped to G50 S1500.
-    let mut r =
-        mem("O1;N1 G50 S1500;N2 G00 X100;N3 G96 S200 M03;N4 G00 X50;N5 G01 X20 F6000;N6 G97;N7");
+    let mut r = Rig::mem(
+        "O1;N1 G50 S1500;N2 G00 X100;N3 G96 S200 M03;N4 G00 X50;N5 G01 X20 F6000;N6 G97;N7",
+    );
     r.start();
     r.until(2000, |r| r.v("cnc.block") == "3");
     assert_eq!(r.v("cnc.spindle"), "637");
@@ -205,7 +197,7 @@ fn g90_turns_in_four_segments_and_repeats_for_an_x_alone() {
     // docs/gcode.md, "Single cycles": from X50 Z2, G90 X40 Z-20 F600 (G98): rapid 5 mm (7
     // exchanges at 0.8 mm), cut 22 mm (275), cut up 5 mm (63), rapid back 22 mm (28): 373.
     let mut r =
-        mem("O1;N1 G00 X50 Z2;N2 G90 X40 Z-20 F600;N3 X30;N4 G00 X60;N5 G90 X40 Z-20 R-2;N6");
+        Rig::mem("O1;N1 G00 X50 Z2;N2 G90 X40 Z-20 F600;N3 X30;N4 G00 X60;N5 G90 X40 Z-20 R-2;N6");
     r.start();
     let p = path_of(&mut r, "2", 100);
     assert_eq!(p.len(), 373);
@@ -228,7 +220,7 @@ fn g90_turns_in_four_segments_and_repeats_for_an_x_alone() {
 fn g94_faces_and_returns() {
     // From X50 Z2, G94 X20 Z-2 F600: rapid 4 mm (5), cut 15 mm of radius (188), cut back 4 mm
     // (50), rapid 15 mm (19): 262 exchanges.
-    let mut r = mem("O1;N1 G00 X50 Z2;N2 G94 X20 Z-2 F600;N3");
+    let mut r = Rig::mem("O1;N1 G00 X50 Z2;N2 G94 X20 Z-2 F600;N3");
     r.start();
     let p = path_of(&mut r, "2", 100);
     assert_eq!(p.len(), 262);
@@ -239,7 +231,7 @@ fn g94_faces_and_returns() {
 #[test]
 fn a_thread_waits_for_the_one_rotation_signal_and_follows_the_spindle_not_the_override() {
     // 600 r/min × lead 2 = 1200 mm/min = 0.16 mm per exchange, whatever the feed override.
-    let mut r = mem("O1;N1 M03 S600;N2 G32 W-10 F2;N3");
+    let mut r = Rig::mem("O1;N1 M03 S600;N2 G32 W-10 F2;N3");
     r.g[12] = 5; // feed override 50 %: no effect on a thread
     r.start();
     r.until(100, |r| r.v("cnc.block") == "2");
@@ -266,7 +258,7 @@ fn a_thread_waits_for_the_one_rotation_signal_and_follows_the_spindle_not_the_ov
 
 #[test]
 fn feed_hold_waits_for_the_end_of_the_thread() {
-    let mut r = mem("O1;N1 M03 S600;N2 G00 X30 Z5;N3 G92 X20 Z-20 F1.5;N4");
+    let mut r = Rig::mem("O1;N1 M03 S600;N2 G00 X30 Z5;N3 G92 X20 Z-20 F1.5;N4");
     r.start();
     r.until(1000, |r| {
         r.v("cnc.block") == "3" && r.fb(2, 3) && r.m(1) < 0
@@ -286,7 +278,7 @@ fn feed_hold_waits_for_the_end_of_the_thread() {
 #[test]
 fn g92_threads_with_a_45_degree_chamfer_of_one_lead() {
     // #5130 = 10: the pull-out starts 1.5 mm (one lead) before Z-20 and ends 1.5 mm higher.
-    let mut r = mem("O1;N1 M03 S600;N2 G00 X30 Z5;N3 G92 X20 Z-20 F1.5;N4 X19.4;N5");
+    let mut r = Rig::mem("O1;N1 M03 S600;N2 G00 X30 Z5;N3 G92 X20 Z-20 F1.5;N4 X19.4;N5");
     r.start();
     let p = path_of(&mut r, "3", 1000);
     assert!(p.contains(&(20_000, -18_500)), "the chamfer starts");
@@ -301,14 +293,14 @@ fn g92_threads_with_a_45_degree_chamfer_of_one_lead() {
 fn chamfer_and_corner_r_cut_the_corner_to_the_next_g01() {
     // Up the face to X20, then along Z: ,C2 from X16 Z0 to X20 Z-2; ,R2 the same points joined
     // by a quarter circle around X16 Z-2 (radius 8), through X18.828 Z-0.586.
-    let mut r = mem("O1;N1 G01 X20 ,C2 F600;N2 Z-20;N3");
+    let mut r = Rig::mem("O1;N1 G01 X20 ,C2 F600;N2 Z-20;N3");
     r.start();
     let p = path_of(&mut r, "1", 10);
     assert!(
         p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)),
         "{p:?}"
     );
-    let mut r = mem("O1;N1 G01 X20 ,R2 F600;N2 Z-20;N3");
+    let mut r = Rig::mem("O1;N1 G01 X20 ,R2 F600;N2 Z-20;N3");
     r.start();
     let p = path_of(&mut r, "1", 10);
     assert!(p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)));
@@ -319,7 +311,7 @@ fn chamfer_and_corner_r_cut_the_corner_to_the_next_g01() {
         ("O1;N1 G01 X20 ,C12 F600;N2 Z-20", 55),
         ("O1;N1 G01 X20 ,C2 F600;N2 G00 Z-20", 52),
     ] {
-        let mut r = mem(text);
+        let mut r = Rig::mem(text);
         run(&mut r, 10);
         assert_eq!(r.v(&format!("cnc.alarm.{alarm}")), "1", "{text}");
     }
@@ -327,7 +319,7 @@ fn chamfer_and_corner_r_cut_the_corner_to_the_next_g01() {
 
 #[test]
 fn g30_returns_to_the_second_reference_point() {
-    let mut r = mem("O1;N1 G30 U0 W0;N2");
+    let mut r = Rig::mem("O1;N1 G30 U0 W0;N2");
     r.home(&[0, 1]);
     r.mode(Mode::Mem);
     r.x();
@@ -341,17 +333,17 @@ fn g30_returns_to_the_second_reference_point() {
 
 #[test]
 fn c_and_r_without_a_comma_chamfer_and_round_a_g01_corner() {
-    let mut r = mem("O1;N1 G01 X20 C2 F600;N2 Z-20;N3");
+    let mut r = Rig::mem("O1;N1 G01 X20 C2 F600;N2 Z-20;N3");
     r.start();
     let p = path_of(&mut r, "1", 10);
     assert!(p.contains(&(16_000, 0)) && p.last() == Some(&(20_000, -2_000)));
-    let mut r = mem("O1;N1 G01 X20 R2 F600;N2 Z-20;N3");
+    let mut r = Rig::mem("O1;N1 G01 X20 R2 F600;N2 Z-20;N3");
     r.start();
     let p = path_of(&mut r, "1", 10);
     let near = |&(x, z): &(i64, i64)| (x - 18_828).abs() <= 60 && (z + 586).abs() <= 60;
     assert!(p.iter().any(near));
     // C means nothing outside G01.
-    let mut r = mem("O1;N1 G00 X20 C2;N2");
+    let mut r = Rig::mem("O1;N1 G00 X20 C2;N2");
     run(&mut r, 10);
     assert_eq!(r.v("cnc.alarm.9"), "1");
 }

@@ -8,7 +8,7 @@ use super::drill::DrillMemory;
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
-use super::path::{Home, SegKind, Segment};
+use super::path::{SegKind, Segment};
 use super::program::{MDI_NUMBER, NcBlock, NcProgram, ps};
 use super::word::{OneShot, Words};
 use super::{AXES, Mode, SimCnc};
@@ -78,22 +78,18 @@ pub(super) struct Frame {
 pub(super) struct Exec {
     /// The motion of the current segment.
     pub(super) motion: Option<Motion>,
-    /// What the current segment is.
-    pub(super) kind: SegKind,
+    /// The current segment (its kind, feed and reference-point arrival).
+    pub(super) current: Segment,
     /// Index of the next segment in `Auto::segs`.
     pub(super) seg: u16,
     /// Segments of the block.
     pub(super) seg_count: u16,
     /// The exchange the last segment ended in.
     pub(super) done_at: u64,
-    /// Axes the current segment brings to reference point 1.
-    pub(super) home: Home,
     /// The current thread segment waits for the one-rotation signal.
     pub(super) wait_rev: bool,
     pub(super) dwell_ms: f64,
     pub(super) dwell_total: f64,
-    pub(super) feed: f64,
-    pub(super) per_rev: bool,
     pub(super) mst: Mst,
     pub(super) stop_after: bool,
     pub(super) end: bool,
@@ -564,16 +560,13 @@ impl SimCnc {
         self.auto.modal = modal;
         let mut e = Exec {
             motion: None,
-            kind: SegKind::Rapid,
+            current: Segment::to(SegKind::Rapid, self.frame_position()),
             seg: 0,
             seg_count: self.auto.segs.len() as u16,
             done_at: self.exchange_no,
-            home: Home::NONE,
             wait_rev: false,
             dwell_ms: 0.0,
             dwell_total: 0.0,
-            feed: modal.feed,
-            per_rev: modal.per_rev,
             mst: Mst::default(),
             stop_after: false,
             end: false,

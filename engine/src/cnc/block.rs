@@ -177,25 +177,20 @@ impl SimCnc {
                 self.plan_corner(w, modal, u, cur, target, segs)?;
             }
             _ if w.chamfer.is_some() || w.corner.is_some() => return Err(ps::CORNER_NEXT),
-            1 if w.moves() => segs.push(self.cut(SegKind::Line, target, modal)),
+            1 if w.moves() => segs.push(Segment::cut(
+                SegKind::Line,
+                target,
+                modal.feed,
+                modal.per_rev,
+            )),
             2 | 3 if w.moves() || w.i.is_some() || w.k.is_some() => {
                 let kind = self.arc_kind(w, u, modal.motion == 2, cur, target)?;
-                segs.push(self.cut(kind, target, modal));
+                segs.push(Segment::cut(kind, target, modal.feed, modal.per_rev));
             }
             0..=3 => {}
             _ => self.plan_cycle(w, modal, u, cur, target, segs)?,
         }
         Ok(fx)
-    }
-
-    fn cut(&self, kind: SegKind, target: [i64; AXES], modal: &Modal) -> Segment {
-        Segment {
-            kind,
-            target,
-            feed: modal.feed,
-            per_rev: modal.per_rev,
-            home: Home::NONE,
-        }
     }
 
     /// G04's time, ms: P an integer of ms, P with a point seconds, X/U seconds (read like a
@@ -220,11 +215,8 @@ impl SimCnc {
         cur: [i64; AXES],
         target: [i64; AXES],
     ) -> Result<SegKind, u16> {
-        let diam = self.diameters();
-        let per = |n: usize| if diam[n] { 2000.0 } else { 1000.0 };
-        let plane = |p: [i64; AXES]| [p[1] as f64 / per(1), p[0] as f64 / per(0)];
         let tol = self.params.one(P3410) as f64 / 1000.0;
-        let (start, end) = (plane(cur), plane(target));
+        let (start, end) = (self.plane_mm(cur), self.plane_mm(target));
         let len = |n: Option<Num>| n.map_or(Ok(0), |v| u.len(v));
         let (center, full) = match w.r {
             Some(r) if w.i.is_none() && w.k.is_none() => {
@@ -242,12 +234,10 @@ impl SimCnc {
                 (c, true)
             }
         };
+        let c = self.plane_incr(center, cur);
         Ok(SegKind::Arc {
             cw,
-            center: [
-                (center[1] * per(0)).round() as i64,
-                (center[0] * per(1)).round() as i64,
-            ],
+            center: [c[0], c[1]],
             full,
         })
     }

@@ -36,13 +36,7 @@ impl SimCnc {
         }
         let d1 = [(b[0] - a[0]) / len1, (b[1] - a[1]) / len1];
         let d2 = [(c[0] - b[0]) / len2, (c[1] - b[1]) / len2];
-        let cut = |kind: SegKind, t: [i64; AXES]| Segment {
-            kind,
-            target: t,
-            feed: modal.feed,
-            per_rev: modal.per_rev,
-            home: super::path::Home::NONE,
-        };
+        let cut = |kind: SegKind, t: [i64; AXES]| Segment::cut(kind, t, modal.feed, modal.per_rev);
         let (dist, round) = match (w.chamfer, w.corner) {
             (Some(ch), _) => (u.len(ch)? as f64 / 1000.0, None),
             (None, Some(r)) => {

@@ -5,7 +5,7 @@
 
 use super::auto::Modal;
 use super::params::P5130;
-use super::path::{Home, SegKind, Segment};
+use super::path::{SegKind, Segment};
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
 
@@ -69,13 +69,7 @@ impl SimCnc {
             p[1] = z;
             p
         };
-        let cut = |kind: SegKind, p: [i64; AXES]| Segment {
-            kind,
-            target: p,
-            feed: modal.feed,
-            per_rev: modal.per_rev,
-            home: Home::NONE,
-        };
+        let cut = |kind: SegKind, p: [i64; AXES]| Segment::cut(kind, p, modal.feed, modal.per_rev);
         let taper = m.r * self.x_per_radius();
         match modal.motion {
             90 => {
@@ -101,13 +95,7 @@ impl SimCnc {
 
     /// A thread segment to `target` with lead `lead` mm/rev.
     pub(super) fn thread(&self, target: [i64; AXES], lead: f64) -> Segment {
-        Segment {
-            kind: SegKind::Thread { lead },
-            target,
-            feed: lead,
-            per_rev: true,
-            home: Home::NONE,
-        }
+        Segment::cut(SegKind::Thread { lead }, target, lead, true)
     }
 
     /// The threading pass of G92 and G76 from `from` to `to`, pulled out towards `x_out` over

@@ -5,7 +5,6 @@
 
 use super::auto::Modal;
 use super::path::{SegKind, Segment, room};
-use super::repeat::cut;
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
 
@@ -81,7 +80,7 @@ impl SimCnc {
                     if done > 0 {
                         segs.push(Segment::to(SegKind::Rapid, at(pos, r_point + dir * done)));
                     }
-                    segs.push(cut(
+                    segs.push(Segment::cut(
                         SegKind::Line,
                         at(pos, r_point + dir * next),
                         feed,
@@ -93,7 +92,7 @@ impl SimCnc {
                     }
                 }
             } else {
-                segs.push(cut(SegKind::Line, at(pos, bottom), feed, per_rev));
+                segs.push(Segment::cut(SegKind::Line, at(pos, bottom), feed, per_rev));
             }
             segs.push(Segment::to(
                 SegKind::Dwell { ms: f64::from(m.p) },
@@ -101,7 +100,7 @@ impl SimCnc {
             ));
             if matches!(m.g, 84 | 85 | 88 | 89) {
                 // Tapping and boring come back out at feed to the R point.
-                segs.push(cut(SegKind::Line, at(pos, r_point), feed, per_rev));
+                segs.push(Segment::cut(SegKind::Line, at(pos, r_point), feed, per_rev));
             }
             segs.push(Segment::to(SegKind::Rapid, at(pos, initial)));
         }

@@ -93,6 +93,31 @@ impl Segment {
             home: Home::NONE,
         }
     }
+
+    /// A cutting segment of `kind` to `target` at `feed` (per revolution when `per_rev`).
+    pub fn cut(kind: SegKind, target: [i64; AXES], feed: f64, per_rev: bool) -> Segment {
+        Segment {
+            kind,
+            target,
+            feed,
+            per_rev,
+            home: Home::NONE,
+        }
+    }
+
+    /// The motion that takes the tool from `start` along this segment (none for a dwell).
+    pub fn motion(&self, start: [i64; AXES], diameter: [bool; AXES]) -> Option<Motion> {
+        Some(match self.kind {
+            SegKind::Dwell { .. } => return None,
+            SegKind::Rapid => Motion::new(MotionKind::Rapid, start, self.target, diameter),
+            SegKind::Arc { cw, center, full } => {
+                Motion::arc(start, self.target, center, cw, full, diameter)
+            }
+            SegKind::Line | SegKind::Thread { .. } => {
+                Motion::new(MotionKind::Cut, start, self.target, diameter)
+            }
+        })
+    }
 }
 
 impl SimCnc {
@@ -111,10 +136,7 @@ impl SimCnc {
         while e.seg < e.seg_count {
             let s = self.auto.segs[usize::from(e.seg)];
             e.seg += 1;
-            e.home = s.home;
-            e.feed = s.feed;
-            e.per_rev = s.per_rev;
-            e.kind = s.kind;
+            e.current = s;
             if let SegKind::Dwell { ms } = s.kind {
                 self.auto.prev_thread = false;
                 if ms > 0.0 {
@@ -123,14 +145,8 @@ impl SimCnc {
                 }
                 continue;
             }
-            let start = self.frame_position();
-            let diam = self.diameters();
-            let m = match s.kind {
-                SegKind::Rapid => Motion::new(MotionKind::Rapid, start, s.target, diam),
-                SegKind::Arc { cw, center, full } => {
-                    Motion::arc(start, s.target, center, cw, full, diam)
-                }
-                _ => Motion::new(MotionKind::Cut, start, s.target, diam),
+            let Some(m) = s.motion(self.frame_position(), self.diameters()) else {
+                continue;
             };
             if m.is_empty() {
                 self.arrived(s.home);
@@ -153,7 +169,7 @@ impl SimCnc {
         let is_thread = |k: SegKind| matches!(k, SegKind::Thread { .. });
         self.auto.exec.is_some_and(|e| {
             let next = self.auto.segs.get(usize::from(e.seg)).map(|s| s.kind);
-            is_thread(e.kind)
+            is_thread(e.current.kind)
                 && (!e.segment_done() || (e.seg < e.seg_count && next.is_some_and(is_thread)))
         })
     }
@@ -200,7 +216,8 @@ impl SimCnc {
         f64::from(self.inp.jv.min(15)) / 10.0
     }
 
-    fn program_speed(&self, m: &Motion, kind: SegKind, feed: f64, per_rev: bool) -> f64 {
+    fn program_speed(&self, m: &Motion, seg: &Segment) -> f64 {
+        let (kind, feed, per_rev) = (seg.kind, seg.feed, seg.per_rev);
         let s = f64::from(self.spindle.s_out);
         match m.kind {
             MotionKind::Rapid => m.rapid_speed(|n| self.rapid_rate(n)),
@@ -246,7 +263,7 @@ impl SimCnc {
         let Some(mut m) = e.motion.filter(|m| !m.done()) else {
             return;
         };
-        if matches!(e.kind, SegKind::Thread { .. }) {
+        if matches!(e.current.kind, SegKind::Thread { .. }) {
             self.flags.thread = true;
             if e.wait_rev {
                 if !self.spindle.one_rev {
@@ -263,7 +280,7 @@ impl SimCnc {
         if self.check(2) && m.axes & inp.axis_interlock != 0 {
             return;
         }
-        let v = self.program_speed(&m, e.kind, e.feed, e.per_rev);
+        let v = self.program_speed(&m, &e.current);
         if v <= 0.0 || !v.is_finite() {
             return;
         }
@@ -300,7 +317,7 @@ impl SimCnc {
         self.flags.path_speed = v;
         if m.done() {
             e.done_at = self.exchange_no;
-            self.arrived(e.home);
+            self.arrived(e.current.home);
         }
         e.motion = Some(m);
         self.auto.exec = Some(e);

@@ -4,7 +4,7 @@
 //! result is a chain of lines and arcs in the Z–X plane, in mm with X as a radius.
 
 use super::auto::Modal;
-use super::path::SegKind;
+use super::path::{SegKind, Segment};
 use super::program::{NcProgram, ps};
 use super::word::Words;
 use super::{AXES, SimCnc};
@@ -77,17 +77,20 @@ pub(super) fn find_sequence(prog: &NcProgram, n: u32, from: usize) -> Option<usi
 impl SimCnc {
     /// (Z, X radius) in mm of a frame position.
     pub(super) fn plane_mm(&self, p: [i64; AXES]) -> [f64; 2] {
-        let per_x = if self.diameter(0) { 2000.0 } else { 1000.0 };
-        [p[1] as f64 / 1000.0, p[0] as f64 / per_x]
+        [p[1] as f64 / self.per_mm(1), p[0] as f64 / self.per_mm(0)]
     }
 
     /// A frame position from (Z, X radius) in mm, the other axes from `base`.
     pub(super) fn plane_incr(&self, q: [f64; 2], base: [i64; AXES]) -> [i64; AXES] {
-        let per_x = if self.diameter(0) { 2000.0 } else { 1000.0 };
         let mut p = base;
-        p[0] = (q[1] * per_x).round() as i64;
-        p[1] = (q[0] * 1000.0).round() as i64;
+        p[0] = (q[1] * self.per_mm(0)).round() as i64;
+        p[1] = (q[0] * self.per_mm(1)).round() as i64;
         p
+    }
+
+    /// Increments per mm of radius on axis slot `n` (2000 on a diameter axis).
+    fn per_mm(&self, n: usize) -> f64 {
+        if self.diameter(n) { 2000.0 } else { 1000.0 }
     }
 
     /// Reads the profile from block P (`ns`) to block Q (`nf`) of the running program, starting
@@ -151,6 +154,28 @@ impl SimCnc {
             pos = target;
         }
         Ok(profile)
+    }
+
+    /// The cutting segment along a profile element, at `feed`.
+    pub(super) fn elem_segment(
+        &self,
+        e: &Elem,
+        cur: [i64; AXES],
+        feed: f64,
+        per_rev: bool,
+    ) -> Segment {
+        let kind = match e.arc {
+            Some(c) => {
+                let centre = self.plane_incr(c.center, cur);
+                SegKind::Arc {
+                    cw: c.cw,
+                    center: [centre[0], centre[1]],
+                    full: false,
+                }
+            }
+            None => SegKind::Line,
+        };
+        Segment::cut(kind, self.plane_incr(e.to, cur), feed, per_rev)
     }
 
     /// A frame position with X and Z from an arc centre (X, Z) and the rest from `base`.

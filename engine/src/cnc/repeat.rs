@@ -7,7 +7,7 @@
 use super::auto::Modal;
 use super::block::Effects;
 use super::params::{P5130, P5132, P5133, P5135, P5136, P5137, P5139, P5140, P5141, P5142, P5143};
-use super::path::{Home, SegKind, Segment, room};
+use super::path::{SegKind, Segment, room};
 use super::profile::{Profile, find_sequence};
 use super::program::ps;
 use super::rough::Rough;
@@ -243,9 +243,10 @@ impl SimCnc {
 
     /// The finishing allowance U (X, diameter as written) and W: (Z, X radius) in mm.
     fn allowance(&self, w: &Words, u: Units) -> Result<[f64; 2], u16> {
-        let per_x = if self.diameter(0) { 2000.0 } else { 1000.0 };
         let get = |k: usize| w.axes[k].map_or(Ok(0), |(v, _)| u.len(v));
-        Ok([get(1)? as f64 / 1000.0, get(0)? as f64 / per_x])
+        let mut d = [0; AXES];
+        (d[0], d[1]) = (get(0)?, get(1)?);
+        Ok(self.plane_mm(d))
     }
 
     fn cycle_feed(&self, modal: &Modal) -> Result<f64, u16> {
@@ -283,37 +284,13 @@ impl SimCnc {
             } else {
                 SegKind::Line
             };
-            segs.push(cut(kind, first, feed, per_rev));
+            segs.push(Segment::cut(kind, first, feed, per_rev));
             for e in &p.elems {
-                let e = e.shifted(d);
-                let t = self.plane_incr(e.to, cur);
-                let kind = match e.arc {
-                    Some(c) => {
-                        let c = self.plane_incr(c.center, cur);
-                        SegKind::Arc {
-                            cw: e.arc.is_some_and(|a| a.cw),
-                            center: [c[0], c[1]],
-                            full: false,
-                        }
-                    }
-                    None => SegKind::Line,
-                };
-                segs.push(cut(kind, t, feed, per_rev));
+                segs.push(self.elem_segment(&e.shifted(d), cur, feed, per_rev));
             }
             segs.push(Segment::to(SegKind::Rapid, start));
         }
         Ok(())
-    }
-}
-
-/// A cutting segment.
-pub(super) fn cut(kind: SegKind, target: [i64; AXES], feed: f64, per_rev: bool) -> Segment {
-    Segment {
-        kind,
-        target,
-        feed,
-        per_rev,
-        home: Home::NONE,
     }
 }
 
@@ -383,7 +360,7 @@ impl SimCnc {
             while done < depth_total - 1e-9 {
                 room(segs)?;
                 let next = (done + peck).min(depth_total);
-                segs.push(cut(
+                segs.push(Segment::cut(
                     SegKind::Line,
                     at(s[pk] + dir_p * next, q),
                     feed,

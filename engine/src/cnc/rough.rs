@@ -6,7 +6,7 @@
 //! allowance profile.
 
 use super::arc::ArcPath;
-use super::path::{Home, SegKind, Segment, room};
+use super::path::{SegKind, Segment, room};
 use super::profile::{Elem, Profile};
 use super::program::ps;
 use super::{AXES, SimCnc};
@@ -313,38 +313,20 @@ impl Out<'_> {
 
     fn feed(&mut self, q: [f64; 2]) {
         let t = self.point(q);
-        self.segs.push(self.cut(SegKind::Line, t));
+        self.segs
+            .push(Segment::cut(SegKind::Line, t, self.r.feed, self.r.per_rev));
     }
 
     fn go(&mut self, q: [f64; 2], rapid: bool) {
         if rapid { self.rapid(q) } else { self.feed(q) }
     }
 
-    fn cut(&self, kind: SegKind, target: [i64; AXES]) -> Segment {
-        Segment {
-            kind,
-            target,
-            feed: self.r.feed,
-            per_rev: self.r.per_rev,
-            home: Home::NONE,
-        }
-    }
-
     /// Follows a profile element (real plane) at feed.
     fn follow(&mut self, e: &Elem) {
-        let t = self.cnc.plane_incr(e.to, self.cur);
-        let kind = match e.arc {
-            Some(c) => {
-                let center = self.cnc.plane_incr(c.center, self.cur);
-                SegKind::Arc {
-                    cw: c.cw,
-                    center: [center[0], center[1]],
-                    full: false,
-                }
-            }
-            None => SegKind::Line,
-        };
-        self.segs.push(self.cut(kind, t));
+        let s = self
+            .cnc
+            .elem_segment(e, self.cur, self.r.feed, self.r.per_rev);
+        self.segs.push(s);
     }
 
     /// One level: down to `v` at u = `hi`, cut to `lo`, retract at 45°, back up.

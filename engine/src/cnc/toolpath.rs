@@ -8,7 +8,6 @@
 
 use super::SimCnc;
 use super::auto::RunState;
-use super::motion::{Motion, MotionKind};
 use super::path::SegKind;
 use super::signals::Inputs;
 
@@ -117,26 +116,13 @@ impl SimCnc {
             out.blocks += 1;
             for k in 0..c.auto.segs.len() {
                 let s = c.auto.segs[k];
-                let start = c.frame_position();
-                let diam = c.diameters();
-                let (kind, m) = match s.kind {
-                    SegKind::Dwell { .. } => continue,
-                    SegKind::Rapid => (
-                        PieceKind::Rapid,
-                        Motion::new(MotionKind::Rapid, start, s.target, diam),
-                    ),
-                    SegKind::Arc { cw, center, full } => (
-                        PieceKind::Feed,
-                        Motion::arc(start, s.target, center, cw, full, diam),
-                    ),
-                    SegKind::Thread { .. } => (
-                        PieceKind::Thread,
-                        Motion::new(MotionKind::Cut, start, s.target, diam),
-                    ),
-                    SegKind::Line => (
-                        PieceKind::Feed,
-                        Motion::new(MotionKind::Cut, start, s.target, diam),
-                    ),
+                let kind = match s.kind {
+                    SegKind::Rapid => PieceKind::Rapid,
+                    SegKind::Thread { .. } => PieceKind::Thread,
+                    _ => PieceKind::Feed,
+                };
+                let Some(m) = s.motion(c.frame_position(), c.diameters()) else {
+                    continue;
                 };
                 for (n, t) in s.target.iter().enumerate() {
                     c.axes[n].m = t + c.axes[n].sh;

@@ -51,6 +51,17 @@ impl Rig {
         r
     }
 
+    /// A rig in MEM mode with `text` loaded and every strobe answered with FIN at the next
+    /// exchange.
+    pub fn mem(text: &str) -> Rig {
+        let mut r = Rig::new();
+        r.mode(Mode::Mem);
+        r.x();
+        r.program(text);
+        r.auto_fin = true;
+        r
+    }
+
     /// One exchange.
     pub fn x(&mut self) {
         if self.auto_fin {
