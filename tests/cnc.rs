@@ -157,6 +157,7 @@ fn bench_with_the_cnc_times_the_exchange_on_a_set_up_machine() {
         "bench",
         lathe.to_str().unwrap(),
         "--cnc",
+        "--no-machine",
         "--script",
         setup.to_str().unwrap(),
         "--scans",
@@ -170,7 +171,14 @@ fn bench_with_the_cnc_times_the_exchange_on_a_set_up_machine() {
     // A set-up script that fails times nothing.
     let dir = tempfile::tempdir().unwrap();
     let bad = script(&dir, "expect cnc.run RUN\n");
-    let r = run(&["bench", lathe.to_str().unwrap(), "--cnc", "--script", &bad]);
+    let r = run(&[
+        "bench",
+        lathe.to_str().unwrap(),
+        "--cnc",
+        "--no-machine",
+        "--script",
+        &bad,
+    ]);
     assert_eq!(r.code, 1);
     assert!(r.stderr.contains("nothing was timed"), "{}", r.stderr);
 }

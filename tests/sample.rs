@@ -61,9 +61,20 @@ fn the_lathe_scripts_pass_against_the_project_under_the_simulated_cnc() {
     let ldp = here().join("../projects/lathe-988ta.ldp");
     let scripts = scripts(&here().join("lathe"));
     assert!(scripts.len() >= 10);
-    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc"]);
+    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc", "--no-machine"]);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(expects > 400, "only {expects} expectations ran");
+}
+
+#[test]
+fn the_lathe_runs_the_machine_scripts_against_its_own_machine_model() {
+    // tests/machine: nothing sets a sensor by hand; the sample's devices answer the ladder.
+    let ldp = here().join("../projects/lathe-988ta.ldp");
+    let scripts = scripts(&here().join("machine"));
+    assert!(scripts.len() >= 2);
+    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc"]);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(expects >= 25, "only {expects} expectations ran");
 }
 
 #[test]
@@ -91,6 +102,7 @@ fn the_part_program_shows_every_handshake_in_the_trace() {
         "--script",
         script.to_str().unwrap(),
         "--cnc",
+        "--no-machine",
         "--trace",
         trace.to_str().unwrap(),
     ]);

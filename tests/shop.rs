@@ -1,9 +1,10 @@
 //! Part programs in the styles shops write (tests/nc: FANUC 0i two-block cycles, FS15/Haas
 //! one-block cycles in inch, GSK, drilling cycles, subprograms) run on the sample lathe as an
-//! engineer would run them: reference return, AUTO, cycle start (again after M00/M01), no
-//! electric tool post (K0000.1 = 0), #3401 = 0 and #3402 bit 4 = 0 as on a FANUC lathe. Each
-//! must reach M30 without an alarm; a program with a typing error stops with a P/S alarm
-//! naming its block.
+//! engineer would run them, against the sample's machine model (docs/machine.md): reference
+//! return on the dogs, AUTO, cycle start (again after M00/M01), #3401 = 0 and #3402 bit 4 = 0
+//! as on a FANUC lathe. Each must reach M30 without an alarm, with gang tooling (K0000.1 = 0)
+//! and, when it calls only the four stations the turret has, with the electric tool post the
+//! sample ships with; a program with a typing error stops with a P/S alarm naming its block.
 
 use ladder_engine::address::Address;
 use ladder_engine::cnc::command::{CncCommand, CncKey};
@@ -41,31 +42,41 @@ struct Outcome {
     alarms: String,
     block: String,
     ticks: u64,
+    /// A0000.2, the ladder's "T code out of range" message (1003).
+    plc_alarm: i64,
 }
 
 /// Sets the sample lathe up as the shop runs it and runs `nc` until it ends, stops on an
 /// alarm, or `limit` scans pass.
 fn run_program(nc: &str, limit: u64) -> Outcome {
-    run_on_sample(&here().join("nc").join(nc), true, limit)
+    run_on_sample(
+        &here().join("nc").join(nc),
+        Setup::Fanuc { turret: false },
+        limit,
+    )
 }
 
-/// Runs the program at `path` on the sample lathe; `fanuc` sets #3401 = 0, #3402 bit 4 = 0 and
-/// K0000.1 = 0 first, otherwise the sample's own settings stay.
-fn run_on_sample(path: &std::path::Path, fanuc: bool, limit: u64) -> Outcome {
+/// How the sample is set up before a run.
+#[derive(Clone, Copy)]
+enum Setup {
+    /// #3401 = 0 and #3402 = 0; the electric tool post on or off (gang tooling).
+    Fanuc { turret: bool },
+    /// The sample's own settings.
+    Sample,
+}
+
+/// Runs the program at `path` on the sample lathe and its machine model. Only what an
+/// operator does is done by hand: the E-stop released, the override knobs, the keys.
+fn run_on_sample(path: &std::path::Path, setup: Setup, limit: u64) -> Outcome {
     let nc = path.display().to_string();
     let project = file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample");
     let mut m = Machine::new(&project, true).expect("builds");
-    // A healthy machine: E-stop released, limits closed, spindle ready, dogs off, overrides.
-    for bit in [
-        "X0000.5", "X0001.5", "X0001.0", "X0001.1", "X0001.2", "X0001.3", "X0001.6",
-    ] {
-        m.plc.write(a(bit), 1, 1);
-    }
+    assert!(m.plant().is_some(), "the sample ships with its machine");
+    m.plc.write(a("X0000.5"), 1, 1);
     m.plc.write(a("X0005"), 1, 15);
     m.plc.write(a("X0006"), 1, 5);
-    m.plc.write(a("X0007"), 1, 3);
-    if fanuc {
-        m.plc.write(a("K0000.1"), 1, 0);
+    if let Setup::Fanuc { turret } = setup {
+        m.plc.write(a("K0000.1"), 1, i64::from(turret));
         for number in [3401, 3402] {
             let value = 0;
             cnc(
@@ -81,18 +92,19 @@ fn run_on_sample(path: &std::path::Path, fanuc: bool, limit: u64) -> Outcome {
     let text = read_program_file(path).expect("the program");
     cnc(&mut m, CncCommand::Program(text));
     m.run_ticks(2, |_| {});
-    // Reference return on the dogs.
+    // Reference return on the machine's own dogs: REF mode, X+ and Z+ pressed once.
     press(&mut m, "X0002.5");
     m.plc.write(a("X0004.0"), 1, 1);
     m.plc.write(a("X0004.2"), 1, 1);
     m.tick();
     m.plc.write(a("X0004.0"), 1, 0);
     m.plc.write(a("X0004.2"), 1, 0);
-    m.run_ticks(20, |_| {});
-    m.plc.write(a("X0007"), 1, 0);
-    m.run_ticks(10, |_| {});
-    m.plc.write(a("X0007"), 1, 3);
-    m.run_ticks(3, |_| {});
+    for _ in 0..2000 {
+        m.tick();
+        if m.plc.read(a("F0120"), 1) == 3 {
+            break;
+        }
+    }
     assert_eq!(m.plc.read(a("F0120"), 1), 3, "{nc}: reference points set");
     press(&mut m, "X0002.1");
     press(&mut m, "X0002.6");
@@ -114,6 +126,7 @@ fn run_on_sample(path: &std::path::Path, fanuc: bool, limit: u64) -> Outcome {
         alarms: value(&m, "cnc.alarms"),
         block: value(&m, "cnc.block"),
         ticks,
+        plc_alarm: m.plc.read(a("A0000.2"), 1),
     }
 }
 
@@ -150,6 +163,45 @@ fn a_typing_error_stops_the_program_with_a_ps_alarm_naming_its_block() {
 
 #[test]
 fn the_sample_job_runs_to_m30_with_the_sample_s_own_settings() {
-    let o = run_on_sample(&here().join("../projects/lathe-988ta.nc"), false, 400_000);
+    let o = run_on_sample(
+        &here().join("../projects/lathe-988ta.nc"),
+        Setup::Sample,
+        400_000,
+    );
     assert_eq!((o.alarms.as_str(), o.parts.as_str()), ("0", "1"), "{o:?}");
+}
+
+#[test]
+fn with_the_electric_tool_post_the_turret_model_answers_every_t_code() {
+    for nc in [
+        "haas-bushing-inch.nc",
+        "gsk-flange.nc",
+        "subprogram-grooves.nc",
+        "fanuc-flange-g72.nc",
+        "gsk-taper-g90.nc",
+    ] {
+        let o = run_on_sample(
+            &here().join("nc").join(nc),
+            Setup::Fanuc { turret: true },
+            400_000,
+        );
+        assert_eq!(
+            (o.alarms.as_str(), o.parts.as_str()),
+            ("0", "1"),
+            "{nc}: {o:?}"
+        );
+    }
+}
+
+#[test]
+fn a_station_the_turret_does_not_have_ends_in_the_ladder_s_own_alarm() {
+    // The shaft program calls T05 on a 4-station turret: the ladder's T-code check raises
+    // A0000.2, PLC alarm 1003, and the program goes no further.
+    let o = run_on_sample(
+        &here().join("nc").join("fanuc-0i-shaft.nc"),
+        Setup::Fanuc { turret: true },
+        400_000,
+    );
+    assert_eq!((o.alarms.as_str(), o.parts.as_str()), ("1", "0"), "{o:?}");
+    assert_eq!(o.plc_alarm, 1, "A0000.2 (1003) is on: {o:?}");
 }

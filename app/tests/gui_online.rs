@@ -545,3 +545,85 @@ fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
     settle(&mut h);
     assert_eq!(value(&h, "T0000"), 500, "written once");
 }
+
+#[test]
+fn an_actuator_added_on_the_machine_page_answers_the_ladder_and_a_fault_raises_its_alarm() {
+    use ladder_studio::gui::online::OnlineTab;
+    // Y0010.0 clamps; X0011.0 is the clamp switch, which lights Y0011.0; if it has not
+    // closed 1 s after clamping, A0000.0 (alarm 1001) comes on.
+    let il = "LEVEL2\nNETWORK\nLDI X0012.0\nOUT Y0010.0\n\
+NETWORK\nLD X0011.0\nOUT Y0011.0\n\
+NETWORK\nLD Y0010.0\nANI X0011.0\nTMRB T0001 1000 R0001.0\n\
+NETWORK\nLD R0001.0\nOUT A0000.0\n";
+    let mut p = ladder_engine::il::import(il).project.expect("valid IL");
+    p.messages.rows[0].number = Some(1001);
+    p.messages.rows[0]
+        .texts
+        .insert("en".into(), "Clamp timeout".into());
+    let path = tempfile_dir().join("machine.ldp");
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    // Offline: the Machine page adds an actuator and binds it.
+    h.state_mut().ask(Command::MachineModel);
+    h.run();
+    assert_eq!(h.state().online.tab, OnlineTab::Machine);
+    h.state_mut().online.machine.add_kind = 1;
+    h.run();
+    h.get_by_label("Add device").click();
+    h.run();
+    fill(&mut h, "advance output", "Y10.0");
+    fill(&mut h, "advanced switch", "X0200.0");
+    h.get_by_label_contains("out of range");
+    fill(&mut h, "advanced switch", "X11.0");
+    fill(&mut h, "travel time, ms", "400");
+    h.get_by_label("Apply").click();
+    h.run();
+    let machine = h.state().doc.as_ref().unwrap().project().machine.clone();
+    assert_eq!(machine.devices.len(), 1, "{machine:?}");
+    assert_eq!(machine.devices[0].name, "actuator");
+    // Run: the cylinder travels 400 ms, then its switch closes and lights the contact.
+    command(&mut h, Command::StepTick);
+    ticks(&mut h, 20);
+    assert_eq!(value(&h, "X0011.0"), 0, "still travelling");
+    h.get_by_label_contains("advancing");
+    ticks(&mut h, 40);
+    assert_eq!(value(&h, "X0011.0"), 1, "the clamp switch");
+    assert_eq!(value(&h, "Y0011.0"), 1);
+    h.get_by_label("advanced");
+    let level2 = h
+        .state()
+        .doc
+        .as_ref()
+        .unwrap()
+        .project()
+        .ladder
+        .blocks
+        .len()
+        - 1;
+    h.state_mut().jump(CellRef {
+        block: level2,
+        network: 1,
+        row: 0,
+        col: 0,
+    });
+    h.step();
+    settle(&mut h);
+    ticks(&mut h, 1);
+    let view = h.state().live_network_view(level2, 1).expect("on screen");
+    assert!(view.cells[0][0].power_out, "the X0011.0 contact is lit");
+    assert!(h.state().online.alarms.on.is_empty());
+    // A stuck clamp switch: the ladder's timer raises its alarm 1 s later.
+    h.get_by_label("Fault").click();
+    h.run();
+    h.get_by_label("fault: stuck at 0").click();
+    settle(&mut h);
+    ticks(&mut h, 130);
+    assert_eq!(value(&h, "X0011.0"), 0);
+    assert_eq!(value(&h, "A0000.0"), 1);
+    h.get_by_label_contains("1 device faults");
+    h.state_mut().online.tab = OnlineTab::Alarms;
+    h.run();
+    h.get_by_label("Clamp timeout");
+    h.get_by_label("1001");
+}

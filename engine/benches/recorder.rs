@@ -22,7 +22,9 @@ fn root() -> PathBuf {
 
 fn machine(project: &str) -> Machine {
     let project = ladder_engine::file::load(&root().join(project)).expect("the project loads");
-    Machine::new(&project, true).expect("the project compiles")
+    Machine::new(&project, true)
+        .expect("the project compiles")
+        .without_devices()
 }
 
 /// Runs a stimulus script's text on the machine; every expectation must hold.
@@ -33,6 +35,7 @@ fn run_script(machine: &mut Machine, text: &str) {
         &Options {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
+            machine: None,
         },
     )
     .expect("the script parses");

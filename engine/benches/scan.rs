@@ -84,7 +84,10 @@ fn main() {
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let project = ladder_engine::file::load(&root.join("projects/lathe-988ta.ldp"))
         .expect("the sample loads");
-    let mut machine = Machine::new(&project, true).expect("the sample compiles");
+    // The cycle script sets the machine's sensors by hand, as `sim --no-machine` runs it.
+    let mut machine = Machine::new(&project, true)
+        .expect("the sample compiles")
+        .without_devices();
     let text = std::fs::read_to_string(root.join("tests/lathe/cycle.script")).unwrap();
     let script = Script::parse_with(
         &text,
@@ -92,6 +95,7 @@ fn main() {
         &Options {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
+            machine: None,
         },
     )
     .expect("the cycle script parses");

@@ -3,7 +3,8 @@
 //!
 //! Sources, next to each other: `NAME.il` (the program), `NAME.symbols.csv`
 //! (`address,name,zh,en`), `NAME.data.csv` (`table,address,value,min,max,zh,en`, table one of
-//! K D DT DC) and `NAME.messages.csv` (`address,number,zh,en`).
+//! K D DT DC), `NAME.messages.csv` (`address,number,zh,en`) and, when the sample has a
+//! machine model, `NAME.machine.ron` (docs/machine.md).
 
 use ladder_engine::address::{Address, Area};
 use ladder_engine::compiler::compile;
@@ -115,6 +116,14 @@ fn main() {
         };
         project.messages.rows[k].number = r[1].trim().parse().ok();
         project.messages.rows[k].texts = comments(&r[2], &r[3]);
+    }
+    // The machine model, when the sample has one.
+    let machine_path = format!("{stem}.machine.ron");
+    if let Ok(text) = std::fs::read_to_string(&machine_path) {
+        project.machine = ron::from_str(&text).unwrap_or_else(|e| {
+            eprintln!("{machine_path}: {e}");
+            exit(2)
+        });
     }
     project.version.set(
         "Ladder Studio",

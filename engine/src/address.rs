@@ -375,6 +375,17 @@ impl Address {
     pub fn byte_address(&self) -> Address {
         Address::byte(self.area, self.number)
     }
+
+    /// The bit `k` bits after this bit address (X0000.7 + 1 is X0001.0); `None` for a byte
+    /// address or past the last number.
+    pub fn offset_bits(&self, k: u32) -> Option<Address> {
+        let at = u32::from(self.number) * 8 + u32::from(self.bit?) + k;
+        Some(Address::bit(
+            self.area,
+            u16::try_from(at / 8).ok()?,
+            (at % 8) as u8,
+        ))
+    }
 }
 
 impl fmt::Display for Address {

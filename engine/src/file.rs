@@ -15,8 +15,9 @@ pub const MAGIC: &str = "LADDER-STUDIO-PROJECT";
 /// History: v1 had one symbol list and no other tables; v2 has the symbol tables, data-setting
 /// tables, message, diagnosis, permission and M-code tables and the version information; v3
 /// keeps an imported network's instruction list as written ([`crate::model::Network::il`]) and
-/// its checksum covers the header too.
-pub const SCHEMA_VERSION: u32 = 3;
+/// its checksum covers the header too; v4 adds the machine model ([`crate::devices`]). A
+/// project without a machine model is still written as v3, so its bytes do not change.
+pub const SCHEMA_VERSION: u32 = 4;
 
 /// Why a project file could not be read or written.
 #[derive(Debug, Error)]
@@ -180,8 +181,13 @@ pub fn to_string(project: &Project) -> String {
         .depth_limit(7);
     let body = ron::ser::to_string_pretty(project, config)
         .expect("a project always serializes: it holds only plain data");
-    let crc = checksum(SCHEMA_VERSION, &body);
-    format!("{MAGIC} v{SCHEMA_VERSION} crc32={crc:08x}\n{body}\n")
+    let version = if project.machine.is_empty() {
+        3
+    } else {
+        SCHEMA_VERSION
+    };
+    let crc = checksum(version, &body);
+    format!("{MAGIC} v{version} crc32={crc:08x}\n{body}\n")
 }
 
 /// Parses the file format, verifying header and checksum.
@@ -302,6 +308,16 @@ fn parse_versioned(body: &str, version: u32) -> Result<Project, FileError> {
         }
         _ => ron::from_str::<Project>(body).map_err(body_error)?,
     };
+    // Before version 4 there was no machine model.
+    if version < 4 && !p.machine.is_empty() {
+        return Err(FileError::Schema {
+            version,
+            line: 1,
+            column: 1,
+            message: "the project has a machine model (`machine`), which version 4 introduced"
+                .into(),
+        });
+    }
     checked(p)
 }
 

@@ -6,6 +6,7 @@
 use crate::address::{Address, Area};
 use crate::cnc::command::{CncCommand, CncKey, CncValue};
 use crate::cnc::{CncStatus, SimCnc};
+use crate::devices::{DeviceStatus, Fault, MachineModel, ModelError, Plant};
 use crate::model::Project;
 use crate::vm::cnc::NoCnc;
 use crate::vm::swap::{SwapError, Swapped};
@@ -41,6 +42,8 @@ pub enum Probe {
     Memory(Target),
     /// A `cnc.KEY` value.
     Cnc(CncKey),
+    /// A device's main value (`device.NAME`, docs/machine.md, "Values"), by its index.
+    Device(usize),
 }
 
 impl Probe {
@@ -49,6 +52,7 @@ impl Probe {
         match self {
             Probe::Memory(t) => t.text(),
             Probe::Cnc(k) => k.text(),
+            Probe::Device(i) => format!("device.{i}"),
         }
     }
 }
@@ -98,6 +102,21 @@ pub enum MachineCommand {
     Division(u32),
     /// A command to the CNC.
     Cnc(CncCommand),
+    /// Something done to a device of the machine model, by its index.
+    Device(usize, DeviceAction),
+    /// The machine model replaced (edited online): devices keep their faults by name.
+    LoadModel(Box<MachineModel>),
+}
+
+/// What a user does to one device of the machine model.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeviceAction {
+    /// Inject a fault.
+    Fault(Fault),
+    /// Clear its fault.
+    Ok,
+    /// Back to its power-on state (a refilled lubricator, a reset counter).
+    Reset,
 }
 
 /// The PLC and, when attached, the simulated CNC.
@@ -106,6 +125,8 @@ pub struct Machine {
     pub plc: Vm,
     /// The CNC; `None` runs the PLC alone (F keeps what the user writes).
     pub cnc: Option<SimCnc>,
+    /// The machine model; `None` runs without one (inputs keep what the user writes).
+    plant: Option<Plant>,
     watches: Vec<Probe>,
     running: bool,
 }
@@ -131,14 +152,53 @@ pub struct Snapshot {
     pub running: bool,
     /// The CNC's screen.
     pub cnc: Option<CncStatus>,
+    /// The machine model's devices.
+    pub devices: Vec<DeviceStatus>,
 }
 
 impl Machine {
-    /// Compiles a project and builds its machine, with the simulated CNC when `with_cnc`.
+    /// Compiles a project and builds its machine, with the simulated CNC when `with_cnc`
+    /// and the project's machine model when it has one.
     pub fn new(project: &Project, with_cnc: bool) -> Result<Machine, BuildError> {
         let plc = Vm::new(project)?;
         let cnc = with_cnc.then(|| SimCnc::new(project.profile, &project.messages));
-        Ok(Machine::from_parts(plc, cnc))
+        let mut m = Machine::from_parts(plc, cnc);
+        if !project.machine.devices.is_empty() {
+            // `Vm::new` compiled the project, whose check refuses a model with errors.
+            let plant = Plant::new(&project.machine, project.profile())
+                .map_err(|e| crate::vm::code::LowerError::Unresolved(e.to_string()))?;
+            m.plant = Some(plant);
+        }
+        Ok(m)
+    }
+
+    /// The machine without its model (`sim --no-machine`): inputs keep what is written.
+    pub fn without_devices(mut self) -> Machine {
+        self.plant = None;
+        self
+    }
+
+    /// The machine model running, if any.
+    pub fn plant(&self) -> Option<&Plant> {
+        self.plant.as_ref()
+    }
+
+    /// Replaces the machine model, keeping each device's fault by name.
+    pub fn load_model(&mut self, model: &MachineModel) -> Result<(), ModelError> {
+        if model.devices.is_empty() {
+            self.plant = None;
+            return Ok(());
+        }
+        let mut plant = Plant::new(model, self.plc.profile())?;
+        if let Some(old) = &self.plant {
+            for (i, name) in old.names().enumerate() {
+                if let (Some(j), Some(s)) = (plant.find(name), old.status(i)) {
+                    plant.set_fault(j, s.fault);
+                }
+            }
+        }
+        self.plant = Some(plant);
+        Ok(())
     }
 
     /// A machine from a PLC and an optional CNC.
@@ -146,16 +206,28 @@ impl Machine {
         Machine {
             plc,
             cnc,
+            plant: None,
             watches: Vec::new(),
             running: false,
         }
     }
 
-    /// One 8 ms tick: the PLC scan and the exchange with the CNC.
+    /// One 8 ms tick: the machine model's devices, then the PLC scan and the exchange with
+    /// the CNC (docs/machine.md, "When devices run").
     pub fn tick(&mut self) {
+        if let Some(p) = &mut self.plant {
+            p.step(self.plc.image_mut(), self.cnc.as_ref());
+        }
         match &mut self.cnc {
             Some(c) => self.plc.tick(c),
             None => self.plc.tick(&mut NoCnc),
+        }
+    }
+
+    /// Steps the machine model alone, as a tick does before the scan (for `bench`).
+    pub fn step_devices(&mut self) {
+        if let Some(p) = &mut self.plant {
+            p.step(self.plc.image_mut(), self.cnc.as_ref());
         }
     }
 
@@ -181,6 +253,17 @@ impl Machine {
         self.running
     }
 
+    /// How a probe is named in output and trace headers: `device.NAME` for a device.
+    pub fn probe_name(&self, p: &Probe) -> String {
+        match (p, &self.plant) {
+            (Probe::Device(i), Some(plant)) => match plant.names().nth(*i) {
+                Some(n) => format!("device.{n}"),
+                None => p.text(),
+            },
+            _ => p.text(),
+        }
+    }
+
     /// The watch list.
     pub fn watches(&self) -> &[Probe] {
         &self.watches
@@ -204,6 +287,9 @@ impl Machine {
             }
             MachineCommand::WatchNetwork(n, on) => self.plc.watch(*n, *on),
             MachineCommand::PowerCycle => {
+                if let Some(p) = &mut self.plant {
+                    p.power_cycle();
+                }
                 self.plc.power_cycle();
                 if let Some(c) = &mut self.cnc {
                     c.power_cycle();
@@ -215,6 +301,22 @@ impl Machine {
                 Some(cnc) => cnc.apply(c)?,
                 None => return Err("no CNC is attached (run with the simulated CNC)".into()),
             },
+            MachineCommand::Device(i, action) => {
+                let Some(p) = &mut self.plant else {
+                    return Err("no machine model is running (the project has no devices, or it runs with --no-machine)".into());
+                };
+                if *i >= p.names().count() {
+                    return Err(format!("there is no device {}", i + 1));
+                }
+                match action {
+                    DeviceAction::Fault(f) => p.set_fault(*i, Some(*f)),
+                    DeviceAction::Ok => p.set_fault(*i, None),
+                    DeviceAction::Reset => p.reset(*i),
+                }
+            }
+            MachineCommand::LoadModel(model) => {
+                self.load_model(model).map_err(|e| e.to_string())?
+            }
         }
         Ok(())
     }
@@ -227,6 +329,12 @@ impl Machine {
                 Some(c) => c.value(k).map(ProbeValue::Cnc),
                 None => Err("no CNC is attached".into()),
             },
+            Probe::Device(i) => self
+                .plant
+                .as_ref()
+                .and_then(|p| p.value(*i))
+                .map(ProbeValue::Int)
+                .ok_or_else(|| "no machine model is running".into()),
         }
     }
 
@@ -245,6 +353,10 @@ impl Machine {
         s.watched.extend_from_slice(self.plc.watched());
         s.running = self.running;
         s.cnc = self.cnc.as_ref().map(SimCnc::status);
+        match &self.plant {
+            Some(p) => p.status_into(&mut s.devices),
+            None => s.devices.clear(),
+        }
     }
 
     /// A new snapshot.

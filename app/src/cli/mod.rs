@@ -101,6 +101,9 @@ pub enum Command {
         /// Also run the simulated CNC (the `cnc` script commands and `cnc.KEY` values).
         #[arg(long)]
         cnc: bool,
+        /// Run without the project's machine model, so that the script drives every input.
+        #[arg(long)]
+        no_machine: bool,
     },
     /// Time the scan.
     Bench {
@@ -116,6 +119,9 @@ pub enum Command {
         /// A stimulus script run first, untimed (set the machine up, start a program).
         #[arg(long)]
         script: Option<PathBuf>,
+        /// Run without the project's machine model.
+        #[arg(long)]
+        no_machine: bool,
     },
     /// Print the project: a PDF document, or SVG pages.
     Print(print::PrintArgs),
@@ -242,13 +248,31 @@ where
             script,
             trace,
             cnc,
-        }) => running::sim(&path, &script, trace.as_deref(), cnc, say, out, err),
+            no_machine,
+        }) => running::sim(
+            &path,
+            &script,
+            trace.as_deref(),
+            (cnc, !no_machine),
+            say,
+            out,
+            err,
+        ),
         Some(Command::Bench {
             path,
             scans,
             cnc,
             script,
-        }) => running::bench(&path, scans, cnc, script.as_deref(), say, out, err),
+            no_machine,
+        }) => running::bench(
+            &path,
+            scans,
+            (cnc, !no_machine),
+            script.as_deref(),
+            say,
+            out,
+            err,
+        ),
         Some(Command::ExportComments { path, output }) => {
             export_comments(&path, lang, output.as_deref(), say, out, err)
         }

@@ -87,6 +87,7 @@ fn read_script(
     let options = sim::Options {
         cnc,
         read_file: &read_file,
+        machine: machine.plant().map(|p| p.model()),
     };
     match Script::parse_with(&text, machine.plc.profile(), &options) {
         Ok(s) => Ok(Ok(s)),
@@ -98,12 +99,13 @@ fn read_script(
     }
 }
 
-/// `sim PATH --script S [--trace OUT.csv] [--cnc]`: runs the script, streaming the trace.
+/// `sim PATH --script S [--trace OUT.csv] [--cnc] [--no-machine]`: runs the script,
+/// streaming the trace. `(cnc, devices)`: with the simulated CNC, with the machine model.
 pub(super) fn sim(
     path: &Path,
     script_path: &Path,
     trace: Option<&Path>,
-    cnc: bool,
+    (cnc, devices): (bool, bool),
     say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -112,7 +114,8 @@ pub(super) fn sim(
         anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
     }
     let mut machine = match machine(path, cnc, say, err)? {
-        Ok(m) => m,
+        Ok(m) if devices => m,
+        Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
     };
     let script = match read_script(script_path, &machine, cnc, say, err)? {
@@ -198,19 +201,20 @@ pub(super) fn sim(
     Ok(i32::from(outcome.failed > 0))
 }
 
-/// `bench PATH [--scans N] [--cnc] [--script S]`: times the scan; Ctrl+C ends the timing
+/// `bench PATH [--scans N] [--cnc] [--script S] [--no-machine]`: times the scan; Ctrl+C ends the timing
 /// early and the figures cover the scans timed.
 pub(super) fn bench(
     path: &Path,
     scans: u64,
-    cnc: bool,
+    (cnc, devices): (bool, bool),
     setup: Option<&Path>,
     say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     let mut machine = match machine(path, cnc, say, err)? {
-        Ok(m) => m,
+        Ok(m) if devices => m,
+        Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
     };
     if let Some(script_path) = setup {
@@ -311,6 +315,19 @@ pub(super) fn bench(
         let _ = writeln!(
             out,
             "cnc_ns_per_exchange={per:.1} machine_ns_per_tick={ns_per_scan:.1} one_hour_s={hour:.3}"
+        );
+    }
+    if !stopped && let Some(count) = machine.plant().map(|p| p.names().count()) {
+        // The machine model alone, stepped as often as the ticks timed.
+        let start = Instant::now();
+        for _ in 0..scans {
+            machine.step_devices();
+        }
+        let per = start.elapsed().as_nanos() as f64 / scans as f64;
+        let _ = writeln!(
+            out,
+            "devices={count} devices_ns_per_tick={per:.1} devices_share_pct={:.2}",
+            100.0 * per / ns_per_scan.max(1.0)
         );
     }
     let _ = writeln!(

@@ -238,6 +238,8 @@ commands! {
     LiveView => LiveView;
     /// The online panel shown (on/off).
     ToggleOnline => OnlineWindow;
+    /// The Machine page: the machine model's devices, online or not.
+    MachineModel => MachineModelPage;
     /// The cursor to the first column of its row.
     RowStart => CursorRowStart, NONE Home;
     /// The cursor to the output column of its row.
@@ -269,6 +271,8 @@ pub const PLC_MENU: &[Option<Command>] = &[
     Some(Command::UnforceAll),
     Some(Command::Why),
     Some(Command::LiveView),
+    None,
+    Some(Command::MachineModel),
 ];
 
 /// The online toolbar.

@@ -68,6 +68,7 @@ impl LadderApp {
             Command::Why => self.online() && self.in_ladder(),
             Command::LiveView => self.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline => true,
+            Command::MachineModel => doc.is_some(),
             c if c.navigates() => self.in_ladder(),
             // A recorded past is read-only: no edits while the view shows one.
             c if c.edits_ladder() => self.in_ladder() && !self.scrubbing(),
@@ -265,6 +266,10 @@ impl LadderApp {
             Command::ZoomOut => self.zoom_step(false, None),
             Command::Compile => self.compile(),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
+            Command::MachineModel => {
+                self.settings.show_online = true;
+                self.online.tab = super::online::OnlineTab::Machine;
+            }
             Command::Run
             | Command::Stop
             | Command::StepTick

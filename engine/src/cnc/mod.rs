@@ -276,7 +276,12 @@ impl SimCnc {
         self.params.one(params::P8130).clamp(2, AXES as i64) as usize
     }
 
-    /// The axes.
+    /// The spindle speed output S_out (docs/cnc.md, "Spindle").
+    pub fn spindle_output(&self) -> u32 {
+        self.spindle.s_out
+    }
+
+    /// Every axis's state.
     pub fn axes(&self) -> &[AxisState; AXES] {
         &self.axes
     }

@@ -94,6 +94,11 @@ pub enum Code {
     T006TableName,
     T007SymbolArea,
     T008TableKey,
+    M001DeviceName,
+    M002DeviceAddress,
+    M003DeviceParameter,
+    M004DeviceCondition,
+    M005InputTwice,
     W001CoilTwice,
     W002TimerTwice,
     W003BitsSpill,
@@ -103,6 +108,8 @@ pub enum Code {
     W007CommentLength,
     W008OutputTwice,
     W009PresetRange,
+    W010DeviceReadsNothing,
+    W011PanelDrivesDeviceInput,
 }
 
 impl Code {
@@ -146,6 +153,11 @@ impl Code {
         Code::T006TableName,
         Code::T007SymbolArea,
         Code::T008TableKey,
+        Code::M001DeviceName,
+        Code::M002DeviceAddress,
+        Code::M003DeviceParameter,
+        Code::M004DeviceCondition,
+        Code::M005InputTwice,
         Code::W001CoilTwice,
         Code::W002TimerTwice,
         Code::W003BitsSpill,
@@ -155,6 +167,8 @@ impl Code {
         Code::W007CommentLength,
         Code::W008OutputTwice,
         Code::W009PresetRange,
+        Code::W010DeviceReadsNothing,
+        Code::W011PanelDrivesDeviceInput,
     ];
 
     /// What is wrong, in one Chinese phrase in the words of the GSK manual (docs/diagnostics.md
@@ -266,6 +280,14 @@ impl Code {
                 "诊断、权限或 M 代码表的地址或代码无效或重复",
                 "invalid or repeated table key",
             ),
+            Code::M001DeviceName => ("设备名无效或重复", "invalid or repeated device name"),
+            Code::M002DeviceAddress => (
+                "设备的地址无效、超出范围或不是输入位",
+                "wrong device address",
+            ),
+            Code::M003DeviceParameter => ("设备参数不可能", "impossible device parameter"),
+            Code::M004DeviceCondition => ("设备条件写法有误", "device condition does not read"),
+            Code::M005InputTwice => ("两个设备驱动同一个输入", "two devices drive one input"),
             Code::W001CoilTwice => ("线圈重复输出", "coil driven twice"),
             Code::W002TimerTwice => ("定时器或计数器号重复使用", "timer or counter used twice"),
             Code::W003BitsSpill => (
@@ -289,6 +311,14 @@ impl Code {
             Code::W009PresetRange => (
                 "数据表中的定时器或计数器预置值超出范围",
                 "table preset out of its instruction's range",
+            ),
+            Code::W010DeviceReadsNothing => (
+                "设备读取的地址没有任何程序或设备写入",
+                "device reads an address nothing writes",
+            ),
+            Code::W011PanelDrivesDeviceInput => (
+                "操作面板也驱动设备的输入",
+                "panel item drives a device's input",
             ),
         }
     }
@@ -340,6 +370,13 @@ impl Code {
             Code::W007CommentLength => "W007",
             Code::W008OutputTwice => "W008",
             Code::W009PresetRange => "W009",
+            Code::M001DeviceName => "M001",
+            Code::M002DeviceAddress => "M002",
+            Code::M003DeviceParameter => "M003",
+            Code::M004DeviceCondition => "M004",
+            Code::M005InputTwice => "M005",
+            Code::W010DeviceReadsNothing => "W010",
+            Code::W011PanelDrivesDeviceInput => "W011",
             Code::W001CoilTwice => "W001",
             Code::W002TimerTwice => "W002",
             Code::W003BitsSpill => "W003",
@@ -473,6 +510,7 @@ impl Location {
             "PERMISSIONS" => "权限表".to_string(),
             "MCODES" => "M 代码表".to_string(),
             "VERSION" => "梯形图版本信息".to_string(),
+            "MACHINE" => format!("机床模型 设备 {network}"),
             sub if sub.starts_with('P') => format!("子程序 {sub} 网络 {network}"),
             other => format!("{other} 网络 {network}"),
         };

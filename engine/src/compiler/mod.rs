@@ -12,6 +12,7 @@ pub mod decompile;
 pub mod diag;
 pub mod layout;
 pub mod lower;
+pub mod machine;
 pub mod operands;
 pub mod presets;
 pub mod rung;
@@ -151,6 +152,7 @@ pub fn compile(project: &Project) -> Compiled {
     let mut program = ladder_program(project, &mut sink);
     let steps = check::check_program(&mut program, project, &mut sink);
     tables::check_tables(project, &mut sink);
+    machine::check_machine(project, &mut sink);
     finish(program, sink, steps)
 }
 

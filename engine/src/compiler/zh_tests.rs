@@ -345,9 +345,71 @@ fn every_diagnostic_of_the_tables_is_in_chinese_with_its_specifics() {
     }
 }
 
+/// The codes the machine model reaches.
+const MACHINE_CODES: &[Code] = &[
+    Code::M001DeviceName,
+    Code::M002DeviceAddress,
+    Code::M003DeviceParameter,
+    Code::M004DeviceCondition,
+    Code::M005InputTwice,
+    Code::W010DeviceReadsNothing,
+    Code::W011PanelDrivesDeviceInput,
+];
+
+#[test]
+fn every_machine_model_diagnostic_is_in_chinese_with_its_specifics() {
+    use crate::devices::model::{Actuator, Logic};
+    use crate::devices::{Device, DeviceKind};
+    let follower = |name: &str, input: &str, when: &str| Device {
+        name: name.into(),
+        kind: DeviceKind::Follower(Logic {
+            input: addr(input),
+            when: when.into(),
+            on_ms: 0,
+            off_ms: 0,
+        }),
+    };
+    let mut p = Project::default();
+    p.machine.devices = vec![
+        follower("R10", "X0001.0", "1"),
+        follower("ok", "X0001.1", "Y0000.1 &"),
+        follower("ok", "X0001.2", "1"),
+        follower("bad", "Y0001.0", "1"),
+        Device {
+            name: "chuck".into(),
+            kind: DeviceKind::Actuator(Actuator {
+                advance: addr("Y0000.6"),
+                retract: None,
+                travel_ms: 0,
+                at_advanced: Some(addr("X0001.6")),
+                at_retracted: None,
+                moving: None,
+                start_advanced: false,
+            }),
+        },
+        follower("twice", "X0001.6", "Y0000.2"),
+    ];
+    p.panel.items.push(crate::model::PanelItem::new(
+        "开关",
+        "switch",
+        crate::model::PanelKind::Switch {
+            input: addr("X0001.2"),
+        },
+        0,
+        0,
+    ));
+    let codes = check_all(&compile(&p).diagnostics);
+    for code in MACHINE_CODES {
+        assert!(
+            codes.contains(code),
+            "{code:?} not reached by the machine model"
+        );
+    }
+}
+
 #[test]
 fn the_corpus_reaches_every_code() {
-    let reached: BTreeSet<Code> = [IL_CODES, DRAWN_CODES, TABLE_CODES]
+    let reached: BTreeSet<Code> = [IL_CODES, DRAWN_CODES, TABLE_CODES, MACHINE_CODES]
         .concat()
         .into_iter()
         .collect();

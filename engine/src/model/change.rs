@@ -8,6 +8,7 @@ use super::edit::{Edit, EditError};
 use super::panel::Panel;
 use super::project::Project;
 use super::tables::{AddressRow, DataTables, MCodeRow, MessageTable, SymbolTable, VersionInfo};
+use crate::devices::MachineModel;
 
 /// A table replaced whole.
 #[derive(Clone, Debug, PartialEq)]
@@ -28,6 +29,8 @@ pub enum TableEdit {
     Version(Box<VersionInfo>),
     /// The operator panel (an empty one puts the profile's preset back).
     Panel(Box<Panel>),
+    /// The machine model (docs/machine.md).
+    Machine(Box<MachineModel>),
 }
 
 /// One undoable change of a project.
@@ -71,6 +74,7 @@ impl Project {
             TableEdit::MCodes(t) => TableEdit::MCodes(replace(&mut self.m_codes, t)),
             TableEdit::Version(t) => TableEdit::Version(Box::new(replace(&mut self.version, *t))),
             TableEdit::Panel(t) => TableEdit::Panel(Box::new(replace(&mut self.panel, *t))),
+            TableEdit::Machine(t) => TableEdit::Machine(Box::new(replace(&mut self.machine, *t))),
         }
     }
 
@@ -236,6 +240,7 @@ impl Project {
                 TableEdit::MCodes(t) => *t == self.m_codes,
                 TableEdit::Version(t) => **t == self.version,
                 TableEdit::Panel(t) => **t == self.panel,
+                TableEdit::Machine(t) => **t == self.machine,
             },
         }
     }

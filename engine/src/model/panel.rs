@@ -95,6 +95,17 @@ impl PanelKind {
         }
     }
 
+    /// Whether the item writes the bit `a` (a knob: a bit of its mask).
+    pub fn drives(&self, a: Address) -> bool {
+        match self {
+            PanelKind::Knob { input, .. } => {
+                input.byte_address() == a.byte_address()
+                    && a.bit.is_some_and(|b| self.knob_mask() >> b & 1 == 1)
+            }
+            _ => self.input() == Some(a),
+        }
+    }
+
     /// The bit that lights the item, if it has a lamp.
     pub fn lamp(&self) -> Option<Address> {
         match self {

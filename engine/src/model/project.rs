@@ -6,6 +6,7 @@ use super::tables::{
     AddressRow, BLOCK_SYMBOLS, DataTables, MCodeRow, MessageTable, Symbol, SymbolTable, VersionInfo,
 };
 use crate::address::Address;
+use crate::devices::MachineModel;
 use crate::profile::{Profile, ProfileId};
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
@@ -46,6 +47,10 @@ pub struct Project {
     /// not written, so a project that never customised it saves as it did before.
     #[serde(default, skip_serializing_if = "Panel::is_empty")]
     pub panel: Panel,
+    /// The machine around the CNC (docs/machine.md); empty means none, and is not written,
+    /// so a project without one saves as before it existed (schema 3).
+    #[serde(default, skip_serializing_if = "MachineModel::is_empty")]
+    pub machine: MachineModel,
 }
 
 impl Default for Project {
@@ -65,6 +70,7 @@ impl Default for Project {
             m_codes: Vec::new(),
             version: VersionInfo::default(),
             panel: Panel::default(),
+            machine: MachineModel::default(),
         }
     }
 }

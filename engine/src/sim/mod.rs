@@ -3,6 +3,7 @@
 //! then run against a [`Machine`](crate::machine::Machine), counting `expect`s. Every line that acts on the machine
 //! becomes a [`MachineCommand`], the same commands the editor sends to a running machine.
 
+mod device;
 mod lex;
 mod run;
 
@@ -34,6 +35,8 @@ pub enum Command {
     ExpectCnc(CncKey, CncValue, String),
     /// `print ADDR[:N]` or `print cnc.KEY`.
     Print(Probe),
+    /// `expect device.NAME VALUE`, by the device's index.
+    ExpectDevice(usize, i64),
 }
 
 /// A script line that cannot be used.
@@ -99,6 +102,9 @@ pub struct Options<'a> {
     pub cnc: bool,
     /// Reads a file a `cnc program-file` line names (relative to the script's folder).
     pub read_file: &'a dyn Fn(&str) -> Result<String, String>,
+    /// The machine model the script runs with (none: `--no-machine`, or no devices): it
+    /// names the `device` lines' devices and refuses `set` of the inputs they drive.
+    pub machine: Option<&'a crate::devices::MachineModel>,
 }
 
 const COMMANDS: &[&str] = &[
@@ -115,6 +121,7 @@ const COMMANDS: &[&str] = &[
     "division",
     "power-cycle",
     "cnc",
+    "device",
 ];
 
 fn target(text: &str, profile: &Profile) -> Result<Target, Msg> {
@@ -168,9 +175,12 @@ fn is_cnc_key(text: &str) -> bool {
         .is_some_and(|p| p.eq_ignore_ascii_case("cnc."))
 }
 
-fn probe(text: &str, profile: &Profile, cnc: bool) -> Result<Probe, Msg> {
+fn probe(text: &str, profile: &Profile, options: &Options<'_>) -> Result<Probe, Msg> {
+    if let Some(p) = device::probe(text, options.machine) {
+        return p;
+    }
     if is_cnc_key(text) {
-        if !cnc {
+        if !options.cnc {
             return Err(msg(
                 format!("`{text}` is a CNC value: run with `sim --cnc`"),
                 format!("`{text}` 是 CNC 的值：请用 `sim --cnc` 运行"),
@@ -316,6 +326,7 @@ impl Script {
             &Options {
                 cnc: false,
                 read_file: &no_files,
+                machine: None,
             },
         )
     }
@@ -364,6 +375,7 @@ fn parse_line(
         "set" => {
             want(2..=2, "set ADDR[:N] VALUE")?;
             let t = memory_target(args[0], profile, "set")?;
+            device::not_driven(&t, "set", options.machine)?;
             let v = integer(args[1])?;
             fits(&t, v)?;
             act(MachineCommand::Write(t, v))
@@ -371,6 +383,7 @@ fn parse_line(
         "setf" => {
             want(2..=2, "setf ADDR VALUE")?;
             let t = memory_target(args[0], profile, "setf")?;
+            device::not_driven(&t, "setf", options.machine)?;
             four_byte(&t, "setf")?;
             act(MachineCommand::WriteReal(t.address, real(args[1])?))
         }
@@ -419,7 +432,7 @@ fn parse_line(
         }
         "expect" => {
             want(2..=2, "expect ADDR[:N] VALUE")?;
-            match probe(args[0], profile, options.cnc)? {
+            match probe(args[0], profile, options)? {
                 Probe::Cnc(k) => Ok(Command::ExpectCnc(
                     k,
                     k.expected(args[1]).map_err(cnc_refusal)?,
@@ -430,6 +443,7 @@ fn parse_line(
                     fits(&t, v)?;
                     Ok(Command::Expect(t, v))
                 }
+                Probe::Device(i) => Ok(Command::ExpectDevice(i, integer(args[1])?)),
             }
         }
         "expectf" => {
@@ -444,11 +458,11 @@ fn parse_line(
         }
         "print" => {
             want(1..=1, "print ADDR[:N]")?;
-            Ok(Command::Print(probe(args[0], profile, options.cnc)?))
+            Ok(Command::Print(probe(args[0], profile, options)?))
         }
         "watch" => {
             want(1..=1, "watch ADDR[:N]")?;
-            act(MachineCommand::Watch(probe(args[0], profile, options.cnc)?))
+            act(MachineCommand::Watch(probe(args[0], profile, options)?))
         }
         "division" => {
             want(1..=1, "division N")?;
@@ -479,6 +493,7 @@ fn parse_line(
                 CncCommand::parse(args, profile.id, options.read_file).map_err(cnc_refusal)?,
             ))
         }
+        "device" => device::line(args, options.machine),
         _ => {
             let prefix: String = lower.chars().take(3).collect();
             let near = COMMANDS.iter().find(|c| c.starts_with(&prefix));
@@ -517,6 +532,7 @@ mod tests {
             text,
             Profile::get(ProfileId::Gsk988ta),
             &Options {
+                machine: None,
                 cnc: true,
                 read_file: &|p| {
                     if p == "part.nc" {

@@ -79,7 +79,7 @@ fn trace_row(m: &Machine, header: &mut bool, out: &mut dyn Write) -> std::io::Re
     if !*header {
         out.write_all(b"tick,ms")?;
         for p in watched {
-            write!(out, ",{}", p.text())?;
+            write!(out, ",{}", m.probe_name(p))?;
         }
         out.write_all(b"\n")?;
         *header = true;
@@ -173,12 +173,17 @@ pub fn run_with(
                     reported_halt = false;
                 }
                 if let Err(e) = machine.apply(c) {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
+                    let who = if matches!(c, MachineCommand::Device(..)) {
+                        "device"
+                    } else {
+                        "cnc"
+                    };
+                    out.output.push(format!("{name}:{line}: {who}: {e}"));
                     out.failed += 1;
                 }
             }
             Command::Print(p) => match machine.read(p) {
-                Ok(v) => out.output.push(format!("{} = {v}", p.text())),
+                Ok(v) => out.output.push(format!("{} = {v}", machine.probe_name(p))),
                 Err(e) => {
                     out.output.push(format!("{name}:{line}: cnc: {e}"));
                     out.failed += 1;
@@ -216,6 +221,23 @@ pub fn run_with(
                     out.failed += 1;
                 }
             },
+            Command::ExpectDevice(i, want) => {
+                let p = Probe::Device(*i);
+                match machine.read(&p) {
+                    Ok(ProbeValue::Int(got)) if got == *want => out.passed += 1,
+                    Ok(got) => {
+                        out.output.push(format!(
+                            "{name}:{line}: expect {} = {want}, got {got}",
+                            machine.probe_name(&p)
+                        ));
+                        out.failed += 1;
+                    }
+                    Err(e) => {
+                        out.output.push(format!("{name}:{line}: device: {e}"));
+                        out.failed += 1;
+                    }
+                }
+            }
             Command::ExpectReal(a, want, tol) => {
                 let got = machine.plc.read_real(*a);
                 let tol = tol.unwrap_or(1e-4);

@@ -443,6 +443,12 @@ impl Vm {
         &self.mem
     }
 
+    /// The memory image to write into between ticks (the machine model's inputs). Forces
+    /// are not applied here: the next tick applies them before its scan, so a force wins.
+    pub fn image_mut(&mut self) -> &mut [u8] {
+        &mut self.mem
+    }
+
     /// Every forced byte: its offset in the image, the mask of forced bits and their values.
     pub fn forces(&self) -> impl Iterator<Item = (u32, u8, u8)> + '_ {
         self.forced_bytes.iter().map(|&o| {

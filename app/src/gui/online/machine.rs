@@ -35,7 +35,12 @@ impl LadderApp {
     /// the machine starts as one ready to run.
     pub(super) fn apply_panel_defaults(&mut self) {
         self.online.panel_bytes.clear();
+        let driven = self.device_inputs();
         for item in self.panel().items {
+            // An input a device drives is the device's: its switch on the panel is only a lamp.
+            if item.kind.input().is_some_and(|a| driven.contains(&a)) {
+                continue;
+            }
             match item.kind {
                 PanelKind::Switch { input } => self.send_command(MachineCommand::Write(
                     target(input),
@@ -54,6 +59,19 @@ impl LadderApp {
         }
     }
 
+    /// The inputs the project's machine model drives.
+    fn device_inputs(&self) -> Vec<Address> {
+        self.doc.as_ref().map_or_else(Vec::new, |d| {
+            d.project()
+                .machine
+                .devices
+                .iter()
+                .flat_map(|dev| dev.kind.inputs())
+                .map(|(_, a)| a)
+                .collect()
+        })
+    }
+
     /// A byte as the defaults being applied left it (the machine has not answered yet).
     fn panel_byte(&self, a: Address) -> i64 {
         self.online
@@ -68,7 +86,22 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else { return };
         let profile = doc.project().profile();
         // Borrowed, not rebuilt: the preset is made only for a project without a panel.
-        let panel = doc.project().operator_panel();
+        let mut panel = doc.project().operator_panel();
+        // Outside the edit mode, a key or switch on an input a device drives shows the
+        // device's answer as a lamp: clicking it would change nothing.
+        let driven = self.device_inputs();
+        if !self.online.panel.editing
+            && panel
+                .items
+                .iter()
+                .any(|i| i.kind.input().is_some_and(|a| driven.contains(&a)))
+        {
+            for item in &mut panel.to_mut().items {
+                if let Some(a) = item.kind.input().filter(|a| driven.contains(a)) {
+                    item.kind = PanelKind::Lamp { lamp: a };
+                }
+            }
+        }
         let lang = self.settings.lang;
         let session = self.online.session.as_ref();
         let memory = |a: Address| -> i64 {

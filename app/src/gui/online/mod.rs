@@ -9,6 +9,7 @@ pub mod alarms;
 pub mod cnc_view;
 pub mod live;
 mod machine;
+pub mod machine_page;
 pub mod panel_view;
 pub mod session;
 pub mod toolpath_raster;
@@ -55,6 +56,8 @@ pub enum OnlineTab {
     Trace,
     /// PLC and CNC alarms.
     Alarms,
+    /// The machine model's devices.
+    Machine,
 }
 
 /// The answer to "why?".
@@ -87,6 +90,8 @@ pub struct OnlineState {
     pub alarms: alarms::AlarmList,
     /// The operator panel widget's state.
     pub panel: panel_view::PanelViewState,
+    /// The Machine page's state.
+    pub machine: machine_page::MachinePageState,
     /// The CNC page's program and MDI texts.
     pub cnc: cnc_view::CncTexts,
     /// The CNC screen's toolpath plot.

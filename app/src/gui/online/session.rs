@@ -4,6 +4,7 @@
 
 use ladder_engine::cnc::SimCnc;
 use ladder_engine::compiler::{Program, compile};
+use ladder_engine::devices::{MachineModel, check};
 use ladder_engine::machine::{Machine, MachineCommand};
 use ladder_engine::model::{Ladder, Project};
 use ladder_engine::recorder::Recorder;
@@ -82,6 +83,8 @@ pub struct Session {
     scrub_image: Vec<u8>,
     /// Whether what runs is what is drawn.
     pub sync: Sync,
+    /// The machine model that runs (docs/machine.md).
+    pub model: MachineModel,
     /// The project change counter last compared.
     pub seen_generation: u64,
     watched: BTreeSet<usize>,
@@ -117,7 +120,11 @@ impl Session {
         vm.load_data_tables(project);
         let size = running.layout.size as usize;
         let cnc = SimCnc::new(project.profile, &project.messages);
-        let machine = Machine::from_parts(vm, Some(cnc));
+        let mut machine = Machine::from_parts(vm, Some(cnc));
+        // `build` compiled the project, and its check refuses a model with errors.
+        machine
+            .load_model(&project.machine)
+            .map_err(|e| StartError::Other(e.to_string()))?;
         let ticks = RECORD_SECONDS * 1000 / ladder_engine::vm::TICK_MS;
         let recorder = Arc::new(Mutex::new(Recorder::new(size, ticks)));
         let rec = Arc::clone(&recorder);
@@ -137,6 +144,7 @@ impl Session {
             scrub: None,
             scrub_image: Vec::new(),
             sync: Sync::Same,
+            model: project.machine.clone(),
             seen_generation: generation,
             watched: BTreeSet::new(),
         })
@@ -198,6 +206,14 @@ impl Session {
             return None;
         }
         self.seen_generation = generation;
+        // An edited machine model takes over at the next tick, its devices' faults kept by
+        // name; one with errors waits until it checks clean (the Machine page says why).
+        if project.machine != self.model
+            && check::errors(&project.machine, project.profile()).is_empty()
+        {
+            self.model = project.machine.clone();
+            self.command(MachineCommand::LoadModel(Box::new(self.model.clone())));
+        }
         let target = self.pending.as_ref().unwrap_or(&self.running);
         if project.ladder == target.ladder {
             if self.pending.is_none() {

@@ -87,6 +87,15 @@ impl LadderApp {
         if s.scrub.is_some() {
             ui.colored_label(theme::CAUTION, t(Msg::ShowingPast));
         }
+        let snap = &s.published.snapshot;
+        if !snap.forces.is_empty() {
+            let bits: u32 = snap.forces.iter().map(|(_, m, _)| m.count_ones()).sum();
+            ui.colored_label(theme::FORCED, format!("{} {bits}", t(Msg::ForcedCount)));
+        }
+        let faults = snap.devices.iter().filter(|d| d.fault.is_some()).count();
+        if faults > 0 {
+            ui.colored_label(theme::ERROR, format!("{faults} {}", t(Msg::DeviceFaults)));
+        }
         match &s.sync {
             _ if s.drawing_runs(doc.project()) => {
                 ui.colored_label(theme::OK, t(Msg::DrawingRuns));
@@ -150,6 +159,7 @@ impl LadderApp {
         ui.horizontal_wrapped(|ui| {
             for (tab, m) in [
                 (OnlineTab::Panel, Msg::TabPanel),
+                (OnlineTab::Machine, Msg::TabMachine),
                 (OnlineTab::Cnc, Msg::TabCnc),
                 (OnlineTab::Watch, Msg::TabWatch),
                 (OnlineTab::Forces, Msg::TabForces),
@@ -160,7 +170,9 @@ impl LadderApp {
             }
         });
         ui.separator();
-        if self.online.session.is_none() && !matches!(self.online.tab, OnlineTab::Watch) {
+        if self.online.session.is_none()
+            && !matches!(self.online.tab, OnlineTab::Watch | OnlineTab::Machine)
+        {
             ui.label(t(Msg::OfflineHint));
         }
         egui::ScrollArea::both()
@@ -173,6 +185,7 @@ impl LadderApp {
                 OnlineTab::Forces => self.forces_ui(ui),
                 OnlineTab::Trace => self.trace_page_ui(ui),
                 OnlineTab::Alarms => self.alarms_ui(ui),
+                OnlineTab::Machine => self.machine_page_ui(ui),
             });
     }
 

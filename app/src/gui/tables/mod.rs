@@ -196,7 +196,7 @@ impl TableState {
             TableEdit::Permissions(_) => View::Permissions,
             TableEdit::MCodes(_) => View::MCodes,
             TableEdit::Version(_) => View::Version,
-            TableEdit::Panel(_) => return None,
+            TableEdit::Panel(_) | TableEdit::Machine(_) => return None,
         })
     }
 

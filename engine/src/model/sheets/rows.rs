@@ -281,6 +281,6 @@ pub fn changed_row(project: &Project, edit: &TableEdit) -> Option<(Sheet, usize)
             first_difference(&project.m_codes, rows).map(|i| at(Sheet::MCodes, i))
         }
         // The version information has no rows; the panel is no sheet.
-        TableEdit::Version(_) | TableEdit::Panel(_) => None,
+        TableEdit::Version(_) | TableEdit::Panel(_) | TableEdit::Machine(_) => None,
     }
 }
