@@ -12,13 +12,11 @@ use crate::vm::TICK_MS;
 use crate::vm::memory::Layout;
 use std::ops::Range;
 
-/// A running device.
+/// A running device: what a tick touches, kept small so that a long list stays in cache
+/// (its name and power-on state live apart, in [`Cold`]).
 #[derive(Clone, Debug)]
 pub struct Rt {
-    pub name: String,
     pub kind: RtKind,
-    /// The power-on state, kept for power-cycle and reset.
-    init: RtKind,
     pub slots: Range<u32>,
     pub states: Range<u32>,
     pub fault: Option<Fault>,
@@ -29,11 +27,16 @@ pub struct Rt {
     pub operations: u32,
 }
 
+/// What a tick does not touch: a device's name and its power-on state.
+#[derive(Clone, Debug)]
+pub struct Cold {
+    pub name: String,
+    pub init: RtKind,
+}
+
 impl Rt {
-    pub fn new(name: String, kind: RtKind, slots: Range<u32>, states: Range<u32>) -> Rt {
+    pub fn new(kind: RtKind, slots: Range<u32>, states: Range<u32>) -> Rt {
         Rt {
-            name,
-            init: kind.clone(),
             kind,
             slots,
             states,
@@ -44,8 +47,8 @@ impl Rt {
         }
     }
 
-    pub fn power_on(&mut self) {
-        self.kind = self.init.clone();
+    pub fn power_on(&mut self, init: &RtKind) {
+        self.kind = init.clone();
         self.operations = 0;
         self.frozen = false;
         self.fault_ops = 0;
@@ -72,9 +75,9 @@ impl Rt {
         }
     }
 
-    pub fn status(&self) -> DeviceStatus {
+    pub fn status(&self, name: &str) -> DeviceStatus {
         DeviceStatus {
-            name: self.name.clone(),
+            name: name.to_string(),
             state: state(&self.kind),
             busy: busy(&self.kind),
             fault: self.fault,
@@ -343,7 +346,9 @@ pub fn resolve(
     }
 }
 
-/// Advances a device one tick; returns the operations it completed.
+/// Advances a device one tick; returns the operations it completed. Inlined into the tick's
+/// loop: a call per device costs more than most devices' work.
+#[inline(always)]
 pub fn step(kind: &mut RtKind, c: &Ctx) -> u32 {
     let dt = c.dt_us;
     match kind {
@@ -534,6 +539,7 @@ fn turret(t: &mut TurretRt, c: &Ctx) -> u32 {
 }
 
 /// Publishes a device's states and the values it means to write.
+#[inline(always)]
 pub fn publish(d: &Rt, states: &mut [bool], values: &mut [bool]) {
     let s = &mut states[d.states.start as usize..d.states.end as usize];
     let mut put = |slot: Option<u32>, v: bool| {

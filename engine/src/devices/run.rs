@@ -4,7 +4,7 @@
 //! values of its slots, faults bend them, and one loop writes them.
 
 use super::expr::{self, Names, Term};
-use super::kinds::{self, Rt};
+use super::kinds::{self, Cold, Rt};
 use super::model::{DeviceKind, MachineModel};
 use super::{DeviceStatus, Fault, ModelError};
 use crate::address::Address;
@@ -85,6 +85,8 @@ impl CncView {
 pub struct Plant {
     model: MachineModel,
     pub(super) devices: Vec<Rt>,
+    /// Each device's name and power-on state, by index.
+    cold: Vec<Cold>,
     /// Every condition's terms, each device holding a range.
     pub(super) terms: Vec<Resolved>,
     /// Every device's states, each device holding a range.
@@ -120,6 +122,7 @@ impl Plant {
         let mut plant = Plant {
             model: model.clone(),
             devices: Vec::new(),
+            cold: Vec::new(),
             terms: Vec::new(),
             states: vec![false; n as usize],
             slots: Vec::new(),
@@ -174,9 +177,11 @@ impl Plant {
             let kind = kinds::resolve(&d.kind, &layout, &mut slot, &exprs);
             let slots = slot_start..plant.slots.len() as u32;
             let states = state_base[i]..state_base[i] + d.kind.states().len() as u32;
-            plant
-                .devices
-                .push(Rt::new(d.name.clone(), kind, slots, states));
+            plant.cold.push(Cold {
+                name: d.name.clone(),
+                init: kind.clone(),
+            });
+            plant.devices.push(Rt::new(kind, slots, states));
         }
         plant.values = vec![false; plant.slots.len()];
         plant.reset_states();
@@ -185,8 +190,8 @@ impl Plant {
 
     /// Every device back to its power-on state (faults stay).
     pub fn power_cycle(&mut self) {
-        for d in &mut self.devices {
-            d.power_on();
+        for (d, c) in self.devices.iter_mut().zip(&self.cold) {
+            d.power_on(&c.init);
         }
         self.reset_states();
     }
@@ -252,14 +257,14 @@ impl Plant {
 
     /// The devices' names, in order.
     pub fn names(&self) -> impl Iterator<Item = &str> {
-        self.devices.iter().map(|d| d.name.as_str())
+        self.cold.iter().map(|c| c.name.as_str())
     }
 
     /// The index of the device named `name` (without case).
     pub fn find(&self, name: &str) -> Option<usize> {
-        self.devices
+        self.cold
             .iter()
-            .position(|d| d.name.eq_ignore_ascii_case(name))
+            .position(|c| c.name.eq_ignore_ascii_case(name))
     }
 
     /// Injects a fault into device `i` (`None` clears it).
@@ -273,8 +278,8 @@ impl Plant {
 
     /// Puts device `i` back to its power-on state (a refilled lubricator, a reset counter).
     pub fn reset(&mut self, i: usize) {
-        if let Some(d) = self.devices.get_mut(i) {
-            d.power_on();
+        if let (Some(d), Some(c)) = (self.devices.get_mut(i), self.cold.get(i)) {
+            d.power_on(&c.init);
             kinds::publish(d, &mut self.states, &mut self.values);
         }
     }
@@ -292,12 +297,17 @@ impl Plant {
     /// Every device's state, for a monitor.
     pub fn status_into(&self, out: &mut Vec<DeviceStatus>) {
         out.clear();
-        out.extend(self.devices.iter().map(|d| d.status()));
+        out.extend(
+            self.devices
+                .iter()
+                .zip(&self.cold)
+                .map(|(d, c)| d.status(&c.name)),
+        );
     }
 
     /// Device `i`'s state.
     pub fn status(&self, i: usize) -> Option<DeviceStatus> {
-        self.devices.get(i).map(|d| d.status())
+        Some(self.devices.get(i)?.status(&self.cold.get(i)?.name))
     }
 
     /// A device's main value, for traces and scripts (docs/machine.md, "Values").
@@ -313,6 +323,14 @@ impl Plant {
 
 /// Writes a device's slots, bent by its fault.
 fn write_inputs(d: &Rt, slots: &[Bit], values: &[bool], mem: &mut [u8], now: u64) {
+    let (start, end) = (d.slots.start as usize, d.slots.end as usize);
+    if d.fault.is_none() {
+        for (slot, &v) in slots[start..end].iter().zip(&values[start..end]) {
+            let b = &mut mem[slot.off as usize];
+            *b = if v { *b | slot.mask } else { *b & !slot.mask };
+        }
+        return;
+    }
     let flicker = match d.fault {
         Some(Fault::Flicker { period_ms }) => {
             let p = u64::from(period_ms.max(TICK_MS as u32));

@@ -271,16 +271,17 @@ impl LadderApp {
         if model.devices.is_empty() {
             ui.label(Msg::MachineEmpty.text(lang));
         }
-        list_ui(ui, lang, &model, &statuses, online, state, &mut events);
+        // The form first, where the eye is after clicking Add or Edit.
         if let Some(draft) = &mut state.draft {
-            ui.separator();
             if let Some(done) = form_ui(ui, lang, profile, &model, draft) {
                 if let Some(m) = done {
                     events.push(Event::Edit(m));
                 }
                 state.draft = None;
             }
+            ui.separator();
         }
+        list_ui(ui, lang, &model, &statuses, online, state, &mut events);
         start_ui(ui, lang, &model, state, &mut events);
         for e in events {
             match e {
@@ -339,40 +340,60 @@ fn list_ui(
     state: &mut MachinePageState,
     events: &mut Vec<Event>,
 ) {
+    // Two columns, so that the state and the buttons stay in view in a narrow panel: the
+    // device (name, its kind and the inputs it writes, its live state), its buttons.
     egui::Grid::new("machine-devices")
         .striped(true)
-        .num_columns(5)
+        .num_columns(2)
         .show(ui, |ui| {
-            for m in [
-                Msg::MachineName,
-                Msg::MachineKind,
-                Msg::MachineInputs,
-                Msg::MachineState,
-            ] {
-                ui.strong(m.text(lang));
-            }
-            ui.end_row();
             for (i, d) in model.devices.iter().enumerate() {
-                ui.monospace(&d.name);
-                ui.label(kind_name(&d.kind, lang));
-                let inputs: Vec<String> =
-                    d.kind.inputs().iter().map(|(_, a)| a.to_string()).collect();
-                ui.monospace(inputs.join(" "));
-                match statuses.iter().find(|s| s.name == d.name) {
-                    Some(s) => {
-                        let color = if s.fault.is_some() {
-                            theme::ERROR
-                        } else if s.busy {
-                            theme::CAUTION
-                        } else {
-                            ui.visuals().text_color()
-                        };
-                        ui.colored_label(color, state_text(s, lang));
-                    }
-                    None => {
-                        ui.weak("—");
-                    }
-                }
+                ui.vertical(|ui| {
+                    ui.horizontal(|ui| {
+                        ui.add(
+                            egui::Label::new(egui::RichText::new(&d.name).monospace().strong())
+                                .extend(),
+                        );
+                        match statuses.iter().find(|s| s.name == d.name) {
+                            Some(s) => {
+                                let color = if s.fault.is_some() {
+                                    theme::ERROR
+                                } else if s.busy {
+                                    theme::CAUTION
+                                } else {
+                                    ui.visuals().text_color()
+                                };
+                                ui.add(
+                                    egui::Label::new(
+                                        egui::RichText::new(state_text(s, lang)).color(color),
+                                    )
+                                    .extend(),
+                                );
+                                if let Some(p) = progress(s) {
+                                    ui.add(
+                                        egui::ProgressBar::new(p)
+                                            .desired_width(60.0)
+                                            .desired_height(6.0),
+                                    );
+                                }
+                            }
+                            None => {
+                                ui.weak("—");
+                            }
+                        }
+                    });
+                    ui.add(
+                        egui::Label::new(
+                            egui::RichText::new(format!(
+                                "{} → {}",
+                                kind_name(&d.kind, lang),
+                                inputs_text(&d.kind)
+                            ))
+                            .small()
+                            .weak(),
+                        )
+                        .extend(),
+                    );
+                });
                 ui.horizontal(|ui| {
                     if ui.small_button(Msg::MachineEdit.text(lang)).clicked() {
                         state.draft = Some(Draft::new(Some(i), d));
@@ -397,6 +418,38 @@ fn list_ui(
                 ui.end_row();
             }
         });
+}
+
+/// The inputs a device writes, a run of consecutive bits as `first…last`.
+fn inputs_text(kind: &DeviceKind) -> String {
+    let inputs: Vec<_> = kind.inputs().into_iter().map(|(_, a)| a).collect();
+    let mut parts = Vec::new();
+    let mut k = 0;
+    while k < inputs.len() {
+        let mut end = k;
+        while end + 1 < inputs.len() && inputs[end].offset_bits(1) == Some(inputs[end + 1]) {
+            end += 1;
+        }
+        parts.push(if end > k + 1 {
+            format!("{}…{}", inputs[k], inputs[end])
+        } else if end == k + 1 {
+            format!("{} {}", inputs[k], inputs[end])
+        } else {
+            inputs[k].to_string()
+        });
+        k = end + 1;
+    }
+    parts.join(" ")
+}
+
+/// How far a moving device has got, 0…1, for a bar.
+fn progress(s: &DeviceStatus) -> Option<f32> {
+    match s.state {
+        DeviceState::Actuator { position, .. } => Some(position),
+        DeviceState::Turret { angle, moving, .. } if moving != 0 => Some(angle.fract()),
+        DeviceState::Spindle { rpm, target } if target > 0 => Some(rpm / target as f32),
+        _ => None,
+    }
 }
 
 /// The device form; `Some(Some(model))` applies, `Some(None)` cancels.
