@@ -204,3 +204,95 @@ fn scripts_name_devices_and_may_not_set_what_a_device_drives() {
     let e = parse("device ready ok", None).unwrap_err();
     assert!(e.contains("--no-machine"), "{e}");
 }
+
+#[test]
+fn a_force_wins_over_a_device_and_a_new_model_keeps_the_faults_by_name() {
+    use ladder_engine::devices::Fault;
+    use ladder_engine::machine::Machine;
+    let mut p = ladder_engine::il::import("LEVEL1\nNETWORK\nLD X0001.5\nOUT Y0001.0\n")
+        .project
+        .expect("valid IL");
+    p.machine.devices = vec![follower("ready", "X0001.5", "1")];
+    let mut m = Machine::new(&p, false).expect("it compiles");
+    let y = a("Y0001.0");
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 1, "the device answers in the first tick");
+    m.apply(&MachineCommand::Force(a("X0001.5"), 0)).unwrap();
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 0, "the force wins");
+    m.apply(&MachineCommand::Unforce(a("X0001.5"))).unwrap();
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 1);
+    // A fault, then the model edited online: the device keeps its fault.
+    let stuck = Fault::Stuck {
+        value: false,
+        input: None,
+    };
+    m.apply(&MachineCommand::Device(0, DeviceAction::Fault(stuck)))
+        .unwrap();
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 0);
+    let mut edited = p.machine.clone();
+    edited.devices.insert(0, follower("other", "X0002.0", "0"));
+    m.apply(&MachineCommand::LoadModel(Box::new(edited)))
+        .unwrap();
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 0, "still stuck after the edit");
+    assert_eq!(m.snapshot().devices[1].fault, Some(stuck));
+    m.apply(&MachineCommand::Device(1, DeviceAction::Ok))
+        .unwrap();
+    m.tick();
+    assert_eq!(m.plc.read(y, 1), 1);
+    // Without the model the input keeps what is written.
+    let mut bare = Machine::new(&p, false).unwrap().without_devices();
+    bare.tick();
+    assert_eq!(bare.plc.read(y, 1), 0);
+    assert!(
+        bare.apply(&MachineCommand::Device(0, DeviceAction::Ok))
+            .unwrap_err()
+            .contains("--no-machine")
+    );
+}
+
+#[test]
+fn every_field_of_every_kind_reads_back_and_a_wrong_text_is_refused_in_both_languages() {
+    use ladder_engine::devices::fields;
+    let profile = Profile::get(ProfileId::Gsk988ta);
+    for kind in DeviceKind::templates() {
+        let fs = fields::fields(&kind);
+        assert!(!fs.is_empty());
+        let mut copy = kind.clone();
+        for f in &fs {
+            fields::set(&mut copy, f.name, &f.text, profile)
+                .unwrap_or_else(|e| panic!("{} {}: {}", kind.name(), f.name, e.en));
+            let (zh, en) = fields::label(f.name);
+            assert!(!zh.is_empty() && !en.is_empty(), "{} has a label", f.name);
+        }
+        assert_eq!(copy, kind, "{}", kind.name());
+    }
+    let mut chuck = DeviceKind::templates().remove(1);
+    let e = fields::set(&mut chuck, "at_advanced", "Y0001.6", profile).unwrap_err();
+    assert!(
+        e.en.contains("not an input") && e.zh.contains("不是输入"),
+        "{e:?}"
+    );
+    let e = fields::set(&mut chuck, "travel_ms", "0", profile).unwrap_err();
+    assert!(e.en.contains("1…600000"), "{e:?}");
+    fields::set(&mut chuck, "retract", "", profile).unwrap();
+    fields::set(&mut chuck, "moving", "x2.0", profile).unwrap();
+    match &chuck {
+        DeviceKind::Actuator(a) => {
+            assert_eq!(a.retract, None);
+            assert_eq!(a.moving, Some(Address::parse("X0002.0").unwrap()));
+        }
+        _ => unreachable!(),
+    }
+    // The turret's lock stage appears with its unlock output and goes with it.
+    let mut turret = DeviceKind::templates().remove(2);
+    fields::set(&mut turret, "lock.unlock", "Y0001.0", profile).unwrap();
+    assert!(fields::fields(&turret).iter().any(|f| f.name == "lock.ms"));
+    fields::set(&mut turret, "lock.unlock", "", profile).unwrap();
+    assert!(!fields::fields(&turret).iter().any(|f| f.name == "lock.ms"));
+    let e = fields::set(&mut turret, "code.encoding", "Octal", profile).unwrap_err();
+    assert!(e.en.contains("OneHot"), "{e:?}");
+}
