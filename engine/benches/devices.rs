@@ -5,8 +5,8 @@
 //! of one tick of 1 000 devices of eight kinds on a bare memory image (target ≤ 20 µs).
 
 use ladder_engine::address::{Address, Area};
+use ladder_engine::devices::CncView;
 use ladder_engine::devices::model::*;
-use ladder_engine::devices::run::CncView;
 use ladder_engine::devices::{Device, DeviceKind, MachineModel, Plant};
 use ladder_engine::machine::Machine;
 use ladder_engine::model::Project;

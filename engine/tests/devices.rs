@@ -2,8 +2,8 @@
 //! the tick, the faults, and that a device writes nothing but the inputs it is bound to.
 
 use ladder_engine::address::Address;
+use ladder_engine::devices::CncView;
 use ladder_engine::devices::model::*;
-use ladder_engine::devices::run::CncView;
 use ladder_engine::devices::{Device, DeviceKind, Fault, MachineModel, ModelError, Plant};
 use ladder_engine::model::Project;
 use ladder_engine::vm::Vm;

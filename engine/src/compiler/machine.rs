@@ -3,18 +3,19 @@
 //! model's own ([`crate::devices::check`]); the warnings need the program: a device that
 //! reads an output nothing writes (W010) and an input the operator panel also drives (W011).
 
+use super::Program;
 use super::diag::{Code, Origin, Sink};
 use crate::address::{Address, Area};
+use crate::catalog::Access;
 use crate::devices::{DeviceKind, ModelError, check};
 use crate::model::{PanelKind, Project};
-use crate::xref::{self, Use};
 use std::collections::HashSet;
 
 /// The "block" number of the machine model, before the tables.
 pub const MACHINE: usize = usize::MAX - 7;
 
-/// Checks a project's machine model.
-pub fn check_machine(project: &Project, sink: &mut Sink) {
+/// Checks a project's machine model against its compiled program (symbols resolved).
+pub fn check_machine(project: &Project, program: &Program, sink: &mut Sink) {
     let model = &project.machine;
     if model.devices.is_empty() {
         return;
@@ -32,7 +33,7 @@ pub fn check_machine(project: &Project, sink: &mut Sink) {
         };
         sink.report(Origin::None, code, e.to_string(), e.zh());
     }
-    let written = written(project);
+    let written = written(project, program);
     for (i, d) in model.devices.iter().enumerate() {
         sink.at(MACHINE, "MACHINE", i);
         for (field, a) in reads(&d.kind) {
@@ -72,13 +73,23 @@ fn reads(kind: &DeviceKind) -> Vec<(&'static str, Address)> {
 
 /// Every bit or byte something writes: the program (coils and box outputs), the devices,
 /// the operator panel, the CNC (F) and the data tables (K, D, DT, DC are set there).
-fn written(project: &Project) -> HashSet<Address> {
-    let mut w: HashSet<Address> = xref::build(project)
-        .refs
+fn written(project: &Project, program: &Program) -> HashSet<Address> {
+    let mut w = HashSet::new();
+    for instr in program
+        .blocks
         .iter()
-        .filter(|r| matches!(r.usage, Use::Write | Use::ReadWrite))
-        .map(|r| r.address)
-        .collect();
+        .flat_map(|b| &b.networks)
+        .flat_map(|n| &n.instrs)
+    {
+        let spec = instr.op.spec();
+        for (i, operand) in instr.operands.iter().enumerate() {
+            if let (Some(o), Some(a)) = (spec.operand(i), operand.address())
+                && !matches!(o.access, Access::Read)
+            {
+                w.insert(a);
+            }
+        }
+    }
     for d in &project.machine.devices {
         w.extend(d.kind.inputs().into_iter().map(|(_, a)| a));
     }

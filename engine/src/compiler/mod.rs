@@ -152,7 +152,7 @@ pub fn compile(project: &Project) -> Compiled {
     let mut program = ladder_program(project, &mut sink);
     let steps = check::check_program(&mut program, project, &mut sink);
     tables::check_tables(project, &mut sink);
-    machine::check_machine(project, &mut sink);
+    machine::check_machine(project, &program, &mut sink);
     finish(program, sink, steps)
 }
 

@@ -2,7 +2,7 @@
 //! parameter, a condition that does not read, two devices writing one input. `check`
 //! reports each as a diagnostic (M001–M005); a plant is built only from a model without them.
 
-use super::ModelError;
+use super::error::ModelError;
 use super::model::{DeviceKind, MachineModel};
 use crate::address::{Address, Area};
 use crate::cnc::AXES;

@@ -303,11 +303,11 @@ impl Parser<'_> {
 
 /// Evaluates postfix terms; `bit` reads an address term, `state` a device state.
 pub fn eval(
-    terms: &[super::run::Resolved],
+    terms: &[super::resolved::Resolved],
     bit: impl Fn(u32, u8) -> bool,
     state: impl Fn(u32) -> bool,
 ) -> bool {
-    use super::run::Resolved;
+    use super::resolved::Resolved;
     // A bit stack: bit 0 is the top.
     let mut stack: u64 = 0;
     for t in terms {

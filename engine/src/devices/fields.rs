@@ -250,7 +250,7 @@ pub fn set(
                 states: true,
             };
             match super::expr::parse(text, profile, &names) {
-                Ok(_) | Err(super::ExprError::UnknownDevice(_)) => *t = text.to_string(),
+                Ok(_) | Err(super::expr::ExprError::UnknownDevice(_)) => *t = text.to_string(),
                 Err(e) => return Err(err(e.to_string(), e.zh())),
             }
         }

@@ -4,8 +4,8 @@
 
 use super::expr;
 use super::model::{DeviceKind, Encoding};
-use super::run::{Bit, CncView, Resolved};
-use super::{DeviceState, DeviceStatus, Fault};
+use super::resolved::{Bit, CncView, Resolved};
+use super::status::{DeviceState, DeviceStatus, Fault};
 use crate::address::Address;
 use crate::cnc::AXES;
 use crate::vm::TICK_MS;
@@ -73,6 +73,19 @@ impl Rt {
                 self.frozen = true;
             }
         }
+    }
+
+    /// Writes the status into `s`, reusing its name's buffer.
+    pub fn status_into(&self, name: &str, s: &mut DeviceStatus) {
+        if s.name != name {
+            s.name.clear();
+            s.name.push_str(name);
+        }
+        s.state = state(&self.kind);
+        s.busy = busy(&self.kind);
+        s.fault = self.fault;
+        s.failed = self.frozen;
+        s.operations = self.operations;
     }
 
     pub fn status(&self, name: &str) -> DeviceStatus {

@@ -3,82 +3,17 @@
 //! no allocation. A device writes only the input bits it is bound to: each step computes the
 //! values of its slots, faults bend them, and one loop writes them.
 
+use super::error::ModelError;
 use super::expr::{self, Names, Term};
 use super::kinds::{self, Cold, Rt};
 use super::model::{DeviceKind, MachineModel};
-use super::{DeviceStatus, Fault, ModelError};
+use super::resolved::{Bit, CncView, Resolved};
+use super::status::{DeviceStatus, Fault};
 use crate::address::Address;
 use crate::cnc::{AXES, SimCnc};
 use crate::profile::Profile;
 use crate::vm::TICK_MS;
 use crate::vm::memory::Layout;
-
-/// A postfix term with its address resolved.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Resolved {
-    /// A bit: byte offset and mask.
-    Bit(u32, u8),
-    /// A device state, by its index in the plant's state list.
-    State(u32),
-    /// 0 or 1.
-    Const(bool),
-    /// Negates the top.
-    Not,
-    /// Ands the top two.
-    And,
-    /// Ors the top two.
-    Or,
-}
-
-/// A bit of memory: byte offset and mask.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Bit {
-    /// Byte offset in the image.
-    pub off: u32,
-    /// The bit's mask.
-    pub mask: u8,
-}
-
-impl Bit {
-    fn of(layout: &Layout, a: Address) -> Bit {
-        Bit {
-            off: layout.loc(a, false).off,
-            mask: 1 << a.bit.unwrap_or(0),
-        }
-    }
-
-    /// Reads the bit.
-    #[inline]
-    pub fn get(self, mem: &[u8]) -> bool {
-        mem[self.off as usize] & self.mask != 0
-    }
-}
-
-/// What the devices see of the CNC at a tick.
-#[derive(Clone, Copy, Debug, Default)]
-pub struct CncView {
-    /// Machine position of each axis, increments (0.001 mm).
-    pub m: [i64; AXES],
-    /// Reference point established.
-    pub zrf: [bool; AXES],
-    /// The spindle speed output.
-    pub s_out: u32,
-}
-
-impl CncView {
-    /// What a CNC shows.
-    pub fn of(cnc: &SimCnc) -> CncView {
-        let mut v = CncView {
-            s_out: cnc.spindle_output(),
-            ..CncView::default()
-        };
-        for (k, a) in cnc.axes().iter().enumerate() {
-            v.m[k] = a.m;
-            v.zrf[k] = a.zrf;
-        }
-        v
-    }
-}
 
 /// The machine model, ready to run.
 #[derive(Clone, Debug)]
@@ -296,13 +231,15 @@ impl Plant {
 
     /// Every device's state, for a monitor.
     pub fn status_into(&self, out: &mut Vec<DeviceStatus>) {
-        out.clear();
-        out.extend(
-            self.devices
-                .iter()
-                .zip(&self.cold)
-                .map(|(d, c)| d.status(&c.name)),
-        );
+        // Updated in place: the runner copies this out after every batch of ticks, and a
+        // name is cloned only when it changed.
+        out.truncate(self.devices.len());
+        for (k, (d, c)) in self.devices.iter().zip(&self.cold).enumerate() {
+            match out.get_mut(k) {
+                Some(s) => d.status_into(&c.name, s),
+                None => out.push(d.status(&c.name)),
+            }
+        }
     }
 
     /// Device `i`'s state.

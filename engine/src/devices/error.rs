@@ -1,0 +1,197 @@
+//! Why a machine model cannot run, in both languages (`check` codes M001–M005).
+
+use super::expr::ExprError;
+use crate::address::{Address, AddressError};
+use std::fmt;
+
+/// Why a machine model cannot run (`check` codes M001–M005).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ModelError {
+    /// M001: not a name.
+    Name(String),
+    /// M001: a name used twice.
+    NameTwice {
+        /// The name.
+        name: String,
+        /// The first device with it.
+        first: usize,
+    },
+    /// M002: an address that does not read or is out of range.
+    Address {
+        /// The device.
+        device: String,
+        /// The field.
+        field: &'static str,
+        /// Why.
+        error: AddressError,
+    },
+    /// M002: an input binding outside X.
+    NotInput {
+        /// The device.
+        device: String,
+        /// The field.
+        field: &'static str,
+        /// The address.
+        address: Address,
+    },
+    /// M002: a byte address where a bit is needed.
+    NotBit {
+        /// The device.
+        device: String,
+        /// The field.
+        field: &'static str,
+        /// The address.
+        address: Address,
+    },
+    /// M003: an impossible parameter.
+    Parameter {
+        /// The device.
+        device: String,
+        /// The field.
+        field: &'static str,
+        /// Its allowed values.
+        limit: &'static str,
+    },
+    /// M004: a condition that does not read.
+    Expression {
+        /// The device.
+        device: String,
+        /// The field.
+        field: &'static str,
+        /// Why.
+        error: ExprError,
+    },
+    /// M005: two devices write one input.
+    TwoWriters {
+        /// The later device.
+        device: String,
+        /// The input.
+        address: Address,
+        /// The device that writes it first.
+        other: String,
+    },
+}
+
+impl ModelError {
+    /// The diagnostic code.
+    pub fn code(&self) -> &'static str {
+        match self {
+            ModelError::Name(_) | ModelError::NameTwice { .. } => "M001",
+            ModelError::Address { .. }
+            | ModelError::NotInput { .. }
+            | ModelError::NotBit { .. } => "M002",
+            ModelError::Parameter { .. } => "M003",
+            ModelError::Expression { .. } => "M004",
+            ModelError::TwoWriters { .. } => "M005",
+        }
+    }
+
+    /// The message in Chinese.
+    pub fn zh(&self) -> String {
+        match self {
+            ModelError::Name(n) => format!(
+                "设备名 `{n}` 无效：请用字母开头、由字母数字和 _ 组成、不像地址的名称（最多 24 个字符）"
+            ),
+            ModelError::NameTwice { name, first } => {
+                format!(
+                    "设备名 `{name}` 已被设备 {} 使用：请另起一个名称",
+                    first + 1
+                )
+            }
+            ModelError::Address {
+                device,
+                field,
+                error,
+            } => format!("设备 `{device}` 的 {field}：{}", error.zh()),
+            ModelError::NotInput {
+                device,
+                field,
+                address,
+            } => format!(
+                "设备 `{device}` 的 {field}：{address} 不是输入；设备只写 X 位（PLC 的输入）"
+            ),
+            ModelError::NotBit {
+                device,
+                field,
+                address,
+            } => format!(
+                "设备 `{device}` 的 {field}：{address} 是字节，应写位地址（例如 {address}.0）"
+            ),
+            ModelError::Parameter {
+                device,
+                field,
+                limit,
+            } => format!("设备 `{device}` 的 {field} 不可能：允许 {limit}"),
+            ModelError::Expression {
+                device,
+                field,
+                error,
+            } => format!("设备 `{device}` 的 {field}：{}", error.zh()),
+            ModelError::TwoWriters {
+                device,
+                address,
+                other,
+            } => format!(
+                "设备 `{device}` 和设备 `{other}` 都写 {address}：一个输入只能由一个设备驱动，请删去其中一个绑定"
+            ),
+        }
+    }
+}
+
+impl fmt::Display for ModelError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ModelError::Name(n) => write!(
+                f,
+                "device name `{n}` is not valid: use letters, digits and _, starting with a letter, not an address, at most 24 characters"
+            ),
+            ModelError::NameTwice { name, first } => write!(
+                f,
+                "device name `{name}` is taken by device {}: give it another name",
+                first + 1
+            ),
+            ModelError::Address {
+                device,
+                field,
+                error,
+            } => write!(f, "device `{device}`, {field}: {error}"),
+            ModelError::NotInput {
+                device,
+                field,
+                address,
+            } => write!(
+                f,
+                "device `{device}`, {field}: {address} is not an input; a device writes X bits (the PLC's inputs)"
+            ),
+            ModelError::NotBit {
+                device,
+                field,
+                address,
+            } => write!(
+                f,
+                "device `{device}`, {field}: {address} is a byte; write a bit address such as {address}.0"
+            ),
+            ModelError::Parameter {
+                device,
+                field,
+                limit,
+            } => write!(
+                f,
+                "device `{device}`, {field} is impossible: allowed {limit}"
+            ),
+            ModelError::Expression {
+                device,
+                field,
+                error,
+            } => write!(f, "device `{device}`, {field}: {error}"),
+            ModelError::TwoWriters {
+                device,
+                address,
+                other,
+            } => write!(
+                f,
+                "devices `{other}` and `{device}` both write {address}: one input is driven by one device; remove one of the bindings"
+            ),
+        }
+    }
+}
