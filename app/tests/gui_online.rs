@@ -621,7 +621,7 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     ticks(&mut h, 130);
     assert_eq!(value(&h, "X0011.0"), 0);
     assert_eq!(value(&h, "A0000.0"), 1);
-    h.get_by_label_contains("1 device faults");
+    h.get_by_label("Device faults: 1");
     h.state_mut().online.tab = OnlineTab::Alarms;
     h.run();
     h.get_by_label("Clamp timeout");

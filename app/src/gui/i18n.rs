@@ -121,8 +121,8 @@ messages! {
     MachineOptional => "（可不填）", "(optional)";
     MachineApply => "应用", "Apply";
     MachineStart => "上电时各轴位置（mm，距参考点）：", "Axes at power-on (mm from the reference point):";
-    DeviceFaults => "设备故障", "device faults";
-    ForcedCount => "强制", "forced";
+    DeviceFaults => "设备故障", "Device faults";
+    ForcedCount => "强制位", "Forced bits";
     OfflineHint => "脱机：Ctrl+F9 运行或 F8 单步后显示在线状态", "Offline: Ctrl+F9 (run) or F8 (single tick) shows the live state";
     NoForces => "没有强制", "Nothing is forced";
     Release => "解除", "Release";

@@ -90,11 +90,11 @@ impl LadderApp {
         let snap = &s.published.snapshot;
         if !snap.forces.is_empty() {
             let bits: u32 = snap.forces.iter().map(|(_, m, _)| m.count_ones()).sum();
-            ui.colored_label(theme::FORCED, format!("{} {bits}", t(Msg::ForcedCount)));
+            ui.colored_label(theme::FORCED, format!("{}: {bits}", t(Msg::ForcedCount)));
         }
         let faults = snap.devices.iter().filter(|d| d.fault.is_some()).count();
         if faults > 0 {
-            ui.colored_label(theme::ERROR, format!("{faults} {}", t(Msg::DeviceFaults)));
+            ui.colored_label(theme::ERROR, format!("{}: {faults}", t(Msg::DeviceFaults)));
         }
         match &s.sync {
             _ if s.drawing_runs(doc.project()) => {
