@@ -202,6 +202,16 @@ fn thousand_devices() {
 }
 
 fn main() {
-    sample_share();
-    thousand_devices();
+    // `-- sample` or `-- thousand` runs one part (for `valgrind --tool=callgrind`).
+    let only: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with('-'))
+        .collect();
+    let wants = |name: &str| only.is_empty() || only.iter().any(|o| o == name);
+    if wants("sample") {
+        sample_share();
+    }
+    if wants("thousand") {
+        thousand_devices();
+    }
 }
