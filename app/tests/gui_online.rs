@@ -582,6 +582,13 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     let machine = h.state().doc.as_ref().unwrap().project().machine.clone();
     assert_eq!(machine.devices.len(), 1, "{machine:?}");
     assert_eq!(machine.devices[0].name, "actuator");
+    // One undoable change.
+    h.state_mut().ask(Command::Undo);
+    h.run();
+    assert!(h.state().doc.as_ref().unwrap().project().machine.is_empty());
+    h.state_mut().ask(Command::Redo);
+    h.run();
+    assert_eq!(h.state().doc.as_ref().unwrap().project().machine, machine);
     // Run: the cylinder travels 400 ms, then its switch closes and lights the contact.
     command(&mut h, Command::StepTick);
     ticks(&mut h, 20);
