@@ -104,7 +104,8 @@ pub enum MachineCommand {
     Cnc(CncCommand),
     /// Something done to a device of the machine model, by its index.
     Device(usize, DeviceAction),
-    /// The machine model replaced (edited online): devices keep their faults by name.
+    /// The machine model replaced (edited online): unchanged devices keep their state, every
+    /// device its fault, by name.
     LoadModel(Box<MachineModel>),
 }
 
@@ -183,7 +184,9 @@ impl Machine {
         self.plant.as_ref()
     }
 
-    /// Replaces the machine model, keeping each device's fault by name.
+    /// Replaces the machine model (an online edit): the axes stay where they are, and each
+    /// device keeps its state when its definition did not change, its fault in any case
+    /// ([`Plant::take_over`]).
     pub fn load_model(&mut self, model: &MachineModel) -> Result<(), ModelError> {
         if model.devices.is_empty() {
             self.plant = None;
@@ -191,11 +194,7 @@ impl Machine {
         }
         let mut plant = Plant::new(model, self.plc.profile())?;
         if let Some(old) = &self.plant {
-            for (i, name) in old.names().enumerate() {
-                if let (Some(j), Some(s)) = (plant.find(name), old.status(i)) {
-                    plant.set_fault(j, s.fault);
-                }
-            }
+            plant.take_over(old);
         }
         self.plant = Some(plant);
         Ok(())

@@ -454,7 +454,7 @@ fn faults_bend_what_a_device_writes() {
         0,
         Some(Fault::Stuck {
             value: false,
-            input: Some(0),
+            input: Some(a("X0001.6")),
         }),
     );
     b.set("Y0000.6", true);
@@ -623,4 +623,104 @@ proptest! {
             }
         }
     }
+}
+
+#[test]
+fn a_turret_made_fast_never_steps_over_a_station_unseen() {
+    // A 2 % window is 8 ms, one tick; ten times faster the turret moves 80 ms a tick.
+    let mut t = turret(Encoding::Binary, 3, false);
+    t.window_pct = 2;
+    let mut b = Bench::new(vec![("t", DeviceKind::Turret(t))]);
+    b.plant.set_fault(0, Some(Fault::Slow { factor: 0.1 }));
+    b.set("Y0000.4", true);
+    let mut seen = std::collections::BTreeSet::new();
+    for _ in 0..100 {
+        b.tick();
+        seen.insert(b.byte("X0000") & 7);
+    }
+    assert_eq!(
+        seen.into_iter().collect::<Vec<_>>(),
+        [0, 1, 2, 3, 4],
+        "every station shows"
+    );
+}
+
+#[test]
+fn a_model_edited_while_running_keeps_the_state_of_the_devices_it_did_not_change() {
+    let model = |travel_ms| MachineModel {
+        devices: vec![
+            (
+                "turret",
+                DeviceKind::Turret(turret(Encoding::OneHot, 4, false)),
+            ),
+            ("chuck", cylinder(Some("Y0000.7"), travel_ms)),
+        ]
+        .into_iter()
+        .map(|(n, kind)| Device {
+            name: n.into(),
+            kind,
+        })
+        .collect(),
+        start_mm: vec![-7.0],
+    };
+    let mut b = Bench::new(vec![]);
+    b.plant = Plant::new(&model(400), profile()).unwrap();
+    b.set("Y0000.4", true);
+    b.set("Y0000.6", true);
+    b.until("X0000.2", true, 200);
+    b.set("Y0000.4", false);
+    b.view.m[0] = 3000;
+    b.run(60);
+    assert_eq!(b.plant.value(0), Some(3));
+    assert_eq!(b.plant.value(1), Some(100));
+    b.plant.set_fault(1, Some(Fault::Slow { factor: 2.0 }));
+    // The chuck's travel time edited; the turret untouched.
+    let mut edited = Plant::new(&model(800), profile()).unwrap();
+    edited.take_over(&b.plant);
+    b.plant = edited;
+    assert_eq!(b.plant.value(1), Some(0), "the edited chuck starts afresh");
+    b.tick();
+    assert_eq!(b.plant.value(0), Some(3), "the turret stays at station 3");
+    assert_eq!(
+        b.plant.status(1).unwrap().fault,
+        Some(Fault::Slow { factor: 2.0 })
+    );
+    assert_eq!(b.plant.axis_mm(0), -4.0, "the axis stays where it is");
+}
+
+#[test]
+fn a_condition_too_deep_for_the_evaluator_is_refused_and_parentheses_say_where() {
+    let parse = |text: &str| {
+        ladder_engine::devices::expr::parse(
+            text,
+            profile(),
+            &ladder_engine::devices::expr::Names {
+                devices: &[],
+                states: true,
+            },
+        )
+    };
+    let mut deep = String::new();
+    for _ in 0..40 {
+        deep.push_str("Y0.0 | Y0.1 & (");
+    }
+    deep.push_str("Y0.2");
+    deep.push_str(&")".repeat(40));
+    let e = parse(&deep).unwrap_err();
+    assert!(e.to_string().contains("too deep"), "{e}");
+    let e = parse("(Y0.0 Y0.1)").unwrap_err();
+    assert!(e.to_string().contains("`Y0.1` at character 7"), "{e}");
+    assert!(
+        parse("(Y0.0")
+            .unwrap_err()
+            .to_string()
+            .contains("not closed")
+    );
+    // NOT binds tightest, then AND, then OR.
+    let t = parse("!Y0.0 | Y0.1 & Y0.2").unwrap();
+    use ladder_engine::devices::expr::Term::*;
+    assert!(matches!(
+        t.as_slice(),
+        [Bit(_), Not, Bit(_), Bit(_), And, Or]
+    ));
 }

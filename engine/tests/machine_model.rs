@@ -194,7 +194,7 @@ fn scripts_name_devices_and_may_not_set_what_a_device_drives() {
             "device ready fault stuck 1 X0001.4",
             "does not write X0001.4",
         ),
-        ("device ready fault slow 0", "above 0"),
+        ("device ready fault slow 0", "0.1…1000"),
         ("device ready fault melt", "usage: device NAME"),
         ("device ready", "usage: device NAME"),
     ] {
@@ -295,4 +295,27 @@ fn every_field_of_every_kind_reads_back_and_a_wrong_text_is_refused_in_both_lang
     assert!(!fields::fields(&turret).iter().any(|f| f.name == "lock.ms"));
     let e = fields::set(&mut turret, "code.encoding", "Octal", profile).unwrap_err();
     assert!(e.en.contains("OneHot"), "{e:?}");
+}
+
+#[test]
+fn fault_lines_keep_their_bounds_and_a_device_may_read_the_cnc_s_signals() {
+    let p = with(vec![follower("ready", "X0001.5", "F0000.7 & !K0000.1")]);
+    let m = Some(&p.machine);
+    for (line, want) in [
+        ("device ready fault slow 0.01", "0.1…1000"),
+        ("device ready fault flicker 8", "at least 16 ms"),
+        ("device ready fault stuck 2", "`2` is not 0 or 1"),
+    ] {
+        let e = parse(line, m).unwrap_err();
+        assert!(e.contains(want), "{line}: {e}");
+    }
+    assert!(
+        parse(
+            "device ready fault slow 0.5\ndevice ready fault flicker 16",
+            m
+        )
+        .is_ok()
+    );
+    // F is the CNC's, K the data tables': no W010 for them.
+    assert!(codes(&p).is_empty(), "{:?}", codes(&p));
 }

@@ -132,6 +132,7 @@ impl LadderApp {
         self.function_dialog = None;
         self.replace = None;
         self.tables = Default::default();
+        self.online.machine = Default::default();
         // Nothing of the old project stays pointed at: cursor, selection, drag, tabs, and
         // output lines whose targets were its cells. (The clipboard stays: copying between
         // projects is how networks move from one machine's ladder to another's.)

@@ -120,6 +120,8 @@ messages! {
     MachineDevice => "设备", "Device";
     MachineOptional => "（可不填）", "(optional)";
     MachineApply => "应用", "Apply";
+    MachineStartBad => "上电位置应为 −100000…100000 mm 的数", "A power-on position is a number of mm, −100000…100000";
+    MachineChanged => "设备已被修改（撤销或其他编辑）：请关闭表单后重新编辑", "The device changed under the form (an undo or another edit): cancel and edit it again";
     MachineStart => "上电时各轴位置（mm，距参考点）：", "Axes at power-on (mm from the reference point):";
     DeviceFaults => "设备故障", "Device faults";
     ForcedCount => "强制位", "Forced bits";

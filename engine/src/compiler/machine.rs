@@ -27,7 +27,7 @@ pub fn check_machine(project: &Project, program: &Program, sink: &mut Sink) {
             ModelError::Address { .. }
             | ModelError::NotInput { .. }
             | ModelError::NotBit { .. } => Code::M002DeviceAddress,
-            ModelError::Parameter { .. } => Code::M003DeviceParameter,
+            ModelError::Parameter { .. } | ModelError::Start { .. } => Code::M003DeviceParameter,
             ModelError::Expression { .. } => Code::M004DeviceCondition,
             ModelError::TwoWriters { .. } => Code::M005InputTwice,
         };
@@ -56,13 +56,16 @@ pub fn check_machine(project: &Project, program: &Program, sink: &mut Sink) {
     panel_overlap(project, sink);
 }
 
-/// The addresses a device reads: its outputs and every address of its conditions.
+/// The addresses a device reads that the program should write: its outputs and every address
+/// of its conditions, but F (the CNC writes it) and K (the data tables set it).
 fn reads(kind: &DeviceKind) -> Vec<(&'static str, Address)> {
     let mut v = kind.outputs();
+    v.retain(|(_, a)| !matches!(a.area, Area::F | Area::K));
     for (field, text) in kind.expressions() {
         for word in text.split(|c: char| !(c.is_alphanumeric() || c == '.' || c == '_')) {
             if let Ok(a) = Address::parse(word)
                 && a.bit.is_some()
+                && !matches!(a.area, Area::F | Area::K)
             {
                 v.push((field, a));
             }
@@ -98,7 +101,6 @@ fn written(project: &Project, program: &Program) -> HashSet<Address> {
             w.insert(a);
         }
     }
-    w.retain(|a| !matches!(a.area, Area::F | Area::K));
     w
 }
 

@@ -19,6 +19,11 @@ pub fn errors(model: &MachineModel, profile: &Profile) -> Vec<(usize, ModelError
         .map(|d| (d.name.as_str(), d.kind.states()))
         .collect();
     let mut writers: HashMap<Address, usize> = HashMap::new();
+    for (axis, mm) in model.start_mm.iter().enumerate() {
+        if axis >= AXES || !mm.is_finite() || mm.abs() > 100_000.0 {
+            out.push((0, ModelError::Start { axis }));
+        }
+    }
     for (i, d) in model.devices.iter().enumerate() {
         let valid = d.name.starts_with(|c: char| c.is_ascii_alphabetic())
             && d.name
@@ -163,6 +168,14 @@ fn parameter(kind: &DeviceKind) -> Option<(&'static str, &'static str)> {
         }
         DeviceKind::Turret(t) if t.window_pct == 0 || t.window_pct > 100 => {
             Some(("window_pct", "1…100"))
+        }
+        // A window shorter than a tick could be stepped over between two samples.
+        DeviceKind::Turret(t) if u64::from(t.station_ms) * u64::from(t.window_pct) < 800 => Some((
+            "window_pct",
+            "a window of at least one tick: station_ms × window_pct ≥ 800",
+        )),
+        DeviceKind::Turret(t) if t.lock.as_ref().is_some_and(|l| l.ms == 0) => {
+            Some(("lock.ms", "1…600000"))
         }
         DeviceKind::Turret(t) if t.ccw.is_some() && t.direction.is_some() => Some((
             "direction",

@@ -61,6 +61,12 @@ pub enum ModelError {
         /// Why.
         error: ExprError,
     },
+    /// M003: an axis's power-on position that is not a length in range, or an axis the CNC
+    /// does not have.
+    Start {
+        /// The axis, 0 = X.
+        axis: usize,
+    },
     /// M005: two devices write one input.
     TwoWriters {
         /// The later device.
@@ -80,7 +86,7 @@ impl ModelError {
             ModelError::Address { .. }
             | ModelError::NotInput { .. }
             | ModelError::NotBit { .. } => "M002",
-            ModelError::Parameter { .. } => "M003",
+            ModelError::Parameter { .. } | ModelError::Start { .. } => "M003",
             ModelError::Expression { .. } => "M004",
             ModelError::TwoWriters { .. } => "M005",
         }
@@ -127,6 +133,10 @@ impl ModelError {
                 field,
                 error,
             } => format!("设备 `{device}` 的 {field}：{}", error.zh()),
+            ModelError::Start { axis } => format!(
+                "第 {} 轴的上电位置（start_mm）不可能：应为 −100000…100000 mm，且最多 5 个轴",
+                axis + 1
+            ),
             ModelError::TwoWriters {
                 device,
                 address,
@@ -184,6 +194,11 @@ impl fmt::Display for ModelError {
                 field,
                 error,
             } => write!(f, "device `{device}`, {field}: {error}"),
+            ModelError::Start { axis } => write!(
+                f,
+                "the power-on position (start_mm) of axis {} is impossible: allowed −100000…100000 mm, 5 axes at most",
+                axis + 1
+            ),
             ModelError::TwoWriters {
                 device,
                 address,

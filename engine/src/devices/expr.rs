@@ -89,7 +89,10 @@ impl fmt::Display for ExprError {
                 f,
                 "`{s}`: a follower reads addresses only; make it an expression device to read device states"
             ),
-            ExprError::TooDeep => write!(f, "the condition nests deeper than 60 levels"),
+            ExprError::TooDeep => write!(
+                f,
+                "the condition nests too deep (60 parentheses, 64 values pending at most): split it over an expression device"
+            ),
         }
     }
 }
@@ -121,7 +124,9 @@ impl ExprError {
             ExprError::StateInFollower(s) => {
                 format!("`{s}`：跟随器只能读地址；要读设备状态请改用表达式设备")
             }
-            ExprError::TooDeep => "条件嵌套超过 60 层".to_string(),
+            ExprError::TooDeep => {
+                "条件嵌套过深（最多 60 层括号、64 个待算值）：请拆到表达式设备中".to_string()
+            }
         }
     }
 }
@@ -155,6 +160,19 @@ pub fn parse(text: &str, profile: &Profile, names: &Names) -> Result<Vec<Term>, 
             at: *pos,
             found: t.clone(),
         });
+    }
+    // The evaluator's stack is one u64: a condition that would hold more than 64 pending
+    // values at once is refused rather than evaluated wrong.
+    let mut depth = 0usize;
+    for t in &p.out {
+        match t {
+            Term::Bit(_) | Term::State(..) | Term::Const(_) => depth += 1,
+            Term::And | Term::Or => depth -= 1,
+            Term::Not => {}
+        }
+        if depth > 64 {
+            return Err(ExprError::TooDeep);
+        }
     }
     Ok(p.out)
 }
@@ -239,8 +257,15 @@ impl Parser<'_> {
             self.out.push(Term::Not);
         } else if tok == "(" {
             self.or()?;
-            if self.peek() != Some(")") {
-                return Err(ExprError::Unclosed);
+            match self.tokens.get(self.at) {
+                Some((_, t)) if t == ")" => {}
+                Some((pos, t)) => {
+                    return Err(ExprError::Unexpected {
+                        at: *pos,
+                        found: t.clone(),
+                    });
+                }
+                None => return Err(ExprError::Unclosed),
             }
             self.at += 1;
         } else if tok == "0" || tok == "1" {

@@ -58,8 +58,9 @@ impl Rt {
     pub fn dt_us(&self) -> u64 {
         let tick = TICK_MS * 1000;
         match self.fault {
-            Some(Fault::Slow { factor }) if factor > 0.0 => {
-                ((tick as f64 / f64::from(factor)).round() as u64).max(1)
+            Some(Fault::Slow { factor }) => {
+                let f = f64::from(factor.clamp(super::SLOW_MIN, super::SLOW_MAX));
+                ((tick as f64 / f).round() as u64).max(1)
             }
             _ => tick,
         }
@@ -192,11 +193,23 @@ pub struct TurretRt {
     pawl: bool,
     /// Unlock progress, 0 locked … the lock time unlocked.
     unlock: u64,
+    /// A station whose window the last tick's motion crossed whole (a fast or slowed turret
+    /// may step over a narrow window): shown for that one tick, 0 for none.
+    passed: u32,
 }
 
 impl TurretRt {
-    /// The station at the sensors (1…), 0 between stations.
+    /// The station at the sensors (1…), 0 between stations; a station stepped over in the
+    /// last tick shows for that tick.
     fn station(&self) -> u32 {
+        match self.at_window() {
+            0 => self.passed,
+            s => s,
+        }
+    }
+
+    /// The station whose window holds the turret now (1…), 0 between stations.
+    fn at_window(&self) -> u32 {
         let total = self.stations * self.station_us;
         let k = (self.pos + self.station_us / 2) / self.station_us % self.stations;
         let centre = k * self.station_us;
@@ -307,6 +320,7 @@ pub fn resolve(
                 moving: 0,
                 pawl: true,
                 unlock: 0,
+                passed: 0,
             }))
         }
         DeviceKind::PositionSwitch(p) => RtKind::Position {
@@ -473,7 +487,8 @@ pub fn step(kind: &mut RtKind, c: &Ctx) -> u32 {
                     ops = 1;
                 }
             }
-            *timer += dt;
+            // Capped: only whether it passed the longer of the two times matters.
+            *timer = (*timer + dt).min(*build_us.max(decay_us));
             if p && *timer >= *build_us {
                 *up = true;
             } else if !p && *timer >= *decay_us {
@@ -533,7 +548,9 @@ fn turret(t: &mut TurretRt, c: &Ctx) -> u32 {
     let free = t.lock.is_none_or(|(_, ms)| t.unlock >= ms);
     let total = t.stations * t.station_us;
     let was = t.moving;
+    let from = t.pos;
     t.moving = 0;
+    t.passed = 0;
     if cw && !ccw && free {
         t.pos = (t.pos + dt) % total;
         t.moving = 1;
@@ -548,7 +565,99 @@ fn turret(t: &mut TurretRt, c: &Ctx) -> u32 {
         t.moving = -1;
         t.pawl = false;
     }
+    if t.moving != 0 && t.at_window() == 0 {
+        t.passed = crossed(t, from);
+    }
     u32::from(was != 0 && t.moving == 0)
+}
+
+/// The station whose centre the turret crossed moving from `from` to where it is, if it was
+/// in no station's window before or after (the step was wider than the window).
+fn crossed(t: &TurretRt, from: u64) -> u32 {
+    let total = t.stations * t.station_us;
+    // The way travelled, forward from the lower end, in [0, total).
+    let (start, len) = if t.moving > 0 {
+        (from, (t.pos + total - from) % total)
+    } else {
+        (t.pos, (from + total - t.pos) % total)
+    };
+    // The first station centre at or after `start`.
+    let next = start.div_ceil(t.station_us) * t.station_us;
+    if next - start <= len && len > 0 {
+        ((next / t.station_us) % t.stations) as u32 + 1
+    } else {
+        0
+    }
+}
+
+/// Copies a device's state (not its bindings) from the same device in an older plant.
+pub fn take_state(new: &mut Rt, old: &Rt) {
+    new.fault = old.fault;
+    new.fault_ops = old.fault_ops;
+    new.frozen = old.frozen;
+    new.operations = old.operations;
+    match (&mut new.kind, &old.kind) {
+        (
+            RtKind::Logic { timer, on, .. },
+            RtKind::Logic {
+                timer: t, on: o, ..
+            },
+        ) => {
+            (*timer, *on) = (*t, *o);
+        }
+        (RtKind::Actuator { pos, dir, .. }, RtKind::Actuator { pos: p, dir: d, .. }) => {
+            (*pos, *dir) = (*p, *d);
+        }
+        (RtKind::Turret(a), RtKind::Turret(b)) => {
+            a.pos = b.pos;
+            a.moving = b.moving;
+            a.pawl = b.pawl;
+            a.unlock = b.unlock;
+            a.passed = b.passed;
+        }
+        (RtKind::Position { on, .. }, RtKind::Position { on: o, .. }) => *on = *o,
+        (
+            RtKind::Spindle { rpm, target, .. },
+            RtKind::Spindle {
+                rpm: r, target: t, ..
+            },
+        ) => {
+            (*rpm, *target) = (*r, *t);
+        }
+        (
+            RtKind::Lube {
+                timer,
+                pumping,
+                up,
+                starts,
+                ..
+            },
+            RtKind::Lube {
+                timer: t,
+                pumping: p,
+                up: u,
+                starts: s,
+                ..
+            },
+        ) => (*timer, *pumping, *up, *starts) = (*t, *p, *u, *s),
+        (
+            RtKind::Pulse { phase, on, .. },
+            RtKind::Pulse {
+                phase: p, on: o, ..
+            },
+        ) => {
+            (*phase, *on) = (*p, *o);
+        }
+        (
+            RtKind::Counter { seen, last, .. },
+            RtKind::Counter {
+                seen: s, last: l, ..
+            },
+        ) => {
+            (*seen, *last) = (*s, *l);
+        }
+        _ => {}
+    }
 }
 
 /// Publishes a device's states and the values it means to write.

@@ -21,4 +21,4 @@ pub use expr::ExprError;
 pub use model::{Device, DeviceKind, MachineModel};
 pub use resolved::CncView;
 pub use run::Plant;
-pub use status::{DeviceState, DeviceStatus, Fault};
+pub use status::{DeviceState, DeviceStatus, FLICKER_MIN_MS, Fault, SLOW_MAX, SLOW_MIN};

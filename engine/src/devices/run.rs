@@ -28,6 +28,8 @@ pub struct Plant {
     pub(super) states: Vec<bool>,
     /// Every device's input bits.
     pub(super) slots: Vec<Bit>,
+    /// The address of each slot (a stuck fault names one).
+    addresses: Vec<Address>,
     /// The values the devices mean to write this tick, by slot.
     pub(super) values: Vec<bool>,
     /// Physical axis positions, increments.
@@ -61,6 +63,7 @@ impl Plant {
             terms: Vec::new(),
             states: vec![false; n as usize],
             slots: Vec::new(),
+            addresses: Vec::new(),
             values: Vec::new(),
             phys: [0; AXES],
             last: None,
@@ -106,6 +109,7 @@ impl Plant {
             let mut slot = |a: Option<Address>| {
                 a.map(|a| {
                     plant.slots.push(Bit::of(&layout, a));
+                    plant.addresses.push(a);
                     plant.slots.len() as u32 - 1
                 })
             };
@@ -121,6 +125,28 @@ impl Plant {
         plant.values = vec![false; plant.slots.len()];
         plant.reset_states();
         Ok(plant)
+    }
+
+    /// Takes over a running plant's state where the model did not change it: the axes'
+    /// physical positions and the clock, and each device that kept its name and its
+    /// definition (position, timers, counts, fault, failure). A device that is new or was
+    /// edited starts from its power-on state; a renamed one keeps its fault by name only
+    /// if its definition is unchanged.
+    pub fn take_over(&mut self, old: &Plant) {
+        self.phys = old.phys;
+        self.last = old.last;
+        self.now_ms = old.now_ms;
+        for (i, d) in self.model.devices.iter().enumerate() {
+            let Some(j) = old.find(&d.name) else { continue };
+            if old.model.devices[j] == *d {
+                // The state only: its bindings are this plant's own (indices may have moved).
+                kinds::take_state(&mut self.devices[i], &old.devices[j]);
+            } else {
+                // Edited: it starts afresh, keeping only its fault.
+                self.devices[i].fault = old.devices[j].fault;
+            }
+        }
+        self.reset_states();
     }
 
     /// Every device back to its power-on state (faults stay).
@@ -165,7 +191,7 @@ impl Plant {
                 d.count(ops);
             }
             kinds::publish(d, &mut self.states, &mut self.values);
-            write_inputs(d, &self.slots, &self.values, mem, now);
+            write_inputs(d, (&self.slots, &self.addresses), &self.values, mem, now);
         }
         self.now_ms += TICK_MS;
     }
@@ -259,7 +285,13 @@ impl Plant {
 }
 
 /// Writes a device's slots, bent by its fault.
-fn write_inputs(d: &Rt, slots: &[Bit], values: &[bool], mem: &mut [u8], now: u64) {
+fn write_inputs(
+    d: &Rt,
+    (slots, addresses): (&[Bit], &[Address]),
+    values: &[bool],
+    mem: &mut [u8],
+    now: u64,
+) {
     let (start, end) = (d.slots.start as usize, d.slots.end as usize);
     if d.fault.is_none() {
         for (slot, &v) in slots[start..end].iter().zip(&values[start..end]) {
@@ -270,7 +302,7 @@ fn write_inputs(d: &Rt, slots: &[Bit], values: &[bool], mem: &mut [u8], now: u64
     }
     let flicker = match d.fault {
         Some(Fault::Flicker { period_ms }) => {
-            let p = u64::from(period_ms.max(TICK_MS as u32));
+            let p = u64::from(period_ms.max(super::FLICKER_MIN_MS));
             now % p < TICK_MS
         }
         _ => false,
@@ -279,7 +311,7 @@ fn write_inputs(d: &Rt, slots: &[Bit], values: &[bool], mem: &mut [u8], now: u64
         let slot = slots[k as usize];
         let mut v = values[k as usize];
         if let Some(Fault::Stuck { value, input }) = d.fault
-            && input.is_none_or(|i| i == k - d.slots.start)
+            && input.is_none_or(|a| a == addresses[k as usize])
         {
             v = value;
         }

@@ -1,19 +1,25 @@
 //! What a running device shows a monitor, and the faults it can be given.
 
+/// The smallest `slow` factor (ten times faster).
+pub const SLOW_MIN: f32 = 0.1;
+/// The largest `slow` factor.
+pub const SLOW_MAX: f32 = 1000.0;
+/// The shortest flicker period, ms: two ticks, so the inputs read right in between.
+pub const FLICKER_MIN_MS: u32 = 16;
+
 /// A fault injected into a running device (never saved with the project).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Fault {
-    /// Its inputs (or the one named, by its index in [`DeviceKind::inputs`]) read `value`
-    /// whatever the device does.
+    /// Its inputs (or the one named) read `value` whatever the device does.
     Stuck {
         /// The value they read.
         value: bool,
-        /// One input only.
-        input: Option<u32>,
+        /// One input only: one of the device's own inputs.
+        input: Option<crate::address::Address>,
     },
     /// It does everything `factor` times slower.
     Slow {
-        /// How many times slower, > 0.
+        /// How many times slower, [`SLOW_MIN`]…[`SLOW_MAX`] (below 1: faster).
         factor: f32,
     },
     /// After this many more operations it stops moving (its inputs keep their values).
@@ -21,7 +27,7 @@ pub enum Fault {
         /// Operations until it fails.
         operations: u32,
     },
-    /// Every `period_ms` its inputs read inverted for one tick.
+    /// Every `period_ms` (at least two ticks) its inputs read inverted for one tick.
     Flicker {
         /// The period, ms.
         period_ms: u32,
@@ -41,7 +47,8 @@ pub struct DeviceStatus {
     pub fault: Option<Fault>,
     /// A `FailAfter` fault has struck: it no longer moves.
     pub failed: bool,
-    /// Operations completed since power-on (moves, station changes, pump starts, edges).
+    /// Operations completed since power-on (docs/machine.md, "Faults": an actuator's arrival,
+    /// a turret's stop, a pump start, a pulse, a counted edge, a follower coming on).
     pub operations: u32,
 }
 

@@ -3,7 +3,8 @@
 //! to `set` an input a device drives.
 
 use super::{Command, Msg, Target, msg};
-use crate::devices::{Fault, MachineModel};
+use crate::address::Address;
+use crate::devices::{FLICKER_MIN_MS, Fault, MachineModel, SLOW_MAX, SLOW_MIN};
 use crate::machine::{DeviceAction, MachineCommand, Probe};
 
 const USAGE: &str = "device NAME fault stuck 0|1 [ADDR] | fault slow FACTOR | fault fail-after K | fault flicker MS | ok | reset";
@@ -75,7 +76,12 @@ fn fault(m: &MachineModel, i: usize, kind: &str, more: &[&str]) -> Result<Fault,
             let value = match *v {
                 "0" => false,
                 "1" => true,
-                _ => return Err(number::<u8>("x", "0 or 1", "0 或 1").unwrap_err()),
+                _ => {
+                    return Err(msg(
+                        format!("`{v}` is not 0 or 1"),
+                        format!("`{v}` 不是 0 或 1"),
+                    ));
+                }
             };
             let input = match rest.first() {
                 Some(a) => Some(input_of(m, i, a)?),
@@ -85,12 +91,14 @@ fn fault(m: &MachineModel, i: usize, kind: &str, more: &[&str]) -> Result<Fault,
         }
         ("slow", [f]) => {
             let factor: f32 = number(f, "a factor", "倍数")?;
-            if !(factor.is_finite() && factor > 0.0 && factor <= 1000.0) {
+            if !(SLOW_MIN..=SLOW_MAX).contains(&factor) {
                 return Err(msg(
                     format!(
-                        "`{f}`: the factor is a number above 0, at most 1000 (2 = twice as slow)"
+                        "`{f}`: the factor is {SLOW_MIN}…{SLOW_MAX} (2 = twice as slow, 0.5 = twice as fast)"
                     ),
-                    format!("`{f}`：倍数应大于 0、不超过 1000（2 表示慢一倍）"),
+                    format!(
+                        "`{f}`：倍数应为 {SLOW_MIN}…{SLOW_MAX}（2 表示慢一倍，0.5 表示快一倍）"
+                    ),
                 ));
             }
             Fault::Slow { factor }
@@ -98,22 +106,29 @@ fn fault(m: &MachineModel, i: usize, kind: &str, more: &[&str]) -> Result<Fault,
         ("fail-after", [k]) => Fault::FailAfter {
             operations: number(k, "a number of operations", "动作次数")?,
         },
-        ("flicker", [ms]) => Fault::Flicker {
-            period_ms: number::<u32>(ms, "a period in ms", "以毫秒计的周期")?.max(1),
-        },
+        ("flicker", [ms]) => {
+            let period_ms: u32 = number(ms, "a period in ms", "以毫秒计的周期")?;
+            if period_ms < FLICKER_MIN_MS {
+                return Err(msg(
+                    format!("`{ms}`: the period is at least {FLICKER_MIN_MS} ms (two ticks)"),
+                    format!("`{ms}`：周期至少 {FLICKER_MIN_MS} ms（两个扫描周期）"),
+                ));
+            }
+            Fault::Flicker { period_ms }
+        }
         _ => return Err(usage()),
     })
 }
 
-/// The index of `text` among device `i`'s inputs.
-fn input_of(m: &MachineModel, i: usize, text: &str) -> Result<u32, Msg> {
+/// `text` as one of device `i`'s inputs.
+fn input_of(m: &MachineModel, i: usize, text: &str) -> Result<Address, Msg> {
     let d = &m.devices[i];
     let inputs = d.kind.inputs();
-    let a = crate::address::Address::parse(text)?;
+    let a = Address::parse(text)?;
     inputs
         .iter()
-        .position(|(_, b)| *b == a)
-        .map(|k| k as u32)
+        .find(|(_, b)| *b == a)
+        .map(|(_, b)| *b)
         .ok_or_else(|| {
             let list: Vec<String> = inputs.iter().map(|(_, b)| b.to_string()).collect();
             msg(

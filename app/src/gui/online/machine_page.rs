@@ -23,12 +23,37 @@ pub struct MachinePageState {
     pub add_kind: usize,
     /// The start positions being typed (X, Z), and the model's values they were made from.
     start: Option<(Vec<f64>, [String; 2])>,
+    /// Why the last Delete or start-position edit was refused.
+    refusal: Option<String>,
+}
+
+/// The first error `after` has that `before` did not, in the UI language: an edit may not
+/// break the model (a deleted device another one reads, a name or input taken twice).
+fn new_error(
+    before: &MachineModel,
+    after: &MachineModel,
+    profile: &ladder_engine::Profile,
+    lang: Lang,
+) -> Option<String> {
+    let old: Vec<String> = check::errors(before, profile)
+        .into_iter()
+        .map(|(_, e)| e.to_string())
+        .collect();
+    check::errors(after, profile)
+        .into_iter()
+        .map(|(_, e)| e)
+        .find(|e| !old.contains(&e.to_string()))
+        .map(|e| match lang {
+            Lang::Zh => e.zh(),
+            Lang::En => e.to_string(),
+        })
 }
 
 /// A device being edited.
 struct Draft {
-    /// The device's index, `None` for a new one.
-    index: Option<usize>,
+    /// The device's index and the device as it was when the form opened, `None` for a new
+    /// one: Apply refuses when the model changed under the form (an undo).
+    index: Option<(usize, Device)>,
     name: String,
     kind: DeviceKind,
     /// Each field's text as typed and why it is refused.
@@ -39,6 +64,7 @@ struct Draft {
 
 impl Draft {
     fn new(index: Option<usize>, device: &Device) -> Draft {
+        let index = index.map(|i| (i, device.clone()));
         let texts = fields::fields(&device.kind)
             .into_iter()
             .map(|f| {
@@ -281,7 +307,18 @@ impl LadderApp {
             }
             ui.separator();
         }
-        list_ui(ui, lang, &model, &statuses, online, state, &mut events);
+        if let Some(e) = &state.refusal {
+            ui.colored_label(theme::ERROR, e);
+        }
+        list_ui(
+            ui,
+            (lang, profile),
+            &model,
+            &statuses,
+            online,
+            state,
+            &mut events,
+        );
         start_ui(ui, lang, &model, state, &mut events);
         for e in events {
             match e {
@@ -333,7 +370,7 @@ fn header_ui(ui: &mut egui::Ui, lang: Lang, model: &MachineModel, state: &mut Ma
 
 fn list_ui(
     ui: &mut egui::Ui,
-    lang: Lang,
+    (lang, profile): (Lang, &ladder_engine::Profile),
     model: &MachineModel,
     statuses: &[DeviceStatus],
     online: bool,
@@ -401,8 +438,14 @@ fn list_ui(
                     if ui.small_button(Msg::MachineDelete.text(lang)).clicked() {
                         let mut m = model.clone();
                         m.devices.remove(i);
-                        events.push(Event::Edit(m));
-                        state.draft = None;
+                        match new_error(model, &m, profile, lang) {
+                            Some(e) => state.refusal = Some(e),
+                            None => {
+                                events.push(Event::Edit(m));
+                                state.draft = None;
+                                state.refusal = None;
+                            }
+                        }
                     }
                     if online {
                         ui.menu_button(Msg::MachineFault.text(lang), |ui| {
@@ -547,22 +590,17 @@ fn form_ui(
                 name: draft.name.trim().to_string(),
                 kind: draft.kind.clone(),
             };
-            let at = match draft.index {
-                Some(i) if i < m.devices.len() => {
-                    m.devices[i] = device;
-                    i
+            match &draft.index {
+                Some((i, was)) if m.devices.get(*i) == Some(was) => m.devices[*i] = device,
+                Some(_) => {
+                    draft.error = Some(Msg::MachineChanged.text(lang).to_string());
+                    return;
                 }
-                _ => {
-                    m.devices.push(device);
-                    m.devices.len() - 1
-                }
-            };
-            // Only this device's own errors refuse it (the others' are check's business).
-            match check::errors(&m, profile)
-                .into_iter()
-                .find(|(i, _)| *i == at)
-            {
-                Some((_, e)) => draft.error = Some(if zh { e.zh() } else { e.to_string() }),
+                None => m.devices.push(device),
+            }
+            // The edit may not give the model an error it did not have.
+            match new_error(model, &m, profile, lang) {
+                Some(e) => draft.error = Some(e),
                 None => done = Some(Some(m)),
             }
         }
@@ -610,16 +648,36 @@ fn start_ui(
     if apply {
         let parsed: Option<Vec<f64>> = texts
             .iter()
-            .map(|t| t.trim().parse::<f64>().ok().filter(|v| v.is_finite()))
+            .map(|t| {
+                t.trim()
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite() && v.abs() <= 100_000.0)
+            })
             .collect();
         match parsed {
-            Some(v) if v != model.start_mm => {
-                let mut m = model.clone();
-                m.start_mm = v;
-                events.push(Event::Edit(m));
+            Some(v) => {
+                // X and Z typed here; the axes beyond them keep their values.
+                let mut start = model.start_mm.clone();
+                if start.len() < 2 {
+                    start.resize(2, 0.0);
+                }
+                start[..2].copy_from_slice(&v);
+                let padded = |s: &[f64]| {
+                    let mut s = s.to_vec();
+                    s.resize(s.len().max(2), 0.0);
+                    s
+                };
+                if start != padded(&model.start_mm) {
+                    let mut m = model.clone();
+                    m.start_mm = start;
+                    events.push(Event::Edit(m));
+                }
+                state.refusal = None;
             }
-            Some(_) => {}
-            None => state.start = None,
+            None => {
+                state.refusal = Some(Msg::MachineStartBad.text(lang).to_string());
+            }
         }
     }
 }
