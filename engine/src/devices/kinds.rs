@@ -55,6 +55,7 @@ impl Rt {
     }
 
     /// This tick's time step: a slowed device lives slower.
+    #[inline]
     pub fn dt_us(&self) -> u64 {
         let tick = TICK_MS * 1000;
         match self.fault {
@@ -663,10 +664,17 @@ pub fn take_state(new: &mut Rt, old: &Rt) {
 /// Publishes a device's states and the values it means to write.
 #[inline(always)]
 pub fn publish(d: &Rt, states: &mut [bool], values: &mut [bool]) {
+    publish_with(d, states, |k, v| values[k as usize] = v);
+}
+
+/// Publishes a device's states, handing each value it means to write to `write` with its
+/// slot: the tick writes a device without a fault straight into memory.
+#[inline(always)]
+pub fn publish_with(d: &Rt, states: &mut [bool], mut write: impl FnMut(u32, bool)) {
     let s = &mut states[d.states.start as usize..d.states.end as usize];
     let mut put = |slot: Option<u32>, v: bool| {
         if let Some(k) = slot {
-            values[k as usize] = v;
+            write(k, v);
         }
     };
     match &d.kind {

@@ -45,6 +45,13 @@ impl Bit {
     pub fn get(self, mem: &[u8]) -> bool {
         mem[self.off as usize] & self.mask != 0
     }
+
+    /// Writes the bit, without a branch (a device writes its inputs every tick).
+    #[inline]
+    pub fn set(self, mem: &mut [u8], v: bool) {
+        let b = &mut mem[self.off as usize];
+        *b = (*b & !self.mask) | (self.mask & 0u8.wrapping_sub(u8::from(v)));
+    }
 }
 
 /// What the devices see of the CNC at a tick.

@@ -188,10 +188,20 @@ impl Plant {
                     dt_us,
                 };
                 let ops = kinds::step(&mut d.kind, &ctx);
-                d.count(ops);
+                if ops > 0 {
+                    d.count(ops);
+                }
             }
-            kinds::publish(d, &mut self.states, &mut self.values);
-            write_inputs(d, (&self.slots, &self.addresses), &self.values, mem, now);
+            if d.fault.is_none() {
+                // The common case: straight into memory, no second pass.
+                let slots = &self.slots;
+                kinds::publish_with(d, &mut self.states, |k, v| {
+                    slots[k as usize].set(mem, v);
+                });
+            } else {
+                kinds::publish(d, &mut self.states, &mut self.values);
+                write_inputs(d, (&self.slots, &self.addresses), &self.values, mem, now);
+            }
         }
         self.now_ms += TICK_MS;
     }
@@ -284,7 +294,7 @@ impl Plant {
     }
 }
 
-/// Writes a device's slots, bent by its fault.
+/// Writes a faulted device's slots, bent by its fault.
 fn write_inputs(
     d: &Rt,
     (slots, addresses): (&[Bit], &[Address]),
@@ -292,14 +302,6 @@ fn write_inputs(
     mem: &mut [u8],
     now: u64,
 ) {
-    let (start, end) = (d.slots.start as usize, d.slots.end as usize);
-    if d.fault.is_none() {
-        for (slot, &v) in slots[start..end].iter().zip(&values[start..end]) {
-            let b = &mut mem[slot.off as usize];
-            *b = if v { *b | slot.mask } else { *b & !slot.mask };
-        }
-        return;
-    }
     let flicker = match d.fault {
         Some(Fault::Flicker { period_ms }) => {
             let p = u64::from(period_ms.max(super::FLICKER_MIN_MS));
@@ -316,7 +318,6 @@ fn write_inputs(
             v = value;
         }
         v ^= flicker;
-        let b = &mut mem[slot.off as usize];
-        *b = if v { *b | slot.mask } else { *b & !slot.mask };
+        slot.set(mem, v);
     }
 }
