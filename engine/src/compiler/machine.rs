@@ -5,8 +5,8 @@
 
 use super::Program;
 use super::diag::{Code, Origin, Sink};
+use super::writes::writes;
 use crate::address::{Address, Area};
-use crate::catalog::Access;
 use crate::devices::{DeviceKind, ModelError, check};
 use crate::model::{PanelKind, Project};
 use std::collections::HashSet;
@@ -87,7 +87,7 @@ fn written(project: &Project, program: &Program) -> HashSet<Address> {
         let spec = instr.op.spec();
         for (i, operand) in instr.operands.iter().enumerate() {
             if let (Some(o), Some(a)) = (spec.operand(i), operand.address())
-                && !matches!(o.access, Access::Read)
+                && writes(o, &instr.operands)
             {
                 w.insert(a);
             }

@@ -64,7 +64,7 @@ impl Writer {
 }
 
 /// Whether operand `i` is written with the operands as they are.
-fn writes(spec: &OperandSpec, operands: &[Operand]) -> bool {
+pub(super) fn writes(spec: &OperandSpec, operands: &[Operand]) -> bool {
     match spec.access {
         Access::Read => false,
         Access::Write | Access::ReadWrite => true,

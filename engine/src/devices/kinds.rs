@@ -3,9 +3,10 @@
 //! whole numbers; a delay of D ms holds after ⌈D / 8⌉ ticks at normal speed.
 
 use super::expr;
-use super::model::{DeviceKind, Encoding};
+use super::model::DeviceKind;
 use super::resolved::{Bit, CncView, Resolved};
 use super::status::{DeviceState, DeviceStatus, Fault};
+use super::turret::TurretRt;
 use crate::address::Address;
 use crate::cnc::AXES;
 use crate::vm::TICK_MS;
@@ -171,68 +172,6 @@ pub enum RtKind {
     },
 }
 
-/// A turret's bindings and state.
-#[derive(Clone, Debug)]
-pub struct TurretRt {
-    stations: u64,
-    cw: Bit,
-    ccw: Option<Bit>,
-    direction: Option<Bit>,
-    ccw_locks: bool,
-    station_us: u64,
-    window_us: u64,
-    lock: Option<(Bit, u64)>,
-    encoding: Encoding,
-    active_low: bool,
-    code: Range<u32>,
-    in_position: Option<u32>,
-    lock_slots: [Option<u32>; 2],
-    /// Where it stands, µs of turning from station 1.
-    pos: u64,
-    moving: i8,
-    /// Pulled onto the pawl (one-way tool post).
-    pawl: bool,
-    /// Unlock progress, 0 locked … the lock time unlocked.
-    unlock: u64,
-    /// A station whose window the last tick's motion crossed whole (a fast or slowed turret
-    /// may step over a narrow window): shown for that one tick, 0 for none.
-    passed: u32,
-}
-
-impl TurretRt {
-    /// The station at the sensors (1…), 0 between stations; a station stepped over in the
-    /// last tick shows for that tick.
-    fn station(&self) -> u32 {
-        match self.at_window() {
-            0 => self.passed,
-            s => s,
-        }
-    }
-
-    /// The station whose window holds the turret now (1…), 0 between stations.
-    fn at_window(&self) -> u32 {
-        let total = self.stations * self.station_us;
-        let k = (self.pos + self.station_us / 2) / self.station_us % self.stations;
-        let centre = k * self.station_us;
-        let d = self
-            .pos
-            .abs_diff(centre)
-            .min(total - self.pos.abs_diff(centre));
-        if d * 2 <= self.window_us {
-            k as u32 + 1
-        } else {
-            0
-        }
-    }
-
-    fn locked(&self) -> bool {
-        match self.lock {
-            Some(_) => self.unlock == 0,
-            None => self.ccw_locks && self.pawl,
-        }
-    }
-}
-
 /// What a step reads.
 pub struct Ctx<'a> {
     pub mem: &'a [u8],
@@ -265,10 +204,7 @@ pub fn resolve(
     slot: &mut dyn FnMut(Option<Address>) -> Option<u32>,
     exprs: &[Range<u32>],
 ) -> RtKind {
-    let bit = |a: Address| Bit {
-        off: layout.loc(a, false).off,
-        mask: 1 << a.bit.unwrap_or(0),
-    };
+    let bit = |a: Address| Bit::of(layout, a);
     let e = |k: usize| exprs.get(k).cloned().unwrap_or(0..0);
     match kind {
         DeviceKind::Follower(l) | DeviceKind::Expression(l) => RtKind::Logic {
@@ -290,40 +226,7 @@ pub fn resolve(
                 slots: [slot(a.at_advanced), slot(a.at_retracted), slot(a.moving)],
             }
         }
-        DeviceKind::Turret(t) => {
-            let first = slot(t.code.first.offset_bits(0));
-            for k in 1..t.code.bits {
-                slot(t.code.first.offset_bits(u32::from(k)));
-            }
-            let code = first.map_or(0..0, |f| f..f + u32::from(t.code.bits));
-            let in_position = slot(t.in_position);
-            let lock_slots = match &t.lock {
-                Some(l) => [slot(l.unlocked), slot(l.locked)],
-                None => [None, None],
-            };
-            let station_us = us(t.station_ms).max(1);
-            let stations = u64::from(t.stations.max(1));
-            RtKind::Turret(Box::new(TurretRt {
-                stations,
-                cw: bit(t.cw),
-                ccw: t.ccw.map(bit),
-                direction: t.direction.map(bit),
-                ccw_locks: t.ccw_locks,
-                station_us,
-                window_us: station_us * u64::from(t.window_pct.clamp(1, 100)) / 100,
-                lock: t.lock.as_ref().map(|l| (bit(l.unlock), us(l.ms))),
-                encoding: t.code.encoding,
-                active_low: t.code.active_low,
-                code,
-                in_position,
-                lock_slots,
-                pos: u64::from(t.start_station.clamp(1, t.stations.max(1)) - 1) * station_us,
-                moving: 0,
-                pawl: true,
-                unlock: 0,
-                passed: 0,
-            }))
-        }
+        DeviceKind::Turret(t) => RtKind::Turret(Box::new(TurretRt::resolve(t, &bit, slot))),
         DeviceKind::PositionSwitch(p) => RtKind::Position {
             axis: usize::from(p.axis).min(AXES - 1),
             from: (p.from_mm * 1000.0).round() as i64,
@@ -437,7 +340,7 @@ pub fn step(kind: &mut RtKind, c: &Ctx) -> u32 {
             }
             u32::from(arrived)
         }
-        RtKind::Turret(t) => turret(t, c),
+        RtKind::Turret(t) => t.step(c.mem, dt),
         RtKind::Position {
             axis,
             from,
@@ -529,68 +432,6 @@ pub fn step(kind: &mut RtKind, c: &Ctx) -> u32 {
     }
 }
 
-fn turret(t: &mut TurretRt, c: &Ctx) -> u32 {
-    let dt = c.dt_us;
-    let (cw, ccw) = match t.direction {
-        Some(d) => {
-            let run = t.cw.get(c.mem);
-            let back = d.get(c.mem);
-            (run && !back, run && back)
-        }
-        None => (t.cw.get(c.mem), t.ccw.is_some_and(|b| b.get(c.mem))),
-    };
-    if let Some((out, ms)) = t.lock {
-        t.unlock = if out.get(c.mem) {
-            (t.unlock + dt).min(ms)
-        } else {
-            t.unlock.saturating_sub(dt)
-        };
-    }
-    let free = t.lock.is_none_or(|(_, ms)| t.unlock >= ms);
-    let total = t.stations * t.station_us;
-    let was = t.moving;
-    let from = t.pos;
-    t.moving = 0;
-    t.passed = 0;
-    if cw && !ccw && free {
-        t.pos = (t.pos + dt) % total;
-        t.moving = 1;
-        t.pawl = false;
-    } else if ccw && !cw && t.ccw_locks {
-        // Reversed onto the pawl: it stops at the nearest station and locks.
-        let k = (t.pos + t.station_us / 2) / t.station_us % t.stations;
-        t.pos = k * t.station_us;
-        t.pawl = true;
-    } else if ccw && !cw && free {
-        t.pos = (t.pos + total - dt % total) % total;
-        t.moving = -1;
-        t.pawl = false;
-    }
-    if t.moving != 0 && t.at_window() == 0 {
-        t.passed = crossed(t, from);
-    }
-    u32::from(was != 0 && t.moving == 0)
-}
-
-/// The station whose centre the turret crossed moving from `from` to where it is, if it was
-/// in no station's window before or after (the step was wider than the window).
-fn crossed(t: &TurretRt, from: u64) -> u32 {
-    let total = t.stations * t.station_us;
-    // The way travelled, forward from the lower end, in [0, total).
-    let (start, len) = if t.moving > 0 {
-        (from, (t.pos + total - from) % total)
-    } else {
-        (t.pos, (from + total - t.pos) % total)
-    };
-    // The first station centre at or after `start`.
-    let next = start.div_ceil(t.station_us) * t.station_us;
-    if next - start <= len && len > 0 {
-        ((next / t.station_us) % t.stations) as u32 + 1
-    } else {
-        0
-    }
-}
-
 /// Copies a device's state (not its bindings) from the same device in an older plant.
 pub fn take_state(new: &mut Rt, old: &Rt) {
     new.fault = old.fault;
@@ -609,13 +450,7 @@ pub fn take_state(new: &mut Rt, old: &Rt) {
         (RtKind::Actuator { pos, dir, .. }, RtKind::Actuator { pos: p, dir: d, .. }) => {
             (*pos, *dir) = (*p, *d);
         }
-        (RtKind::Turret(a), RtKind::Turret(b)) => {
-            a.pos = b.pos;
-            a.moving = b.moving;
-            a.pawl = b.pawl;
-            a.unlock = b.unlock;
-            a.passed = b.passed;
-        }
+        (RtKind::Turret(a), RtKind::Turret(b)) => a.take_state(b),
         (RtKind::Position { on, .. }, RtKind::Position { on: o, .. }) => *on = *o,
         (
             RtKind::Spindle { rpm, target, .. },
@@ -705,21 +540,7 @@ pub fn publish_with(d: &Rt, states: &mut [bool], mut write: impl FnMut(u32, bool
             put(slots[1], ret);
             put(slots[2], moving);
         }
-        RtKind::Turret(t) => {
-            let station = t.station();
-            let code = t.encoding.code(station);
-            for (i, k) in t.code.clone().enumerate() {
-                put(Some(k), (code >> i & 1 == 1) != t.active_low);
-            }
-            let in_pos = station != 0 && t.moving == 0;
-            let locked = t.locked();
-            s.copy_from_slice(&[t.moving != 0, in_pos, locked]);
-            put(t.in_position, in_pos);
-            if let Some((_, ms)) = t.lock {
-                put(t.lock_slots[0], t.unlock >= ms);
-                put(t.lock_slots[1], t.unlock == 0);
-            }
-        }
+        RtKind::Turret(t) => t.publish(s, put),
         RtKind::Spindle {
             rpm,
             target,
@@ -768,12 +589,7 @@ fn state(k: &RtKind) -> DeviceState {
             position: *pos as f32 / *travel_us as f32,
             moving: *dir,
         },
-        RtKind::Turret(t) => DeviceState::Turret {
-            station: t.station() as u8,
-            angle: t.pos as f32 / t.station_us as f32,
-            moving: t.moving,
-            locked: t.locked(),
-        },
+        RtKind::Turret(t) => t.state(),
         RtKind::Spindle { rpm, target, .. } => DeviceState::Spindle {
             rpm: *rpm as f32,
             target: *target,
@@ -792,7 +608,7 @@ fn busy(k: &RtKind) -> bool {
     match k {
         RtKind::Logic { timer, .. } => *timer > 0,
         RtKind::Actuator { dir, .. } => *dir != 0,
-        RtKind::Turret(t) => t.moving != 0,
+        RtKind::Turret(t) => t.moving(),
         RtKind::Spindle { rpm, target, .. } => *rpm != f64::from(*target),
         RtKind::Lube { pumping, up, .. } => *pumping != *up,
         _ => false,

@@ -11,6 +11,7 @@ pub mod fields;
 mod kinds;
 pub mod model;
 pub mod run;
+mod turret;
 
 mod error;
 mod resolved;
