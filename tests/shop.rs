@@ -68,6 +68,12 @@ enum Setup {
 /// Runs the program at `path` on the sample lathe and its machine model. Only what an
 /// operator does is done by hand: the E-stop released, the override knobs, the keys.
 fn run_on_sample(path: &std::path::Path, setup: Setup, limit: u64) -> Outcome {
+    let mut m = start_on_sample(path, setup);
+    run_until_end(&mut m, limit)
+}
+
+/// The sample lathe set up, referenced, in AUTO, with the program at `path` started.
+fn start_on_sample(path: &std::path::Path, setup: Setup) -> Machine {
     let nc = path.display().to_string();
     let project = file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample");
     let mut m = Machine::new(&project, true).expect("builds");
@@ -108,23 +114,29 @@ fn run_on_sample(path: &std::path::Path, setup: Setup, limit: u64) -> Outcome {
     assert_eq!(m.plc.read(a("F0120"), 1), 3, "{nc}: reference points set");
     press(&mut m, "X0002.1");
     press(&mut m, "X0002.6");
+    m
+}
+
+/// Runs until the program ends, stops on an alarm, or `limit` scans pass; cycle start is
+/// pressed again after M00/M01.
+fn run_until_end(m: &mut Machine, limit: u64) -> Outcome {
     let mut ticks = 0;
     while ticks < limit {
         m.tick();
         ticks += 1;
-        let run = value(&m, "cnc.run");
-        if value(&m, "cnc.alarms") != "0" || run == "IDLE" {
+        let run = value(m, "cnc.run");
+        if value(m, "cnc.alarms") != "0" || run == "IDLE" {
             break;
         }
         if run == "STOP" {
             // M00 / M01: the operator presses cycle start again.
-            press(&mut m, "X0002.6");
+            press(m, "X0002.6");
         }
     }
     Outcome {
-        parts: value(&m, "cnc.param.6711"),
-        alarms: value(&m, "cnc.alarms"),
-        block: value(&m, "cnc.block"),
+        parts: value(m, "cnc.param.6711"),
+        alarms: value(m, "cnc.alarms"),
+        block: value(m, "cnc.block"),
         ticks,
         plc_alarm: m.plc.read(a("A0000.2"), 1),
     }
@@ -140,6 +152,8 @@ fn shop_programs_in_every_style_run_to_their_end_without_an_alarm() {
         "subprogram-grooves.nc",
         "fanuc-flange-g72.nc",
         "gsk-taper-g90.nc",
+        "macro-grooves-g65.nc",
+        "macro-chamfer-inch.nc",
     ] {
         let o = run_program(nc, 400_000);
         assert_eq!(
@@ -204,4 +218,43 @@ fn a_station_the_turret_does_not_have_ends_in_the_ladder_s_own_alarm() {
     );
     assert_eq!((o.alarms.as_str(), o.parts.as_str()), ("1", "0"), "{o:?}");
     assert_eq!(o.plc_alarm, 1, "A0000.2 (1003) is on: {o:?}");
+}
+
+#[test]
+fn the_cell_dispatcher_waits_half_an_hour_for_an_idle_plc_then_runs_the_job_it_is_given() {
+    // The sample ladder leaves G214 alone: the dispatcher says it is ready (#1100, F214.0)
+    // and waits in WHILE, one pass per exchange, without an alarm.
+    let mut m = start_on_sample(
+        &here().join("nc").join("macro-cell-dispatcher.nc"),
+        Setup::Fanuc { turret: false },
+    );
+    let half_hour = 30 * 60 * 1000 / ladder_engine::vm::TICK_MS;
+    let o = run_until_end(&mut m, half_hour);
+    assert_eq!(o.ticks, half_hour, "still waiting: {o:?}");
+    assert_eq!(
+        (value(&m, "cnc.run").as_str(), o.alarms.as_str()),
+        ("RUN", "0")
+    );
+    assert_eq!(m.plc.read(a("F0214.0"), 1), 1, "#1100: ready");
+    // A cell controller asks for job 2 through G214.1 (#1001): the CNC takes #1100 back,
+    // runs O2002 with #1101 on, counts the job and waits again once the request drops.
+    m.plc.write(a("G0214.1"), 1, 1);
+    m.tick();
+    m.tick();
+    assert_eq!(m.plc.read(a("F0214.0"), 1), 0);
+    assert_eq!(m.plc.read(a("F0214.1"), 1), 1, "#1101: a job runs");
+    let mut ticks = 0;
+    while value(&m, "cnc.macro.510") != "1" && ticks < 20_000 {
+        m.tick();
+        ticks += 1;
+    }
+    assert_eq!(value(&m, "cnc.macro.510"), "1", "job counted");
+    assert_eq!(value(&m, "cnc.alarms"), "0");
+    m.plc.write(a("G0214.1"), 1, 0);
+    for _ in 0..10 {
+        m.tick();
+    }
+    assert_eq!(m.plc.read(a("F0214.0"), 1), 1, "ready again");
+    assert_eq!(m.plc.read(a("F0214.1"), 1), 0);
+    assert_eq!(value(&m, "cnc.run"), "RUN");
 }

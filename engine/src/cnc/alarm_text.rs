@@ -82,7 +82,11 @@ pub const TEXTS: &[AlarmText] = &[
         "Unavailable command in the shape blocks",
     ),
     text(ps::NO_PROGRAM, "子程序未找到", "Subprogram not found"),
-    text(ps::NESTING, "子程序嵌套过多", "Subprograms nested too deep"),
+    text(
+        ps::NESTING,
+        "子程序或宏程序嵌套过多",
+        "Subprograms or macros nested too deep",
+    ),
     text(
         ps::NO_PROGRESS,
         "程序只有跳过的程序段（无可执行程序段）",
@@ -92,6 +96,38 @@ pub const TEXTS: &[AlarmText] = &[
         ps::NO_REFERENCE,
         "未建立参考点",
         "Reference point not established",
+    ),
+    text(ps::OVERFLOW, "运算结果溢出", "Calculated data overflow"),
+    text(ps::DIVISION, "除数为零", "Division by zero"),
+    text(
+        ps::FORMAT,
+        "宏语句格式错误",
+        "Illegal macro expression format",
+    ),
+    text(
+        ps::VARIABLE,
+        "变量号超出范围",
+        "Variable number out of range",
+    ),
+    text(ps::PROTECTED, "变量写保护", "Write-protected variable"),
+    text(ps::BRACKETS, "括号嵌套过多", "Too many brackets nested"),
+    text(ps::ARGUMENT, "函数自变量错误", "Illegal argument"),
+    text(ps::LOOP_END, "DO与END不配对", "DO and END do not pair"),
+    text(ps::LOOP_NUMBER, "循环号错误", "Illegal loop number"),
+    text(
+        ps::MIXED,
+        "NC语句与宏语句在同一程序段",
+        "NC and macro statement in one block",
+    ),
+    text(
+        ps::SEQUENCE,
+        "转移目标顺序号错误",
+        "Illegal macro sequence number",
+    ),
+    text(
+        ps::ARG_ADDRESS,
+        "宏调用自变量地址错误",
+        "Illegal argument address",
     ),
     text(
         ps::PLC_AXIS,
@@ -136,6 +172,7 @@ fn generic(number: u16, zh: bool) -> &'static str {
     let (z, e) = match number {
         401..=499 => ("伺服报警", "Servo alarm"),
         1000..=1999 => ("PLC报警", "PLC alarm"),
+        3000..=3200 => ("宏程序报警", "Macro alarm"),
         2000..=9999 => ("操作信息", "Operator message"),
         _ => ("P/S报警", "P/S alarm"),
     };
@@ -209,9 +246,21 @@ mod tests {
     #[test]
     fn the_simulator_raises_alarms_only_through_named_constants() {
         // A literal number passed to `raise` would escape the test above.
-        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/src/cnc");
-        for entry in std::fs::read_dir(dir).expect("the cnc sources") {
-            let path = entry.expect("a directory entry").path();
+        let dir = std::path::PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/src/cnc"));
+        let mut dirs = vec![dir];
+        let mut files = Vec::new();
+        while let Some(d) = dirs.pop() {
+            for entry in std::fs::read_dir(d).expect("the cnc sources") {
+                let path = entry.expect("a directory entry").path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else {
+                    files.push(path);
+                }
+            }
+        }
+        assert!(files.len() > 20);
+        for path in files {
             let source = std::fs::read_to_string(&path).expect("a source file");
             for call in source.split("raise(").skip(1) {
                 assert!(
@@ -240,5 +289,7 @@ mod tests {
         assert_eq!(alarm_text(1003, true), "PLC报警");
         assert_eq!(alarm_text(123, false), "P/S alarm");
         assert_eq!(alarm_text(600, true), "P/S报警");
+        assert_eq!(alarm_text(3012, false), "Macro alarm");
+        assert_eq!(alarm_text(3201, false), "Operator message");
     }
 }

@@ -5,6 +5,8 @@
 
 use super::cycle::CycleMemory;
 use super::drill::DrillMemory;
+use super::macro_b::run::Flow;
+use super::macro_b::{Locals, MacroBlock, MacroCall};
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
@@ -51,26 +53,30 @@ impl RunState {
 const PASS_LIMIT: u32 = 100_000;
 
 /// Program index of the MDI buffer in a [`Cursor`].
-const MDI: usize = usize::MAX;
+pub(super) const MDI: usize = usize::MAX;
 
 /// A block position: program index (or [`MDI`]) and block index.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(super) struct Cursor {
-    prog: usize,
-    block: usize,
+    pub(super) prog: usize,
+    pub(super) block: usize,
 }
 
 /// A caller of a subprogram.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Frame {
-    ret: Cursor,
-    sub: usize,
+    pub(super) ret: Cursor,
+    pub(super) sub: usize,
     /// The block the call starts at (0; an M97's sequence number's block).
-    start: usize,
-    repeats: u32,
+    pub(super) start: usize,
+    pub(super) repeats: u32,
     /// A G70 profile: the index of its last block (Q), after which the G70 block is
     /// returned to, and the cycle's start point.
-    until: Option<(usize, [i64; AXES])>,
+    pub(super) until: Option<(usize, [i64; AXES])>,
+    /// A macro call (G65, G66): the locals each repetition starts with.
+    pub(super) args: Option<Locals>,
+    /// A G66 modal call: moves inside it call nothing.
+    pub(super) modal: bool,
 }
 
 /// The executing block.
@@ -102,6 +108,10 @@ pub(super) struct Exec {
     pub(super) g70: Option<(usize, usize, [i64; AXES])>,
     /// G71–G73: the block the program goes on at.
     pub(super) resume: Option<usize>,
+    /// Macro statements ran ahead of the block: where the program goes on.
+    pub(super) next: Option<Cursor>,
+    /// A move under G66: the modal call follows the block.
+    pub(super) modal_call: bool,
 }
 
 impl Exec {
@@ -153,7 +163,7 @@ pub(super) struct Auto {
     pub state: RunState,
     /// The program run or resumed is the MDI buffer.
     mdi: bool,
-    cursor: Cursor,
+    pub(super) cursor: Cursor,
     pub(super) stack: Vec<Frame>,
     pub exec: Option<Exec>,
     /// The executing block's segments (kept to reuse its allocation).
@@ -172,6 +182,23 @@ pub(super) struct Auto {
     pub modal: Modal,
     pub tool_offset: u8,
     pub dm99: bool,
+    /// Local variables per macro call level (level 0 first; empty until one is written).
+    pub(super) locals: Vec<Locals>,
+    /// The G66 call in effect.
+    pub(super) g66: Option<MacroCall>,
+    /// #3003 and #3004.
+    pub(super) m3003: u8,
+    pub(super) m3004: u8,
+    /// Macro variables written so far (a loop that writes none waits for the next exchange).
+    pub(super) macro_writes: u64,
+    /// The last jump back of a macro loop: program, block and writes then.
+    pub(super) idle_mark: Option<(usize, usize, u64)>,
+    /// The last M, S and T words read (#4113, #4119, #4120).
+    pub(super) last_m: Option<u32>,
+    pub(super) last_s: Option<u32>,
+    pub(super) last_t: Option<u32>,
+    /// The sequence number of the block read last, statement or NC block (#4114).
+    pub(super) read_n: u32,
 }
 
 impl Auto {
@@ -188,6 +215,9 @@ impl Auto {
         self.prev_thread = false;
         self.hold_after_thread = false;
         self.g70_return = None;
+        self.locals.clear();
+        self.g66 = None;
+        self.idle_mark = None;
     }
 
     /// A reset condition: IDLE and rewound; modal data, S and the tool offset are kept.
@@ -195,6 +225,8 @@ impl Auto {
         self.state = RunState::Idle;
         self.rewind_all();
         self.dm99 = false;
+        self.m3003 = 0;
+        self.m3004 = 0;
     }
 
     /// The mode changes to `new`.
@@ -233,9 +265,15 @@ impl Auto {
                     prog: f.sub,
                     block: f.start,
                 };
+                if let (Some(args), Some(l)) = (f.args, self.locals.last_mut()) {
+                    *l = args;
+                }
             }
             Some(f) => {
                 self.cursor = f.ret;
+                if f.args.is_some() {
+                    self.locals.pop();
+                }
                 self.stack.pop();
             }
             None => self.cursor.block = 0,
@@ -243,9 +281,7 @@ impl Auto {
     }
 }
 
-fn special_m(ms: &[u32]) -> Option<u32> {
-    ms.iter().copied().find(|m| matches!(m, 0 | 1 | 2 | 30))
-}
+use super::block_check::special_m;
 
 impl SimCnc {
     fn program_ref(&self, prog: usize) -> Option<&NcProgram> {
@@ -320,7 +356,9 @@ impl SimCnc {
     pub(super) fn automatic(&mut self) {
         self.auto.dm99 = false;
         let inp = self.inp;
-        if self.auto.state == RunState::Run && (inp.feed_hold || self.auto.hold_after_thread) {
+        // #3004 bit 0: feed hold ineffective while a macro says so.
+        let feed_hold = inp.feed_hold && self.auto.m3004 & 1 == 0;
+        if self.auto.state == RunState::Run && (feed_hold || self.auto.hold_after_thread) {
             // Feed hold during a thread takes effect at the thread's end.
             if self.threading() {
                 self.auto.hold_after_thread = true;
@@ -374,6 +412,7 @@ impl SimCnc {
 
     pub(super) fn start_next_block(&mut self) {
         let mut guard = 0u32;
+        let mut budget = super::macro_b::run::STATEMENTS_PER_EXCHANGE;
         loop {
             guard += 1;
             if guard > PASS_LIMIT {
@@ -396,13 +435,43 @@ impl SimCnc {
                 self.auto.cursor.block += 1;
                 continue;
             }
+            if b.mac
+                .as_ref()
+                .is_some_and(|m| !matches!(**m, MacroBlock::Nc(_)))
+            {
+                // A macro statement or call: no time, no NC block (docs/gcode.md, "Macros").
+                guard -= 1;
+                if let Some(n) = b.n {
+                    self.auto.last_n = n;
+                }
+                if budget == 0 {
+                    return;
+                }
+                budget -= 1;
+                match self.macro_step() {
+                    Flow::Next => continue,
+                    Flow::Yield => return,
+                    Flow::Stop => {
+                        self.auto.state = RunState::Stop;
+                        return;
+                    }
+                    Flow::Alarm(n) => {
+                        self.program_error(n);
+                        return;
+                    }
+                }
+            }
             break;
         }
         if self.check(1) && self.inp.bsl {
             return;
         }
         let b = self.block_at(self.auto.cursor).expect("found above");
-        let (n, line, words) = (b.n, b.line, b.words);
+        let (n, line) = (b.n, b.line);
+        let words = match b.mac.as_deref() {
+            Some(MacroBlock::Nc(ws)) => self.render_words(ws),
+            _ => b.words,
+        };
         let words = match words {
             Ok(w) => w,
             Err(alarm) => {
@@ -421,108 +490,15 @@ impl SimCnc {
         }
         if let Some(n) = n {
             self.auto.last_n = n;
+            self.auto.read_n = n;
         }
         let planned = self
             .check_block(&words, cutting)
             .and_then(|call| self.execute(&words, line, call));
-        if let Err(alarm) = planned {
-            self.program_error(alarm);
+        match planned {
+            Err(alarm) => self.program_error(alarm),
+            Ok(()) => self.look_ahead(),
         }
-    }
-
-    /// The checks that depend on the machine (docs/cnc.md, "Program errors"); returns the
-    /// program an M98 calls.
-    fn check_block(&self, w: &Words, cutting: bool) -> Result<Option<(usize, usize, u32)>, u16> {
-        if w.axes[2].is_some() && self.axis_count() < 3 {
-            return Err(ps::ADDRESS);
-        }
-        if cutting && w.f.unwrap_or(self.auto.modal.feed) <= 0.0 {
-            return Err(ps::NO_FEED);
-        }
-        let mut call = None;
-        if special_m(w.ms()).is_none() && w.ms().contains(&98) {
-            let p = w.p.ok_or(ps::NO_PROGRAM)?;
-            let find = |number: u32| self.programs.iter().position(|prog| prog.number == number);
-            // P names the program itself when one has that number; else its last four
-            // digits are the program and the digits before them the count (docs/gcode.md).
-            let (k, count) = match find(p) {
-                Some(k) => (k, 1),
-                None => (find(p % 10_000).ok_or(ps::NO_PROGRAM)?, (p / 10_000).max(1)),
-            };
-            if self.auto.stack.len() >= 4 {
-                return Err(ps::NESTING);
-            }
-            let times = w.l.map_or(count, |l| l.max(1));
-            call = Some((k, 0, times));
-        } else if special_m(w.ms()).is_none() && w.ms().contains(&97) && w.p.is_some() {
-            // M97 P: the block numbered P of this program as a subprogram (Haas's local call).
-            let (prog, here) = self.running_program().ok_or(ps::NO_SEQUENCE)?;
-            let n = w.p.unwrap_or(0);
-            let block = super::profile::find_sequence(prog, n, here + 1).ok_or(ps::NO_SEQUENCE)?;
-            if self.auto.stack.len() >= 4 {
-                return Err(ps::NESTING);
-            }
-            call = Some((self.auto.cursor.prog, block, w.l.map_or(1, |l| l.max(1))));
-        }
-        if w.g28() {
-            for k in 0..3 {
-                if w.axes[k].is_some() && !self.axes[k].zrf {
-                    return Err(ps::NO_REFERENCE);
-                }
-            }
-        }
-        Ok(call)
-    }
-
-    /// P/S 0139 when a planned segment would move an axis the PLC holds (EAX = 1); a G28
-    /// counts for every axis it names.
-    fn check_claims(&self, w: &Words, cur: [i64; AXES]) -> Result<(), u16> {
-        for (k, &from) in cur.iter().enumerate().take(3) {
-            if self.inp.eax >> k & 1 == 0 {
-                continue;
-            }
-            let named = w.g28() && w.axes[k].is_some();
-            let moves =
-                self.auto.segs.iter().any(|s| {
-                    s.target[k] != from || (k < 2 && matches!(s.kind, SegKind::Arc { .. }))
-                });
-            if named || moves {
-                return Err(ps::AXIS_CLAIM);
-            }
-        }
-        Ok(())
-    }
-
-    /// The block's modal state once its G codes and F are read.
-    fn modal_after(&self, w: &Words) -> Modal {
-        let mut modal = self.auto.modal;
-        if let Some(m) = w.motion {
-            modal.motion = m;
-            // A group 01 code cancels a drilling cycle.
-            modal.drill = DrillMemory::default();
-        }
-        match w.drill {
-            Some(80) => modal.drill = DrillMemory::default(),
-            // The cycle's data stay until G80 or a group 01 code.
-            Some(g) => modal.drill.g = g,
-            None => {}
-        }
-        if let Some(p) = w.per_rev {
-            modal.per_rev = p;
-        }
-        if let Some(k) = w.work {
-            modal.work = k;
-        }
-        if let Some(inch) = w.inch {
-            modal.inch = inch;
-        }
-        if let Some(f) = w.f {
-            modal.feed = self.units(modal.inch).feed(f);
-        }
-        if let Some(css) = w.css {
-            modal.css = css;
-        }
-        modal
     }
 
     fn execute(
@@ -558,6 +534,19 @@ impl SimCnc {
             self.spindle.s_cmd = self.spindle.s_css;
         }
         self.auto.modal = modal;
+        self.auto.idle_mark = None;
+        if let Some(&m) = w.ms().last() {
+            self.auto.last_m = Some(m);
+        }
+        self.auto.last_s = w.s.or(self.auto.last_s);
+        self.auto.last_t = w.t.or(self.auto.last_t);
+        if w.g67 {
+            self.auto.g66 = None;
+        }
+        let modal_call = self.auto.g66.is_some()
+            && w.moves()
+            && w.one_shot.is_none()
+            && !self.auto.stack.iter().any(|f| f.modal);
         let mut e = Exec {
             motion: None,
             current: Segment::to(SegKind::Rapid, self.frame_position()),
@@ -576,6 +565,8 @@ impl SimCnc {
             line,
             g70: fx.g70,
             resume: fx.resume,
+            next: None,
+            modal_call,
         };
         // The M/S/T sequence.
         let ms = w.ms();
@@ -653,6 +644,8 @@ impl SimCnc {
                 start: first,
                 repeats: 0,
                 until: Some((last, home)),
+                args: None,
+                modal: false,
             });
             a.cursor.block = first;
         } else if let Some((sub, start, times)) = e.call {
@@ -666,6 +659,8 @@ impl SimCnc {
                 start,
                 repeats: times - 1,
                 until: None,
+                args: None,
+                modal: false,
             });
             a.cursor = Cursor {
                 prog: sub,
@@ -675,6 +670,15 @@ impl SimCnc {
             a.return_from_sub();
         } else if let Some(k) = e.resume {
             a.cursor.block = k;
+        } else if let Some(call) = a.g66.filter(|_| e.modal_call) {
+            let ret = Cursor {
+                block: a.cursor.block + 1,
+                ..a.cursor
+            };
+            if let Err(alarm) = self.push_call(call, ret, true) {
+                self.program_error(alarm);
+                return;
+            }
         } else if let Some(f) = a.stack.last()
             && f.sub == a.cursor.prog
             && f.until.is_some_and(|(last, _)| last == a.cursor.block)
@@ -683,11 +687,15 @@ impl SimCnc {
             a.g70_return = f.until.map(|(_, home)| home);
             a.cursor = f.ret;
             a.stack.pop();
+        } else if let Some(next) = e.next {
+            a.cursor = next;
         } else {
             a.cursor.block += 1;
         }
+        let sbk = self.single_block();
+        let a = &mut self.auto;
         match a.state {
-            RunState::Run if self.inp.sbk || e.stop_after || a.pending_stop => {
+            RunState::Run if sbk || e.stop_after || a.pending_stop => {
                 a.state = RunState::Stop;
                 a.pending_stop = false;
             }

@@ -133,6 +133,16 @@ pub struct Macros {
     pub kept: Vec<Option<f64>>,
     /// #1100–#1131 as 32 bits (bit k = #1100+k), written to F214–F217.
     pub outputs: u32,
+    /// #3001: its value when last set, ms.
+    pub timer_base: f64,
+    /// The virtual time #3001 was last set at, ms.
+    pub timer_at: u64,
+    /// #3002: its value when last set, hours.
+    pub hours_base: f64,
+    /// Time in cycle start (STL) since #3002 was last set, ms.
+    pub run_ms: u64,
+    /// The alarm #3000 raised last and its message.
+    pub message: Option<(u16, String)>,
 }
 
 impl Default for Macros {
@@ -141,6 +151,11 @@ impl Default for Macros {
             volatile: [None; 100],
             kept: vec![None; 500],
             outputs: 0,
+            timer_base: 0.0,
+            timer_at: 0,
+            hours_base: 0.0,
+            run_ms: 0,
+            message: None,
         }
     }
 }

@@ -3,7 +3,7 @@
 //! rounded to 0.001 mm, macro variables as decimals or `vacant`.
 
 use super::command::{axis_name, check_param, int, mm, offset_range, parse_axis};
-use super::data::{MacroSlot, OffsetType, WORK_SYSTEMS, work_system};
+use super::data::{OffsetType, WORK_SYSTEMS, work_system};
 use super::params;
 use super::{AXIS_NAMES, Mode, RunState, SimCnc};
 use crate::profile::ProfileId;
@@ -146,18 +146,10 @@ impl CncKey {
                 let v = n
                     .parse::<i64>()
                     .ok()
-                    .filter(|v| {
-                        matches!(
-                            MacroSlot::of(*v),
-                            MacroSlot::Volatile(_)
-                                | MacroSlot::Kept(_)
-                                | MacroSlot::Input(_)
-                                | MacroSlot::Output(_)
-                        )
-                    })
+                    .filter(|v| super::macro_b::exists(*v))
                     .ok_or_else(|| {
                         format!(
-                            "`{n}` in `{text}`: the variables are #100–#199, #500–#999, #1000–#1031 and #1100–#1131"
+                            "`{n}` in `{text}`: no such variable (the variables are #1–#33, #100–#199, #500–#999, #1000–#1133, #2001–#2964, #3000–#3012, #4001–#4130 and #5001–#5340: docs/gcode.md, \"Macros\")"
                         )
                     })?;
                 CncKey::Macro(v as u16)
@@ -280,13 +272,9 @@ impl SimCnc {
                     .and_then(|w| w.get(usize::from(a)))
                     .ok_or_else(|| "no such workpiece system or axis".to_string())?,
             ),
-            CncKey::Macro(n) => CncValue::Macro(match MacroSlot::of(i64::from(n)) {
-                MacroSlot::Volatile(k) => self.macros.volatile[k],
-                MacroSlot::Kept(k) => self.macros.kept[k],
-                MacroSlot::Input(k) => Some(f64::from(self.inp.macro_in >> k & 1)),
-                MacroSlot::Output(k) => Some(f64::from(self.macros.outputs >> k & 1)),
-                _ => None,
-            }),
+            CncKey::Macro(n) => CncValue::Macro(
+                super::macro_b::expr::Vars::read(self, i64::from(n)).unwrap_or(None),
+            ),
         })
     }
 }

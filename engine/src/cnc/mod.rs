@@ -21,12 +21,14 @@ pub mod alarm_text;
 pub mod arc;
 mod auto;
 mod block;
+mod block_check;
 pub mod command;
 mod corner;
 mod cycle;
 pub mod data;
 mod drill;
 mod keys;
+pub mod macro_b;
 mod manual;
 pub mod motion;
 mod mst;
@@ -56,6 +58,11 @@ use signals::{FImage, GroupInputs, Inputs};
 use spindle::Spindle;
 
 pub use auto::RunState;
+
+/// Whether alarm `n` is a PLC alarm (1000–1999): the A area sets and clears it, not reset.
+fn is_plc_alarm(n: u16) -> bool {
+    (1000..2000).contains(&n)
+}
 
 /// Axes the simulator can have (#8130 is 2–5).
 pub const AXES: usize = 5;
@@ -195,9 +202,10 @@ pub struct SimCnc {
     rst: bool,
     axes: [AxisState; AXES],
     auto: Auto,
-    programs: Vec<NcProgram>,
+    /// Shared, so a running macro statement can hold its program while it changes the CNC.
+    programs: std::sync::Arc<Vec<NcProgram>>,
     program_text: String,
-    mdi: NcProgram,
+    mdi: std::sync::Arc<NcProgram>,
     mdi_text: String,
     spindle: Spindle,
     manual: Manual,
@@ -253,9 +261,9 @@ impl SimCnc {
             rst: false,
             axes: [AxisState::default(); AXES],
             auto: Auto::default(),
-            programs: Vec::new(),
+            programs: Default::default(),
             program_text: String::new(),
-            mdi: NcProgram::default(),
+            mdi: Default::default(),
             mdi_text: String::new(),
             spindle: Spindle::default(),
             manual: Manual::default(),
@@ -315,6 +323,15 @@ impl SimCnc {
         self.params.bit(P3003, 0, bit)
     }
 
+    /// The message of a macro alarm (3000–3200, raised by `#3000 = n (MESSAGE)`) while it is
+    /// active.
+    pub fn macro_alarm_message(&self, n: u16) -> Option<&str> {
+        match &self.macros.message {
+            Some((k, m)) if *k == n && self.alarms.contains(&n) => Some(m),
+            _ => None,
+        }
+    }
+
     /// Whether alarm `n` is active.
     pub fn alarm_active(&self, n: u16) -> bool {
         self.alarms.contains(&n)
@@ -367,13 +384,13 @@ impl SimCnc {
     /// Replaces every memory program and rewinds.
     fn load_programs(&mut self, text: &str) {
         self.toolpath = Default::default();
-        self.programs = parse_programs(text);
+        self.programs = std::sync::Arc::new(parse_programs(text));
         self.program_text = text.to_string();
         self.auto.rewind_all();
     }
 
     fn load_mdi(&mut self, text: &str) {
-        self.mdi = parse_mdi(text);
+        self.mdi = std::sync::Arc::new(parse_mdi(text));
         self.mdi_text = text.to_string();
         self.auto.rewind_all();
     }
@@ -406,6 +423,8 @@ impl SimCnc {
         }
         self.macros.volatile = [None; 100];
         self.macros.outputs = 0;
+        self.macros.timer_base = 0.0;
+        self.macros.timer_at = self.now_ms;
         self.inp = Inputs::zero();
         self.prev = Inputs::zero();
         self.group_in = [GroupInputs::default(); 4];
@@ -492,7 +511,11 @@ impl SimCnc {
         self.manual.stop_all();
         self.flags.halted = true;
         self.alarms
-            .retain(|&n| n >= 1000 || n == ALARM_ESTOP || ALARM_HARD_LIMIT.contains(&n));
+            .retain(|&n| is_plc_alarm(n) || n == ALARM_ESTOP || ALARM_HARD_LIMIT.contains(&n));
+        if !self.params.bit(params::P6001, 0, 6) {
+            // #6001 bit 6 CCV = 0: reset clears the common variables #100–#199.
+            self.macros.volatile = [None; 100];
+        }
         let inp = self.inp;
         for (n, a) in self.axes.iter_mut().enumerate() {
             if inp.limit_plus >> n & 1 == 0 {
@@ -537,6 +560,9 @@ impl SimCnc {
         if self.flags.cut {
             self.cutting_ms += 8;
         }
+        if self.auto.state == RunState::Run {
+            self.macros.run_ms += 8;
+        }
     }
 
     /// Writes the F image (step (h)).
@@ -544,7 +570,7 @@ impl SimCnc {
         let mut img = FImage::new();
         self.auto_f(&mut img);
         let inp = &self.inp;
-        let cnc_alarm = self.alarms.iter().any(|&n| n < 1000);
+        let cnc_alarm = self.alarms.iter().any(|&n| !is_plc_alarm(n));
         img.bit(0, 6, !inp.estop && !self.servo_alarm());
         img.bit(1, 0, !self.alarms.is_empty());
         img.bit(1, 1, self.rst);

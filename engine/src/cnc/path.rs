@@ -204,7 +204,8 @@ impl SimCnc {
 
     /// Cutting feed override, 0–1.5.
     pub(super) fn fov(&self) -> f64 {
-        if self.inp.ovc {
+        if self.inp.ovc || self.auto.m3004 & 2 != 0 {
+            // OVC, or #3004 bit 1: override ineffective.
             1.0
         } else {
             f64::from(self.inp.fv.min(15)) / 10.0

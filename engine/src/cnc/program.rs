@@ -4,6 +4,7 @@
 //! block is about to execute. Errors that depend on the machine state (an axis beyond #8130,
 //! G01 without F, M98 to a missing program…) are checked at that moment by `auto.rs`.
 
+use super::macro_b::{MacroBlock, parse::pair_loops};
 use super::word::{Words, number, words};
 
 /// P/S alarm numbers of program errors.
@@ -49,6 +50,31 @@ pub mod ps {
     pub const NESTING: u16 = 77;
     /// G28 (or AXCTL 08h–0Ah) before the reference point is established.
     pub const NO_REFERENCE: u16 = 90;
+    /// A macro value too large (a result that is not a finite number).
+    pub const OVERFLOW: u16 = 111;
+    /// A macro division (`/`, `MOD`) by zero.
+    pub const DIVISION: u16 = 112;
+    /// A macro statement or expression that cannot be read.
+    pub const FORMAT: u16 = 114;
+    /// A variable number the CNC does not have.
+    pub const VARIABLE: u16 = 115;
+    /// A write to a variable that is read only (#0, #1000–#1032, #4001+, #5001+…).
+    pub const PROTECTED: u16 = 116;
+    /// Brackets nested deeper than five.
+    pub const BRACKETS: u16 = 118;
+    /// A function's argument out of its domain (SQRT of a negative, BIN of a non-BCD…), or
+    /// #3000 beyond 200.
+    pub const ARGUMENT: u16 = 119;
+    /// DO and END do not pair (an END without its DO, a DO without its END, crossing loops).
+    pub const LOOP_END: u16 = 124;
+    /// DO or END with a number other than 1–3.
+    pub const LOOP_NUMBER: u16 = 126;
+    /// NC words and a macro statement in one block.
+    pub const MIXED: u16 = 127;
+    /// GOTO to a sequence number outside 1–99999 or not in the program.
+    pub const SEQUENCE: u16 = 128;
+    /// G65/G66 with G, L, N, O or P as an argument, or without P.
+    pub const ARG_ADDRESS: u16 = 129;
     /// PLC axis control refused (no axis in the group, or an unknown command).
     pub const PLC_AXIS: u16 = 130;
     /// An axis claimed by both the CNC and the PLC.
@@ -112,8 +138,12 @@ pub struct NcBlock {
     pub slash: bool,
     /// Its sequence number.
     pub n: Option<u32>,
-    /// Its words, or the P/S alarm its text gives.
+    /// Its words, or the P/S alarm its text gives. A macro block's are P/S 0066 (a cycle's
+    /// profile cannot hold one).
     pub words: Result<Words, u16>,
+    /// The macro statement or the NC words with expressions it holds (docs/gcode.md,
+    /// "Macros").
+    pub mac: Option<Box<MacroBlock>>,
 }
 
 /// One program: O number and blocks.
@@ -185,6 +215,7 @@ pub fn parse_programs(text: &str) -> Vec<NcProgram> {
                             slash: false,
                             n: None,
                             words: Err(alarm),
+                            mac: None,
                         },
                     );
                     continue;
@@ -193,6 +224,9 @@ pub fn parse_programs(text: &str) -> Vec<NcProgram> {
         }
         let block = parse_block(line, segment.trim(), body);
         push(&mut programs, block);
+    }
+    for p in &mut programs {
+        pair_loops(&mut p.blocks);
     }
     programs
 }
@@ -206,12 +240,14 @@ fn push(programs: &mut Vec<NcProgram>, block: NcBlock) {
 
 /// The MDI buffer: every block of the text as one program.
 pub fn parse_mdi(text: &str) -> NcProgram {
+    let mut blocks: Vec<NcBlock> = parse_programs(text)
+        .into_iter()
+        .flat_map(|p| p.blocks)
+        .collect();
+    pair_loops(&mut blocks);
     NcProgram {
         number: MDI_NUMBER,
-        blocks: parse_programs(text)
-            .into_iter()
-            .flat_map(|p| p.blocks)
-            .collect(),
+        blocks,
     }
 }
 
@@ -268,6 +304,7 @@ fn parse_block(line: usize, text: &str, body: &str) -> NcBlock {
         slash,
         n: None,
         words: Ok(Words::default()),
+        mac: None,
     };
     // The N comes first; read it even when a later word is wrong, so the alarm can name it.
     if let Some(rest) = body.strip_prefix('N')
@@ -278,7 +315,14 @@ fn parse_block(line: usize, text: &str, body: &str) -> NcBlock {
     {
         block.n = Some(num.value as u32);
     }
-    block.words = words(body);
+    block.words = match super::macro_b::parse::parse(body, text) {
+        None => words(body),
+        Some(Ok(m)) => {
+            block.mac = Some(Box::new(m));
+            Err(ps::CYCLE_COMMAND)
+        }
+        Some(Err(alarm)) => Err(alarm),
+    };
     block
 }
 
@@ -399,7 +443,8 @@ mod tests {
             ("N10 T12345", 3),
             ("N10 M1 M2 M3 M4", 14),
             ("N10 M1 M70000", 3),
-            ("N10 #1=2", 9),
+            ("N10 G00 X1 #1=2", 127),
+            ("N10 #1=[2", 114),
             ("N10 S1.5", 9),
         ];
         for (text, alarm) in cases {

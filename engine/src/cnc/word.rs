@@ -153,6 +153,8 @@ pub struct Words {
     pub dwell_s: Option<f64>,
     /// G04 time given with X or U (seconds when read as a length in mm: see docs/gcode.md).
     pub dwell_x: Option<Num>,
+    /// G67: the G66 modal call ends.
+    pub g67: bool,
 }
 
 impl Words {
@@ -408,7 +410,10 @@ fn g_code(code: &str, w: &mut Words, groups: &mut [bool; GROUPS]) -> Result<(), 
         150 => 5,
         180 => 6,
         400 | 410 | 420 => 8,
-        670 => 9,
+        670 => {
+            w.g67 = true;
+            9
+        }
         _ => return Err(ps::G_CODE),
     };
     if groups[group] {
