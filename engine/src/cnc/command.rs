@@ -161,7 +161,7 @@ pub(super) fn offset_range(profile: ProfileId) -> std::ops::RangeInclusive<u8> {
 fn writable_macro(n: i64) -> bool {
     matches!(
         MacroSlot::of(n),
-        MacroSlot::Volatile(_) | MacroSlot::Kept(_) | MacroSlot::Output(_)
+        MacroSlot::Local | MacroSlot::Volatile(_) | MacroSlot::Kept(_) | MacroSlot::Output(_)
     )
 }
 
@@ -273,7 +273,7 @@ impl CncCommand {
                 let n = int(args[0], "a variable number")?;
                 if !writable_macro(n) {
                     return Err(format!(
-                        "#{n} cannot be set: the variables are #100–#199, #500–#999 and #1100–#1131"
+                        "#{n} cannot be set: the variables are #1–#33 (the current level's locals), #100–#199, #500–#999 and #1100–#1131"
                     ));
                 }
                 let value = if args[1].eq_ignore_ascii_case("vacant") {
@@ -435,9 +435,12 @@ impl SimCnc {
                     .ok_or_else(|| "no such workpiece system or axis".to_string())?;
                 *slot = *value;
             }
-            CncCommand::Macro { number, value } => self
-                .set_macro(MacroSlot::of(i64::from(*number)), *value)
-                .map_err(|()| format!("#{number} cannot take that value"))?,
+            CncCommand::Macro { number, value } => match MacroSlot::of(i64::from(*number)) {
+                MacroSlot::Local => self.set_local(usize::from(*number), *value),
+                slot => self
+                    .set_macro(slot, *value)
+                    .map_err(|()| format!("#{number} cannot take that value"))?,
+            },
             CncCommand::Position { axis, value } => {
                 let n = usize::from(*axis);
                 if n >= self.axis_count() {

@@ -53,6 +53,10 @@ pub struct Toolpath {
 /// Blocks a dry run executes at most.
 pub const BLOCK_LIMIT: usize = 2_000_000;
 
+/// Exchanges' shares of macro statements a dry run goes on through without an NC block
+/// (a million statements): a loop that computes for longer ends the path there.
+const STATEMENT_RUNS: u32 = 100;
+
 /// Degrees per point of a drawn arc.
 const ARC_STEP: f64 = 3.0;
 
@@ -101,8 +105,20 @@ impl SimCnc {
         c.auto.state = RunState::Run;
         let mut out = Toolpath::default();
         out.points.push(self.machine_mm());
+        let mut statement_runs = 0;
         while out.blocks < BLOCK_LIMIT {
+            let before = (c.auto.cursor, c.auto.macro_writes);
             c.start_next_block();
+            let busy = c.auto.exec.is_none()
+                && c.auto.state == RunState::Run
+                && c.alarms.is_empty()
+                && before != (c.auto.cursor, c.auto.macro_writes);
+            if busy && statement_runs < STATEMENT_RUNS {
+                // Macro statements used up an exchange's share and went on: so does the dry
+                // run. A loop waiting for the PLC changes nothing and ends the path.
+                statement_runs += 1;
+                continue;
+            }
             let Some(mut e) = c.auto.exec else {
                 if let Some(&n) = c.alarms.first() {
                     let line = c.auto.current_line(&c.programs, &c.mdi).unwrap_or(0);

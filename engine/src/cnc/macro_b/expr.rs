@@ -120,7 +120,8 @@ pub fn round_half(v: f64) -> f64 {
 
 fn int(v: Value) -> Result<i64, u16> {
     let r = round_half(v.unwrap_or(0.0));
-    if r.abs() > 2_147_483_647.0 * 2.0 {
+    // Whole numbers are exact in f64 up to 2^53: beyond, bits and remainders mean nothing.
+    if r.abs() > 9_007_199_254_740_992.0 {
         return Err(alarm::OVERFLOW);
     }
     Ok(r as i64)

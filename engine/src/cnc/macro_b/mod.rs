@@ -16,7 +16,7 @@ mod vars;
 use expr::Expr;
 
 pub use run::MacroCall;
-pub use vars::{LOCALS, Locals, exists};
+pub use vars::{LOCALS, Locals, MacroTable, exists};
 
 /// First number of the alarms #3000 raises: #3000 = n gives alarm 3000 + n.
 pub const ALARM_BASE: u16 = 3000;

@@ -17,6 +17,19 @@ pub const LOCALS: usize = 33;
 /// The largest offset or position a macro may write, in increments.
 const LENGTH_MAX: f64 = 99_999_999.0;
 
+/// The macro variables an operator sees on the CNC page.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MacroTable {
+    /// The call level of the locals (0: the main program).
+    pub level: usize,
+    /// #1–#33 of that level.
+    pub locals: Locals,
+    /// #100–#199.
+    pub commons: [Value; 100],
+    /// #500–#999.
+    pub kept: Vec<Value>,
+}
+
 /// What a variable number names, when it is not a plain storage slot.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum System {
@@ -172,6 +185,27 @@ impl SimCnc {
             4119 => a.last_s.map(f64::from),
             4120 => a.last_t.map(f64::from),
             _ => None,
+        }
+    }
+
+    /// Sets local #`n` (1–33) of the current call level, as an operator does on the CNC page.
+    pub(in crate::cnc) fn set_local(&mut self, n: usize, v: Value) {
+        if self.auto.locals.is_empty() {
+            self.auto.locals.push([None; LOCALS]);
+        }
+        if let Some(slot) = self.auto.locals.last_mut().and_then(|l| l.get_mut(n - 1)) {
+            *slot = v;
+        }
+    }
+
+    /// The locals of the current call level, the commons #100–#199 and #500–#999, for the
+    /// CNC page's table.
+    pub fn macro_table(&self) -> MacroTable {
+        MacroTable {
+            level: self.auto.locals.len().saturating_sub(1),
+            locals: self.auto.locals.last().copied().unwrap_or([None; LOCALS]),
+            commons: self.macros.volatile,
+            kept: self.macros.kept.clone(),
         }
     }
 
