@@ -150,6 +150,34 @@ fn the_trace_records_cnc_values_beside_addresses() {
 }
 
 #[test]
+fn the_trace_records_the_macro_handshake_as_the_f_and_g_bits_it_is() {
+    // docs/gcode.md, "The PLC handshake": #1100 is F214.0 and #1000 is G214.0 in the trace.
+    let dir = tempfile::tempdir().unwrap();
+    let trace = dir.path().join("t.csv");
+    let program = here().join("cnc/parts/macro-handshake.nc");
+    let text = format!(
+        "watch F0214.0\nwatch G0214.0\nwatch cnc.macro.500\nset X0001.1 1\nset X0001.2 1\nset X0000 1\ncnc program-file {}\nscan\nset X1.0 1\nscan\nset X1.0 0\nscan 3\n",
+        program.display()
+    );
+    let s = script(&dir, &text);
+    let ladder = here().join("cnc/macro.il").display().to_string();
+    let r = run(&[
+        "sim",
+        &ladder,
+        "--script",
+        &s,
+        "--cnc",
+        "--trace",
+        trace.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    assert_eq!(
+        std::fs::read_to_string(&trace).unwrap(),
+        "tick,ms,F0214.0,G0214.0,cnc.macro.500\n1,8,0,0,vacant\n2,16,0,0,vacant\n3,24,1,0,vacant\n4,32,0,1,vacant\n5,40,0,0,1\n"
+    );
+}
+
+#[test]
 fn bench_with_the_cnc_times_the_exchange_on_a_set_up_machine() {
     let lathe = here().join("../projects/lathe-988ta.ldp");
     let setup = here().join("lathe/cycle.script");

@@ -69,7 +69,7 @@ fn arithmetic_follows_fanucs_precedence_and_functions_their_ranges() {
         (123, 2.0),
         (124, 3.0),
         (125, 90.0),
-        (126, -90.0),
+        (126, 270.0),
         (127, 4.0),
         (128, -7.0),
         (129, 1.0),
@@ -338,4 +338,232 @@ fn system_variables_read_offsets_modal_state_clock_and_positions() {
     assert_eq!(r.v("cnc.work.G54.X"), "10.000");
     close(&r, 111, 1.0);
     close(&r, 113, 77.0);
+}
+
+/// xorshift64*.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
+    }
+    fn below(&mut self, n: usize) -> usize {
+        (self.next() % n as u64) as usize
+    }
+}
+
+/// A random expression of depth at most `depth`, valid or not.
+fn expression(r: &mut Rng, depth: u32) -> String {
+    const ATOMS: [&str; 14] = [
+        "#1", "#2", "#100", "#0", "#[#1+1]", "1.5", "-2", "0", "#1000", "#3001", "#4001", "#5041",
+        "#9999", "#[-1]",
+    ];
+    const OPS: [&str; 15] = [
+        "+", "-", "*", "/", " MOD ", " AND ", " OR ", " XOR ", " EQ ", " NE ", " GT ", " LE ", "",
+        "[", "]",
+    ];
+    const FUNCS: [&str; 17] = [
+        "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN",
+        "EXP", "BIN", "BCD", "POW", "ATA",
+    ];
+    if depth == 0 || r.below(3) == 0 {
+        return ATOMS[r.below(ATOMS.len())].to_string();
+    }
+    match r.below(4) {
+        0 => {
+            // Mostly operators that read; now and then a broken one.
+            let op = if r.below(10) == 0 {
+                OPS[r.below(OPS.len())]
+            } else {
+                OPS[r.below(12)]
+            };
+            format!(
+                "{}{op}{}",
+                expression(r, depth - 1),
+                expression(r, depth - 1)
+            )
+        }
+        1 => format!("[{}]", expression(r, depth - 1)),
+        2 => format!(
+            "{}[{}]",
+            FUNCS[r.below(FUNCS.len() - 2)],
+            expression(r, depth - 1)
+        ),
+        _ => format!(
+            "{}[{},{}]",
+            FUNCS[r.below(FUNCS.len())],
+            expression(r, depth - 1),
+            expression(r, depth - 1)
+        ),
+    }
+}
+
+/// A random block: a statement, a word with an expression, a loop keyword or a call.
+fn block(r: &mut Rng, n: usize) -> String {
+    let e = expression(r, 4);
+    let target = ["#1", "#2", "#100", "#[#1]", "#1100", "#3000", "#0", "#5001"][r.below(8)];
+    match r.below(10) {
+        0 => format!("N{n} IF[{e}]GOTO{}", r.below(12)),
+        1 => format!("N{n} IF[{e}]THEN{target}={}", expression(r, 2)),
+        2 => format!("N{n} WHILE[{e}]DO{}", r.below(5)),
+        3 => format!("N{n} END{}", r.below(5)),
+        4 => format!("N{n} G01 U[{e}] W-0.1 F6000"),
+        5 => format!("N{n} G65 P9{} A[{e}] I1 J2 K3 I4", r.below(3)),
+        6 => format!("N{n} GOTO[{e}]"),
+        7 => format!("N{n} G#{} X#1", r.below(3)),
+        _ => format!("N{n} {target}={e}"),
+    }
+}
+
+#[test]
+fn random_macro_text_never_panics_or_hangs_and_reset_stops_any_loop() {
+    // Seeded: the same programs every run. Each runs 300 exchanges (statements are bounded
+    // per exchange, so an endless loop only keeps the program in RUN), then reset must leave
+    // it IDLE.
+    for seed in 1..=200u64 {
+        let mut r = Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1);
+        let mut text = String::from("O1\n");
+        for n in 1..=12 {
+            text.push_str(&block(&mut r, n));
+            text.push('\n');
+        }
+        text.push_str("M30\nO90\n#1=#1+1\nM99\nO91\nG65P91\nM99\nO92\nWHILE[1]DO1\nEND1\n");
+        let mut rig = Rig::mem(&text);
+        rig.set(214, 0, r.below(2) == 1);
+        rig.start();
+        rig.xs(300);
+        let run = rig.v("cnc.run");
+        assert!(["RUN", "STOP", "IDLE"].contains(&run.as_str()), "{text}");
+        let _ = rig.cnc.toolpath();
+        rig.cmd(&["reset"]);
+        rig.xs(2);
+        assert_eq!(rig.v("cnc.run"), "IDLE", "seed {seed}:\n{text}");
+    }
+}
+
+#[test]
+fn asin_and_atan_follow_nat_and_round_in_an_address_rounds_to_its_increment() {
+    // #6004 bit 0 NAT = 0 (the default): ASIN 270…90°, ATAN[y,x] 0…360°; NAT = 1: −90…90° and
+    // −180…180°.
+    let r = run("O1;#100=ASIN[-0.5];#101=ATAN[-1,-1];#102=ATAN[-1];M30", 50);
+    close(&r, 100, 330.0);
+    close(&r, 101, 225.0);
+    close(&r, 102, 315.0);
+    let mut r = Rig::mem("O1;#100=ASIN[-0.5];#101=ATAN[-1,-1];#102=ATAN[-1];M30");
+    r.cmd(&["param", "6004", "1"]);
+    r.start();
+    r.xs(5);
+    close(&r, 100, -30.0);
+    close(&r, 101, -135.0);
+    close(&r, 102, -45.0);
+    // ROUND in X rounds to 0.001 mm; in a statement to a whole number.
+    let r = run("O1;#1=12.3456;#100=ROUND[#1];G00X[ROUND[#1]];M30", 500);
+    close(&r, 100, 12.0);
+    assert_eq!(r.m(0), 12_346);
+}
+
+#[test]
+fn variables_work_in_profiles_corners_and_cycle_depths() {
+    // A G71 profile whose X comes from a variable, finished by G70.
+    let r = run(
+        "O1;#1=30.;G00X40.Z2.;G71U1.R0.5;G71P10Q20U0.2W0.1F6000;N10G00X#1;N20G01Z-10.;\
+         G70P10Q20;M30",
+        20_000,
+    );
+    assert!(r.cnc.alarms().is_empty(), "{:?}", r.cnc.alarms());
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    // `,C` before a block whose Z is a variable.
+    let r = run("O1;#1=-10.;G01X20.,C1.F3000;Z#1;M30", 2_000);
+    assert!(r.cnc.alarms().is_empty(), "{:?}", r.cnc.alarms());
+    assert_eq!((r.m(0), r.m(1)), (20_000, -10_000));
+    // Q from a variable is whole least increments, as Q2000 written: the same pecks.
+    let count = |text: &str| {
+        let mut r = Rig::mem(text);
+        r.start();
+        let mut retracts = 0;
+        let mut last = 0;
+        while r.v("cnc.run") == "RUN" && r.n < 20_000 {
+            r.x();
+            if r.m(1) > last {
+                retracts += 1;
+            }
+            last = r.m(1);
+        }
+        assert!(r.cnc.alarms().is_empty(), "{text}: {:?}", r.cnc.alarms());
+        retracts
+    };
+    let written = count("O1;G74R1.;G74Z-10.Q2000F600;M30");
+    assert_eq!(count("O1;#17=2000;G74R1.;G74Z-10.Q#17F600;M30"), written);
+    assert!(written > 3, "{written}");
+}
+
+#[test]
+fn g66_is_not_called_from_a_g70_profile_and_long_text_is_refused_not_overflowed() {
+    let r = run(
+        "O1;G00X20.Z2.;G66P9003;G70P10Q20;G67;#101=1;M30;N10G01X10.F6000;N20Z-1.;\
+         O9003;#120=#120+1;M99",
+        5_000,
+    );
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    close(&r, 101, 1.0);
+    // The profile's moves run under G66 but call nothing (the G00 came before G66).
+    assert_eq!(var(&r, 120), None);
+    // A run of 30 000 signs is no stack overflow: the block is too long (0114).
+    let long = format!("O1;#100={}1;M30", "-".repeat(30_000));
+    let r = run(&long, 20);
+    assert_eq!(r.cnc.alarms(), &[114]);
+    // 500 signs fit in a block and read as one minus sign's parity.
+    let r = run(&format!("O1;#100={}1;M30", "-".repeat(501)), 20);
+    close(&r, 100, -1.0);
+    let chain = format!("O1;#100=1{};M30", "+1".repeat(500));
+    let r = run(&chain, 20);
+    close(&r, 100, 501.0);
+}
+
+#[test]
+fn macro_3003_suppresses_single_block_and_3004_feed_hold() {
+    // #3003 = 1: N2 runs through in single block. N4 (#3003 = 0) runs ahead while N3 moves,
+    // so single block is back when N3 ends and the program stops there.
+    let mut r = Rig::mem("O1;N1#3003=1;N2G01W-1.F6000;N3G01W-1.;N4#3003=0;N5G01W-1.;N6M30");
+    r.set(46, 1, true); // SBK
+    r.start();
+    r.until(200, |r| r.v("cnc.run") != "RUN");
+    assert_eq!(r.v("cnc.run"), "STOP");
+    assert_eq!(r.v("cnc.block"), "3");
+    assert_eq!(r.m(1), -2_000);
+    // #3004 = 1: feed hold does nothing while it is set. N4 runs ahead of N3 (the dwell
+    // stops the look-ahead at N2), so N2 moves through feed hold and N3 holds.
+    let mut r = Rig::mem("O1;N1#3004=1;N2G01W-10.F600;N3G04X1.;N4#3004=0;N5G01W-10.;N6M30");
+    r.start();
+    r.xs(10);
+    r.set(8, 5, false); // *SP: feed hold
+    r.xs(10);
+    assert_eq!(
+        (r.v("cnc.run").as_str(), r.v("cnc.block").as_str()),
+        ("RUN", "2")
+    );
+    r.until(400, |r| r.v("cnc.run") != "RUN");
+    assert_eq!(r.v("cnc.run"), "HOLD");
+    assert_eq!(r.v("cnc.block"), "3");
+    assert_eq!(r.m(1), -10_000);
+}
+
+#[test]
+fn the_toolpath_runs_macro_statements_dry_and_ends_at_a_loop_waiting_for_the_plc() {
+    // Three rapids computed in WHILE (X10, X12, X14), then a wait for #1000 that the dry run
+    // cannot pass: the path has the three moves and no alarm; the CNC's variables are not
+    // touched.
+    let r = Rig::mem(
+        "O1;#1=0;WHILE[#1LT3]DO1;G00X[10+#1*2];#1=#1+1;END1;WHILE[#1000EQ0]DO1;END1;G00X40.;M30",
+    );
+    let t = r.cnc.toolpath();
+    assert_eq!(t.alarm, None);
+    assert_eq!(t.blocks, 3);
+    assert_eq!(t.pieces.len(), 3);
+    let last = t.points.last().unwrap();
+    assert!((last[1] - 14.0).abs() < 1e-9, "{last:?}");
+    assert_eq!(var(&r, 1), None);
 }

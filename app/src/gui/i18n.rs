@@ -513,6 +513,12 @@ messages! {
     CncMdi => "录入（MDI）", "MDI";
     CncSendMdi => "送入 MDI", "Send MDI";
     CncReset => "复位", "RESET";
+    CncMacros => "宏变量", "Macro variables";
+    CncMacroLocals => "局部变量 #1–#33，调用层", "Locals #1–#33, call level";
+    CncMacroEditHint => "程序未运行时可改：点数值，输入数字或 vacant，按回车", "Not running: click a value, type a number or vacant, press Enter";
+    CncMacroRunning => "程序运行中：只读", "The program runs: read only";
+    CncMacroBad => "不是数字，也不是 vacant", "neither a number nor vacant";
+    CncMacroVacant => "<空>", "<vacant>";
     CncCurrentLine => "当前程序段：第", "Current block: line";
     CncPickedLine => "点选程序段：第", "Picked block: line";
     CncToolpath => "刀具轨迹", "Toolpath";

@@ -468,10 +468,7 @@ impl SimCnc {
         }
         let b = self.block_at(self.auto.cursor).expect("found above");
         let (n, line) = (b.n, b.line);
-        let words = match b.mac.as_deref() {
-            Some(MacroBlock::Nc(ws)) => self.render_words(ws),
-            _ => b.words,
-        };
+        let words = self.block_words(b);
         let words = match words {
             Ok(w) => w,
             Err(alarm) => {
@@ -543,10 +540,11 @@ impl SimCnc {
         if w.g67 {
             self.auto.g66 = None;
         }
+        // No modal call from inside the called macro or from a G70 profile's blocks.
         let modal_call = self.auto.g66.is_some()
             && w.moves()
             && w.one_shot.is_none()
-            && !self.auto.stack.iter().any(|f| f.modal);
+            && !self.auto.stack.iter().any(|f| f.modal || f.until.is_some());
         let mut e = Exec {
             motion: None,
             current: Segment::to(SegKind::Rapid, self.frame_position()),

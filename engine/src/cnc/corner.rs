@@ -77,7 +77,7 @@ impl SimCnc {
     fn next_line_end(&self, modal: &Modal, from: [i64; AXES]) -> Result<[i64; AXES], u16> {
         let (prog, here) = self.running_program().ok_or(ps::CORNER_NEXT)?;
         let b = prog.blocks.get(here + 1).ok_or(ps::CORNER_NEXT)?;
-        let w = b.words.map_err(|_| ps::CORNER_NEXT)?;
+        let w = self.block_words(b).map_err(|_| ps::CORNER_NEXT)?;
         let motion = w.motion.unwrap_or(modal.motion);
         if motion != 1 || w.one_shot.is_some() || !w.moves() {
             return Err(ps::CORNER_NEXT);

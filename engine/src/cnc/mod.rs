@@ -653,6 +653,12 @@ impl SimCnc {
             alarms: self.alarms.clone(),
             mst: self.mst_status(),
             toolpath: (!self.programs.is_empty()).then(|| self.toolpath.get(|| self.toolpath())),
+            macro_message: self
+                .macros
+                .message
+                .clone()
+                .filter(|(n, _)| self.alarms.contains(n)),
+            macros: Some(std::sync::Arc::new(self.macro_table())),
         }
     }
 }
@@ -686,6 +692,10 @@ pub struct CncStatus {
     pub mst: MstStatus,
     /// The loaded program's path, run dry once per load (docs/gcode.md, "Toolpath").
     pub toolpath: Option<std::sync::Arc<toolpath::Toolpath>>,
+    /// The active macro alarm (3000–3200) and its message.
+    pub macro_message: Option<(u16, String)>,
+    /// The macro variables an operator sees (docs/gcode.md, "Macros").
+    pub macros: Option<std::sync::Arc<macro_b::MacroTable>>,
 }
 
 /// The M/S/T interface as lamps and codes.

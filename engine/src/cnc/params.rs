@@ -72,7 +72,7 @@ const BIG: i64 = 99_999_999;
 const FEED: i64 = 240_000;
 
 /// The GSK988TA parameters the simulator knows, in number order.
-pub static TABLE: [ParamSpec; 58] = [
+pub static TABLE: [ParamSpec; 59] = [
     p(71, Word, NoSel, false, 0, 0, 60_000),
     ParamSpec {
         number: 1006,
@@ -129,6 +129,7 @@ pub static TABLE: [ParamSpec; 58] = [
     p(5143, Word, NoSel, false, 60, 0, 120),
     p(6000, Bit, NoSel, false, 0, 0, 255),
     p(6001, Bit, NoSel, false, 0, 0, 255),
+    p(6004, Bit, NoSel, false, 0, 0, 255),
     p(6711, Word, NoSel, false, 0, 0, BIG),
     p(6712, Word, NoSel, false, 0, 0, BIG),
     p(6713, Word, NoSel, false, 0, 0, BIG),
@@ -182,7 +183,7 @@ idx! {
     P1326 = 1326, P1327 = 1327, P1410 = 1410, P1420 = 1420, P1421 = 1421, P1423 = 1423,
     P1424 = 1424, P1425 = 1425, P3003 = 3003, P3401 = 3401, P3402 = 3402, P3410 = 3410, P3411 = 3411,
     P3741 = 3741, P5130 = 5130, P5132 = 5132, P5133 = 5133, P5135 = 5135, P5136 = 5136,
-    P5137 = 5137, P5139 = 5139, P5140 = 5140, P5141 = 5141, P5142 = 5142, P5143 = 5143, P6000 = 6000, P6001 = 6001, P6711 = 6711, P6712 = 6712,
+    P5137 = 5137, P5139 = 5139, P5140 = 5140, P5141 = 5141, P5142 = 5142, P5143 = 5143, P6000 = 6000, P6001 = 6001, P6004 = 6004, P6711 = 6711, P6712 = 6712,
     P6713 = 6713, P7103 = 7103, P7113 = 7113, P7114 = 7114, P8002 = 8002, P8010 = 8010,
     P8130 = 8130,
 }

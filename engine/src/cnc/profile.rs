@@ -117,7 +117,7 @@ impl SimCnc {
             ..Profile::default()
         };
         for (k, b) in prog.blocks[first..=last].iter().enumerate() {
-            let w: Words = b.words?;
+            let w: Words = self.block_words(b)?;
             if w.one_shot.is_some() || w.drill.is_some() || w.motion.is_some_and(|g| g > 3) {
                 return Err(ps::CYCLE_COMMAND);
             }

@@ -6,6 +6,7 @@
 //! which the caller owns so they outlive a machine, and returns [`CncEvent`]s that the
 //! application sends to the CNC.
 
+use super::macro_view::{MacroEdit, macro_ui};
 use super::toolpath_view::{ToolpathView, toolpath_ui};
 use crate::gui::i18n::{Lang, Msg};
 use crate::gui::theme;
@@ -13,7 +14,7 @@ use egui::accesskit::Role;
 use ladder_engine::cnc::{AXIS_NAMES, CncStatus, Mode, RunState};
 
 /// What the user asked the CNC for.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum CncEvent {
     /// Load this text as the memory programs ("Load program"): `CncCommand::Program`.
     Program(String),
@@ -21,6 +22,13 @@ pub enum CncEvent {
     Mdi(String),
     /// The CNC's RESET key: `CncCommand::Reset`.
     Reset,
+    /// A macro variable typed into the table: `CncCommand::Macro`.
+    Macro {
+        /// Variable number.
+        number: u16,
+        /// Its value, `None` for vacant.
+        value: Option<f64>,
+    },
 }
 
 /// The editor buffers of the CNC screen, owned by the caller.
@@ -32,6 +40,8 @@ pub struct CncTexts {
     pub mdi: String,
     /// Scroll the program listing to this line at the next frame (a toolpath click).
     pub jump: Option<usize>,
+    /// The macro-variable table's group and the value being typed.
+    pub macros: MacroEdit,
 }
 
 /// The name of a mode in the UI language.
@@ -90,6 +100,7 @@ pub fn cnc_ui(
                 }
                 Some(s) => {
                     status_ui(ui, s, lang, alarm_text);
+                    macro_ui(ui, s, &mut texts.macros, lang, &mut events);
                     view.update(s);
                 }
             }
@@ -491,6 +502,62 @@ mod tests {
         h.get_by_label("RESET").click();
         h.run();
         assert_eq!(h.state().3, [CncEvent::Reset]);
+    }
+
+    #[test]
+    fn a_macro_variable_is_typed_in_while_stopped_and_read_only_while_running() {
+        use ladder_engine::cnc::macro_b::{LOCALS, MacroTable};
+        let mut table = MacroTable {
+            level: 1,
+            locals: [None; LOCALS],
+            commons: [None; 100],
+            kept: vec![None; 500],
+        };
+        table.locals[0] = Some(2.5);
+        table.commons[1] = Some(-3.0);
+        let status = CncStatus {
+            run: RunState::Stop,
+            macros: Some(std::sync::Arc::new(table)),
+            ..CncStatus::default()
+        };
+        let mut h = harness(Some(status));
+        h.get_by_label("Macro variables").click();
+        h.run();
+        h.get_by_label("Locals #1–#33, call level 1");
+        h.get_by_label("#1");
+        h.get_by_label("2.5").click();
+        h.run();
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        h.get_by_role_and_label(Role::TextInput, "#1")
+            .type_text("7.25");
+        h.run();
+        h.key_press(egui::Key::Enter);
+        h.run();
+        assert_eq!(
+            h.state().3,
+            [CncEvent::Macro {
+                number: 1,
+                value: Some(7.25)
+            }]
+        );
+        // A text that is neither a number nor vacant is refused with the variable named.
+        h.get_by_label("#100–#199").click();
+        h.run();
+        h.get_by_label("-3").click();
+        h.run();
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        h.get_by_role_and_label(Role::TextInput, "#101")
+            .type_text("x");
+        h.run();
+        h.key_press(egui::Key::Enter);
+        h.run();
+        assert_eq!(h.state().3.len(), 1);
+        h.get_by_label_contains("#101: neither a number nor vacant");
+        // While the program runs the values are labels, not buttons.
+        h.state_mut().0.as_mut().unwrap().run = RunState::Run;
+        h.run();
+        h.get_by_label("The program runs: read only");
+        assert!(h.query_by_role_and_label(Role::Button, "-3").is_none());
     }
 
     #[test]

@@ -136,9 +136,15 @@ impl LadderApp {
             .session
             .as_ref()
             .and_then(|s| s.published.snapshot.cnc.clone());
+        let message = status.as_ref().and_then(|s| s.macro_message.clone());
         let alarm = |n: u16| {
-            ladder_engine::cnc::alarm_text::alarm_text(n, lang == super::super::i18n::Lang::Zh)
-                .into_owned()
+            let text =
+                ladder_engine::cnc::alarm_text::alarm_text(n, lang == super::super::i18n::Lang::Zh);
+            match &message {
+                // #3000's alarm shows the program's own message.
+                Some((k, m)) if *k == n && !m.is_empty() => format!("{text}: {m}"),
+                _ => text.into_owned(),
+            }
         };
         let online = &mut self.online;
         let events = cnc_ui(
@@ -154,6 +160,7 @@ impl LadderApp {
                 CncEvent::Program(text) => CncCommand::Program(text),
                 CncEvent::Mdi(text) => CncCommand::Mdi(text),
                 CncEvent::Reset => CncCommand::Reset,
+                CncEvent::Macro { number, value } => CncCommand::Macro { number, value },
             };
             if self.online() {
                 self.send_command(MachineCommand::Cnc(c));
@@ -166,11 +173,21 @@ impl LadderApp {
 
     /// The CNC alarm's text in the UI language.
     pub(super) fn cnc_alarm_text(&self, n: u16) -> String {
-        ladder_engine::cnc::alarm_text::alarm_text(
+        let text = ladder_engine::cnc::alarm_text::alarm_text(
             n,
             self.settings.lang == super::super::i18n::Lang::Zh,
-        )
-        .into_owned()
+        );
+        let message = self
+            .online
+            .session
+            .as_ref()
+            .and_then(|s| s.published.snapshot.cnc.as_ref())
+            .and_then(|c| c.macro_message.clone());
+        match message {
+            // #3000's alarm shows the program's own message.
+            Some((k, m)) if k == n && !m.is_empty() => format!("{text}: {m}"),
+            _ => text.into_owned(),
+        }
     }
 
     /// The traced watch rows over the recorded window, from the scan recorder: exact to the

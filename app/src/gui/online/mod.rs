@@ -10,6 +10,7 @@ pub mod cnc_view;
 pub mod live;
 mod machine;
 pub mod machine_page;
+pub mod macro_view;
 pub mod panel_view;
 pub mod session;
 pub mod toolpath_raster;

@@ -108,6 +108,20 @@ pub enum Expr {
 pub trait Vars {
     /// The value of variable `n`, `None` when vacant, or the alarm reading it gives.
     fn read(&self, n: i64) -> Result<Option<f64>, u16>;
+
+    /// #6004 bit 0 NAT: 1 gives ASIN and ATAN −90…90° and −180…180°, 0 gives 270…90° and
+    /// 0…360°.
+    fn nat(&self) -> bool {
+        false
+    }
+}
+
+/// How an expression is evaluated.
+struct Ctx<'a> {
+    vars: &'a dyn Vars,
+    /// In an NC address: ROUND rounds to this many decimals (the address's least increment).
+    round: Option<i32>,
+    nat: bool,
 }
 
 /// A value: `None` is vacant.
@@ -150,8 +164,13 @@ fn trig(f: fn(f64) -> f64, d: f64) -> f64 {
     if (v - r).abs() < 1e-15 { r } else { v }
 }
 
+/// An angle of −90…90° as NAT = 0 gives it: 270…90°.
+fn positive(d: f64, nat: bool) -> f64 {
+    if !nat && d < 0.0 { d + 360.0 } else { d }
+}
+
 impl Func {
-    fn apply(self, v: f64) -> Result<Value, u16> {
+    fn apply(self, v: f64, ctx: &Ctx) -> Result<Value, u16> {
         let bad = Err(alarm::ARGUMENT);
         let r = match self {
             Func::Sin => trig(f64::sin, v),
@@ -163,14 +182,20 @@ impl Func {
                 trig(f64::tan, v)
             }
             Func::Asin if v.abs() > 1.0 => return bad,
-            Func::Asin => deg(v.asin()),
+            Func::Asin => positive(deg(v.asin()), ctx.nat),
             Func::Acos if v.abs() > 1.0 => return bad,
             Func::Acos => deg(v.acos()),
-            Func::Atan => deg(v.atan()),
+            Func::Atan => positive(deg(v.atan()), ctx.nat),
             Func::Sqrt if v < 0.0 => return bad,
             Func::Sqrt => v.sqrt(),
             Func::Abs => v.abs(),
-            Func::Round => v.round(),
+            Func::Round => match ctx.round {
+                Some(p) => {
+                    let scale = 10f64.powi(p);
+                    (v * scale).round() / scale
+                }
+                None => v.round(),
+            },
             Func::Fix => v.trunc(),
             Func::Fup => {
                 let t = v.trunc();
@@ -221,14 +246,14 @@ fn bcd(v: f64) -> Result<f64, u16> {
 }
 
 impl Func2 {
-    fn apply(self, a: f64, b: f64) -> Result<Value, u16> {
+    fn apply(self, a: f64, b: f64, nat: bool) -> Result<Value, u16> {
         let r = match self {
             Func2::Atan2 => {
                 if a == 0.0 && b == 0.0 {
                     return Err(alarm::ARGUMENT);
                 }
-                let d = deg(a.atan2(b));
-                if d < 0.0 { d + 360.0 } else { d }
+                // NAT = 0: 0…360°; NAT = 1: −180…180°.
+                positive(deg(a.atan2(b)), nat)
             }
             Func2::Pow => {
                 if (a == 0.0 && b <= 0.0) || (a < 0.0 && b.fract() != 0.0) {
@@ -279,16 +304,32 @@ impl Op {
 impl Expr {
     /// The value, or the alarm evaluating it gives.
     pub fn eval(&self, vars: &dyn Vars) -> Result<Value, u16> {
+        self.eval_in(vars, None)
+    }
+
+    /// The value in an NC address whose least increment has `round` decimals (ROUND rounds
+    /// to it), or anywhere else with `None`.
+    pub fn eval_in(&self, vars: &dyn Vars, round: Option<i32>) -> Result<Value, u16> {
+        self.value(&Ctx {
+            vars,
+            round,
+            nat: vars.nat(),
+        })
+    }
+
+    fn value(&self, c: &Ctx) -> Result<Value, u16> {
         match self {
             Expr::Const(v) => Ok(Some(*v)),
-            Expr::Var(n) => vars.read(*n),
-            Expr::VarAt(e) => vars.read(int(e.eval(vars)?)?),
-            Expr::Neg(e) => Ok(e.eval(vars)?.map(|v| if v == 0.0 { 0.0 } else { -v })),
-            Expr::Bin(op, a, b) => op.apply(a.eval(vars)?, b.eval(vars)?),
-            Expr::Call(f, e) => f.apply(e.eval(vars)?.unwrap_or(0.0)),
-            Expr::Call2(f, a, b) => {
-                f.apply(a.eval(vars)?.unwrap_or(0.0), b.eval(vars)?.unwrap_or(0.0))
-            }
+            Expr::Var(n) => c.vars.read(*n),
+            Expr::VarAt(e) => c.vars.read(int(e.value(c)?)?),
+            Expr::Neg(e) => Ok(e.value(c)?.map(|v| if v == 0.0 { 0.0 } else { -v })),
+            Expr::Bin(op, a, b) => op.apply(a.value(c)?, b.value(c)?),
+            Expr::Call(f, e) => f.apply(e.value(c)?.unwrap_or(0.0), c),
+            Expr::Call2(f, a, b) => f.apply(
+                a.value(c)?.unwrap_or(0.0),
+                b.value(c)?.unwrap_or(0.0),
+                c.nat,
+            ),
         }
     }
 
@@ -418,13 +459,17 @@ impl<'a> Parser<'a> {
 
     /// A signed primary: what a word's value may be (`-#1`, `[#2+1]`, `1.5`).
     pub fn unary(&mut self) -> Result<Expr, u16> {
-        if self.eat("-") {
-            return Ok(Expr::Neg(Box::new(self.unary()?)));
+        // A run of signs is read in a loop: only whether the minus signs are odd counts.
+        let mut negative = false;
+        loop {
+            if self.eat("-") {
+                negative = !negative;
+            } else if !self.eat("+") {
+                break;
+            }
         }
-        if self.eat("+") {
-            return self.unary();
-        }
-        self.primary()
+        let e = self.primary()?;
+        Ok(if negative { Expr::Neg(Box::new(e)) } else { e })
     }
 
     fn bracket(&mut self) -> Result<Expr, u16> {

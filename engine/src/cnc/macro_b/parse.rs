@@ -7,6 +7,9 @@ use super::{Assign, MacroBlock, Then, Word, WordValue};
 use crate::cnc::program::{NcBlock, ps};
 use crate::cnc::word::number;
 
+/// Longest macro block read, in bytes without spaces and comments (0114 beyond).
+pub const BLOCK_MAX: usize = 1024;
+
 /// Whether the text (upper case, without spaces, comments, N or `/`) is one a macro reader
 /// reads: a statement, a `#` or `[` anywhere, or G65/G66.
 fn is_macro(rest: &str) -> bool {
@@ -62,6 +65,10 @@ pub fn parse(body: &str, text: &str) -> Option<Result<MacroBlock, u16>> {
     let rest = strip_n(body);
     if !is_macro(rest) {
         return None;
+    }
+    if rest.len() > BLOCK_MAX {
+        // Longer than any CNC's block buffer, and deep enough to strain the evaluator.
+        return Some(Err(ps::FORMAT));
     }
     Some(statement(rest, text))
 }

@@ -5,6 +5,7 @@
 use super::expr::{Value, Vars};
 use super::{ALARM_BASE, ALARM_MAX};
 use crate::cnc::data::{OffsetType, TOOL_OFFSETS};
+use crate::cnc::params::P6004;
 use crate::cnc::program::ps;
 use crate::cnc::{AXES, SimCnc};
 
@@ -89,6 +90,10 @@ fn bit(word: u32, k: i64) -> Value {
 }
 
 impl Vars for SimCnc {
+    fn nat(&self) -> bool {
+        self.params.bit(P6004, 0, 0)
+    }
+
     fn read(&self, n: i64) -> Result<Value, u16> {
         let m = &self.macros;
         Ok(match n {
