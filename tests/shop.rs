@@ -154,6 +154,7 @@ fn shop_programs_in_every_style_run_to_their_end_without_an_alarm() {
         "gsk-taper-g90.nc",
         "macro-grooves-g65.nc",
         "macro-chamfer-inch.nc",
+        "gsk-macro-thread.nc",
     ] {
         let o = run_program(nc, 400_000);
         assert_eq!(

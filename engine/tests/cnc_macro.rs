@@ -567,3 +567,30 @@ fn the_toolpath_runs_macro_statements_dry_and_ends_at_a_loop_waiting_for_the_plc
     assert!((last[1] - 14.0).abs() < 1e-9, "{last:?}");
     assert_eq!(var(&r, 1), None);
 }
+
+#[test]
+fn a_3006_stop_waits_for_cycle_start_and_output_commands_do_nothing() {
+    // #3006 stops after its block with the message; cycle start goes on. POPEN, DPRNT and
+    // PCLOS have no device and pass; #3901/#3902 are the parts counters (#6711/#6713).
+    let mut r = Rig::mem(
+        "O1;N1#100=1;N2#3006=1(TURN THE PART OVER);N3POPEN;N4DPRNT[PART*#100[30]];N5PCLOS;\
+         N6#3901=#3901+5;N7#3902=9;N8#101=#5081+#5101;N9M30",
+    );
+    r.start();
+    r.xs(3);
+    assert_eq!(r.v("cnc.run"), "STOP");
+    assert_eq!(r.v("cnc.block"), "2");
+    assert_eq!(
+        r.cnc.status().stop_message.as_deref(),
+        Some("TURN THE PART OVER")
+    );
+    assert!(r.cnc.alarms().is_empty());
+    r.start();
+    r.xs(5);
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    assert_eq!(r.cnc.status().stop_message, None);
+    // M30 counted one more on top of the 5 the program added.
+    assert_eq!(r.v("cnc.param.6711"), "6");
+    assert_eq!(r.v("cnc.param.6713"), "9");
+    close(&r, 101, 0.0);
+}

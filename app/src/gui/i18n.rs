@@ -519,6 +519,7 @@ messages! {
     CncMacroRunning => "程序运行中：只读", "The program runs: read only";
     CncMacroBad => "不是数字，也不是 vacant", "neither a number nor vacant";
     CncMacroVacant => "<空>", "<vacant>";
+    CncStopMessage => "程序停止信息（循环启动继续）", "Program stopped (cycle start goes on)";
     CncCurrentLine => "当前程序段：第", "Current block: line";
     CncPickedLine => "点选程序段：第", "Picked block: line";
     CncToolpath => "刀具轨迹", "Toolpath";

@@ -7,7 +7,7 @@
 //! the rest of 1–999. PLC alarms (1000–1999) get a generic text: their own text is the
 //! project's message table row, which the editor shows itself.
 
-use super::program::ps;
+use super::ps;
 use super::{ALARM_ESTOP, ALARM_HARD_LIMIT, ALARM_STROKE};
 use std::borrow::Cow;
 
@@ -195,16 +195,10 @@ mod tests {
     use super::*;
 
     /// The numbers the simulator's sources name as alarms: the `ps` constants of
-    /// `program.rs` and the `ALARM_` constants of `mod.rs`, read from the text so a new
+    /// `ps.rs` and the `ALARM_` constants of `mod.rs`, read from the text so a new
     /// constant is found without anyone listing it.
     fn constants_in_sources() -> Vec<u16> {
-        let program = include_str!("program.rs");
-        let ps_block = program
-            .split("pub mod ps {")
-            .nth(1)
-            .and_then(|rest| rest.split("\n}").next())
-            .expect("program.rs has the ps constants");
-        let ps = ps_block
+        let ps = include_str!("ps.rs")
             .lines()
             .filter(|l| l.trim_start().starts_with("pub const"))
             .map(str::to_owned);

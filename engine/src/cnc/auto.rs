@@ -5,14 +5,16 @@
 
 use super::cycle::CycleMemory;
 use super::drill::DrillMemory;
+use super::frame::{Cursor, Frame, MDI};
 use super::macro_b::run::Flow;
 use super::macro_b::{Locals, MacroBlock, MacroCall};
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
 use super::path::{SegKind, Segment};
-use super::program::{MDI_NUMBER, NcBlock, NcProgram, ps};
-use super::word::{OneShot, Words};
+use super::program::{MDI_NUMBER, NcBlock, NcProgram};
+use super::ps;
+use super::word::{OneShot, Words, special_m};
 use super::{AXES, Mode, SimCnc};
 
 /// The automatic operation state.
@@ -51,33 +53,6 @@ impl RunState {
 
 /// Blocks skipped (or subprogram ends passed) in a row before P/S 0079 is raised.
 const PASS_LIMIT: u32 = 100_000;
-
-/// Program index of the MDI buffer in a [`Cursor`].
-pub(super) const MDI: usize = usize::MAX;
-
-/// A block position: program index (or [`MDI`]) and block index.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(super) struct Cursor {
-    pub(super) prog: usize,
-    pub(super) block: usize,
-}
-
-/// A caller of a subprogram.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Frame {
-    pub(super) ret: Cursor,
-    pub(super) sub: usize,
-    /// The block the call starts at (0; an M97's sequence number's block).
-    pub(super) start: usize,
-    pub(super) repeats: u32,
-    /// A G70 profile: the index of its last block (Q), after which the G70 block is
-    /// returned to, and the cycle's start point.
-    pub(super) until: Option<(usize, [i64; AXES])>,
-    /// A macro call (G65, G66): the locals each repetition starts with.
-    pub(super) args: Option<Locals>,
-    /// A G66 modal call: moves inside it call nothing.
-    pub(super) modal: bool,
-}
 
 /// The executing block.
 #[derive(Clone, Copy, Debug)]
@@ -281,8 +256,6 @@ impl Auto {
     }
 }
 
-use super::block_check::special_m;
-
 impl SimCnc {
     fn program_ref(&self, prog: usize) -> Option<&NcProgram> {
         if prog == MDI {
@@ -396,6 +369,7 @@ impl SimCnc {
                 RunState::Stop | RunState::Hold => {
                     self.auto.state = RunState::Run;
                     self.auto.interrupted = false;
+                    self.macros.stop_message = None;
                 }
                 RunState::Run => {}
             }

@@ -6,7 +6,7 @@ use super::arc::{ArcPath, center_from_radius};
 use super::auto::Modal;
 use super::params::{P1240, P3401, P3410};
 use super::path::{Home, SegKind, Segment};
-use super::program::ps;
+use super::ps;
 use super::word::{Num, OneShot, Units, Words};
 use super::{AXES, SimCnc};
 

@@ -5,17 +5,23 @@
 
 use super::auto::Modal;
 use super::drill::DrillMemory;
+use super::macro_b::MacroBlock;
 use super::path::SegKind;
-use super::program::ps;
-use super::word::Words;
+use super::program::NcBlock;
+use super::ps;
+use super::word::{Words, special_m};
 use super::{AXES, SimCnc};
 
-/// The special M codes that end or stop a program (M00, M01, M02, M30).
-pub(super) fn special_m(ms: &[u32]) -> Option<u32> {
-    ms.iter().copied().find(|m| matches!(m, 0 | 1 | 2 | 30))
-}
-
 impl SimCnc {
+    /// A block's words: as read at load, or, for an NC block with expressions, evaluated now
+    /// (a macro statement's are the alarm a cycle's profile gives for it).
+    pub(in crate::cnc) fn block_words(&self, b: &NcBlock) -> Result<Words, u16> {
+        match b.mac.as_deref() {
+            Some(MacroBlock::Nc(ws)) => self.render_words(ws),
+            _ => b.words,
+        }
+    }
+
     /// The checks that depend on the machine (docs/cnc.md, "Program errors"); returns the
     /// program an M98 calls.
     pub(super) fn check_block(
@@ -48,7 +54,7 @@ impl SimCnc {
             // M97 P: the block numbered P of this program as a subprogram (Haas's local call).
             let (prog, here) = self.running_program().ok_or(ps::NO_SEQUENCE)?;
             let n = w.p.unwrap_or(0);
-            let block = super::profile::find_sequence(prog, n, here + 1).ok_or(ps::NO_SEQUENCE)?;
+            let block = super::program::find_sequence(prog, n, here + 1).ok_or(ps::NO_SEQUENCE)?;
             if self.subprogram_levels() >= 4 {
                 return Err(ps::NESTING);
             }

@@ -7,7 +7,7 @@
 use super::arc::center_from_radius;
 use super::auto::Modal;
 use super::path::{SegKind, Segment};
-use super::program::ps;
+use super::ps;
 use super::word::{Units, Words};
 use super::{AXES, SimCnc};
 

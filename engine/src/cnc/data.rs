@@ -143,6 +143,8 @@ pub struct Macros {
     pub run_ms: u64,
     /// The alarm #3000 raised last and its message.
     pub message: Option<(u16, String)>,
+    /// The message of the stop #3006 made, shown until cycle start or reset.
+    pub stop_message: Option<String>,
 }
 
 impl Default for Macros {
@@ -156,6 +158,7 @@ impl Default for Macros {
             hours_base: 0.0,
             run_ms: 0,
             message: None,
+            stop_message: None,
         }
     }
 }

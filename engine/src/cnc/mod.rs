@@ -27,6 +27,7 @@ mod corner;
 mod cycle;
 pub mod data;
 mod drill;
+mod frame;
 mod keys;
 pub mod macro_b;
 mod manual;
@@ -37,6 +38,7 @@ mod path;
 mod plc_axes;
 mod profile;
 pub mod program;
+pub mod ps;
 mod repeat;
 mod rough;
 pub mod signals;
@@ -512,6 +514,7 @@ impl SimCnc {
         self.flags.halted = true;
         self.alarms
             .retain(|&n| is_plc_alarm(n) || n == ALARM_ESTOP || ALARM_HARD_LIMIT.contains(&n));
+        self.macros.stop_message = None;
         if !self.params.bit(params::P6001, 0, 6) {
             // #6001 bit 6 CCV = 0: reset clears the common variables #100–#199.
             self.macros.volatile = [None; 100];
@@ -659,6 +662,7 @@ impl SimCnc {
                 .clone()
                 .filter(|(n, _)| self.alarms.contains(n)),
             macros: Some(std::sync::Arc::new(self.macro_table())),
+            stop_message: self.macros.stop_message.clone(),
         }
     }
 }
@@ -696,6 +700,8 @@ pub struct CncStatus {
     pub macro_message: Option<(u16, String)>,
     /// The macro variables an operator sees (docs/gcode.md, "Macros").
     pub macros: Option<std::sync::Arc<macro_b::MacroTable>>,
+    /// The message of a stop by `#3006 = n (MESSAGE)`, until cycle start or reset.
+    pub stop_message: Option<String>,
 }
 
 /// The M/S/T interface as lamps and codes.

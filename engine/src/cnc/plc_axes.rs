@@ -5,7 +5,7 @@
 use super::manual::{Return, Run};
 use super::motion::{Motion, MotionKind};
 use super::params::{P1240, P1420, P1421, P1424, P8002, P8010};
-use super::program::ps;
+use super::ps;
 use super::signals::FImage;
 use super::{ALARM_HARD_LIMIT, ALARM_STROKE, AXES, SimCnc};
 use crate::vm::cnc::AxisStatus;

@@ -5,7 +5,8 @@
 
 use super::auto::Modal;
 use super::path::{SegKind, Segment};
-use super::program::{NcProgram, ps};
+use super::program::find_sequence;
+use super::ps;
 use super::word::Words;
 use super::{AXES, SimCnc};
 
@@ -64,15 +65,6 @@ pub(super) struct Profile {
 
 /// P/S 0063: no block with the sequence number P (or Q), or Q before P.
 pub(super) const NO_SEQUENCE: u16 = ps::NO_SEQUENCE;
-
-/// The index of the block numbered `n` in `prog`, searched from `from` to the end, then from
-/// the start.
-pub(super) fn find_sequence(prog: &NcProgram, n: u32, from: usize) -> Option<usize> {
-    let at = |i: usize| prog.blocks[i].n == Some(n);
-    (from..prog.blocks.len())
-        .find(|&i| at(i))
-        .or_else(|| (0..from.min(prog.blocks.len())).find(|&i| at(i)))
-}
 
 impl SimCnc {
     /// (Z, X radius) in mm of a frame position.

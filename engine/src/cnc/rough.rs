@@ -8,7 +8,7 @@
 use super::arc::ArcPath;
 use super::path::{SegKind, Segment, room};
 use super::profile::{Elem, Profile};
-use super::program::ps;
+use super::ps;
 use super::{AXES, SimCnc};
 
 const EPS: f64 = 1e-6;

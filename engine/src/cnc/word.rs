@@ -3,7 +3,7 @@
 //! inch, least increments) depends on G20/G21 and #3401 DPI when the block executes, not when
 //! the text is read. G codes are sorted into their groups here.
 
-use super::program::ps;
+use super::ps;
 
 /// Largest length, in increments (±99999.999 mm).
 pub const COORD_MAX: f64 = 99_999_999.0;
@@ -177,6 +177,11 @@ impl Words {
     pub fn g28(&self) -> bool {
         matches!(self.one_shot, Some(OneShot::Ref | OneShot::Ref2))
     }
+}
+
+/// The special M codes that end or stop a program (M00, M01, M02, M30).
+pub(super) fn special_m(ms: &[u32]) -> Option<u32> {
+    ms.iter().copied().find(|m| matches!(m, 0 | 1 | 2 | 30))
 }
 
 /// A number as written after a letter, and how many bytes it took.

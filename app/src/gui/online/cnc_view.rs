@@ -100,7 +100,13 @@ pub fn cnc_ui(
                 }
                 Some(s) => {
                     status_ui(ui, s, lang, alarm_text);
-                    macro_ui(ui, s, &mut texts.macros, lang, &mut events);
+                    let mut typed = Vec::new();
+                    macro_ui(ui, s, &mut texts.macros, lang, &mut typed);
+                    events.extend(
+                        typed
+                            .into_iter()
+                            .map(|(number, value)| CncEvent::Macro { number, value }),
+                    );
                     view.update(s);
                 }
             }
@@ -270,6 +276,10 @@ fn status_ui(ui: &mut egui::Ui, s: &CncStatus, lang: Lang, alarm_text: &dyn Fn(u
             );
             ui.colored_label(theme::ERROR, alarm_text(n));
         });
+    }
+    if let Some(m) = &s.stop_message {
+        // `#3006 = n (MESSAGE)` stopped the program: cycle start goes on.
+        ui.colored_label(theme::CAUTION, format!("{}: {m}", t(Msg::CncStopMessage)));
     }
 }
 

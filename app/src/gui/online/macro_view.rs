@@ -3,7 +3,6 @@
 //! While the program is not running a value can be typed in (a number, or `vacant`), which
 //! becomes a `cnc macro` command.
 
-use super::cnc_view::CncEvent;
 use crate::gui::i18n::{Lang, Msg};
 use crate::gui::theme;
 use ladder_engine::cnc::{CncStatus, RunState};
@@ -58,14 +57,17 @@ pub fn parse_value(text: &str) -> Option<Option<f64>> {
     t.parse::<f64>().ok().filter(|v| v.is_finite()).map(Some)
 }
 
-/// Draws the table under its heading; a value typed and confirmed with Enter becomes a
-/// [`CncEvent::Macro`].
+/// A variable typed in: its number and value (`None`: vacant).
+pub type Typed = (u16, Option<f64>);
+
+/// Draws the table under its heading; a value typed and confirmed with Enter is pushed to
+/// `events`.
 pub fn macro_ui(
     ui: &mut egui::Ui,
     s: &CncStatus,
     edit: &mut MacroEdit,
     lang: Lang,
-    events: &mut Vec<CncEvent>,
+    events: &mut Vec<Typed>,
 ) {
     let Some(table) = s.macros.as_deref() else {
         return;
@@ -75,7 +77,8 @@ pub fn macro_ui(
     egui::CollapsingHeader::new(t(Msg::CncMacros))
         .id_salt("cnc-macros")
         .show(ui, |ui| {
-            ui.horizontal(|ui| {
+            // Wraps in a narrow panel rather than running off its edge.
+            ui.horizontal_wrapped(|ui| {
                 let locals = format!("{} {}", t(Msg::CncMacroLocals), table.level);
                 ui.selectable_value(&mut edit.group, MacroGroup::Locals, locals);
                 ui.selectable_value(&mut edit.group, MacroGroup::Commons, "#100–#199");
@@ -128,7 +131,7 @@ fn cell(
     editable: bool,
     edit: &mut MacroEdit,
     lang: Lang,
-    events: &mut Vec<CncEvent>,
+    events: &mut Vec<Typed>,
 ) {
     let name = ui.add_sized([44.0, 18.0], egui::Label::new(format!("#{n}")));
     let width = 80.0;
@@ -147,7 +150,7 @@ fn cell(
                 if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                     match parse_value(text) {
                         Some(value) => {
-                            events.push(CncEvent::Macro { number: n, value });
+                            events.push((n, value));
                             edit.refused = None;
                         }
                         None => edit.refused = Some(n),

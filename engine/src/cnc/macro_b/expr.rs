@@ -3,7 +3,7 @@
 //! variable, which arithmetic reads as 0 but a plain variable reference, `EQ`/`NE` and a word
 //! value keep apart from 0.
 
-use crate::cnc::program::ps as alarm;
+use crate::cnc::ps as alarm;
 
 /// Deepest nesting of brackets (function brackets included); one more is alarm 0118.
 pub const BRACKETS_MAX: usize = 5;

@@ -95,6 +95,9 @@ pub enum MacroBlock {
     },
     /// An NC block with at least one expression word.
     Nc(Vec<Word>),
+    /// POPEN, PCLOS, DPRNT[…] or BPRNT[…]: external output, which has no device here and
+    /// does nothing.
+    Output,
     /// `G65 P L args` or `G66 P L args`.
     Call {
         /// G66: a modal call after each move.

@@ -4,7 +4,7 @@
 
 use super::expr::{Expr, Parser};
 use super::{Assign, MacroBlock, Then, Word, WordValue};
-use crate::cnc::program::{NcBlock, ps};
+use crate::cnc::ps;
 use crate::cnc::word::number;
 
 /// Longest macro block read, in bytes without spaces and comments (0114 beyond).
@@ -14,9 +14,11 @@ pub const BLOCK_MAX: usize = 1024;
 /// reads: a statement, a `#` or `[` anywhere, or G65/G66.
 fn is_macro(rest: &str) -> bool {
     let b = rest.as_bytes();
-    ["IF", "WHILE", "GOTO", "DO", "END"]
-        .iter()
-        .any(|k| rest.starts_with(k))
+    [
+        "IF", "WHILE", "GOTO", "DO", "END", "POPEN", "PCLOS", "DPRNT", "BPRNT",
+    ]
+    .iter()
+    .any(|k| rest.starts_with(k))
         || b.contains(&b'#')
         || b.contains(&b'[')
         || has_call(b)
@@ -91,6 +93,12 @@ fn statement(rest: &str, text: &str) -> Result<MacroBlock, u16> {
     }
     if p.eat("GOTO") {
         return Ok(MacroBlock::Goto(goto_target(&mut p)?));
+    }
+    if rest == "POPEN" || rest == "PCLOS" {
+        return Ok(MacroBlock::Output);
+    }
+    if (rest.starts_with("DPRNT[") || rest.starts_with("BPRNT[")) && rest.ends_with(']') {
+        return Ok(MacroBlock::Output);
     }
     if p.eat("WHILE") {
         if !p.rest().starts_with(b"[") {
@@ -246,11 +254,11 @@ fn nc_words(rest: &str) -> Result<MacroBlock, u16> {
     })
 }
 
-/// Pairs each DO with its END in one program's blocks, innermost first; what does not pair
+/// Pairs each DO with its END in one program's blocks (their macro statements), innermost first; what does not pair
 /// keeps its alarm (0124, or 0126 for a number other than 1–3).
-pub fn pair_loops(blocks: &mut [NcBlock]) {
+pub fn pair_loops(blocks: &mut [&mut Option<Box<MacroBlock>>]) {
     for b in blocks.iter_mut() {
-        match b.mac.as_deref_mut() {
+        match b.as_deref_mut() {
             Some(MacroBlock::Do { end, .. }) => *end = Err(ps::LOOP_END),
             Some(MacroBlock::End { start, .. }) => *start = Err(ps::LOOP_END),
             _ => {}
@@ -258,7 +266,7 @@ pub fn pair_loops(blocks: &mut [NcBlock]) {
     }
     let mut open: Vec<(u8, usize)> = Vec::new();
     for i in 0..blocks.len() {
-        let Some(m) = blocks[i].mac.as_deref_mut() else {
+        let Some(m) = blocks[i].as_deref_mut() else {
             continue;
         };
         match m {
@@ -277,7 +285,7 @@ pub fn pair_loops(blocks: &mut [NcBlock]) {
                 } else if open.last().is_some_and(|(o, _)| o == id) {
                     let (_, j) = open.pop().expect("checked");
                     *start = Ok(j);
-                    if let Some(MacroBlock::Do { end, .. }) = blocks[j].mac.as_deref_mut() {
+                    if let Some(MacroBlock::Do { end, .. }) = blocks[j].as_deref_mut() {
                         *end = Ok(i);
                     }
                 } else if let Some(k) = open.iter().position(|(o, _)| o == id) {

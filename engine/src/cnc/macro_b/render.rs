@@ -3,9 +3,8 @@
 //! increment, a vacant value leaving its address out.
 
 use super::expr::Vars;
-use super::{MacroBlock, Word, WordValue};
+use super::{Word, WordValue};
 use crate::cnc::SimCnc;
-use crate::cnc::program::NcBlock;
 use crate::cnc::word::{Words, words};
 use std::fmt::Write;
 
@@ -50,15 +49,6 @@ pub(super) fn value_text(letter: u8, v: f64, inch: bool) -> String {
 }
 
 impl SimCnc {
-    /// A block's words: as read at load, or, for an NC block with expressions, evaluated now
-    /// (a macro statement's are the alarm a cycle's profile gives for it).
-    pub(in crate::cnc) fn block_words(&self, b: &NcBlock) -> Result<Words, u16> {
-        match b.mac.as_deref() {
-            Some(MacroBlock::Nc(ws)) => self.render_words(ws),
-            _ => b.words,
-        }
-    }
-
     /// The words of an NC block with expressions, evaluated now.
     pub(in crate::cnc) fn render_words(&self, ws: &[Word]) -> Result<Words, u16> {
         let inch = self.auto.modal.inch;

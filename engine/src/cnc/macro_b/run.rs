@@ -11,9 +11,10 @@ use super::expr::{Expr, Value, Vars, round_half};
 use super::vars::{LOCALS, Locals};
 use super::{Assign, MacroBlock, Then, WordValue};
 use crate::cnc::SimCnc;
-use crate::cnc::auto::{Cursor, Frame, MDI, RunState};
+use crate::cnc::frame::{Cursor, Frame, MDI};
 use crate::cnc::params::{P3401, P3411, P6000};
-use crate::cnc::program::{NcProgram, ps};
+use crate::cnc::program::NcProgram;
+use crate::cnc::ps;
 
 /// Most macro statements run in one exchange.
 pub const STATEMENTS_PER_EXCHANGE: u32 = 10_000;
@@ -145,7 +146,14 @@ impl SimCnc {
                 ..c
             };
             match m {
-                MacroBlock::Assign(a) => self.assign(a)?,
+                MacroBlock::Assign(a) => {
+                    self.assign(a)?;
+                    if self.macros.stop_message.is_some() && a.target == Expr::Var(3006) {
+                        // #3006 = n (MESSAGE): stop after this statement, as M00 does.
+                        self.auto.cursor = next;
+                        return Ok(Flow::Stop);
+                    }
+                }
                 MacroBlock::If { cond, then } => {
                     if truth(cond.eval(self as &dyn Vars)?) {
                         match then {
@@ -181,7 +189,7 @@ impl SimCnc {
                         return Ok(Flow::Next);
                     }
                 }
-                MacroBlock::Nc(_) => {}
+                MacroBlock::Nc(_) | MacroBlock::Output => {}
             }
             self.auto.cursor = next;
             Ok(Flow::Next)
@@ -211,7 +219,7 @@ impl SimCnc {
             return Err(ps::SEQUENCE);
         }
         let to =
-            crate::cnc::profile::find_sequence(prog, n as u32, c.block + 1).ok_or(ps::SEQUENCE)?;
+            crate::cnc::program::find_sequence(prog, n as u32, c.block + 1).ok_or(ps::SEQUENCE)?;
         Ok(self.jump(c, to))
     }
 
@@ -359,9 +367,6 @@ impl SimCnc {
         self.auto.cursor = here;
         if let Some(e) = self.auto.exec.as_mut() {
             e.next = Some(next);
-        }
-        if self.auto.state == RunState::Run && !self.alarms.is_empty() {
-            self.auto_alarm_stop();
         }
     }
 }

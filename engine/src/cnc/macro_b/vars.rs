@@ -5,8 +5,8 @@
 use super::expr::{Value, Vars};
 use super::{ALARM_BASE, ALARM_MAX};
 use crate::cnc::data::{OffsetType, TOOL_OFFSETS};
-use crate::cnc::params::P6004;
-use crate::cnc::program::ps;
+use crate::cnc::params::{P6004, P6711, P6713};
+use crate::cnc::ps;
 use crate::cnc::{AXES, SimCnc};
 
 /// Local variables #1–#33 of one call level.
@@ -38,7 +38,9 @@ enum System {
     Offset(usize, OffsetType),
     /// A workpiece offset: system (0 EXT, 1 G54 … 6 G59) and axis slot.
     Work(usize, usize),
-    /// #5001+ block end, #5021+ machine, #5041+ absolute position of an axis slot.
+    /// #5001+ block end, #5021+ machine, #5041+ absolute, #5061+ skip position (where the
+    /// tool is: there is no skip signal), #5081+ tool offset in use, #5101+ servo deviation
+    /// (0) of an axis slot.
     Position(u8, usize),
 }
 
@@ -61,6 +63,9 @@ fn system(n: i64) -> Option<System> {
         5001..=5005 => Some(System::Position(0, (n - 5001) as usize)),
         5021..=5025 => Some(System::Position(1, (n - 5021) as usize)),
         5041..=5045 => Some(System::Position(2, (n - 5041) as usize)),
+        5061..=5065 => Some(System::Position(2, (n - 5061) as usize)),
+        5081..=5085 => Some(System::Position(3, (n - 5081) as usize)),
+        5101..=5105 => Some(System::Position(4, (n - 5101) as usize)),
         5201..=5340 => {
             let (k, slot) = ((n - 5201) / 20, ((n - 5201) % 20) as usize);
             (k <= 6 && slot < AXES).then_some(System::Work(k as usize, slot))
@@ -79,8 +84,11 @@ pub fn exists(n: i64) -> bool {
             | 1000..=1032
             | 1100..=1133
             | 3000..=3004
+            | 3006
             | 3011
             | 3012
+            | 3901
+            | 3902
             | 4001..=4130
     ) || system(n).is_some()
 }
@@ -106,11 +114,13 @@ impl Vars for SimCnc {
             1100..=1131 => bit(m.outputs, n - 1100),
             1132 => Some(f64::from(m.outputs as i32)),
             1133 => Some(f64::from(m.outputs & 0xFF)),
-            3000 => None,
+            3000 | 3006 => None,
             3001 => Some(m.timer_base + self.now_ms.saturating_sub(m.timer_at) as f64),
             3002 => Some(m.hours_base + m.run_ms as f64 / 3_600_000.0),
             3003 => Some(f64::from(self.auto.m3003)),
             3004 => Some(f64::from(self.auto.m3004)),
+            3901 => Some(self.params.one(P6711) as f64),
+            3902 => Some(self.params.one(P6713) as f64),
             3011 | 3012 => {
                 let [y, mo, d, h, mi, s] = self.clock();
                 let v = if n == 3011 {
@@ -150,7 +160,9 @@ impl SimCnc {
                 len(match kind {
                     0 => self.block_end(slot),
                     1 => self.axes[slot].m,
-                    _ => self.absolute(slot),
+                    2 => self.absolute(slot),
+                    3 => self.tool_offset_along(slot),
+                    _ => 0,
                 })
             }
         })
@@ -260,6 +272,18 @@ impl SimCnc {
                 let number = ALARM_BASE + k as u16;
                 m.message = Some((number, message.unwrap_or("").to_string()));
                 return Err(number);
+            }
+            3006 => {
+                // Stop with a message: the statement's runner stops after it.
+                m.stop_message = Some(message.unwrap_or("").to_string());
+            }
+            3901 | 3902 => {
+                let x = v.unwrap_or(0.0).round();
+                if !(0.0..=99_999_999.0).contains(&x) {
+                    return Err(ps::ARGUMENT);
+                }
+                let p = if n == 3901 { P6711 } else { P6713 };
+                self.params.set(p, 0, x as i64);
             }
             3001 => {
                 m.timer_base = v.unwrap_or(0.0);
