@@ -537,7 +537,7 @@ mod tests {
         h.get_by_label("#1");
         h.get_by_label("2.5").click();
         h.run();
-        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+        // The value is selected when the field opens: typing replaces it.
         h.get_by_role_and_label(Role::TextInput, "#1")
             .type_text("7.25");
         h.run();
@@ -555,7 +555,6 @@ mod tests {
         h.run();
         h.get_by_label("-3").click();
         h.run();
-        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
         h.get_by_role_and_label(Role::TextInput, "#101")
             .type_text("x");
         h.run();
@@ -568,6 +567,10 @@ mod tests {
         h.run();
         h.get_by_label("The program runs: read only");
         assert!(h.query_by_role_and_label(Role::Button, "-3").is_none());
+        // A #3006 stop shows its message until cycle start.
+        h.state_mut().0.as_mut().unwrap().stop_message = Some("TURN THE PART OVER".into());
+        h.run();
+        h.get_by_label("Program stopped (cycle start goes on): TURN THE PART OVER");
     }
 
     #[test]

@@ -137,15 +137,21 @@ fn cell(
     let width = 80.0;
     match &mut edit.editing {
         Some((k, text)) if *k == n && editable => {
-            let r = ui
-                .add_sized(
-                    [width, 18.0],
-                    egui::TextEdit::singleline(text).id_salt(("cnc-macro-edit", n)),
-                )
-                .labelled_by(name.id);
+            let mut out = egui::TextEdit::singleline(text)
+                .id_salt(("cnc-macro-edit", n))
+                .desired_width(width)
+                .show(ui);
             if std::mem::take(&mut edit.focus) {
-                r.request_focus();
+                // The value is selected, so what is typed replaces it.
+                out.response.request_focus();
+                let all = egui::text::CCursorRange::two(
+                    egui::text::CCursor::new(0),
+                    egui::text::CCursor::new(text.chars().count()),
+                );
+                out.state.cursor.set_char_range(Some(all));
+                out.state.store(ui.ctx(), out.response.id);
             }
+            let r = (*out.response).clone().labelled_by(name.id);
             if r.lost_focus() {
                 if ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                     match parse_value(text) {
