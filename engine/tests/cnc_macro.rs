@@ -594,3 +594,38 @@ fn a_3006_stop_waits_for_cycle_start_and_output_commands_do_nothing() {
     assert_eq!(r.v("cnc.param.6713"), "9");
     close(&r, 101, 0.0);
 }
+
+#[test]
+fn statements_waiting_ahead_go_on_during_the_move_when_the_plc_answers() {
+    // N2-N4 run ahead of N1's 10 mm at F600 (125 exchanges) and wait; the ladder answers at
+    // s+1 and N5 sets #1101 in that exchange, while Z still moves. N6 waits for N1's end.
+    let mut r = Rig::mem(
+        "O1;N1G01W-10.F600;N2#1100=1;N3WHILE[#1000EQ0]DO1;N4END1;N5#1101=1;N6G01W-1.;N7M30",
+    );
+    let s = r.start();
+    assert!(r.fb(214, 0) && !r.fb(214, 1));
+    echo(&mut r);
+    assert_eq!(r.n, s + 1);
+    assert!(r.fb(214, 1), "#1101 set during the move");
+    assert_eq!(r.v("cnc.block"), "1");
+    assert!(r.m(1) > -1_000, "Z has hardly moved: {}", r.m(1));
+    r.until(400, |r| r.v("cnc.block") == "6");
+    // N6 starts once N1 has ended at Z−10 and moves 0.08 mm in its first exchange.
+    assert_eq!(r.m(1), -10_080);
+}
+
+#[test]
+fn m99_p_returns_to_the_numbered_block_of_the_caller_or_of_the_main_program() {
+    // From O2, M99 P4 skips N3; in the main program M99 P1 loops to N1 until #100 reaches 3.
+    let r = run(
+        "O1;N1#100=0;N2M98P2;N3#100=#100+100;N4#100=#100+1;N5M30;O2;N10#101=1;N20M99P4",
+        50,
+    );
+    close(&r, 100, 1.0);
+    close(&r, 101, 1.0);
+    let r = run("O1;N1#100=#100+1;N2IF[#100GE3]GOTO9;N3M99P1;N9M30", 50);
+    close(&r, 100, 3.0);
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    let r = run("O1;N1M98P2;N2M30;O2;N10M99P77", 50);
+    assert_eq!(r.cnc.alarms(), &[63]);
+}

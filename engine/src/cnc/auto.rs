@@ -77,6 +77,8 @@ pub(super) struct Exec {
     /// M98/M97: the program and block called, and how many times.
     pub(super) call: Option<(usize, usize, u32)>,
     pub(super) ret: bool,
+    /// M99 P: the sequence number of the caller's block to return to.
+    pub(super) ret_to: Option<u32>,
     pub(super) offset: Option<u8>,
     pub(super) line: usize,
     /// G70: run blocks P to Q (indices), then come back to the start point.
@@ -85,6 +87,8 @@ pub(super) struct Exec {
     pub(super) resume: Option<usize>,
     /// Macro statements ran ahead of the block: where the program goes on.
     pub(super) next: Option<Cursor>,
+    /// The statements that ran ahead stopped in a loop: they go on each exchange.
+    pub(super) ahead_waiting: bool,
     /// A move under G66: the modal call follows the block.
     pub(super) modal_call: bool,
 }
@@ -379,8 +383,12 @@ impl SimCnc {
             self.auto.state = RunState::Stop;
             self.auto.pending_stop = false;
         }
-        if self.auto.state == RunState::Run && self.auto.exec.is_none() && !self.flags.halted {
-            self.start_next_block();
+        if self.auto.state == RunState::Run && !self.flags.halted {
+            if self.auto.exec.is_none() {
+                self.start_next_block();
+            } else {
+                self.continue_ahead();
+            }
         }
     }
 
@@ -533,11 +541,13 @@ impl SimCnc {
             end: false,
             call: None,
             ret: false,
+            ret_to: None,
             offset: None,
             line,
             g70: fx.g70,
             resume: fx.resume,
             next: None,
+            ahead_waiting: false,
             modal_call,
         };
         // The M/S/T sequence.
@@ -562,6 +572,7 @@ impl SimCnc {
             }
             e.call = call;
             e.ret = ms.contains(&99);
+            e.ret_to = w.p.filter(|_| e.ret);
         }
         if let Some(s) = w.s
             && !inp.afl
@@ -640,6 +651,20 @@ impl SimCnc {
             };
         } else if e.ret {
             a.return_from_sub();
+            if let Some(n) = e.ret_to {
+                // M99 Pn: to block n of the program returned to (of the main program itself).
+                let c = self.auto.cursor;
+                let found = self
+                    .program_ref(c.prog)
+                    .and_then(|p| super::program::find_sequence(p, n, 0));
+                match found {
+                    Some(k) => self.auto.cursor.block = k,
+                    None => {
+                        self.program_error(ps::NO_SEQUENCE);
+                        return;
+                    }
+                }
+            }
         } else if let Some(k) = e.resume {
             a.cursor.block = k;
         } else if let Some(call) = a.g66.filter(|_| e.modal_call) {

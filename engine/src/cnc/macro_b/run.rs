@@ -340,9 +340,34 @@ impl SimCnc {
         if !self.may_look_ahead() {
             return;
         }
+        let from = Cursor {
+            block: self.auto.cursor.block + 1,
+            ..self.auto.cursor
+        };
+        self.run_ahead(from);
+    }
+
+    /// While the block executes, statements that ran ahead and stopped in a loop (waiting for
+    /// the PLC, or out of the exchange's share) go on, once an exchange, as the CNC keeps
+    /// reading ahead during the move.
+    pub(in crate::cnc) fn continue_ahead(&mut self) {
+        if let Some(e) = self.auto.exec
+            && e.ahead_waiting
+            && let Some(from) = e.next
+            && self.alarms.is_empty()
+            && !self.single_block()
+        {
+            self.run_ahead(from);
+        }
+    }
+
+    /// Runs statements from `from` with the executing block's cursor kept; records where
+    /// they stopped and whether they stopped short of an NC block.
+    fn run_ahead(&mut self, from: Cursor) {
         let here = self.auto.cursor;
-        self.auto.cursor.block += 1;
+        self.auto.cursor = from;
         let mut budget = STATEMENTS_PER_EXCHANGE;
+        let mut waiting = false;
         loop {
             let c = self.auto.cursor;
             let statement = self
@@ -350,13 +375,20 @@ impl SimCnc {
                 .blocks
                 .get(c.block)
                 .is_some_and(|b| !b.slash && b.mac.as_ref().is_some_and(|m| m.is_statement()));
-            if !statement || budget == 0 {
+            if !statement {
+                break;
+            }
+            if budget == 0 {
+                waiting = true;
                 break;
             }
             budget -= 1;
             match self.macro_step() {
                 Flow::Next | Flow::Stop => {}
-                Flow::Yield => break,
+                Flow::Yield => {
+                    waiting = true;
+                    break;
+                }
                 Flow::Alarm(n) => {
                     self.raise(n);
                     break;
@@ -367,6 +399,7 @@ impl SimCnc {
         self.auto.cursor = here;
         if let Some(e) = self.auto.exec.as_mut() {
             e.next = Some(next);
+            e.ahead_waiting = waiting;
         }
     }
 }
