@@ -629,3 +629,14 @@ fn m99_p_returns_to_the_numbered_block_of_the_caller_or_of_the_main_program() {
     let r = run("O1;N1M98P2;N2M30;O2;N10M99P77", 50);
     assert_eq!(r.cnc.alarms(), &[63]);
 }
+
+#[test]
+fn a_statement_run_ahead_that_fails_names_its_own_block_and_line() {
+    let mut r = Rig::mem("O1\nN1 G01 W-10. F600\nN2 #1=1/0\nN3 M30\n");
+    r.start();
+    r.x();
+    assert_eq!(r.cnc.alarms(), &[112]);
+    assert_eq!(r.v("cnc.block"), "2");
+    assert_eq!(r.cnc.status().line, Some(3));
+    assert_eq!(r.v("cnc.run"), "STOP");
+}

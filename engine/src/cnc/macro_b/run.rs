@@ -390,6 +390,18 @@ impl SimCnc {
                     break;
                 }
                 Flow::Alarm(n) => {
+                    // The alarm names the statement's block and line, not the moving block's.
+                    let (seq, line) = self
+                        .program_of(c.prog)
+                        .blocks
+                        .get(c.block)
+                        .map_or((None, None), |b| (b.n, Some(b.line)));
+                    if let Some(seq) = seq {
+                        self.auto.last_n = seq;
+                    }
+                    if let (Some(line), Some(e)) = (line, self.auto.exec.as_mut()) {
+                        e.line = line;
+                    }
                     self.raise(n);
                     break;
                 }
