@@ -640,3 +640,35 @@ fn a_statement_run_ahead_that_fails_names_its_own_block_and_line() {
     assert_eq!(r.cnc.status().line, Some(3));
     assert_eq!(r.v("cnc.run"), "STOP");
 }
+
+#[test]
+fn a_3006_run_ahead_or_in_then_stops_and_m99_p_leaves_a_repeated_call() {
+    // Run ahead of N1: the stop comes when N1 has ended; cycle start goes on with N3.
+    let mut r = Rig::mem("O1;N1G01W-1.F600;N2#3006=1(FLIP);N3G01W-1.;N4M30");
+    r.start();
+    r.until(100, |r| r.v("cnc.run") != "RUN");
+    assert_eq!(r.v("cnc.run"), "STOP");
+    assert_eq!(r.m(1), -1_000);
+    assert_eq!(r.cnc.status().stop_message.as_deref(), Some("FLIP"));
+    r.start();
+    r.until(100, |r| r.v("cnc.run") != "RUN");
+    assert_eq!((r.v("cnc.run").as_str(), r.m(1)), ("IDLE", -2_000));
+    // IF … THEN #3006 stops too.
+    let r = run("O1;N1IF[#1EQ#0]THEN#3006=2(NO DATA);N2#100=1;N3M30", 20);
+    assert_eq!(r.v("cnc.run"), "STOP");
+    assert_eq!(var(&r, 100), None);
+    // M99 P3 from a call with a repeat left returns to the caller's N3 at once.
+    let r = run("O1;N1M98P2L2;N2#100=5;N3M30;O2;N10#101=#101+1;N20M99P3", 50);
+    assert_eq!(var(&r, 100), None);
+    close(&r, 101, 1.0);
+    assert!(r.cnc.alarms().is_empty());
+}
+
+#[test]
+fn the_dry_run_reports_a_statement_that_fails_ahead_and_passes_a_3006_stop() {
+    let r = Rig::mem("O1\nG00U1.\n#1=1/0\nG00U1.\nM30\n");
+    assert_eq!(r.cnc.toolpath().alarm, Some((112, 3)));
+    let r = Rig::mem("O1;#3006=1(LOAD);G00U2.;M30");
+    let t = r.cnc.toolpath();
+    assert_eq!((t.alarm, t.pieces.len()), (None, 1));
+}

@@ -650,6 +650,12 @@ impl SimCnc {
                 block: start,
             };
         } else if e.ret {
+            if e.ret_to.is_some()
+                && let Some(f) = a.stack.last_mut()
+            {
+                // M99 P leaves the subprogram whatever repeats remain.
+                f.repeats = 0;
+            }
             a.return_from_sub();
             if let Some(n) = e.ret_to {
                 // M99 Pn: to block n of the program returned to (of the main program itself).

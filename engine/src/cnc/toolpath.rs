@@ -107,11 +107,30 @@ impl SimCnc {
         out.points.push(self.machine_mm());
         let mut statement_runs = 0;
         while out.blocks < BLOCK_LIMIT {
+            if c.auto.state == RunState::Idle {
+                // M02/M30 or the end of the program.
+                return out;
+            }
             let before = (c.auto.cursor, c.auto.macro_writes);
             c.start_next_block();
+            if let Some(&n) = c.alarms.first() {
+                // A program error, or a statement run ahead of the block that failed.
+                let line = c.auto.current_line(&c.programs, &c.mdi).unwrap_or(0);
+                out.alarm = Some((n, line));
+                return out;
+            }
+            if c.auto.exec.is_none()
+                && c.auto.state == RunState::Stop
+                && statement_runs < STATEMENT_RUNS
+            {
+                // A #3006 stop between blocks is passed, as M00 is.
+                c.auto.state = RunState::Run;
+                c.macros.stop_message = None;
+                statement_runs += 1;
+                continue;
+            }
             let busy = c.auto.exec.is_none()
                 && c.auto.state == RunState::Run
-                && c.alarms.is_empty()
                 && before != (c.auto.cursor, c.auto.macro_writes);
             if busy && statement_runs < STATEMENT_RUNS {
                 // Macro statements used up an exchange's share and went on: so does the dry
@@ -120,10 +139,6 @@ impl SimCnc {
                 continue;
             }
             let Some(mut e) = c.auto.exec else {
-                if let Some(&n) = c.alarms.first() {
-                    let line = c.auto.current_line(&c.programs, &c.mdi).unwrap_or(0);
-                    out.alarm = Some((n, line));
-                }
                 return out;
             };
             if c.auto.state != RunState::Run {

@@ -127,10 +127,12 @@ impl SimCnc {
         self.inp.sbk && self.auto.m3003 & 1 == 0
     }
 
-    fn assign(&mut self, a: &Assign) -> Result<(), u16> {
+    /// Runs `#i = e`; true when it was #3006, which stops the program after it.
+    fn assign(&mut self, a: &Assign) -> Result<bool, u16> {
         let v = a.value.eval(self as &dyn Vars)?;
         let n = a.target.var_number(self as &dyn Vars)?;
-        self.write_var(n, v, a.message.as_deref())
+        self.write_var(n, v, a.message.as_deref())?;
+        Ok(n == 3006)
     }
 
     fn run_statement(
@@ -147,8 +149,7 @@ impl SimCnc {
             };
             match m {
                 MacroBlock::Assign(a) => {
-                    self.assign(a)?;
-                    if self.macros.stop_message.is_some() && a.target == Expr::Var(3006) {
+                    if self.assign(a)? {
                         // #3006 = n (MESSAGE): stop after this statement, as M00 does.
                         self.auto.cursor = next;
                         return Ok(Flow::Stop);
@@ -158,7 +159,12 @@ impl SimCnc {
                     if truth(cond.eval(self as &dyn Vars)?) {
                         match then {
                             Then::Goto(e) => return self.goto(e, prog, c),
-                            Then::Assign(a) => self.assign(a)?,
+                            Then::Assign(a) => {
+                                if self.assign(a)? {
+                                    self.auto.cursor = next;
+                                    return Ok(Flow::Stop);
+                                }
+                            }
                         }
                     }
                 }
@@ -368,6 +374,7 @@ impl SimCnc {
         self.auto.cursor = from;
         let mut budget = STATEMENTS_PER_EXCHANGE;
         let mut waiting = false;
+        let mut stop = false;
         loop {
             let c = self.auto.cursor;
             let statement = self
@@ -384,7 +391,12 @@ impl SimCnc {
             }
             budget -= 1;
             match self.macro_step() {
-                Flow::Next | Flow::Stop => {}
+                Flow::Next => {}
+                Flow::Stop => {
+                    // #3006 (or SBM) ahead: the moving block ends, then the program stops.
+                    stop = true;
+                    break;
+                }
                 Flow::Yield => {
                     waiting = true;
                     break;
@@ -412,6 +424,7 @@ impl SimCnc {
         if let Some(e) = self.auto.exec.as_mut() {
             e.next = Some(next);
             e.ahead_waiting = waiting;
+            e.stop_after |= stop;
         }
     }
 }
