@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::Rig;
+use common::{Rig, Rng};
 use ladder_engine::cnc::command::CncValue;
 
 /// Runs a program from cycle start until it leaves RUN (at most `limit` exchanges).
@@ -340,21 +340,6 @@ fn system_variables_read_offsets_modal_state_clock_and_positions() {
     close(&r, 113, 77.0);
 }
 
-/// xorshift64*.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
-    }
-}
-
 /// A random expression of depth at most `depth`, valid or not.
 fn expression(r: &mut Rng, depth: u32) -> String {
     const ATOMS: [&str; 14] = [
@@ -369,16 +354,16 @@ fn expression(r: &mut Rng, depth: u32) -> String {
         "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "SQRT", "ABS", "ROUND", "FIX", "FUP", "LN",
         "EXP", "BIN", "BCD", "POW", "ATA",
     ];
-    if depth == 0 || r.below(3) == 0 {
-        return ATOMS[r.below(ATOMS.len())].to_string();
+    if depth == 0 || r.index(3) == 0 {
+        return ATOMS[r.index(ATOMS.len())].to_string();
     }
-    match r.below(4) {
+    match r.index(4) {
         0 => {
             // Mostly operators that read; now and then a broken one.
-            let op = if r.below(10) == 0 {
-                OPS[r.below(OPS.len())]
+            let op = if r.index(10) == 0 {
+                OPS[r.index(OPS.len())]
             } else {
-                OPS[r.below(12)]
+                OPS[r.index(12)]
             };
             format!(
                 "{}{op}{}",
@@ -389,12 +374,12 @@ fn expression(r: &mut Rng, depth: u32) -> String {
         1 => format!("[{}]", expression(r, depth - 1)),
         2 => format!(
             "{}[{}]",
-            FUNCS[r.below(FUNCS.len() - 2)],
+            FUNCS[r.index(FUNCS.len() - 2)],
             expression(r, depth - 1)
         ),
         _ => format!(
             "{}[{},{}]",
-            FUNCS[r.below(FUNCS.len())],
+            FUNCS[r.index(FUNCS.len())],
             expression(r, depth - 1),
             expression(r, depth - 1)
         ),
@@ -404,16 +389,16 @@ fn expression(r: &mut Rng, depth: u32) -> String {
 /// A random block: a statement, a word with an expression, a loop keyword or a call.
 fn block(r: &mut Rng, n: usize) -> String {
     let e = expression(r, 4);
-    let target = ["#1", "#2", "#100", "#[#1]", "#1100", "#3000", "#0", "#5001"][r.below(8)];
-    match r.below(10) {
-        0 => format!("N{n} IF[{e}]GOTO{}", r.below(12)),
+    let target = ["#1", "#2", "#100", "#[#1]", "#1100", "#3000", "#0", "#5001"][r.index(8)];
+    match r.index(10) {
+        0 => format!("N{n} IF[{e}]GOTO{}", r.index(12)),
         1 => format!("N{n} IF[{e}]THEN{target}={}", expression(r, 2)),
-        2 => format!("N{n} WHILE[{e}]DO{}", r.below(5)),
-        3 => format!("N{n} END{}", r.below(5)),
+        2 => format!("N{n} WHILE[{e}]DO{}", r.index(5)),
+        3 => format!("N{n} END{}", r.index(5)),
         4 => format!("N{n} G01 U[{e}] W-0.1 F6000"),
-        5 => format!("N{n} G65 P9{} A[{e}] I1 J2 K3 I4", r.below(3)),
+        5 => format!("N{n} G65 P9{} A[{e}] I1 J2 K3 I4", r.index(3)),
         6 => format!("N{n} GOTO[{e}]"),
-        7 => format!("N{n} G#{} X#1", r.below(3)),
+        7 => format!("N{n} G#{} X#1", r.index(3)),
         _ => format!("N{n} {target}={e}"),
     }
 }
@@ -432,7 +417,7 @@ fn random_macro_text_never_panics_or_hangs_and_reset_stops_any_loop() {
         }
         text.push_str("M30\nO90\n#1=#1+1\nM99\nO91\nG65P91\nM99\nO92\nWHILE[1]DO1\nEND1\n");
         let mut rig = Rig::mem(&text);
-        rig.set(214, 0, r.below(2) == 1);
+        rig.set(214, 0, r.index(2) == 1);
         rig.start();
         rig.xs(300);
         let run = rig.v("cnc.run");

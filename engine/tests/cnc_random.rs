@@ -5,33 +5,12 @@
 
 mod common;
 
-use common::Rig;
+use common::{Rig, Rng};
 use ladder_engine::ProfileId;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::cnc::signals::OWNED;
 use ladder_engine::model::tables::MessageTable;
 use ladder_engine::vm::cnc::Cnc;
-
-/// xorshift64*.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 ^= self.0 >> 12;
-        self.0 ^= self.0 << 25;
-        self.0 ^= self.0 >> 27;
-        self.0.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    fn below(&mut self, n: u64) -> u64 {
-        self.next() % n
-    }
-    fn chance(&mut self, per_thousand: u64) -> bool {
-        self.below(1000) < per_thousand
-    }
-    fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
-        xs[self.below(xs.len() as u64) as usize]
-    }
-}
 
 /// G bytes a CNC reads, so random flips there matter.
 const G_BYTES: [usize; 40] = [

@@ -369,6 +369,22 @@ const FUNCS: [(&str, Func); 15] = [
     ("BCD", Func::Bcd),
 ];
 
+/// The operators of the lowest level but comparisons: XOR before OR, which it ends with.
+const SUMS: [(&str, Op); 4] = [
+    ("+", Op::Add),
+    ("-", Op::Sub),
+    ("XOR", Op::Xor),
+    ("OR", Op::Or),
+];
+
+/// The operators that bind tighter than the sums.
+const PRODUCTS: [(&str, Op); 4] = [
+    ("*", Op::Mul),
+    ("/", Op::Div),
+    ("AND", Op::And),
+    ("MOD", Op::Mod),
+];
+
 const COMPARISONS: [(&str, Op); 6] = [
     ("EQ", Op::Eq),
     ("NE", Op::Ne),
@@ -410,51 +426,39 @@ impl<'a> Parser<'a> {
     /// A whole expression: a comparison at most, of sums.
     pub fn expr(&mut self) -> Result<Expr, u16> {
         let a = self.sum()?;
-        for (name, op) in COMPARISONS {
-            if self.eat(name) {
+        match self.operator(&COMPARISONS) {
+            Some(op) => {
                 let b = self.sum()?;
-                return Ok(Expr::Bin(op, Box::new(a), Box::new(b)));
+                Ok(Expr::Bin(op, Box::new(a), Box::new(b)))
             }
+            None => Ok(a),
         }
-        Ok(a)
+    }
+
+    /// The operator the text goes on with, of those in `table` (tried in order).
+    fn operator(&mut self, table: &[(&str, Op)]) -> Option<Op> {
+        table
+            .iter()
+            .find(|(name, _)| self.eat(name))
+            .map(|(_, op)| *op)
     }
 
     fn sum(&mut self) -> Result<Expr, u16> {
         let mut a = self.product()?;
-        loop {
-            let op = if self.eat("+") {
-                Op::Add
-            } else if self.eat("-") {
-                Op::Sub
-            } else if self.eat("XOR") {
-                Op::Xor
-            } else if self.eat("OR") {
-                Op::Or
-            } else {
-                return Ok(a);
-            };
+        while let Some(op) = self.operator(&SUMS) {
             let b = self.product()?;
             a = Expr::Bin(op, Box::new(a), Box::new(b));
         }
+        Ok(a)
     }
 
     fn product(&mut self) -> Result<Expr, u16> {
         let mut a = self.unary()?;
-        loop {
-            let op = if self.eat("*") {
-                Op::Mul
-            } else if self.eat("/") {
-                Op::Div
-            } else if self.eat("AND") {
-                Op::And
-            } else if self.eat("MOD") {
-                Op::Mod
-            } else {
-                return Ok(a);
-            };
+        while let Some(op) = self.operator(&PRODUCTS) {
             let b = self.unary()?;
             a = Expr::Bin(op, Box::new(a), Box::new(b));
         }
+        Ok(a)
     }
 
     /// A signed primary: what a word's value may be (`-#1`, `[#2+1]`, `1.5`).
