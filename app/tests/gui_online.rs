@@ -4,78 +4,10 @@
 //! it publishes, so nothing depends on the speed of the machine the tests run on.
 
 mod common;
+use common::online::*;
 use common::*;
 use ladder_engine::model::{Cell, CellRef, Edit, Operand};
 use ladder_studio::gui::command::Command;
-
-/// Runs frames until the machine has carried out everything sent (at most 20 s).
-fn settle(h: &mut Harness<'static, LadderApp>) {
-    let start = std::time::Instant::now();
-    loop {
-        h.step();
-        let s = h.state();
-        if s.online.session.as_ref().is_none_or(|s| s.caught_up()) {
-            h.step();
-            return;
-        }
-        assert!(
-            start.elapsed() < std::time::Duration::from_secs(20),
-            "the machine did not answer"
-        );
-        std::thread::sleep(std::time::Duration::from_millis(1));
-    }
-}
-
-fn command(h: &mut Harness<'static, LadderApp>, c: Command) {
-    h.state_mut().ask(c);
-    h.step();
-    settle(h);
-}
-
-fn ticks(h: &mut Harness<'static, LadderApp>, n: u64) {
-    h.state_mut().settings.step_ticks = n;
-    command(h, Command::StepN);
-}
-
-fn value(h: &Harness<'static, LadderApp>, text: &str) -> i64 {
-    let app = h.state();
-    let p = app.doc.as_ref().unwrap().project();
-    let t = ladder_studio::gui::online::watch::resolve(p, text).unwrap();
-    app.online
-        .session
-        .as_ref()
-        .expect("online")
-        .source()
-        .value(t.address, t.bytes)
-}
-
-fn output(h: &Harness<'static, LadderApp>) -> String {
-    h.state()
-        .output
-        .iter()
-        .map(|l| l.text.clone())
-        .collect::<Vec<_>>()
-        .join("\n")
-}
-
-/// A project from an instruction list, saved in a temporary folder.
-fn il_project(text: &str) -> PathBuf {
-    let p = ladder_engine::il::import(text).project.expect("valid IL");
-    let path = tempfile_dir().join("t.ldp");
-    ladder_engine::file::save(&p, &path).unwrap();
-    path
-}
-
-fn lathe() -> PathBuf {
-    PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../projects/lathe-988ta.ldp"
-    ))
-}
-
-// Inputs the preset operator panel does not drive (it writes its switches at power-on).
-const RUNG: &str = "LEVEL2\nNETWORK\nLD X0010.0\nAND X0010.1\nOUT Y0010.0\n\
-NETWORK\nLD X0010.2\nTMRB T0000 1000 R0000.0\n";
 
 #[test]
 fn the_cursor_keys_force_an_input_and_release_it() {

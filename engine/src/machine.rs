@@ -92,6 +92,13 @@ pub enum MachineCommand {
     Force(Address, i64),
     /// Release a force.
     Unforce(Address),
+    /// Write the inverse of a bit's value as the machine holds it when the command runs (the
+    /// editor's toggle: a value read from an older snapshot could write the wrong way).
+    Invert(Address),
+    /// Release a bit's force if it is forced, else force it to the inverse of its value, both
+    /// decided by the machine when the command runs, so quick presses never act on a stale
+    /// state.
+    ToggleForce(Address),
     /// Add a probe to the watch list.
     Watch(Probe),
     /// Record (or stop recording) a network's power flow, by code network index.
@@ -279,6 +286,18 @@ impl Machine {
             MachineCommand::WriteReal(a, v) => self.plc.write_real(*a, *v),
             MachineCommand::Force(a, v) => self.plc.force(*a, *v),
             MachineCommand::Unforce(a) => self.plc.unforce(*a),
+            MachineCommand::Invert(a) => {
+                let v = self.plc.read(*a, 1);
+                self.plc.write(*a, 1, i64::from(v == 0));
+            }
+            MachineCommand::ToggleForce(a) => {
+                if self.plc.is_forced(*a) {
+                    self.plc.unforce(*a);
+                } else {
+                    let v = self.plc.read(*a, 1);
+                    self.plc.force(*a, i64::from(v == 0));
+                }
+            }
             MachineCommand::Watch(p) => {
                 if !self.watches.contains(p) {
                     self.watches.push(*p);

@@ -18,6 +18,7 @@ impl LadderApp {
 
     /// Runs the commands queued during the frame, in order.
     pub fn run_pending(&mut self) {
+        self.lock_while_replaying();
         let pending = std::mem::take(&mut self.pending);
         if !pending.is_empty()
             && let Some(ctx) = &self.ctx
@@ -41,8 +42,9 @@ impl LadderApp {
     pub fn enabled(&self, c: Command) -> bool {
         let doc = self.doc.as_ref();
         match c {
-            Command::Undo => doc.is_some_and(|d| d.history().undo_len() > 0),
-            Command::Redo => doc.is_some_and(|d| d.history().redo_len() > 0),
+            // A replayed past is read-only: one rule for the project and the machine.
+            Command::Undo => doc.is_some_and(|d| d.history().undo_len() > 0) && !self.scrubbing(),
+            Command::Redo => doc.is_some_and(|d| d.history().redo_len() > 0) && !self.scrubbing(),
             Command::Paste => self.in_ladder() && self.edit.clipboard.is_some(),
             Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
@@ -103,17 +105,40 @@ impl LadderApp {
             || self.function_dialog.is_some()
             || self.files.question.is_some()
             || ctx.egui_wants_keyboard_input();
-        for &c in Command::keyed() {
-            if (typing && !c.global()) || !self.enabled(c) {
-                continue;
-            }
-            let Some(shortcut) = c.shortcut() else {
-                continue;
-            };
-            if ctx.input_mut(|i| i.consume_shortcut(&shortcut)) {
-                self.ask(c);
-                return;
-            }
+        let keyed: Vec<(Command, egui::KeyboardShortcut)> = Command::keyed()
+            .iter()
+            .filter(|&&c| (!typing || c.global()) && self.enabled(c))
+            .filter_map(|&c| c.shortcut().map(|s| (c, s)))
+            .collect();
+        // Every key press of the frame, in order, becomes its command (Down Down moves twice;
+        // two quick force keys force twice): a frame can hold more than one press.
+        let found = ctx.input_mut(|i| {
+            let mut found = Vec::new();
+            i.events.retain(|e| {
+                let egui::Event::Key {
+                    key,
+                    pressed: true,
+                    modifiers,
+                    ..
+                } = e
+                else {
+                    return true;
+                };
+                let hit = keyed.iter().find(|(_, s)| {
+                    s.logical_key == *key && modifiers.matches_logically(s.modifiers)
+                });
+                match hit {
+                    Some((c, _)) => {
+                        found.push(*c);
+                        false
+                    }
+                    None => true,
+                }
+            });
+            found
+        });
+        for c in found {
+            self.ask(c);
         }
         if typing {
             return;

@@ -21,6 +21,8 @@ static NEXT_SERIAL: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64:
 pub enum Refused {
     /// The project was recovered from a damaged file and is read-only.
     ReadOnly,
+    /// A recorded tick is on screen (replay): nothing changes until back to live.
+    Replaying,
     /// The engine refused the edit (the place does not exist, the wrong column…).
     Edit(EditError),
 }
@@ -39,6 +41,9 @@ pub struct Document {
     pub compiled: Option<Compiled>,
     /// Opened from a damaged file: looked at, never saved over the original.
     pub read_only: bool,
+    /// A recorded past of the machine is on screen: no change, undo or redo, so the program
+    /// that runs at "back to live" is the one that ran.
+    pub replaying: bool,
     /// The damaged file a read-only document was recovered from.
     pub recovered_from: Option<PathBuf>,
     /// Tells documents apart (a new or reopened project gets a new one), for caches.
@@ -60,6 +65,7 @@ impl Document {
             generation: 0,
             serial: NEXT_SERIAL.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
             read_only: false,
+            replaying: false,
             recovered_from: None,
         }
     }
@@ -79,6 +85,9 @@ impl Document {
     pub fn apply(&mut self, change: impl Into<Change>) -> Result<bool, Refused> {
         if self.read_only {
             return Err(Refused::ReadOnly);
+        }
+        if self.replaying {
+            return Err(Refused::Replaying);
         }
         let inverse = self
             .project
@@ -113,6 +122,9 @@ impl Document {
     /// place that changed), `None` when there was nothing to undo.
     pub fn undo(&mut self) -> Option<&Change> {
         self.group = None;
+        if self.replaying {
+            return None;
+        }
         if self.history.undo(&mut self.project) {
             self.changed();
             self.history.last_redo()
@@ -124,6 +136,9 @@ impl Document {
     /// Does the last undone step again; returns it inverted, as [`Document::undo`] does.
     pub fn redo(&mut self) -> Option<&Change> {
         self.group = None;
+        if self.replaying {
+            return None;
+        }
         if self.history.redo(&mut self.project) {
             self.changed();
             self.history.last_undo()

@@ -11,6 +11,7 @@ use ladder_engine::model::{EditError, OperandError};
 pub fn refused(e: &Refused, lang: Lang) -> String {
     match e {
         Refused::ReadOnly => Msg::ReadOnly.text(lang).to_string(),
+        Refused::Replaying => Msg::Replaying.text(lang).to_string(),
         Refused::Edit(e) => edit_error(e, lang),
     }
 }

@@ -341,6 +341,7 @@ messages! {
     IlNotWritten => "有网络无法生成指令表：请先修正编译错误，指令表未写出", "A network has no valid instruction list: fix the compile errors; nothing written";
     Written => "已写出", "Written:";
     ReadOnly => "只读工程，不能修改", "The project is read-only";
+    Replaying => "正在回放记录：不能修改，请先回到实时", "A recording is replayed: nothing can change until Back to live";
     RowsApplied => "行注释已导入", "comment rows applied";
     AutosaveFailed => "自动保存恢复副本失败", "Autosave of the recovery copy failed";
     Restored => "已从恢复副本恢复工程（尚未保存）", "Project restored from its recovery copy (not saved yet)";

@@ -2,6 +2,8 @@
 //! projects saved in fresh temporary folders, and the gestures the tests share.
 #![allow(dead_code, unused_imports)] // Each test file uses some of the helpers.
 
+pub mod online;
+
 pub use egui_kittest::Harness;
 pub use egui_kittest::kittest::Queryable;
 pub use ladder_studio::gui::LadderApp;

@@ -399,6 +399,18 @@ impl Vm {
         self.forced_bytes.retain(|o| mask[*o as usize] != 0);
     }
 
+    /// Whether any bit of an address is forced (for a bit address, that bit).
+    pub fn is_forced(&self, a: Address) -> bool {
+        let loc = self.layout.loc(a, false);
+        let bytes = if loc.wide { 4 } else { 1 };
+        let mask = a.bit.map_or(0xFF, |b| 1u8 << b);
+        (0..bytes).any(|k| {
+            self.force_mask
+                .get(loc.off as usize + k)
+                .is_some_and(|m| m & mask != 0)
+        })
+    }
+
     pub(super) fn apply_forces(&mut self) {
         for &off in &self.forced_bytes {
             let o = off as usize;

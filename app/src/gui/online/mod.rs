@@ -209,20 +209,33 @@ impl LadderApp {
         if let Some(s) = self.online.session.take() {
             s.stop();
         }
+        self.lock_while_replaying();
         self.online.why = None;
     }
 
     /// Sends a machine command (what a script line would do); offline it does nothing.
     pub fn send_command(&mut self, c: MachineCommand) {
-        if let Some(s) = self.online.session.as_mut() {
-            s.command(c);
+        self.send_request(Request::Command(c));
+    }
+
+    /// Sends a request to the machine (panel keys, swaps). While a recording is replayed the
+    /// machine is not touched, and the output window says why.
+    pub fn send_request(&mut self, r: Request) {
+        if let Some(s) = self.online.session.as_mut()
+            && !s.send(r)
+        {
+            let t = self.t(Msg::Replaying).to_string();
+            if self.output.last().is_none_or(|l| l.text != t) {
+                self.say(t, true);
+            }
         }
     }
 
-    /// Sends a request to the machine (panel keys, swaps).
-    pub fn send_request(&mut self, r: Request) {
-        if let Some(s) = self.online.session.as_mut() {
-            s.send(r);
+    /// Keeps the document read-only exactly while a recorded tick is shown.
+    pub(crate) fn lock_while_replaying(&mut self) {
+        let replaying = self.scrubbing();
+        if let Some(d) = self.doc.as_mut() {
+            d.replaying = replaying;
         }
     }
 
@@ -271,6 +284,7 @@ impl LadderApp {
         if let Some(s) = self.online.session.as_mut() {
             s.scrub_to(None);
         }
+        self.lock_while_replaying();
     }
 
     /// The bit address of the element at the cursor (a contact or coil).
@@ -332,18 +346,11 @@ impl LadderApp {
             self.say(t, true);
             return;
         };
-        let value = self.live_bit(a).unwrap_or(false);
-        let target = Target {
-            address: a,
-            bytes: 1,
-            explicit: false,
-        };
+        // The machine decides which way from its state when the command runs: a second
+        // press before the next snapshot must not act on the first one's old state.
         match c {
-            Command::ToggleBit => {
-                self.send_command(MachineCommand::Write(target, i64::from(!value)))
-            }
-            Command::ForceBit if self.is_forced(a) => self.send_command(MachineCommand::Unforce(a)),
-            Command::ForceBit => self.send_command(MachineCommand::Force(a, i64::from(!value))),
+            Command::ToggleBit => self.send_command(MachineCommand::Invert(a)),
+            Command::ForceBit => self.send_command(MachineCommand::ToggleForce(a)),
             _ => self.send_command(MachineCommand::Unforce(a)),
         }
     }
@@ -404,5 +411,6 @@ impl LadderApp {
         if failed {
             self.go_offline();
         }
+        self.lock_while_replaying();
     }
 }

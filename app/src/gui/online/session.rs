@@ -108,6 +108,16 @@ fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
     Ok((vm, running))
 }
 
+/// Whether a request changes the machine's state (what a replay must not do). Watching and
+/// the pace only change what is recorded and how fast.
+pub fn changes_machine(r: &Request) -> bool {
+    !matches!(
+        r,
+        Request::Speed(_)
+            | Request::Command(MachineCommand::Watch(_) | MachineCommand::WatchNetwork(..))
+    )
+}
+
 impl Session {
     /// Compiles the project and starts its machine (PLC and simulated CNC) stopped, with the
     /// data tables loaded; `wake` asks the UI to draw again.
@@ -150,15 +160,20 @@ impl Session {
         })
     }
 
-    /// Sends a request.
-    pub fn send(&mut self, r: Request) {
+    /// Sends a request. While a recorded tick is shown, a request that would change the
+    /// machine is refused (`false`): the replay is read-only.
+    pub fn send(&mut self, r: Request) -> bool {
+        if self.scrub.is_some() && changes_machine(&r) {
+            return false;
+        }
         self.sent += 1;
         self.runner.send(r);
+        true
     }
 
-    /// Sends a machine command (what a script line would do).
-    pub fn command(&mut self, c: MachineCommand) {
-        self.send(Request::Command(c));
+    /// Sends a machine command (what a script line would do); `false` when refused.
+    pub fn command(&mut self, c: MachineCommand) -> bool {
+        self.send(Request::Command(c))
     }
 
     /// Whether the state shown includes every request sent.

@@ -1,0 +1,146 @@
+//! The online monitor as an engineer at the machine uses it: every key press of a frame acts,
+//! in order; a recorded past cannot be changed.
+
+mod common;
+use common::online::*;
+use common::*;
+use ladder_studio::gui::command::Command;
+
+/// Two presses queued before one frame: both act (a fast typist, a slow frame).
+fn two_presses(h: &mut Harness<'static, LadderApp>, m: egui::Modifiers, key: egui::Key) {
+    h.key_press_modifiers(m, key);
+    h.key_press_modifiers(m, key);
+    h.step();
+}
+
+#[test]
+fn two_key_presses_in_one_frame_move_the_cursor_twice() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    click_cell(&mut h, 0, 0, 0);
+    two_presses(&mut h, egui::Modifiers::NONE, egui::Key::ArrowRight);
+    h.run();
+    assert_eq!(h.state().edit.cursor.col, 2, "Right Right moved twice");
+}
+
+#[test]
+fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    click_cell(&mut h, 0, 0, 0);
+    // The first press forces X0010.0 to 1; the second, sent before any snapshot showed the
+    // force, releases it rather than forcing again from the old state.
+    two_presses(&mut h, egui::Modifiers::SHIFT, egui::Key::F7);
+    settle(&mut h);
+    assert!(
+        h.state().forced_addresses().is_empty(),
+        "forced, then released"
+    );
+    assert_eq!(
+        value(&h, "X0010.0"),
+        1,
+        "the forced value stays until written"
+    );
+    // One press forces to the inverse of what the machine holds: 0.
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
+    settle(&mut h);
+    ticks(&mut h, 1);
+    assert_eq!(value(&h, "X0010.0"), 0);
+    assert_eq!(h.state().forced_addresses().len(), 1);
+}
+
+#[test]
+fn two_toggle_presses_in_one_frame_write_the_bit_back() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    click_cell(&mut h, 0, 0, 0);
+    two_presses(&mut h, egui::Modifiers::NONE, egui::Key::F7);
+    settle(&mut h);
+    assert_eq!(value(&h, "X0010.0"), 0, "on, then off again");
+    h.key_press(egui::Key::F7);
+    settle(&mut h);
+    assert_eq!(value(&h, "X0010.0"), 1);
+}
+
+#[test]
+fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machine() {
+    use ladder_engine::model::{Cell, CellRef, Edit, Operand};
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    // An edit to undo later: X0010.1 becomes X0010.3, swapped in.
+    let at = CellRef {
+        block: 1,
+        network: 0,
+        row: 0,
+        col: 1,
+    };
+    let contact = |a: &str| Cell::Contact {
+        negated: false,
+        operand: Operand::parse(a).unwrap(),
+    };
+    h.state_mut()
+        .try_edit(Edit::SetCell {
+            at,
+            cell: contact("X0010.3"),
+        })
+        .unwrap();
+    h.step();
+    settle(&mut h);
+    ticks(&mut h, 3);
+    let past = h
+        .state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .published
+        .snapshot
+        .ticks
+        - 1;
+    h.state_mut()
+        .online
+        .session
+        .as_mut()
+        .unwrap()
+        .scrub_to(Some(past));
+    h.step();
+    assert!(h.state().scrubbing());
+    assert!(!h.state().enabled(Command::Undo), "Undo is greyed out");
+    // Ctrl+Z, an edit and a write all leave the project and the machine as they were.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.step();
+    assert!(
+        h.state_mut()
+            .try_edit(Edit::SetCell {
+                at,
+                cell: contact("X0010.4"),
+            })
+            .is_err()
+    );
+    let x = ladder_studio::gui::online::watch::resolve(
+        h.state().doc.as_ref().unwrap().project(),
+        "X0010.2",
+    )
+    .unwrap();
+    h.state_mut()
+        .send_command(ladder_engine::machine::MachineCommand::Write(x, 1));
+    assert!(output(&h).contains("nothing can change until Back to live"));
+    command(&mut h, Command::LiveView);
+    settle(&mut h);
+    let p = h.state().doc.as_ref().unwrap().project().clone();
+    let cell = &p.ladder.blocks[1].networks[0].rows[0].cells[1];
+    assert_eq!(*cell, contact("X0010.3"), "the edit was not undone");
+    assert!(
+        h.state().online.session.as_ref().unwrap().drawing_runs(&p),
+        "the program that ran runs on"
+    );
+    assert_eq!(value(&h, "X0010.2"), 0, "the write was not sent");
+    assert!(h.state().enabled(Command::Undo), "live again: Undo works");
+}
