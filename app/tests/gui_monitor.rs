@@ -144,3 +144,96 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
     assert_eq!(value(&h, "X0010.2"), 0, "the write was not sent");
     assert!(h.state().enabled(Command::Undo), "live again: Undo works");
 }
+
+fn write(h: &mut Harness<'static, LadderApp>, a: &str, v: i64) {
+    let t =
+        ladder_studio::gui::online::watch::resolve(h.state().doc.as_ref().unwrap().project(), a)
+            .unwrap();
+    h.state_mut()
+        .send_command(ladder_engine::machine::MachineCommand::Write(t, v));
+}
+
+fn now(h: &Harness<'static, LadderApp>) -> u64 {
+    h.state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .published
+        .snapshot
+        .ticks
+}
+
+#[test]
+fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_copy() {
+    use ladder_studio::gui::settings::{TriggerSetup, TriggerWhen};
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut().add_watch("X0010.0").unwrap();
+    h.state_mut().add_watch("Y0010.0").unwrap();
+    let key = h.state().watch_key();
+    h.state_mut().settings.triggers.insert(
+        key,
+        TriggerSetup {
+            signal: "X0010.0".into(),
+            when: TriggerWhen::Rising,
+            value: 0,
+            pre: 10,
+            post: 20,
+        },
+    );
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Trace;
+    h.run();
+    h.get_by_label("Arm").click();
+    h.run();
+    h.get_by_label("Armed, waiting…");
+    ticks(&mut h, 25);
+    write(&mut h, "X0010.1", 1);
+    write(&mut h, "X0010.0", 1);
+    ticks(&mut h, 1);
+    let edge = now(&h);
+    ticks(&mut h, 30);
+    h.run();
+    let capture = h.state().online.trace.capture.clone().expect("captured");
+    assert_eq!(capture.at, edge);
+    assert_eq!(
+        (capture.data.first, capture.data.last),
+        (edge - 10, edge + 20)
+    );
+    let x = &capture.data.signals[0];
+    assert_eq!(x.name, "X0010.0");
+    assert_eq!((x.value_at(edge - 1), x.value_at(edge)), (0, 1));
+    let y = &capture.data.signals[1];
+    assert_eq!(y.value_at(edge), 1, "Y0010.0 follows in the same tick");
+    h.get_by_label_contains("Captured: triggered at tick");
+    // Pause shows its own copy while the machine runs on.
+    h.state_mut().online.trace.show_capture = false;
+    h.run();
+    h.get_by_label("Pause").click();
+    h.run();
+    let paused = h.state().shown_trace();
+    write(&mut h, "X0010.0", 0);
+    ticks(&mut h, 50);
+    assert_ne!(h.state().trace_data(), paused, "the record moved on");
+    assert_eq!(h.state().shown_trace(), paused, "the paused chart did not");
+    // Two minutes later the ring has long dropped the edge; the capture has not.
+    ticks(&mut h, 15_000);
+    let oldest = h
+        .state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .recorder()
+        .oldest()
+        .unwrap();
+    assert!(oldest > edge + 20, "the ring moved past the capture");
+    assert_eq!(h.state().online.trace.capture.as_ref(), Some(&capture));
+    h.state_mut().online.trace.show_capture = true;
+    assert_eq!(h.state().shown_trace(), capture.data);
+    // The export writes what is shown.
+    let csv = ladder_studio::gui::online::trace_view::trace_csv(&h.state().shown_trace());
+    assert!(csv.starts_with("tick,ms,X0010.0,Y0010.0\n"), "{csv}");
+    assert_eq!(csv.lines().count(), 1 + 31);
+}

@@ -555,8 +555,24 @@ messages! {
     TraceValue => "值", "Value";
     TraceTime => "时间 (s)", "Time (s)";
     TraceTick => "扫描周期", "Tick";
+    Trigger => "触发", "Trigger";
+    TriggerRising => "上升沿", "rising edge";
+    TriggerFalling => "下降沿", "falling edge";
+    TriggerEqual => "等于", "equals";
+    TriggerAbove => "大于", "above";
+    TriggerBelow => "小于", "below";
+    TriggerPre => "触发前扫描数", "ticks before";
+    TriggerPost => "触发后扫描数", "ticks after";
+    TriggerArm => "启动触发", "Arm";
+    TriggerDisarm => "取消触发", "Disarm";
+    TriggerArmed => "等待触发……", "Armed, waiting…";
+    TriggerFired => "已触发，正在记录触发后的扫描……", "Triggered, recording the ticks after…";
+    TriggerShowCapture => "显示捕获", "Show the capture";
+    TriggerCapturedAt => "捕获的触发时刻：扫描", "Captured: triggered at tick";
+    TriggerClearCapture => "清除捕获", "Clear the capture";
+    TriggerBadSignal => "触发信号无效", "The trigger's signal is wrong";
     TraceNoSignal => "没有记录的信号。", "No signal is traced.";
-    TraceHint => "滚轮缩放时间轴，拖动平移，右键拖出方框放大，双击或“全部显示”复原，单击放置光标。", "Wheel: zoom time, drag: pan, right-drag a box: zoom in, double-click or Fit: everything, click: place the cursor.";
+    TraceHint => "滚轮缩放时间轴，拖动或横向滚动平移，双击或“全部显示”复原，单击放置光标；各信号名旁显示光标处的值。", "Wheel: zoom time, drag or sideways scroll: pan, double-click or Fit: everything, click: place the cursor; each lane shows its value at the cursor beside its name.";
 }
 
 #[cfg(test)]

@@ -88,6 +88,74 @@ pub struct WatchRow {
     pub traced: bool,
 }
 
+/// When a triggered capture fires: on an edge of a bit, or when a value starts to meet a
+/// condition.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum TriggerWhen {
+    /// A bit goes from 0 to 1.
+    #[default]
+    Rising,
+    /// A bit goes from 1 to 0.
+    Falling,
+    /// A value becomes equal to the setup's value.
+    Equal,
+    /// A value becomes greater than the setup's value.
+    Above,
+    /// A value becomes less than the setup's value.
+    Below,
+}
+
+impl TriggerWhen {
+    /// Every condition, in the order the menu lists them.
+    pub const ALL: [TriggerWhen; 5] = [
+        TriggerWhen::Rising,
+        TriggerWhen::Falling,
+        TriggerWhen::Equal,
+        TriggerWhen::Above,
+        TriggerWhen::Below,
+    ];
+
+    /// Whether going from `before` to `now` meets it (a level that holds does not fire again).
+    pub fn fires(self, before: i64, now: i64, value: i64) -> bool {
+        let met = |v: i64| match self {
+            TriggerWhen::Rising => v != 0,
+            TriggerWhen::Falling => v == 0,
+            TriggerWhen::Equal => v == value,
+            TriggerWhen::Above => v > value,
+            TriggerWhen::Below => v < value,
+        };
+        met(now) && !met(before)
+    }
+}
+
+/// A trace's trigger, kept per project file with its watch rows.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct TriggerSetup {
+    /// The signal watched: an address or a symbol.
+    pub signal: String,
+    /// The condition.
+    pub when: TriggerWhen,
+    /// The value the value conditions compare with.
+    pub value: i64,
+    /// Ticks kept before the trigger.
+    pub pre: u64,
+    /// Ticks kept after it.
+    pub post: u64,
+}
+
+impl Default for TriggerSetup {
+    fn default() -> Self {
+        TriggerSetup {
+            signal: String::new(),
+            when: TriggerWhen::Rising,
+            value: 0,
+            pre: 125,
+            post: 375,
+        }
+    }
+}
+
 /// The zoom steps of the ladder view, in percent.
 pub const ZOOMS: [u16; 5] = [75, 100, 125, 150, 175];
 
@@ -144,6 +212,8 @@ pub struct Settings {
     /// a project never imposes one engineer's watch list on another (and never changes the
     /// project's checksum).
     pub watches: std::collections::BTreeMap<PathBuf, Vec<WatchRow>>,
+    /// The trace's trigger by project file, as the watch rows are kept.
+    pub triggers: std::collections::BTreeMap<PathBuf, TriggerSetup>,
     /// The first network on screen in each block (by label) of each project file: a
     /// project opens again where each of its blocks was being read. Networks, not pixels,
     /// so the place survives another zoom or comments shown.
@@ -165,6 +235,7 @@ impl Default for Settings {
             live_format: NumFormat::Dec,
             step_ticks: 10,
             watches: Default::default(),
+            triggers: Default::default(),
             tops: Default::default(),
             show_toolbar: true,
             show_output: true,

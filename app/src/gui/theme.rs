@@ -81,8 +81,12 @@ pub const TOOLPATH_CURRENT: Color32 = Color32::from_rgb(0xff, 0x8c, 0x00);
 pub const TOOLPATH_PICKED: Color32 = Color32::from_rgb(0xd0, 0x20, 0x80);
 /// Toolpath: the tool's point.
 pub const TOOLPATH_TOOL: Color32 = Color32::from_rgb(0xc0, 0x10, 0x10);
-/// A bit's lane in the signal trace.
+/// A bit's lane in the signal trace, where the bit is 1.
 pub const TRACE_BIT: Color32 = Color32::from_rgb(0x10, 0xa0, 0x40);
+/// A bit's lane in the signal trace, where the bit is 0.
+pub const TRACE_BIT_LOW: Color32 = Color32::from_rgb(0x80, 0x80, 0x88);
+/// The edges of a trace where a signal changes.
+pub const TRACE_EDGE: Color32 = Color32::from_rgb(0x60, 0x90, 0x70);
 /// A value's lane in the signal trace.
 pub const TRACE_VALUE: Color32 = Color32::from_rgb(0x30, 0x70, 0xe0);
 /// The cursor line of the signal trace.

@@ -5,8 +5,6 @@ use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::cnc_view::{CncEvent, cnc_ui};
 use super::panel_view::{PanelEvent, panel_ui};
-use super::trace_view::{TraceData, TraceEvent, TraceSignal, trace_csv, trace_ui};
-use super::watch::resolve;
 use ladder_engine::Address;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::machine::{MachineCommand, Target};
@@ -187,107 +185,6 @@ impl LadderApp {
             // #3000's alarm shows the program's own message.
             Some((k, m)) if k == n && !m.is_empty() => format!("{text}: {m}"),
             _ => text.into_owned(),
-        }
-    }
-
-    /// The traced watch rows over the recorded window, from the scan recorder: exact to the
-    /// tick at any speed.
-    pub fn trace_data(&self) -> TraceData {
-        let mut data = TraceData::default();
-        let (Some(doc), Some(s)) = (self.doc.as_ref(), self.online.session.as_ref()) else {
-            return data;
-        };
-        let rec = s.recorder();
-        let (Some(first), Some(last)) = (rec.oldest(), rec.newest()) else {
-            return data;
-        };
-        let last = self.online.trace.paused_at.unwrap_or(last).min(last);
-        data.first = first;
-        data.last = last;
-        let mut image = Vec::new();
-        if !rec.image_at(first, &mut image) {
-            return data;
-        }
-        let mut changes = Vec::new();
-        for row in self.watch_rows().iter().filter(|r| r.traced) {
-            let Ok(t) = resolve(doc.project(), &row.text) else {
-                continue;
-            };
-            let loc = s.running.layout.loc(t.address, false);
-            let (off, n) = (loc.off as usize, t.bytes as usize);
-            let mut bytes: Vec<u8> = image.get(off..off + n).map_or(vec![0; n], <[u8]>::to_vec);
-            let value = |b: &[u8]| -> i64 {
-                match t.address.bit {
-                    Some(bit) => i64::from(b[0] >> bit & 1),
-                    None => {
-                        let mut raw = [0u8; 4];
-                        raw[..n].copy_from_slice(b);
-                        let v = u32::from_le_bytes(raw);
-                        let shift = 32 - 8 * n as u32;
-                        i64::from(((v << shift) as i32) >> shift)
-                    }
-                }
-            };
-            let mut points = vec![(first, value(&bytes))];
-            // Every change of any of its bytes, in tick order.
-            let mut all: Vec<(u64, usize, u8)> = Vec::new();
-            for k in 0..n {
-                changes.clear();
-                rec.changes_of((off + k) as u32, first + 1, last, &mut changes);
-                all.extend(changes.iter().map(|&(tick, v)| (tick, k, v)));
-            }
-            all.sort_by_key(|c| c.0);
-            for (tick, k, v) in all {
-                bytes[k] = v;
-                let now = value(&bytes);
-                match points.last_mut() {
-                    Some(p) if p.0 == tick => p.1 = now,
-                    Some(p) if p.1 == now => {}
-                    _ => points.push((tick, now)),
-                }
-            }
-            data.signals.push(TraceSignal {
-                name: t.text(),
-                bit: t.address.bit.is_some(),
-                points,
-            });
-        }
-        data
-    }
-
-    pub(super) fn trace_page_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        if !self.watch_rows().iter().any(|r| r.traced) {
-            ui.label(Msg::TraceHint.text(lang));
-        }
-        let data = self.trace_data();
-        let events = trace_ui(ui, &data, &mut self.online.trace.view, lang);
-        for e in events {
-            match e {
-                TraceEvent::Pause(on) => {
-                    self.online.trace.paused_at = on.then_some(data.last);
-                }
-                TraceEvent::Remove(i) => {
-                    let key = self.watch_key();
-                    let name = data.signals.get(i).map(|s| s.name.clone());
-                    if let (Some(list), Some(name)) = (self.settings.watches.get_mut(&key), name) {
-                        for r in list.iter_mut() {
-                            if r.traced && r.text == name {
-                                r.traced = false;
-                            }
-                        }
-                    }
-                }
-                TraceEvent::ExportCsv => {
-                    self.online.trace.csv = Some(trace_csv(&data));
-                    self.start_dialog(super::super::files::DialogKind::ExportTrace);
-                }
-                TraceEvent::Clear => {
-                    if let Some(s) = self.online.session.as_ref() {
-                        s.recorder().clear();
-                    }
-                }
-            }
         }
     }
 }

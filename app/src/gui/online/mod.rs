@@ -15,6 +15,7 @@ pub mod panel_view;
 pub mod session;
 pub mod toolpath_raster;
 pub mod toolpath_view;
+pub mod trace;
 pub mod trace_view;
 mod ui;
 pub mod values;
@@ -112,10 +113,17 @@ pub struct OnlineState {
 pub struct TraceUi {
     /// The chart's own state.
     pub view: trace_view::TraceState,
-    /// The last tick shown while paused.
-    pub paused_at: Option<u64>,
+    /// The trace as it was when paused: the machine runs on and the ring moves, the copy
+    /// stays.
+    pub frozen: Option<trace_view::TraceData>,
     /// The CSV waiting for its file name.
     pub csv: Option<String>,
+    /// The trigger.
+    pub trigger: trace::TriggerState,
+    /// The last triggered capture, kept until cleared.
+    pub capture: Option<trace::Capture>,
+    /// Whether the chart shows the capture rather than the record.
+    pub show_capture: bool,
 }
 
 impl LadderApp {
@@ -411,6 +419,7 @@ impl LadderApp {
         if failed {
             self.go_offline();
         }
+        self.poll_trigger();
         self.lock_while_replaying();
     }
 }

@@ -1,7 +1,8 @@
 //! The signal trace widget: a timing chart of chosen bits and values over virtual time, as a
-//! logic analyser draws it. Each signal has its own lane: a bit as low and high steps, a
-//! value as a step line scaled to its lane. A cursor (a click on the chart; hovering shows
-//! where it would go) reads every signal's value at one tick in a table beside the chart.
+//! logic analyser draws it. Each signal has its own lane (`chart`): a bit as low and high
+//! steps in two colours, a value as a step line scaled to its lane. A cursor (a click on the
+//! chart; hovering shows where it would go) reads every signal's value at one tick, shown
+//! beside each lane's name and in the toolbar, so the readout is always on screen.
 //!
 //! A widget: [`trace_ui`] draws [`TraceData`] that the caller records and returns
 //! [`TraceEvent`]s; [`trace_csv`] writes the data as `sim --trace` writes its trace file
@@ -9,8 +10,10 @@
 
 use crate::gui::i18n::{Lang, Msg};
 use crate::gui::theme;
-use egui_plot::{GridMark, HoverPosition, Line, Plot, PlotPoint, Text, VLine};
 use std::fmt::Write as _;
+
+pub mod chart;
+use chart::Window;
 
 /// Virtual milliseconds per tick (the engine's).
 pub use ladder_engine::vm::TICK_MS;
@@ -52,8 +55,8 @@ pub struct TraceState {
     pub paused: bool,
     /// The tick the cursor was placed on.
     pub cursor: Option<u64>,
-    /// Fit the whole trace into the chart at the next frame.
-    fit: bool,
+    /// The ticks shown while zoomed or panned; `None` shows everything recorded.
+    pub window: Option<Window>,
 }
 
 /// What the user asked of the trace.
@@ -104,60 +107,11 @@ fn seconds(tick: u64) -> f64 {
     (tick * TICK_MS) as f64 / 1000.0
 }
 
-/// The tick nearest to a time in seconds, within the data.
-fn tick_at(data: &TraceData, x: f64) -> u64 {
-    let t = (x * 1000.0 / TICK_MS as f64).round().max(0.0) as u64;
-    t.clamp(data.first, data.last.max(data.first))
-}
-
-/// Lane `i`'s bottom: the first signal is the top lane.
-fn lane_base(count: usize, i: usize) -> f64 {
-    (count - 1 - i) as f64
-}
-
-/// Where a lane's trace runs: from `LOW` to `HIGH` above the lane's bottom.
-const LOW: f64 = 0.1;
-const HIGH: f64 = 0.8;
-
-/// A signal as step-line points in plot coordinates, from the first tick to the last.
-fn steps(s: &TraceSignal, data: &TraceData, base: f64) -> Vec<[f64; 2]> {
-    let (lo, hi) = range(s, data);
-    let y = |v: i64| {
-        let f = if s.bit {
-            f64::from(u8::from(v != 0))
-        } else if hi > lo {
-            (v - lo) as f64 / (hi - lo) as f64
-        } else {
-            0.5
-        };
-        base + LOW + (HIGH - LOW) * f
-    };
-    let mut v = s.value_at(data.first);
-    let mut pts = vec![[seconds(data.first), y(v)]];
-    for &(t, nv) in s
-        .points
-        .iter()
-        .filter(|(t, _)| *t > data.first && *t <= data.last)
-    {
-        pts.push([seconds(t), y(v)]);
-        pts.push([seconds(t), y(nv)]);
-        v = nv;
-    }
-    pts.push([seconds(data.last), y(v)]);
-    pts
-}
-
-/// The smallest and largest value a signal takes in the ticks shown.
-fn range(s: &TraceSignal, data: &TraceData) -> (i64, i64) {
-    let start = s.value_at(data.first);
-    s.points
-        .iter()
-        .filter(|(t, _)| *t > data.first && *t <= data.last)
-        .fold((start, start), |(lo, hi), (_, v)| (lo.min(*v), hi.max(*v)))
-}
-
 /// Value changes labelled in a value lane at most; more would only overlap.
 const MAX_VALUE_LABELS: usize = 40;
+
+/// The width of the lane names and values left of the chart.
+const LABELS: f32 = 190.0;
 
 /// Draws the trace and returns what the user asked for.
 pub fn trace_ui(
@@ -168,7 +122,11 @@ pub fn trace_ui(
 ) -> Vec<TraceEvent> {
     let t = |m: Msg| m.text(lang);
     let mut events = Vec::new();
-    ui.horizontal(|ui| {
+    // The chart's hover comes from the last frame: the toolbar is drawn first.
+    let hover_id = ui.scope_id().with("trace-hover");
+    let hovered: Option<u64> = ui.data(|d| d.get_temp(hover_id)).flatten();
+    let shown = hovered.or(state.cursor).unwrap_or(data.last);
+    ui.horizontal_wrapped(|ui| {
         let pause = if state.paused {
             Msg::TraceResume
         } else {
@@ -179,177 +137,246 @@ pub fn trace_ui(
             events.push(TraceEvent::Pause(state.paused));
         }
         if ui.button(t(Msg::TraceFit)).clicked() {
-            state.fit = true;
+            state.window = None;
         }
         if ui.button(t(Msg::TraceExport)).clicked() {
             events.push(TraceEvent::ExportCsv);
         }
         if ui.button(t(Msg::TraceClear)).clicked() {
             state.cursor = None;
+            state.window = None;
             events.push(TraceEvent::Clear);
         }
-        ui.weak(t(Msg::TraceHint));
+        ui.separator();
+        ui.label(t(Msg::TraceTick));
+        ui.monospace(shown.to_string());
+        ui.monospace(format!("{:.3} s", seconds(shown)));
     });
+    ui.weak(t(Msg::TraceHint));
     if data.signals.is_empty() {
         ui.label(t(Msg::TraceNoSignal));
         return events;
     }
-    let readout_width = 240.0;
-    let mut hovered = None;
-    ui.horizontal_top(|ui| {
-        let width = (ui.available_width() - readout_width).max(200.0);
-        // At least a readable lane per signal; all the room there is when it is bounded.
-        let wanted = 60.0 + 28.0 * data.signals.len() as f32;
-        let room = ui.available_height();
-        let height = if room.is_finite() {
-            room.max(wanted)
-        } else {
-            wanted
-        };
-        hovered = chart(ui, data, state, lang, width, height);
-        ui.vertical(|ui| readout(ui, data, state, hovered, lang, &mut events));
-    });
+    let hovered = lanes(ui, data, state, shown, lang, &mut events);
+    ui.data_mut(|d| d.insert_temp(hover_id, hovered));
     events
 }
 
-/// The chart; returns the tick under the pointer, if any.
-fn chart(
+/// The lanes: names and values at the readout tick on the left, the chart on the right.
+/// Returns the tick under the pointer.
+fn lanes(
     ui: &mut egui::Ui,
     data: &TraceData,
     state: &mut TraceState,
+    shown: u64,
     lang: Lang,
-    width: f32,
-    height: f32,
+    events: &mut Vec<TraceEvent>,
 ) -> Option<u64> {
     let n = data.signals.len();
-    let names: Vec<&str> = data.signals.iter().map(|s| s.name.as_str()).collect();
-    let centre = |i: usize| lane_base(n, i) + (LOW + HIGH) / 2.0;
-    let mut plot = Plot::new("signal-trace")
-        .width(width)
-        .height(height)
-        // Lanes are fixed: only time zooms and pans.
-        .allow_zoom([true, false])
-        .allow_drag([true, false])
-        // The wheel zooms time, as on a logic analyser (below); a sideways scroll pans.
-        .allow_scroll([true, false])
-        .allow_boxed_zoom(true)
-        .x_axis_label(Msg::TraceTime.text(lang))
-        .x_axis_formatter(|m: GridMark, _| format!("{:.3}", m.value))
-        .y_grid_spacer(move |_| {
-            (0..n)
-                .map(|i| GridMark {
-                    value: centre(i),
-                    step_size: 1.0,
-                })
-                .collect()
-        })
-        .y_axis_formatter(move |m: GridMark, _| {
-            (0..n)
-                .find(|i| (centre(*i) - m.value).abs() < 1e-6)
-                .map(|i| names[i].to_string())
-                .unwrap_or_default()
-        })
-        .y_axis_min_width(60.0)
-        .label_formatter(|pos: &HoverPosition<'_>| match pos {
-            HoverPosition::NearDataPoint {
-                plot_name,
-                position,
-                ..
-            } => Some(format!("{plot_name}\n{:.3} s", position.x)),
-            HoverPosition::Elsewhere { position } => Some(format!("{:.3} s", position.x)),
-        });
-    if std::mem::take(&mut state.fit) {
-        plot = plot.reset();
-    }
-    let cursor = state.cursor;
-    let response = plot.show(ui, |pui| {
-        pui.set_plot_bounds_y(-0.1..=n as f64);
-        for (i, s) in data.signals.iter().enumerate() {
-            let base = lane_base(n, i);
-            let colour = if s.bit {
-                theme::TRACE_BIT
-            } else {
-                theme::TRACE_VALUE
-            };
-            pui.line(
-                Line::new(s.name.clone(), steps(s, data, base))
-                    .color(colour)
-                    .width(1.5),
-            );
-            if !s.bit {
-                let changes: Vec<_> = s
-                    .points
-                    .iter()
-                    .filter(|(t, _)| *t >= data.first && *t <= data.last)
-                    .collect();
-                if changes.len() <= MAX_VALUE_LABELS {
-                    for (t, v) in changes {
-                        let at = PlotPoint::new(seconds(*t), base + HIGH);
-                        pui.text(
-                            Text::new(s.name.clone(), at, v.to_string())
-                                .color(colour)
-                                .anchor(egui::Align2::LEFT_BOTTOM),
-                        );
-                    }
-                }
-            }
-        }
-        if let Some(c) = cursor {
-            pui.vline(VLine::new("cursor", seconds(c)).color(theme::TRACE_CURSOR));
-        }
-        let hovering = pui.response().hovered();
-        let wheel = pui.ctx().input(|i| i.smooth_scroll_delta.y);
-        if hovering && wheel != 0.0 {
-            pui.zoom_bounds_around_hovered(egui::vec2((wheel / 200.0).exp(), 1.0));
-        }
-        let pointer = hovering.then(|| pui.pointer_coordinate()).flatten();
-        (
-            pointer.map(|p| tick_at(data, p.x)),
-            pui.response().clicked(),
-        )
+    let room = ui.available_height();
+    let lane = if room.is_finite() {
+        ((room - 24.0) / n as f32).clamp(26.0, 44.0)
+    } else {
+        32.0
+    };
+    let width = ui.available_width().max(LABELS + 160.0);
+    let (all, _) = ui.allocate_exact_size(
+        egui::vec2(width, lane * n as f32 + 24.0),
+        egui::Sense::hover(),
+    );
+    let chart = Rect::from_min_max(
+        egui::pos2(all.left() + LABELS, all.top()),
+        egui::pos2(all.right() - 8.0, all.bottom() - 24.0),
+    );
+    let window = state.window.unwrap_or_else(|| Window::all(data));
+    let response = ui.interact(
+        chart,
+        ui.scope_id().with("trace-chart"),
+        egui::Sense::click_and_drag(),
+    );
+    let hovered = response.hover_pos().map(|p| {
+        window
+            .tick(chart, p.x)
+            .round()
+            .clamp(data.first as f64, data.last as f64) as u64
     });
-    let (hovered, clicked) = response.inner;
-    if clicked && let Some(tick) = hovered {
-        state.cursor = Some(tick);
+    steer(ui, &response, data, state, window, chart);
+    let window = state.window.unwrap_or_else(|| Window::all(data));
+    let painter = ui.painter_at(all);
+    painter.rect_filled(chart, 2.0, ui.visuals().extreme_bg_color);
+    for (i, s) in data.signals.iter().enumerate() {
+        let band = Rect::from_min_size(
+            egui::pos2(chart.left(), chart.top() + lane * i as f32),
+            egui::vec2(chart.width(), lane),
+        );
+        if i > 0 {
+            painter.hline(
+                chart.x_range(),
+                band.top(),
+                egui::Stroke::new(1.0, ui.visuals().widgets.noninteractive.bg_stroke.color),
+            );
+        }
+        chart::paint(&painter, &chart::lane_segments(s, window, band));
+        value_labels(&painter, s, window, band);
+        label(ui, s, band, shown, lang, i, events);
+    }
+    axis(ui, &painter, window, chart);
+    if let Some(c) = state.cursor {
+        let x = window.x(chart, c as f64);
+        if chart.x_range().contains(x) {
+            painter.vline(
+                x,
+                chart.y_range(),
+                egui::Stroke::new(1.0, theme::TRACE_CURSOR),
+            );
+        }
+    }
+    if let Some(h) = hovered {
+        let x = window.x(chart, h as f64);
+        painter.vline(
+            x,
+            chart.y_range(),
+            egui::Stroke::new(1.0, ui.visuals().weak_text_color()),
+        );
     }
     hovered
 }
 
-/// The value of every signal at the cursor (or at the pointer while it is over the chart, or
-/// at the last tick), with a button to stop tracing each.
-fn readout(
-    ui: &mut egui::Ui,
+/// Wheel zooms time around the pointer, a drag or a sideways scroll pans, a click places the
+/// cursor, a double-click shows everything.
+fn steer(
+    ui: &egui::Ui,
+    response: &egui::Response,
     data: &TraceData,
-    state: &TraceState,
-    hovered: Option<u64>,
+    state: &mut TraceState,
+    window: Window,
+    chart: Rect,
+) {
+    if response.double_clicked() {
+        state.window = None;
+        return;
+    }
+    if response.clicked()
+        && let Some(p) = response.interact_pointer_pos()
+    {
+        let t = window.tick(chart, p.x).round();
+        state.cursor = Some(t.clamp(data.first as f64, data.last as f64) as u64);
+    }
+    let per_px = (window.to - window.from) / f64::from(chart.width());
+    if response.dragged() {
+        let dx = response.drag_delta().x;
+        state.window = Some(window.panned(-f64::from(dx) * per_px, data));
+    }
+    if response.hovered() {
+        let (wheel, side) = ui.input(|i| (i.smooth_scroll_delta.y, i.smooth_scroll_delta.x));
+        if wheel != 0.0
+            && let Some(p) = response.hover_pos()
+        {
+            let at = window.tick(chart, p.x);
+            state.window = Some(window.zoomed(at, f64::from((-wheel / 200.0).exp()), data));
+        } else if side != 0.0 {
+            state.window = Some(window.panned(-f64::from(side) * per_px, data));
+        }
+    }
+}
+
+/// A lane's name, its value at the readout tick and its remove button, left of the chart.
+fn label(
+    ui: &mut egui::Ui,
+    s: &TraceSignal,
+    band: Rect,
+    tick: u64,
     lang: Lang,
+    i: usize,
     events: &mut Vec<TraceEvent>,
 ) {
-    let t = |m: Msg| m.text(lang);
-    let tick = hovered.or(state.cursor).unwrap_or(data.last);
-    ui.horizontal(|ui| {
-        ui.label(t(Msg::TraceTick));
-        ui.monospace(tick.to_string());
-        ui.monospace(format!("{:.3} s", seconds(tick)));
-    });
-    egui::Grid::new("signal-trace-readout")
-        .striped(true)
-        .num_columns(3)
-        .show(ui, |ui| {
-            ui.strong(t(Msg::TraceSignal));
-            ui.strong(t(Msg::TraceValue));
-            ui.label("");
-            ui.end_row();
-            for (i, s) in data.signals.iter().enumerate() {
-                ui.monospace(&s.name);
-                ui.monospace(s.value_at(tick).to_string());
-                if ui.small_button(t(Msg::TraceRemove)).clicked() {
-                    events.push(TraceEvent::Remove(i));
-                }
-                ui.end_row();
-            }
-        });
+    let row = Rect::from_min_max(
+        egui::pos2(band.left() - LABELS, band.top()),
+        egui::pos2(band.left() - 4.0, band.bottom()),
+    );
+    let x = egui::Rect::from_center_size(
+        egui::pos2(row.left() + 10.0, row.center().y),
+        egui::vec2(18.0, 18.0),
+    );
+    if ui
+        .put(x, egui::Button::new("×").small())
+        .on_hover_text(Msg::TraceRemove.text(lang))
+        .clicked()
+    {
+        events.push(TraceEvent::Remove(i));
+    }
+    let name = Rect::from_min_max(
+        egui::pos2(row.left() + 22.0, row.top()),
+        egui::pos2(row.left() + 120.0, row.bottom()),
+    );
+    ui.put(
+        name,
+        egui::Label::new(egui::RichText::new(&s.name).monospace()).truncate(),
+    );
+    let value = Rect::from_min_max(egui::pos2(row.left() + 122.0, row.top()), row.max);
+    let v = s.value_at(tick);
+    let colour = match (s.bit, v != 0) {
+        (true, true) => theme::TRACE_BIT,
+        (true, false) => theme::TRACE_BIT_LOW,
+        (false, _) => theme::TRACE_VALUE,
+    };
+    ui.put(
+        value,
+        egui::Label::new(
+            egui::RichText::new(v.to_string())
+                .monospace()
+                .strong()
+                .color(colour),
+        ),
+    );
 }
+
+/// A value lane's numbers where it changes, while few enough to read.
+fn value_labels(painter: &egui::Painter, s: &TraceSignal, window: Window, band: Rect) {
+    if s.bit {
+        return;
+    }
+    let changes: Vec<_> = s
+        .points
+        .iter()
+        .filter(|(t, _)| (*t as f64) >= window.from && (*t as f64) <= window.to)
+        .collect();
+    if changes.len() > MAX_VALUE_LABELS {
+        return;
+    }
+    for (t, v) in changes {
+        painter.text(
+            egui::pos2(window.x(band, *t as f64) + 2.0, band.top() + 1.0),
+            egui::Align2::LEFT_TOP,
+            v.to_string(),
+            egui::FontId::monospace(10.0),
+            theme::TRACE_VALUE,
+        );
+    }
+}
+
+/// The time axis under the chart, in seconds.
+fn axis(ui: &egui::Ui, painter: &egui::Painter, window: Window, chart: Rect) {
+    let colour = ui.visuals().weak_text_color();
+    for secs in chart::time_marks(window, chart.width()) {
+        let tick = secs * 1000.0 / TICK_MS as f64;
+        let x = window.x(chart, tick);
+        painter.vline(
+            x,
+            chart.bottom()..=chart.bottom() + 4.0,
+            egui::Stroke::new(1.0, colour),
+        );
+        painter.text(
+            egui::pos2(x, chart.bottom() + 5.0),
+            egui::Align2::CENTER_TOP,
+            format!("{secs:.3}"),
+            egui::FontId::proportional(11.0),
+            colour,
+        );
+    }
+}
+
+use egui::Rect;
 
 #[cfg(test)]
 mod tests {
@@ -415,17 +442,6 @@ mod tests {
         );
     }
 
-    #[test]
-    fn steps_rise_and_fall_at_the_changes_within_the_lane() {
-        let data = sample();
-        let pts = steps(&data.signals[0], &data, 1.0);
-        // In tenths of a lane: low at 1.1, high at 1.8.
-        let ys: Vec<i64> = pts.iter().map(|p| (p[1] * 10.0).round() as i64).collect();
-        assert_eq!(ys, [11, 11, 18, 18, 11, 11]);
-        assert_eq!(pts[1][0], seconds(2));
-        assert_eq!(pts.last().unwrap()[0], seconds(5));
-    }
-
     type Shown = (TraceData, TraceState, Vec<TraceEvent>);
 
     #[test]
@@ -447,7 +463,7 @@ mod tests {
         assert_eq!(h.state().2[1], TraceEvent::Pause(true));
         assert!(h.state().1.paused);
         h.get_by_label("Resume");
-        h.get_all_by_label("Remove").nth(1).unwrap().click();
+        h.get_all_by_label("×").nth(1).unwrap().click();
         h.run();
         assert_eq!(h.state().2[2], TraceEvent::Remove(1));
         // The readout shows the values at the last tick without a cursor.
@@ -465,8 +481,8 @@ mod tests {
                 (sample(), TraceState::default(), Vec::new()),
             );
         h.run();
-        // The middle of the chart: ticks 1–5 fill it, so this is about tick 3.
-        let at = egui::pos2(440.0, 200.0);
+        // The middle of the chart (x 190–992): ticks 1–5 fill it, so this is about tick 3.
+        let at = egui::pos2(595.0, 100.0);
         h.hover_at(at);
         h.run();
         for pressed in [true, false] {
