@@ -237,3 +237,58 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     assert!(csv.starts_with("tick,ms,X0010.0,Y0010.0\n"), "{csv}");
     assert_eq!(csv.lines().count(), 1 + 31);
 }
+
+/// Whether the output column of the cursor's row is on screen.
+fn output_on_screen(h: &Harness<'static, LadderApp>) -> bool {
+    let app = h.state();
+    let g = &app.edit.geometry;
+    let c = app.edit.cursor;
+    let width = app.doc.as_ref().unwrap().project().ladder.width;
+    let cell = g.cell_rect(c.network, c.row, width).expect("drawn");
+    g.visible.expect("drawn").contains_rect(cell.shrink(2.0))
+}
+
+#[test]
+fn fit_width_shows_the_output_column_at_1280_by_800_with_the_online_window_open() {
+    let mut h = harness_sized(Some(lathe()), Lang::En, egui::vec2(1280.0, 800.0));
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    h.state_mut().settings.show_online = true;
+    h.run();
+    assert!(h.state().settings.fit_width, "going online fits the width");
+    assert!(output_on_screen(&h), "the coils are on screen");
+    let zoom = h.state().edit.geometry.zoom;
+    assert!((50..100).contains(&zoom), "zoom {zoom}");
+    // A zoom step leaves fit width; End still brings the output column into view.
+    command(&mut h, Command::ZoomIn);
+    h.run();
+    assert!(!h.state().settings.fit_width);
+    command(&mut h, Command::ZoomIn);
+    h.run();
+    h.key_press(egui::Key::Home);
+    h.run();
+    h.key_press(egui::Key::End);
+    h.run();
+    h.run();
+    assert!(
+        output_on_screen(&h),
+        "the view followed the cursor sideways"
+    );
+    h.key_press(egui::Key::Home);
+    h.run();
+    let g = &h.state().edit.geometry;
+    let first = g.cell_rect(0, 0, 0).unwrap();
+    assert!(
+        g.visible.unwrap().contains_rect(first.shrink(2.0)),
+        "Home: back left"
+    );
+    // Arrow by arrow to the output column: the view follows each step.
+    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    for _ in 0..width {
+        h.key_press(egui::Key::ArrowRight);
+        h.run();
+    }
+    assert_eq!(h.state().edit.cursor.col, width);
+    assert!(output_on_screen(&h), "Right arrows: the view followed");
+}

@@ -208,6 +208,8 @@ commands! {
     ZoomIn => ZoomIn, COMMAND Plus;
     /// One zoom step down.
     ZoomOut => ZoomOut, COMMAND Minus;
+    /// The zoom that fits the whole width, coils and boxes included, into the view (on/off).
+    ZoomFit => ZoomFit, COMMAND Num0;
     /// Compile into the output window.
     Compile => Compile, NONE F9;
     /// A new subprogram.

@@ -48,7 +48,11 @@ impl LadderApp {
             Command::Paste => self.in_ladder() && self.edit.clipboard.is_some(),
             Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
-            Command::ZoomIn | Command::ZoomOut | Command::ClearSelection | Command::Pen => true,
+            Command::ZoomIn
+            | Command::ZoomOut
+            | Command::ZoomFit
+            | Command::ClearSelection
+            | Command::Pen => true,
             Command::ToggleComments
             | Command::ToggleElementComments
             | Command::ToggleTitles
@@ -83,6 +87,7 @@ impl LadderApp {
         let s = &self.settings;
         Some(match c {
             Command::Pen => self.edit.pen,
+            Command::ZoomFit => s.fit_width,
             Command::ToggleComments => s.show_comments,
             Command::ToggleElementComments => s.show_element_comments,
             Command::ToggleTitles => s.show_titles,
@@ -289,6 +294,7 @@ impl LadderApp {
             Command::ToggleStatus => self.settings.show_status ^= true,
             Command::ZoomIn => self.zoom_step(true, None),
             Command::ZoomOut => self.zoom_step(false, None),
+            Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::MachineModel => {

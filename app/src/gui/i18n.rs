@@ -161,6 +161,7 @@ messages! {
     English => "English (英文)", "English";
     ZoomIn => "放大", "Zoom in";
     ZoomOut => "缩小", "Zoom out";
+    ZoomFit => "适合宽度", "Fit width";
     DisplayAddress => "地址显示", "Show addresses";
     DisplaySymbol => "符号显示", "Show symbols";
     DisplayBoth => "地址：符号显示", "Show address: symbol";

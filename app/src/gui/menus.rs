@@ -146,6 +146,7 @@ impl LadderApp {
         ui.separator();
         self.entry(ui, Command::ZoomIn);
         self.entry(ui, Command::ZoomOut);
+        self.entry(ui, Command::ZoomFit);
     }
 
     /// The ladder editing commands as menu entries (Edit menu, right-click menu).
@@ -196,8 +197,12 @@ impl LadderApp {
             egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
                 .selected_text(format!("{}%", self.settings.zoom))
                 .show_ui(ui, |ui| {
+                    let fit = self.settings.fit_width;
+                    if ui.selectable_label(fit, Msg::ZoomFit.text(lang)).clicked() && !fit {
+                        self.ask(Command::ZoomFit);
+                    }
                     for z in super::settings::ZOOMS {
-                        let on = self.settings.zoom == z;
+                        let on = self.settings.zoom == z && !fit;
                         if ui.selectable_label(on, format!("{z}%")).clicked() && !on {
                             self.zoom_to(z, None);
                         }

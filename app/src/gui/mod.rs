@@ -415,6 +415,10 @@ impl LadderApp {
                         .and_then(|t| t.get(&label))
                         .copied();
                 }
+                if self.settings.fit_width {
+                    let columns = doc.project().ladder.width;
+                    self.settings.zoom = settings::fit_zoom(ui.available_width(), columns);
+                }
                 let seen = (self.edit.cursor, doc.serial, doc.generation);
                 let follow = self.edit.followed != Some(seen);
                 self.edit.followed = Some(seen);

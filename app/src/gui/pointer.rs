@@ -444,6 +444,7 @@ impl LadderApp {
     /// Zooms to `zoom` percent keeping the ladder point at `at` (else at the cursor cell's
     /// centre) where it is on screen: the element looked at does not run away.
     pub fn zoom_to(&mut self, zoom: u16, at: Option<egui::Pos2>) {
+        self.settings.fit_width = false;
         if zoom == self.settings.zoom {
             return;
         }

@@ -157,17 +157,33 @@ impl Default for TriggerSetup {
 }
 
 /// The zoom steps of the ladder view, in percent.
-pub const ZOOMS: [u16; 5] = [75, 100, 125, 150, 175];
+pub const ZOOMS: [u16; 6] = [50, 75, 100, 125, 150, 175];
 
-/// The zoom one step up or down from `zoom` (a zoom between the steps counts as 100 %).
+/// The zoom one step up or down from `zoom` (a zoom between the steps, as fit width makes,
+/// goes to the next step that way).
 pub fn next_zoom(zoom: u16, up: bool) -> u16 {
-    let i = ZOOMS.iter().position(|z| *z == zoom).unwrap_or(1);
-    let i = if up {
-        (i + 1).min(ZOOMS.len() - 1)
+    if up {
+        ZOOMS
+            .into_iter()
+            .find(|z| *z > zoom)
+            .unwrap_or(ZOOMS[ZOOMS.len() - 1])
     } else {
-        i.saturating_sub(1)
-    };
-    ZOOMS[i]
+        ZOOMS
+            .into_iter()
+            .rev()
+            .find(|z| *z < zoom)
+            .unwrap_or(ZOOMS[0])
+    }
+}
+
+/// The zoom (percent, between the smallest and largest step) at which a ladder of `columns`
+/// contact columns, its output column and margins fill `width` pixels.
+pub fn fit_zoom(width: f32, columns: usize) -> u16 {
+    // At 100 %: a 26 px margin, 84 px a contact column, 150 px the output column; 40 px of
+    // room and a scroll bar do not scale.
+    let at_100 = 26.0 + 84.0 * columns as f32 + 150.0;
+    let z = ((width - 40.0 - 14.0) / at_100 * 100.0).floor();
+    z.clamp(f32::from(ZOOMS[0]), f32::from(ZOOMS[ZOOMS.len() - 1])) as u16
 }
 
 /// Most recent files kept (GSKLadder lists four).
@@ -214,6 +230,9 @@ pub struct Settings {
     pub watches: std::collections::BTreeMap<PathBuf, Vec<WatchRow>>,
     /// The trace's trigger by project file, as the watch rows are kept.
     pub triggers: std::collections::BTreeMap<PathBuf, TriggerSetup>,
+    /// The ladder's zoom follows the view's width so the output column is always on screen
+    /// (on when going online; a zoom step turns it off).
+    pub fit_width: bool,
     /// The first network on screen in each block (by label) of each project file: a
     /// project opens again where each of its blocks was being read. Networks, not pixels,
     /// so the place survives another zoom or comments shown.
@@ -236,6 +255,7 @@ impl Default for Settings {
             step_ticks: 10,
             watches: Default::default(),
             triggers: Default::default(),
+            fit_width: false,
             tops: Default::default(),
             show_toolbar: true,
             show_output: true,

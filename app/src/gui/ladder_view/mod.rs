@@ -195,6 +195,8 @@ pub struct Geometry {
     /// Every contact and coil label drawn (operand lines and element comments): where, and
     /// the text as shown, ellipsis included.
     pub labels: Vec<(Rect, String)>,
+    /// The part of the ladder on screen, in screen coordinates.
+    pub visible: Option<Rect>,
 }
 
 impl Geometry {
@@ -441,6 +443,7 @@ pub fn block_ui(
     area.show_viewport(ui, |ui, viewport| {
         let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
         geometry.origin = rect.min;
+        geometry.visible = Some(viewport.translate(rect.min.to_vec2()));
         geometry.cell = m.cell;
         geometry.output = m.output;
         geometry.width = project.ladder.width;
@@ -499,7 +502,29 @@ pub fn block_ui(
         if let Some(target) = jump_to.take()
             && let Some(p) = placed.get(target)
         {
-            let r = Rect::from_min_size(rect.min + vec2(0.0, p.top), vec2(total.x, p.height));
+            // The network at the top, and sideways the cursor's cell in sight (End goes to
+            // the coils); one scroll target holds both axes, so the x is worked out here.
+            let cell = opts
+                .cursor
+                .filter(|c| c.0 == target)
+                .and_then(|(n, r, c)| geometry.cell_rect(n, r, c));
+            let left = cell.map_or(0.0, |cell| {
+                let pad = m.row * 0.25;
+                let (a, b) = (cell.min.x - rect.min.x - pad, cell.max.x - rect.min.x + pad);
+                if a < viewport.min.x {
+                    a
+                } else if b > viewport.max.x {
+                    b - viewport.width()
+                } else {
+                    viewport.min.x
+                }
+            });
+            // Aligned to the top-left, egui leaves an item spacing before the target.
+            let x = rect.min.x + left.max(0.0) + ui.spacing().item_spacing.x;
+            let r = Rect::from_min_max(
+                pos2(x, rect.min.y + p.top),
+                pos2(x + 1.0, rect.min.y + p.top + p.height),
+            );
             ui.scroll_to_rect(r, Some(egui::Align::TOP));
         } else if opts.follow
             && let Some((n, r, c)) = opts.cursor

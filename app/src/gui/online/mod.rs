@@ -159,6 +159,8 @@ impl LadderApp {
         match Session::start(doc.project(), doc.generation, wake) {
             Ok(mut s) => {
                 s.set_speed(self.online.speed);
+                // The online window narrows the ladder: keep its coils and boxes in sight.
+                self.settings.fit_width = true;
                 self.online.session = Some(s);
                 self.online.alarms = Default::default();
                 self.online.why = None;
