@@ -31,6 +31,7 @@ fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
     click_cell(&mut h, 0, 0, 0);
+    h.state_mut().online.forces_confirmed = true;
     // The first press forces X0010.0 to 1; the second, sent before any snapshot showed the
     // force, releases it rather than forcing again from the old state.
     two_presses(&mut h, egui::Modifiers::SHIFT, egui::Key::F7);
@@ -291,4 +292,83 @@ fn fit_width_shows_the_output_column_at_1280_by_800_with_the_online_window_open(
     }
     assert_eq!(h.state().edit.cursor.col, width);
     assert!(output_on_screen(&h), "Right arrows: the view followed");
+}
+
+#[test]
+fn a_refused_edit_is_shown_at_the_bottom_of_the_output_and_its_errors_go_with_undo() {
+    use ladder_engine::model::{Cell, CellRef, Edit, Operand};
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    h.state_mut()
+        .try_edit(Edit::SetCell {
+            at: CellRef {
+                block: 1,
+                network: 0,
+                row: 0,
+                col: 1,
+            },
+            cell: Cell::Contact {
+                negated: false,
+                operand: Operand::parse("NO_SUCH_SYMBOL").unwrap(),
+            },
+        })
+        .unwrap();
+    h.step();
+    settle(&mut h);
+    h.run();
+    let last = h.state().output.last().unwrap().text.clone();
+    assert!(last.contains("was not swapped in"), "{last}");
+    // The newest line is on screen, inside the window.
+    let node = h.get_by_label_contains("was not swapped in");
+    let r = node.rect();
+    assert!(r.max.y <= 800.0 && r.min.y >= 0.0, "{r:?}");
+    command(&mut h, Command::Undo);
+    h.run();
+    let out = output(&h);
+    assert!(!out.contains("NO_SUCH_SYMBOL"), "{out}");
+    h.get_by_label_contains("Running program = drawing");
+}
+
+#[test]
+fn the_first_force_asks_first_and_the_status_bar_counts_forces_in_amber() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    click_cell(&mut h, 0, 0, 0);
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
+    h.run();
+    h.get_by_label("Force a signal");
+    h.get_by_label("Cancel").click();
+    h.run();
+    settle(&mut h);
+    assert!(
+        h.state().forced_addresses().is_empty(),
+        "cancelled: nothing forced"
+    );
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
+    h.run();
+    h.get_by_label("Force").click();
+    h.run();
+    settle(&mut h);
+    assert_eq!(h.state().forced_addresses().len(), 1);
+    h.get_by_label_contains("Forces active (1)");
+    // Asked once: the next press releases at once.
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
+    settle(&mut h);
+    assert!(h.state().forced_addresses().is_empty());
+    assert!(h.query_by_label("Force a signal").is_none());
+}
+
+#[test]
+fn the_toolbar_shows_the_scan_in_steps_and_the_watchdog_limit() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    ticks(&mut h, 3);
+    let (last, max) = h.state().online.session.as_ref().unwrap().published.snapshot.tick_steps;
+    // Two networks: LD, AND, OUT and LD, TMRB (with its R coil) run every tick.
+    assert!(last >= 5 && max >= last, "{last} {max}");
+    h.get_by_label_contains(&format!("Scan steps {last} (max {max}) · watchdog 200000"));
 }

@@ -13,6 +13,8 @@ use ladder_studio::gui::command::Command;
 fn the_cursor_keys_force_an_input_and_release_it() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
+    // Asked once per run of the editor (gui_monitor.rs tests the question).
+    h.state_mut().online.forces_confirmed = true;
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
     assert!(h.state().online(), "a step goes online");
@@ -48,6 +50,8 @@ fn the_cursor_keys_force_an_input_and_release_it() {
 fn the_watch_table_shows_a_timer_counting() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
+    // Asked once per run of the editor (gui_monitor.rs tests the question).
+    h.state_mut().online.forces_confirmed = true;
     h.state_mut().add_watch("T0000").unwrap();
     h.state_mut().add_watch("X0010.2").unwrap();
     command(&mut h, Command::StepTick);
@@ -85,6 +89,8 @@ fn set_cell(h: &mut Harness<'static, LadderApp>, network: usize, col: usize, cel
 fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
+    // Asked once per run of the editor (gui_monitor.rs tests the question).
+    h.state_mut().online.forces_confirmed = true;
     command(&mut h, Command::StepTick);
     h.state_mut()
         .send_command(ladder_engine::machine::MachineCommand::Force(

@@ -162,6 +162,8 @@ pub struct Snapshot {
     pub cnc: Option<CncStatus>,
     /// The machine model's devices.
     pub devices: Vec<DeviceStatus>,
+    /// The scan time in steps: the last tick's and the most since power-on.
+    pub tick_steps: (u64, u64),
 }
 
 impl Machine {
@@ -370,6 +372,7 @@ impl Machine {
         s.watched.clear();
         s.watched.extend_from_slice(self.plc.watched());
         s.running = self.running;
+        s.tick_steps = self.plc.tick_steps();
         s.cnc = self.cnc.as_ref().map(SimCnc::status);
         match &self.plant {
             Some(p) => p.status_into(&mut s.devices),

@@ -197,6 +197,8 @@ pub enum Question {
     },
     /// A recovery copy was left by a session that did not end: restore it?
     Restore(RecoveryCopy),
+    /// The first force of this run of the editor: force really?
+    FirstForce,
 }
 
 /// An autosaved recovery copy on disk.

@@ -84,6 +84,8 @@ impl LadderApp {
             error,
             target: None,
         });
+        // What was said last is what the user must see, even after a list replaced above it.
+        self.output_to_last = true;
     }
 
     /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
@@ -528,6 +530,11 @@ impl LadderApp {
                     vec![Msg::Restore, Msg::Discard],
                 )
             }
+            Question::FirstForce => (
+                t(Msg::FirstForceTitle),
+                t(Msg::FirstForceQuestion).to_string(),
+                vec![Msg::ForceIt, Msg::Cancel],
+            ),
         };
         egui::Modal::new(egui::Id::unique("question")).show(ctx, |ui| {
             ui.heading(title);
@@ -558,6 +565,8 @@ impl LadderApp {
             }
             (Question::Restore(copy), 0) => self.restore(&copy),
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
+            (Question::FirstForce, 0) => self.confirm_forces(true),
+            (Question::FirstForce, _) => self.confirm_forces(false),
             _ => {}
         }
     }

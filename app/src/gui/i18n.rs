@@ -124,7 +124,13 @@ messages! {
     MachineChanged => "设备已被修改（撤销或其他编辑）：请关闭表单后重新编辑", "The device changed under the form (an undo or another edit): cancel and edit it again";
     MachineStart => "上电时各轴位置（mm，距参考点）：", "Axes at power-on (mm from the reference point):";
     DeviceFaults => "设备故障", "Device faults";
-    ForcedCount => "强制位", "Forced bits";
+    ForcedCount => "强制生效", "Forces active";
+    FirstForceTitle => "强制信号", "Force a signal";
+    FirstForceQuestion => "强制会使信号保持指定值，不论程序和机床如何动作，直到解除强制。在真实机床上这可能使设备意外动作。确定要强制吗？（本次运行中不再询问）", "A force holds a signal at its value whatever the program and the machine do, until released. On a real machine this can move things unexpectedly. Force it? (Not asked again while the editor runs.)";
+    ForceIt => "强制", "Force";
+    ScanSteps => "扫描步数", "Scan steps";
+    ScanMax => "最大", "max";
+    StepsWatchdog => "看门狗", "watchdog";
     OfflineHint => "脱机：Ctrl+F9 运行或 F8 单步后显示在线状态", "Offline: Ctrl+F9 (run) or F8 (single tick) shows the live state";
     NoForces => "没有强制", "Nothing is forced";
     Release => "解除", "Release";

@@ -70,6 +70,8 @@ pub struct LadderApp {
     /// What the output window showed last frame (line count, first line), to scroll to
     /// what is new: the first line of a new list, or the last of lines added.
     output_seen: (usize, String),
+    /// A line was said since the output window was drawn: it scrolls to the last line.
+    output_to_last: bool,
     /// The ladder editor: cursor, selection, clipboard, gestures.
     pub edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
@@ -112,6 +114,7 @@ impl LadderApp {
             tabs: Vec::new(),
             output: Vec::new(),
             output_seen: (0, String::new()),
+            output_to_last: false,
             replace: None,
             edit: Default::default(),
             files: Default::default(),
@@ -459,8 +462,10 @@ impl LadderApp {
             }
         });
         let first = self.output.first().map_or("", |l| l.text.as_str());
-        let new_list = first != self.output_seen.1;
-        let added = !new_list && self.output.len() > self.output_seen.0;
+        let to_last = std::mem::take(&mut self.output_to_last);
+        let new_list = first != self.output_seen.1 && !to_last;
+        let added =
+            to_last || (first == self.output_seen.1 && self.output.len() > self.output_seen.0);
         if new_list || self.output.len() != self.output_seen.0 {
             self.output_seen = (self.output.len(), first.to_string());
         }

@@ -12,6 +12,8 @@ pub const ERROR_GROUND: Color32 = Color32::from_rgb(0xff, 0xec, 0xec);
 pub const OK: Color32 = Color32::from_rgb(0x10, 0x80, 0x10);
 /// An operand that can be used but will not compile yet (an undefined symbol).
 pub const CAUTION: Color32 = Color32::from_rgb(0xb0, 0x60, 0x00);
+/// The background of the "forces active" badge: amber, as a warning lamp.
+pub const AMBER: Color32 = Color32::from_rgb(0xff, 0xbf, 0x00);
 
 /// The ladder's paper: black on white like a printed ladder, whatever the UI theme.
 pub const PAPER: Color32 = Color32::WHITE;

@@ -115,6 +115,8 @@ pub struct Vm {
     forced_bytes: Vec<u32>,
     ticks: u64,
     executed: u64,
+    /// Steps the last tick executed, and the most any tick has since power-on.
+    tick_steps: (u64, u64),
     division: u32,
     level2: Level2,
     halt: Option<Halt>,
@@ -173,6 +175,7 @@ impl Vm {
             forced_bytes: Vec::new(),
             ticks: 0,
             executed: 0,
+            tick_steps: (0, 0),
             division: 1,
             level2: Level2::default(),
             halt: None,
@@ -221,6 +224,12 @@ impl Vm {
         self.executed
     }
 
+    /// The scan time in steps: the last tick's and the most of any tick since power-on (the
+    /// watchdog stops a level at [`WATCHDOG_STEPS`]).
+    pub fn tick_steps(&self) -> (u64, u64) {
+        self.tick_steps
+    }
+
     /// Virtual time in ms.
     pub fn now_ms(&self) -> u64 {
         self.ticks * TICK_MS
@@ -240,6 +249,7 @@ impl Vm {
     /// DT and DC keep their values; level 2 starts a new cycle; a halted PLC runs again.
     /// Forces stay.
     pub fn power_cycle(&mut self) {
+        self.tick_steps = (0, 0);
         for area in [Area::R, Area::A, Area::Y, Area::G] {
             let r = self.layout.area_range(area);
             self.mem[r].fill(0);
@@ -257,6 +267,7 @@ impl Vm {
     /// frozen G). The VM does not own the CNC: the caller (usually a `Machine`) lends it for
     /// the tick, so the CNC stays readable between ticks.
     pub fn tick(&mut self, cnc: &mut dyn Cnc) {
+        let before = self.executed;
         if self.halt.is_none() {
             self.apply_forces();
             self.run_level1(cnc);
@@ -264,6 +275,8 @@ impl Vm {
                 self.run_level2_slice(cnc);
             }
         }
+        let steps = self.executed - before;
+        self.tick_steps = (steps, self.tick_steps.1.max(steps));
         self.ticks += 1;
         // Y and G go out at the end of the tick; the CNC answers in F, which the next tick
         // samples. A halted PLC's outputs stay as they were, and the CNC keeps running.

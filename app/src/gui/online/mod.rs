@@ -106,6 +106,10 @@ pub struct OnlineState {
     pub values: values::ValueWindow,
     /// Panel keys to press once the machine has run so many ticks (`--run --nc`).
     pub startup: Vec<(u64, Request)>,
+    /// The user said yes to forcing once (asked before the first force of the editor's run).
+    pub forces_confirmed: bool,
+    /// Forces waiting for that answer.
+    pub force_pending: Vec<Request>,
 }
 
 /// The signal trace page's state.
@@ -231,12 +235,32 @@ impl LadderApp {
     /// Sends a request to the machine (panel keys, swaps). While a recording is replayed the
     /// machine is not touched, and the output window says why.
     pub fn send_request(&mut self, r: Request) {
+        let forcing = matches!(
+            r,
+            Request::Command(MachineCommand::Force(..) | MachineCommand::ToggleForce(_))
+        );
+        if forcing && !self.online.forces_confirmed && self.online.session.is_some() {
+            self.online.force_pending.push(r);
+            self.files.question = Some(super::dialogs::Question::FirstForce);
+            return;
+        }
         if let Some(s) = self.online.session.as_mut()
             && !s.send(r)
         {
             let t = self.t(Msg::Replaying).to_string();
             if self.output.last().is_none_or(|l| l.text != t) {
                 self.say(t, true);
+            }
+        }
+    }
+
+    /// The answer to the first force's question: the forces asked for are sent, or dropped.
+    pub fn confirm_forces(&mut self, yes: bool) {
+        let pending = std::mem::take(&mut self.online.force_pending);
+        self.online.forces_confirmed = yes;
+        if yes {
+            for r in pending {
+                self.send_request(r);
             }
         }
     }
@@ -402,14 +426,26 @@ impl LadderApp {
             let (_, r) = self.online.startup.remove(0);
             s.send(r);
         }
+        let was_refused = matches!(s.sync, session::Sync::Refused(_));
+        let mut recompile = false;
         if let Some(doc) = self.doc.as_ref()
             && s.scrub.is_none()
-            && let Some(errors) = s.follow_edit(doc.project(), doc.generation)
         {
-            let _ = errors;
+            if s.follow_edit(doc.project(), doc.generation).is_some() {
+                recompile = true;
+                let t = Msg::EditNotCompiled.text(lang).to_string();
+                lines.push((t, true));
+            } else if was_refused
+                && s.sync != session::Sync::Swapping
+                && s.drawing_runs(doc.project())
+            {
+                // Undone back to what runs: the refused edit's errors are gone, and the output
+                // window says so rather than keep them.
+                recompile = true;
+            }
+        }
+        if recompile {
             self.compile();
-            let t = Msg::EditNotCompiled.text(lang).to_string();
-            lines.push((t, true));
         }
         if changed && let Some(doc) = self.doc.as_ref() {
             let s = self.online.session.as_ref().expect("checked above");

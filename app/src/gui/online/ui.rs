@@ -69,6 +69,14 @@ impl LadderApp {
             } else {
                 t(Msg::StateStopped)
             });
+            let (last, max) = snap.tick_steps;
+            ui.monospace(format!(
+                "{} {last} ({} {max}) · {} {}",
+                t(Msg::ScanSteps),
+                t(Msg::ScanMax),
+                t(Msg::StepsWatchdog),
+                ladder_engine::vm::WATCHDOG_STEPS
+            ));
             if let Some(h) = &snap.halt {
                 let why = h.text(lang == super::super::i18n::Lang::Zh);
                 ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::PlcHalted)));
@@ -89,8 +97,12 @@ impl LadderApp {
         }
         let snap = &s.published.snapshot;
         if !snap.forces.is_empty() {
-            let bits: u32 = snap.forces.iter().map(|(_, m, _)| m.count_ones()).sum();
-            ui.colored_label(theme::FORCED, format!("{}: {bits}", t(Msg::ForcedCount)));
+            let n = self.forced_addresses().len();
+            let badge = egui::RichText::new(format!(" {} ({n}) ", t(Msg::ForcedCount)))
+                .strong()
+                .color(egui::Color32::BLACK)
+                .background_color(theme::AMBER);
+            ui.label(badge);
         }
         let faults = snap.devices.iter().filter(|d| d.fault.is_some()).count();
         if faults > 0 {
