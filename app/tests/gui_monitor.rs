@@ -367,7 +367,15 @@ fn the_toolbar_shows_the_scan_in_steps_and_the_watchdog_limit() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     ticks(&mut h, 3);
-    let (last, max) = h.state().online.session.as_ref().unwrap().published.snapshot.tick_steps;
+    let (last, max) = h
+        .state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .published
+        .snapshot
+        .tick_steps;
     // Two networks: LD, AND, OUT and LD, TMRB (with its R coil) run every tick.
     assert!(last >= 5 && max >= last, "{last} {max}");
     h.get_by_label_contains(&format!("Scan steps {last} (max {max}) · watchdog 200000"));

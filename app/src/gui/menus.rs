@@ -195,7 +195,11 @@ impl LadderApp {
                     }
                 });
             egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
-                .selected_text(format!("{}%", self.settings.zoom))
+                .selected_text(if self.settings.fit_width {
+                    format!("{} {}%", Msg::ZoomFit.text(lang), self.settings.zoom)
+                } else {
+                    format!("{}%", self.settings.zoom)
+                })
                 .show_ui(ui, |ui| {
                     let fit = self.settings.fit_width;
                     if ui.selectable_label(fit, Msg::ZoomFit.text(lang)).clicked() && !fit {
