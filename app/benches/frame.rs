@@ -79,4 +79,62 @@ fn main() {
         .as_ref()
         .map_or(0, |s| s.published.snapshot.ticks);
     println!("machine ticks meanwhile: {ticks}");
+    h.state_mut().ask(Command::GoOffline);
+    h.run();
+    idle_paints();
+}
+
+/// Frames a second the running machine asks the UI for: the sample lathe online at real
+/// time with no part program (nothing on screen changes but the clock), then cutting its
+/// part program with the CNC page open (positions change every tick).
+fn idle_paints() {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/lathe-988ta.ldp"
+    ));
+    let nc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/lathe-988ta.nc"
+    ))
+    .expect("the sample part program");
+    for (what, program) in [
+        ("idle, nothing on screen changing", None),
+        ("cutting, CNC page", Some(nc)),
+    ] {
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(1280.0, 800.0))
+            .build_eframe({
+                let path = path.clone();
+                move |cc| LadderApp::from_creation(cc, Some(path))
+            });
+        h.run();
+        let cutting = program.is_some();
+        h.state_mut().start_running(program);
+        if cutting {
+            h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
+        }
+        // Settle (power-on writes, the cycle start), then count over 5 s of real time with
+        // the UI stepping at 60 Hz.
+        let settle = Instant::now();
+        while settle.elapsed().as_secs_f64() < 1.0 {
+            h.step();
+            std::thread::sleep(std::time::Duration::from_millis(16));
+        }
+        let gate = std::sync::Arc::clone(&h.state().online.gate);
+        let (f0, (v0, i0)) = (gate.frames(), gate.counts());
+        let t = Instant::now();
+        while t.elapsed().as_secs_f64() < 5.0 {
+            h.step();
+            std::thread::sleep(std::time::Duration::from_millis(16));
+        }
+        let secs = t.elapsed().as_secs_f64();
+        let (f1, (v1, i1)) = (gate.frames(), gate.counts());
+        println!(
+            "machine-driven repaints, lathe-988ta running at real time, {what}: frames_per_s={:.1} states_on_screen_per_s={:.1} states_off_screen_per_s={:.1}",
+            (f1 - f0) as f64 / secs,
+            (v1 - v0) as f64 / secs,
+            (i1 - i0) as f64 / secs
+        );
+        h.state_mut().go_offline();
+    }
 }

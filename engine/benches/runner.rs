@@ -24,7 +24,7 @@ fn main() {
             .unwrap()
             .record(m.plc.ticks(), &m.plc.image()[..size]);
     });
-    let runner = Runner::start(machine, hook, Box::new(|| {})).unwrap();
+    let runner = Runner::start(machine, hook, Box::new(|_| {})).unwrap();
     let seconds: u64 = std::env::var("RUNNER_SECONDS")
         .ok()
         .and_then(|s| s.parse().ok())

@@ -663,6 +663,7 @@ impl eframe::App for LadderApp {
         self.help_ui(&ctx);
         self.print_ui(&ctx);
         self.value_window_ui(&ctx);
+        self.publish_shown();
         self.run_pending();
     }
 

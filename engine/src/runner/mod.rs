@@ -97,8 +97,9 @@ pub struct Runner {
 
 /// Called on the machine thread after every tick (the scan recorder).
 pub type TickHook = Box<dyn FnMut(&Machine) + Send>;
-/// Called on the machine thread when there is something new to show (a repaint request).
-pub type Wake = Box<dyn Fn() + Send>;
+/// Called on the machine thread when there is something new to show, with the state just
+/// published: the UI decides there whether it changes what is on screen (a repaint request).
+pub type Wake = Box<dyn Fn(&Snapshot) + Send>;
 
 impl Runner {
     /// Starts the thread. The machine keeps its running state: send
@@ -144,7 +145,7 @@ impl Runner {
                     s.replies.push(Reply::Failed(msg));
                     s.stopped = true;
                     drop(s);
-                    (worker.wake)();
+                    (worker.wake)(&worker.snapshot);
                 }
                 worker.machine
             })?;
@@ -352,15 +353,16 @@ impl Worker {
         self.last_publish = now;
         {
             let mut s = self.shared.lock();
-            std::mem::swap(&mut s.snapshot, &mut self.snapshot);
             s.seq += 1;
             s.handled = self.handled;
             s.program = self.program;
             s.speed = self.clock.speed();
             s.lateness = self.clock.lateness();
             s.replies.append(&mut self.replies);
+            // The state stays in our copy too, for the wake's look at it after the lock.
+            s.snapshot.clone_from(&self.snapshot);
         }
-        (self.wake)();
+        (self.wake)(&self.snapshot);
     }
 }
 

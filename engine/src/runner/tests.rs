@@ -42,7 +42,7 @@ fn wait(r: &Runner, p: &mut Published, ok: impl Fn(&Published) -> bool) {
 }
 
 fn start(m: Machine) -> Runner {
-    Runner::start(m, Box::new(|_| {}), Box::new(|| {})).unwrap()
+    Runner::start(m, Box::new(|_| {}), Box::new(|_| {})).unwrap()
 }
 
 const LATCH: &str = "LEVEL2\nNETWORK\nLD X0000.0\nOR Y0000.0\nOUT Y0000.0\n";

@@ -81,6 +81,26 @@ impl LadderApp {
             r.clone().on_hover_text_at_pointer(text);
         }
         let visible = events.visible.clone();
+        // What the repaint gate watches: every operand of the networks on screen.
+        if let Some(block) = project.ladder.blocks.get(b) {
+            let shown = &mut self.online.ladder_shown;
+            for n in block.networks.get(visible.clone()).unwrap_or_default() {
+                for row in &n.rows {
+                    for cell in &row.cells {
+                        match cell {
+                            Cell::Contact { operand, .. } | Cell::Coil { operand, .. } => {
+                                shown.extend(address_of(project, operand));
+                            }
+                            Cell::Box { operands, .. } => {
+                                shown
+                                    .extend(operands.iter().filter_map(|o| address_of(project, o)));
+                            }
+                            _ => {}
+                        }
+                    }
+                }
+            }
+        }
         if let Some(s) = self.online.session.as_mut() {
             s.watch_visible(b, visible);
         }

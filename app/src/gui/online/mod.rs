@@ -12,6 +12,7 @@ mod machine;
 pub mod machine_page;
 pub mod macro_view;
 pub mod panel_view;
+pub mod repaint;
 pub mod session;
 pub mod toolpath_raster;
 pub mod toolpath_view;
@@ -110,6 +111,10 @@ pub struct OnlineState {
     pub forces_confirmed: bool,
     /// Forces waiting for that answer.
     pub force_pending: Vec<Request>,
+    /// What the screen shows of the machine, for the machine thread's repaint requests.
+    pub gate: std::sync::Arc<repaint::Gate>,
+    /// The addresses the ladder view drew this frame (kept to reuse its allocation).
+    pub ladder_shown: Vec<Address>,
 }
 
 /// The signal trace page's state.
@@ -155,9 +160,12 @@ impl LadderApp {
             return false;
         };
         let ctx = self.ctx.clone();
-        let wake = Box::new(move || {
+        let gate = std::sync::Arc::clone(&self.online.gate);
+        // A frame within 33 ms for a change on screen, within 500 ms for anything else.
+        let wake = Box::new(move |snapshot: &ladder_engine::machine::Snapshot| {
+            let soon = gate.judge(snapshot);
             if let Some(c) = &ctx {
-                c.request_repaint();
+                c.request_repaint_after(soon);
             }
         });
         match Session::start(doc.project(), doc.generation, wake) {

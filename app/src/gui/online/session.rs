@@ -124,7 +124,7 @@ impl Session {
     pub fn start(
         project: &Project,
         generation: u64,
-        wake: Box<dyn Fn() + Send>,
+        wake: ladder_engine::runner::Wake,
     ) -> Result<Session, StartError> {
         let (mut vm, running) = build(project, 0)?;
         vm.load_data_tables(project);
