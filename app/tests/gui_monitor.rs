@@ -380,3 +380,53 @@ fn the_toolbar_shows_the_scan_in_steps_and_the_watchdog_limit() {
     assert!(last >= 5 && max >= last, "{last} {max}");
     h.get_by_label_contains(&format!("Scan steps {last} (max {max}) · watchdog 200000"));
 }
+
+#[test]
+fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobes() {
+    use ladder_engine::machine::Target;
+    use ladder_engine::runner::Request;
+    let mut h = harness(Some(lathe()), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    let mdi = h
+        .state()
+        .panel_key("MDI")
+        .expect("the preset has an MDI key");
+    let key = Target {
+        address: mdi,
+        bytes: 1,
+        explicit: false,
+    };
+    h.state_mut().send_request(Request::Press(key));
+    h.state_mut().send_request(Request::Release(key));
+    ticks(&mut h, 20);
+    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
+    h.state_mut().online.cnc.mdi = "M08".into();
+    h.run();
+    h.get_by_label("Send MDI").click();
+    h.run();
+    settle(&mut h);
+    h.get_by_label_contains("Sent to the CNC's MDI buffer, blocks: 1");
+    h.get_by_label("Cycle start").click();
+    h.run();
+    settle(&mut h);
+    ticks(&mut h, 60);
+    let status = h
+        .state()
+        .online
+        .session
+        .as_ref()
+        .unwrap()
+        .published
+        .snapshot
+        .cnc
+        .clone()
+        .unwrap();
+    assert_eq!(status.mst.last[0], 8, "{status:?}");
+    assert_eq!(status.mst.m, 0, "the strobe is long over");
+    h.get_by_label_contains("MF ×1");
+    assert!(
+        status.line_in_mdi,
+        "the marker is in the MDI editor, not the program's"
+    );
+}

@@ -167,3 +167,31 @@ fn a_snapshot_copies_memory_forces_and_the_cnc_screen() {
     assert!(c.mdi);
     assert_eq!(c.line, Some(1));
 }
+
+#[test]
+fn the_screen_keeps_the_codes_sent_and_counts_each_strobe_however_short() {
+    let mut m = machine();
+    cnc(&mut m, CncCommand::Mdi("M03 S700\nM08\nM09".into()));
+    start(&mut m);
+    for _ in 0..40 {
+        m.tick();
+    }
+    let c = m.snapshot().cnc.unwrap();
+    assert_eq!(
+        c.run,
+        ladder_engine::cnc::RunState::Idle,
+        "the MDI program ended"
+    );
+    assert_eq!(c.mst.m, 0, "the code signals fell with their strobes");
+    assert_eq!(
+        c.mst.last,
+        [9, 700, 0],
+        "the codes in effect stay on the screen"
+    );
+    // MF three times, SF once, no TF; FIN answered each of the three blocks.
+    assert_eq!(c.mst.strobes, [3, 1, 0, 3]);
+    // The MDI run ended: its line is of the MDI buffer, not of the program.
+    assert!(c.line_in_mdi && !c.mdi);
+    m.apply(&MachineCommand::PowerCycle).unwrap();
+    assert_eq!(m.snapshot().cnc.unwrap().mst.strobes, [0; 4]);
+}

@@ -521,6 +521,10 @@ messages! {
     CncMdi => "录入（MDI）", "MDI";
     CncSendMdi => "送入 MDI", "Send MDI";
     CncReset => "复位", "RESET";
+    CncCycleStart => "循环启动", "Cycle start";
+    CncFeedHold => "进给保持", "Feed hold";
+    CncMdiSent => "已送入 MDI 程序段数：", "Sent to the CNC's MDI buffer, blocks:";
+    CncMdiHow => "在 MDI 方式下按循环启动执行。", "In MDI mode, Cycle start runs it.";
     CncMacros => "宏变量", "Macro variables";
     CncMacroLocals => "局部变量 #1–#33，调用层", "Locals #1–#33, call level";
     CncMacroEditHint => "程序未运行时可改：点数值，输入数字或 vacant，按回车", "Not running: click a value, type a number or vacant, press Enter";

@@ -223,6 +223,11 @@ impl Auto {
         self.mdi && self.state != RunState::Idle
     }
 
+    /// Whether the cursor (or the executing block) is in the MDI buffer.
+    pub fn at_mdi(&self) -> bool {
+        self.cursor.prog == MDI
+    }
+
     /// The line of the block at the cursor.
     pub fn current_line(&self, programs: &[NcProgram], mdi: &NcProgram) -> Option<usize> {
         if let Some(e) = &self.exec {

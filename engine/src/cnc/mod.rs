@@ -43,6 +43,7 @@ mod repeat;
 mod rough;
 pub mod signals;
 mod spindle;
+mod status;
 pub mod toolpath;
 mod windr;
 pub mod word;
@@ -60,6 +61,7 @@ use signals::{FImage, GroupInputs, Inputs};
 use spindle::Spindle;
 
 pub use auto::RunState;
+pub use status::{CncStatus, MstStatus};
 
 /// Whether alarm `n` is a PLC alarm (1000–1999): the A area sets and clears it, not reset.
 fn is_plc_alarm(n: u16) -> bool {
@@ -189,6 +191,7 @@ pub struct SimCnc {
     cutting_ms: u64,
     now_ms: u64,
     exchange_no: u64,
+    mst_log: mst::MstLog,
     /// Alarm number per A bit (0: not an alarm).
     plc_alarm_of_bit: Vec<u16>,
     prev_a: Vec<u8>,
@@ -249,6 +252,7 @@ impl SimCnc {
             cutting_ms: 0,
             now_ms: 0,
             exchange_no: 0,
+            mst_log: mst::MstLog::default(),
             plc_alarm_of_bit,
             prev_a: Vec::new(),
             alarms: Vec::with_capacity(16),
@@ -410,6 +414,7 @@ impl SimCnc {
     /// Power off and on (docs/cnc.md, "power-cycle").
     pub fn power_cycle(&mut self) {
         self.params.power_cycle();
+        self.mst_log = mst::MstLog::default();
         self.alarms.clear();
         self.pending_alarms.clear();
         self.auto = Auto::default();
@@ -649,6 +654,7 @@ impl SimCnc {
             program: self.current_program_number(),
             line: self.auto.current_line(&self.programs, &self.mdi),
             mdi: self.auto.running_mdi(),
+            line_in_mdi: self.auto.at_mdi(),
             axes: count,
             machine: std::array::from_fn(|n| self.axes[n].m),
             absolute: std::array::from_fn(|n| self.absolute(n)),
@@ -665,64 +671,6 @@ impl SimCnc {
             stop_message: self.macros.stop_message.clone(),
         }
     }
-}
-
-/// What a CNC screen shows, copied out for the editor each frame.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct CncStatus {
-    /// Mode.
-    pub mode: Mode,
-    /// Automatic operation state.
-    pub run: RunState,
-    /// `cnc.block`.
-    pub block: u32,
-    /// `cnc.prog`.
-    pub program: u32,
-    /// 1-based line of the executing (or next) block in its text, if any.
-    pub line: Option<usize>,
-    /// The running program is the MDI buffer.
-    pub mdi: bool,
-    /// Controlled axes.
-    pub axes: usize,
-    /// Machine positions, increments.
-    pub machine: [i64; AXES],
-    /// Absolute positions, increments.
-    pub absolute: [i64; AXES],
-    /// Spindle output, r/min.
-    pub spindle: u32,
-    /// Active alarms.
-    pub alarms: Vec<u16>,
-    /// M/S/T lamps.
-    pub mst: MstStatus,
-    /// The loaded program's path, run dry once per load (docs/gcode.md, "Toolpath").
-    pub toolpath: Option<std::sync::Arc<toolpath::Toolpath>>,
-    /// The active macro alarm (3000–3200) and its message.
-    pub macro_message: Option<(u16, String)>,
-    /// The macro variables an operator sees (docs/gcode.md, "Macros").
-    pub macros: Option<std::sync::Arc<macro_b::MacroTable>>,
-    /// The message of a stop by `#3006 = n (MESSAGE)`, until cycle start or reset.
-    pub stop_message: Option<String>,
-}
-
-/// The M/S/T interface as lamps and codes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct MstStatus {
-    /// M code and MF.
-    pub m: u32,
-    /// MF.
-    pub mf: bool,
-    /// S code.
-    pub s: u32,
-    /// SF.
-    pub sf: bool,
-    /// T code.
-    pub t: u32,
-    /// TF.
-    pub tf: bool,
-    /// FIN as last sampled.
-    pub fin: bool,
-    /// DEN.
-    pub den: bool,
 }
 
 impl Cnc for SimCnc {
@@ -778,5 +726,6 @@ impl Cnc for SimCnc {
         self.bookkeeping();
         // (h).
         self.write_f(f);
+        self.note_strobes();
     }
 }

@@ -24,6 +24,17 @@ pub(super) struct Mst {
     pub(super) t: u32,
 }
 
+/// The strobes seen so far: each rising edge counted, the codes it sent kept.
+#[derive(Clone, Debug, Default)]
+pub(super) struct MstLog {
+    /// MF, SF, TF and FIN at the last exchange.
+    prev: [bool; 4],
+    /// The last M, S and T codes strobed.
+    last: [u32; 3],
+    /// Rising edges of MF, SF, TF and FIN.
+    strobes: [u64; 4],
+}
+
 impl SimCnc {
     /// Step (f): strobes drop on FIN or their own finish signal; the sequence finishes when
     /// every finish signal is 0 again.
@@ -83,10 +94,29 @@ impl SimCnc {
         }
     }
 
+    /// Counts the strobes that rose in this exchange and keeps the codes they sent.
+    pub(super) fn note_strobes(&mut self) {
+        let now = self.mst_status();
+        let up = [now.mf, now.sf, now.tf, now.fin];
+        let codes = [now.m, now.s, now.t];
+        let log = &mut self.mst_log;
+        for k in 0..4 {
+            if up[k] && !log.prev[k] {
+                log.strobes[k] += 1;
+                if k < 3 {
+                    log.last[k] = codes[k];
+                }
+            }
+        }
+        log.prev = up;
+    }
+
     /// The M/S/T lamps.
     pub(super) fn mst_status(&self) -> MstStatus {
         let mut s = MstStatus {
             fin: self.inp.fin,
+            last: self.mst_log.last,
+            strobes: self.mst_log.strobes,
             ..MstStatus::default()
         };
         if let Some(e) = &self.auto.exec

@@ -22,6 +22,10 @@ pub enum CncEvent {
     Mdi(String),
     /// The CNC's RESET key: `CncCommand::Reset`.
     Reset,
+    /// The operator panel's Cycle start key, pressed and let go.
+    CycleStart,
+    /// The operator panel's Feed hold key, pressed and let go.
+    FeedHold,
     /// A macro variable typed into the table: `CncCommand::Macro`.
     Macro {
         /// Variable number.
@@ -32,7 +36,7 @@ pub enum CncEvent {
 }
 
 /// The editor buffers of the CNC screen, owned by the caller.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct CncTexts {
     /// The NC program text (one or more `O` programs).
     pub program: String,
@@ -42,7 +46,15 @@ pub struct CncTexts {
     pub jump: Option<usize>,
     /// The macro-variable table's group and the value being typed.
     pub macros: MacroEdit,
+    /// What the last "Send MDI" did, shown under the MDI editor.
+    pub mdi_sent: Option<String>,
+    /// The strobe lamps held lit: the strobe counts last seen and until when each lamp
+    /// stays lit (UI time, s), so a strobe of one exchange is seen for 200 ms.
+    pub held: ([u64; 4], [f64; 4]),
 }
+
+/// How long a strobe lamp stays lit after its strobe rose, at least.
+pub const LAMP_HOLD_S: f64 = 0.2;
 
 /// The name of a mode in the UI language.
 pub fn mode_text(mode: Mode, lang: Lang) -> &'static str {
@@ -99,7 +111,18 @@ pub fn cnc_ui(
                     ui.label(t(Msg::CncNotRunning));
                 }
                 Some(s) => {
-                    status_ui(ui, s, lang, alarm_text);
+                    status_ui(ui, s, &mut texts.held, lang, alarm_text);
+                    ui.horizontal(|ui| {
+                        if ui.button(t(Msg::CncCycleStart)).clicked() {
+                            events.push(CncEvent::CycleStart);
+                        }
+                        if ui.button(t(Msg::CncFeedHold)).clicked() {
+                            events.push(CncEvent::FeedHold);
+                        }
+                        if ui.button(t(Msg::CncReset)).clicked() {
+                            events.push(CncEvent::Reset);
+                        }
+                    });
                     let mut typed = Vec::new();
                     macro_ui(ui, s, &mut texts.macros, lang, &mut typed);
                     events.extend(
@@ -148,17 +171,14 @@ fn editors_ui(
 ) {
     let t = |m: Msg| m.text(lang);
     // The block being executed is in the program or in the MDI buffer.
-    let program_line = status.filter(|s| !s.mdi).and_then(|s| s.line);
-    let mdi_line = status.filter(|s| s.mdi).and_then(|s| s.line);
+    let program_line = status.filter(|s| !s.line_in_mdi).and_then(|s| s.line);
+    let mdi_line = status.filter(|s| s.line_in_mdi).and_then(|s| s.line);
     let heading = ui.horizontal(|ui| {
         let heading = ui.strong(t(Msg::CncProgram));
         if ui.button(t(Msg::CncLoadProgram)).clicked() {
             events.push(CncEvent::Program(texts.program.clone()));
         }
-        if status.is_some() && ui.button(t(Msg::CncReset)).clicked() {
-            events.push(CncEvent::Reset);
-        }
-        if let Some(line) = status.and_then(|s| s.line) {
+        if let Some(line) = program_line {
             ui.label(format!("{} {line}", t(Msg::CncCurrentLine)));
         }
         if let Some(line) = picked {
@@ -196,6 +216,9 @@ fn editors_ui(
         jump: None,
     };
     nc_editor(ui, "cnc-mdi", &mut texts.mdi, marks, 3, heading.inner);
+    if let Some(sent) = &texts.mdi_sent {
+        ui.colored_label(theme::OK, sent);
+    }
 }
 
 /// The lines an NC editor marks.
@@ -210,7 +233,13 @@ struct Marks {
 }
 
 /// Mode, state, positions, spindle, M/S/T and alarms.
-fn status_ui(ui: &mut egui::Ui, s: &CncStatus, lang: Lang, alarm_text: &dyn Fn(u16) -> String) {
+fn status_ui(
+    ui: &mut egui::Ui,
+    s: &CncStatus,
+    held: &mut ([u64; 4], [f64; 4]),
+    lang: Lang,
+    alarm_text: &dyn Fn(u16) -> String,
+) {
     let t = |m: Msg| m.text(lang);
     ui.horizontal(|ui| {
         ui.label(t(Msg::CncMode));
@@ -246,20 +275,35 @@ fn status_ui(ui: &mut egui::Ui, s: &CncStatus, lang: Lang, alarm_text: &dyn Fn(u
         ui.label(t(Msg::CncRpm));
     });
     let m = &s.mst;
-    ui.horizontal(|ui| {
+    let lit = hold_lamps(ui, m, held);
+    ui.horizontal_wrapped(|ui| {
+        // The codes in effect (the signals fall with their strobes; the screen keeps them),
+        // each strobe lamp with how many times it rose.
         ui.label(t(Msg::CncMCode));
-        ui.monospace(format!("{:02}", m.m));
-        lamp(ui, t(Msg::CncStrobeMf), m.mf);
+        ui.monospace(format!("{:02}", m.last[0]));
+        lamp(
+            ui,
+            &format!("{} ×{}", t(Msg::CncStrobeMf), m.strobes[0]),
+            lit[0],
+        );
         ui.separator();
         ui.label(t(Msg::CncSCode));
-        ui.monospace(format!("{}", m.s));
-        lamp(ui, t(Msg::CncStrobeSf), m.sf);
+        ui.monospace(format!("{}", m.last[1]));
+        lamp(
+            ui,
+            &format!("{} ×{}", t(Msg::CncStrobeSf), m.strobes[1]),
+            lit[1],
+        );
         ui.separator();
         ui.label(t(Msg::CncTCode));
-        ui.monospace(format!("{:04}", m.t));
-        lamp(ui, t(Msg::CncStrobeTf), m.tf);
+        ui.monospace(format!("{:04}", m.last[2]));
+        lamp(
+            ui,
+            &format!("{} ×{}", t(Msg::CncStrobeTf), m.strobes[2]),
+            lit[2],
+        );
         ui.separator();
-        lamp(ui, t(Msg::CncFin), m.fin);
+        lamp(ui, &format!("{} ×{}", t(Msg::CncFin), m.strobes[3]), lit[3]);
         lamp(ui, t(Msg::CncDen), m.den);
     });
     ui.horizontal(|ui| {
@@ -281,6 +325,32 @@ fn status_ui(ui: &mut egui::Ui, s: &CncStatus, lang: Lang, alarm_text: &dyn Fn(u
         // `#3006 = n (MESSAGE)` stopped the program: cycle start goes on.
         ui.colored_label(theme::CAUTION, format!("{}: {m}", t(Msg::CncStopMessage)));
     }
+}
+
+/// MF, SF, TF and FIN as lamps a person can see: lit while the signal is, and for at least
+/// [`LAMP_HOLD_S`] after each rise (counted by the CNC, so a rise between two frames counts).
+fn hold_lamps(
+    ui: &egui::Ui,
+    m: &ladder_engine::cnc::MstStatus,
+    held: &mut ([u64; 4], [f64; 4]),
+) -> [bool; 4] {
+    let now = ui.input(|i| i.time);
+    let on = [m.mf, m.sf, m.tf, m.fin];
+    let mut lit = [false; 4];
+    for k in 0..4 {
+        if m.strobes[k] != held.0[k] {
+            held.0[k] = m.strobes[k];
+            held.1[k] = now + LAMP_HOLD_S;
+        }
+        let holding = now < held.1[k];
+        if holding {
+            // Nothing from the machine may come to put it out: ask for that frame.
+            ui.ctx()
+                .request_repaint_after(std::time::Duration::from_secs_f64(held.1[k] - now));
+        }
+        lit[k] = on[k] || holding;
+    }
+    lit
 }
 
 /// A signal lamp with its name: a small circle, lit while the signal is 1. It reports itself
@@ -507,11 +577,49 @@ mod tests {
                 .accesskit_node()
                 .toggled()
         };
-        assert_eq!(lamp(&h, "MF"), Some(Toggled::True));
-        assert_eq!(lamp(&h, "FIN"), Some(Toggled::False));
+        assert_eq!(lamp(&h, "MF ×0"), Some(Toggled::True));
+        assert_eq!(lamp(&h, "FIN ×0"), Some(Toggled::False));
         h.get_by_label("RESET").click();
         h.run();
-        assert_eq!(h.state().3, [CncEvent::Reset]);
+        h.get_by_label("Cycle start").click();
+        h.run();
+        h.get_by_label("Feed hold").click();
+        h.run();
+        assert_eq!(
+            h.state().3,
+            [CncEvent::Reset, CncEvent::CycleStart, CncEvent::FeedHold]
+        );
+    }
+
+    #[test]
+    fn a_strobe_shorter_than_a_frame_lights_its_lamp_for_200_ms_and_is_counted() {
+        let mut h = harness(Some(CncStatus::default()));
+        let status = CncStatus {
+            mst: MstStatus {
+                m: 0,
+                mf: false,
+                last: [8, 0, 0],
+                strobes: [1, 0, 0, 1],
+                ..MstStatus::default()
+            },
+            ..CncStatus::default()
+        };
+        h.state_mut().0 = Some(status);
+        h.step();
+        let lamp = |h: &Harness<'static, Shown>, name: &str| {
+            h.get_by_role_and_label(Role::Status, name)
+                .accesskit_node()
+                .toggled()
+        };
+        // MF rose and fell between two frames: the count says so and the lamp is lit.
+        assert_eq!(lamp(&h, "MF ×1"), Some(Toggled::True));
+        assert_eq!(lamp(&h, "SF ×0"), Some(Toggled::False));
+        h.get_by_label("08");
+        // 0.3 s of frames later it is out.
+        for _ in 0..20 {
+            h.step();
+        }
+        assert_eq!(lamp(&h, "MF ×1"), Some(Toggled::False));
     }
 
     #[test]

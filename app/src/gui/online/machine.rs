@@ -57,6 +57,14 @@ impl LadderApp {
         }
     }
 
+    /// The input of the panel key with this English name ("Cycle start", "AUTO").
+    pub fn panel_key(&self, en: &str) -> Option<Address> {
+        self.panel()
+            .items
+            .into_iter()
+            .find_map(|i| (i.label_en == en).then(|| i.kind.input()).flatten())
+    }
+
     /// The inputs the project's machine model drives.
     fn device_inputs(&self) -> Vec<Address> {
         self.doc.as_ref().map_or_else(Vec::new, |d| {
@@ -156,9 +164,33 @@ impl LadderApp {
         for e in events {
             let c = match e {
                 CncEvent::Program(text) => CncCommand::Program(text),
-                CncEvent::Mdi(text) => CncCommand::Mdi(text),
+                CncEvent::Mdi(text) => {
+                    let blocks = text.lines().filter(|l| !l.trim().is_empty()).count();
+                    self.online.cnc.mdi_sent = self.online().then(|| {
+                        format!(
+                            "{} {blocks}. {}",
+                            Msg::CncMdiSent.text(lang),
+                            Msg::CncMdiHow.text(lang)
+                        )
+                    });
+                    CncCommand::Mdi(text)
+                }
                 CncEvent::Reset => CncCommand::Reset,
                 CncEvent::Macro { number, value } => CncCommand::Macro { number, value },
+                CncEvent::CycleStart | CncEvent::FeedHold => {
+                    // As the operator does it: the panel's key, pressed and let go (held
+                    // long enough for the ladder to see it).
+                    let name = if e == CncEvent::CycleStart {
+                        "Cycle start"
+                    } else {
+                        "Feed hold"
+                    };
+                    if let Some(a) = self.panel_key(name) {
+                        self.send_request(Request::Press(target(a)));
+                        self.send_request(Request::Release(target(a)));
+                    }
+                    continue;
+                }
             };
             if self.online() {
                 self.send_command(MachineCommand::Cnc(c));

@@ -204,18 +204,12 @@ impl LadderApp {
         self.send_command(MachineCommand::Cnc(
             ladder_engine::cnc::command::CncCommand::Program(text),
         ));
-        let key = |app: &LadderApp, en: &str| {
-            app.panel()
-                .items
-                .into_iter()
-                .find_map(|i| (i.label_en == en).then(|| i.kind.input()).flatten())
-        };
         let target = |a: Address| Target {
             address: a,
             bytes: 1,
             explicit: false,
         };
-        if let (Some(auto), Some(start)) = (key(self, "AUTO"), key(self, "Cycle start")) {
+        if let (Some(auto), Some(start)) = (self.panel_key("AUTO"), self.panel_key("Cycle start")) {
             self.online.startup = vec![
                 (2, Request::Press(target(auto))),
                 (3, Request::Release(target(auto))),
