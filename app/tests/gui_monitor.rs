@@ -430,3 +430,47 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
         "the marker is in the MDI editor, not the program's"
     );
 }
+
+#[test]
+fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
+    use ladder_studio::gui::online::OnlineTab;
+    for size in [egui::vec2(1280.0, 800.0), egui::vec2(900.0, 600.0)] {
+        let mut h = harness_sized(Some(lathe()), Lang::En, size);
+        h.run();
+        command(&mut h, Command::StepTick);
+        h.state_mut().online.tab = OnlineTab::Panel;
+        h.run();
+        h.run();
+        let labels: Vec<String> = h
+            .state()
+            .panel()
+            .items
+            .iter()
+            .map(|i| i.label_en.clone())
+            .collect();
+        let page = h.get_by_label("Panel").rect();
+        for l in &labels {
+            for n in h.get_all_by_label(l) {
+                let r = n.rect();
+                assert!(
+                    r.max.x <= size.x + 0.5 && r.min.x >= page.min.x - 1.0,
+                    "{l} at {r:?} in a {size:?} window"
+                );
+            }
+        }
+        // Every page: the tab row does not move.
+        let tabs = |h: &Harness<'static, LadderApp>| h.get_by_label("Forces").rect();
+        let first = tabs(&h);
+        for tab in [
+            OnlineTab::Cnc,
+            OnlineTab::Watch,
+            OnlineTab::Trace,
+            OnlineTab::Machine,
+            OnlineTab::Panel,
+        ] {
+            h.state_mut().online.tab = tab;
+            h.run();
+            assert_eq!(tabs(&h), first, "{tab:?} at {size:?}");
+        }
+    }
+}

@@ -44,7 +44,7 @@ pub fn forced_in(s: &Session, a: Address) -> bool {
 }
 
 /// Which page of the online panel is shown.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum OnlineTab {
     /// The machine operator panel.
     #[default]

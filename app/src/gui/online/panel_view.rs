@@ -44,6 +44,10 @@ pub struct PanelViewState {
     draft: Option<Draft>,
     /// Why the last Apply was refused.
     error: Option<String>,
+    /// The panel's width at full size, as last drawn: the next frame scales to fit.
+    natural: Option<f32>,
+    /// A cell's size at the scale drawn now.
+    cell: egui::Vec2,
 }
 
 /// Which kind the item form edits.
@@ -319,32 +323,34 @@ pub fn panel_ui(
         }
     });
     let mut drawn = Vec::new();
-    let rows = panel.items.iter().map(|i| i.row).max().map_or(0, |r| r + 1);
-    let cols = panel.items.iter().map(|i| i.col).max().map_or(0, |c| c + 1);
-    egui::Grid::new("operator-panel")
-        .spacing([6.0, 6.0])
-        .min_col_width(CELL.x)
-        .show(ui, |ui| {
-            for row in 0..rows {
-                for col in 0..cols {
-                    match panel
-                        .items
-                        .iter()
-                        .position(|i| (i.row, i.col) == (row, col))
-                    {
-                        Some(i) if state.editing => edit_cell(ui, panel, i, lang, state),
-                        Some(i) => {
-                            operate_cell(ui, &panel.items[i], i, memory, lang, state, &mut events);
-                            drawn.extend(panel.items[i].kind.input());
-                        }
-                        None => {
-                            ui.allocate_space(CELL);
-                        }
-                    }
-                }
-                ui.end_row();
-            }
-        });
+    // The whole panel in sight: scaled down (to 60 % at most) to the width there is, as
+    // measured at full size last frame, so no column hides behind a scroll bar.
+    let room = ui.available_width();
+    // In steps of 5 %: a grid re-measures its columns when they change, and a scale that
+    // followed every pixel would never settle. Narrower than 60 % would be unreadable: then
+    // each row of the panel wraps instead, its keys in order.
+    let fit = state.natural.map_or(1.0, |w| room / w.max(1.0));
+    let wrap = fit < MIN_SCALE;
+    let scale = if wrap {
+        WRAP_SCALE
+    } else {
+        ((fit * 20.0).floor() / 20.0).clamp(MIN_SCALE, 1.0)
+    };
+    state.cell = CELL * scale;
+    let grid = ui.scope(|ui| {
+        scale_style(ui.style_mut(), scale);
+        if wrap {
+            panel_rows(ui, panel, memory, lang, state, &mut events, &mut drawn);
+        } else {
+            panel_grid(ui, panel, memory, lang, state, &mut events, &mut drawn);
+        }
+    });
+    // The full-size width is measured on the grid only (a wrapped panel is as wide as its
+    // room).
+    let natural = grid.response.rect.width() / scale;
+    if !wrap && state.natural.is_none_or(|w| (w - natural).abs() > 8.0) {
+        state.natural = Some(natural);
+    }
     // A key that is no longer drawn (edit mode, removed) cannot be let go: release it now.
     state.held.retain(|a| {
         let keep = drawn.contains(a);
@@ -357,6 +363,91 @@ pub fn panel_ui(
         form_ui(ui, panel, profile, lang, state, &mut events);
     }
     events
+}
+
+/// The smallest scale the panel's grid is drawn at to fit; narrower than that, it wraps.
+const MIN_SCALE: f32 = 0.6;
+/// The scale of a wrapped panel.
+const WRAP_SCALE: f32 = 0.85;
+
+/// Text, paddings and spacings scaled (the panel drawn smaller to fit its room).
+fn scale_style(style: &mut egui::Style, scale: f32) {
+    for font in style.text_styles.values_mut() {
+        font.size *= scale;
+    }
+    let s = &mut style.spacing;
+    s.button_padding *= scale;
+    s.interact_size *= scale;
+    s.item_spacing *= scale;
+}
+
+/// The panel's items on their grid of rows and columns.
+fn panel_grid(
+    ui: &mut egui::Ui,
+    panel: &Panel,
+    memory: &dyn Fn(Address) -> i64,
+    lang: Lang,
+    state: &mut PanelViewState,
+    events: &mut Vec<PanelEvent>,
+    drawn: &mut Vec<Address>,
+) {
+    let rows = panel.items.iter().map(|i| i.row).max().map_or(0, |r| r + 1);
+    let cols = panel.items.iter().map(|i| i.col).max().map_or(0, |c| c + 1);
+    let gap = 6.0 * state.cell.x / CELL.x;
+    egui::Grid::new("operator-panel")
+        .spacing([gap, gap])
+        .min_col_width(state.cell.x)
+        .show(ui, |ui| {
+            for row in 0..rows {
+                for col in 0..cols {
+                    match panel
+                        .items
+                        .iter()
+                        .position(|i| (i.row, i.col) == (row, col))
+                    {
+                        Some(i) if state.editing => edit_cell(ui, panel, i, lang, state),
+                        Some(i) => {
+                            operate_cell(ui, &panel.items[i], i, memory, lang, state, events);
+                            drawn.extend(panel.items[i].kind.input());
+                        }
+                        None => {
+                            ui.allocate_space(state.cell);
+                        }
+                    }
+                }
+                ui.end_row();
+            }
+        });
+}
+
+/// The panel's rows one after another, each wrapping to the room there is.
+fn panel_rows(
+    ui: &mut egui::Ui,
+    panel: &Panel,
+    memory: &dyn Fn(Address) -> i64,
+    lang: Lang,
+    state: &mut PanelViewState,
+    events: &mut Vec<PanelEvent>,
+    drawn: &mut Vec<Address>,
+) {
+    ui.set_max_width(ui.available_width());
+    let rows = panel.items.iter().map(|i| i.row).max().map_or(0, |r| r + 1);
+    for row in 0..rows {
+        let mut items: Vec<usize> = (0..panel.items.len())
+            .filter(|&i| panel.items[i].row == row)
+            .collect();
+        items.sort_by_key(|&i| panel.items[i].col);
+        ui.horizontal_wrapped(|ui| {
+            for i in items {
+                if state.editing {
+                    edit_cell(ui, panel, i, lang, state);
+                } else {
+                    operate_cell(ui, &panel.items[i], i, memory, lang, state, events);
+                    drawn.extend(panel.items[i].kind.input());
+                }
+            }
+        });
+    }
 }
 
 /// One item in operation.
@@ -378,7 +469,7 @@ fn operate_cell(
             } else {
                 ui.visuals().text_color()
             }))
-            .min_size(CELL)
+            .min_size(state.cell)
             // A click alone stops counting as held once it is too long for a click; a drag
             // is held until the button is let go, as a key is.
             .sense(egui::Sense::click_and_drag());
@@ -394,7 +485,7 @@ fn operate_cell(
         PanelKind::Switch { input } => {
             let on = memory(*input) != 0;
             let resp = ui
-                .add(egui::Button::new(label).min_size(CELL).selected(on))
+                .add(egui::Button::new(label).min_size(state.cell).selected(on))
                 .on_hover_text(wiring(item));
             if resp.clicked() {
                 events.push(PanelEvent::Set(*input, i64::from(!on)));
@@ -407,7 +498,7 @@ fn operate_cell(
                 ui.visuals().text_color(),
             );
             // A long label widens the cell rather than run into the next one.
-            let size = egui::vec2(CELL.x.max(24.0 + text.size().x), CELL.y);
+            let size = egui::vec2(state.cell.x.max(24.0 + text.size().x), state.cell.y);
             let (rect, resp) = ui.allocate_exact_size(size, egui::Sense::hover());
             let centre = egui::pos2(rect.left() + 10.0, rect.center().y);
             let fill = if lit {
@@ -429,14 +520,17 @@ fn operate_cell(
                 Some(k) => positions[k].0.clone(),
                 None => format!("{} {byte}", Msg::PanelNoPosition.text(lang)),
             };
-            ui.vertical(|ui| {
-                ui.set_width(CELL.x);
+            // Placed as one piece of its cell's size, so a wrapping row can move it whole.
+            let size = egui::vec2(state.cell.x, state.cell.y * 1.5);
+            let layout = egui::Layout::top_down(egui::Align::Min);
+            ui.allocate_ui_with_layout(size, layout, |ui| {
+                ui.set_width(state.cell.x);
                 let name = ui.small(label);
                 // Tall enough for every position: a knob's positions are read at a glance.
                 let rows = positions.len() as f32;
                 let row = ui.spacing().interact_size.y + ui.spacing().item_spacing.y;
                 let resp = egui::ComboBox::from_id_salt(("panel-knob", index))
-                    .width(CELL.x)
+                    .width(state.cell.x)
                     .height(rows * row + 16.0)
                     .selected_text(shown)
                     .show_ui(ui, |ui| {
@@ -506,7 +600,7 @@ fn edit_cell(
     let resp = ui
         .add(
             egui::Button::new(item_label(item, lang))
-                .min_size(CELL)
+                .min_size(state.cell)
                 .selected(open),
         )
         .on_hover_text(wiring(item));

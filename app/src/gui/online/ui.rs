@@ -187,8 +187,9 @@ impl LadderApp {
         {
             ui.label(t(Msg::OfflineHint));
         }
+        // Each page keeps its own scroll position across tab switches.
         egui::ScrollArea::both()
-            .id_salt("online-page")
+            .id_salt(("online-page", self.online.tab))
             .auto_shrink([false, false])
             .show(ui, |ui| match self.online.tab {
                 OnlineTab::Panel => self.machine_panel_ui(ui),
