@@ -474,3 +474,48 @@ fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
         }
     }
 }
+
+#[test]
+fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
+    use ladder_studio::gui::online::OnlineTab;
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut().online.forces_confirmed = true;
+    h.state_mut().online.tab = OnlineTab::Signals;
+    h.state_mut().online.signals.from = 8;
+    h.state_mut().online.signals.to = 12;
+    h.run();
+    // X0010.2 starts the timer: a click writes it once.
+    h.get_by_label("X0010.2").click();
+    h.run();
+    settle(&mut h);
+    assert_eq!(value(&h, "X0010.2"), 1);
+    assert!(h.state().forced_addresses().is_empty());
+    // With "a click forces" a click forces X0010.0 to the opposite of its value.
+    h.get_by_label("A click forces or releases").click();
+    h.run();
+    h.get_by_label("X0010.0").click();
+    h.run();
+    settle(&mut h);
+    ticks(&mut h, 1);
+    let forced: Vec<String> = h
+        .state()
+        .forced_addresses()
+        .iter()
+        .map(|a| a.to_string())
+        .collect();
+    assert_eq!(forced, ["X0010.0"]);
+    assert_eq!(value(&h, "X0010.0"), 1);
+    // A whole byte typed and written.
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "X0011")
+        .click();
+    h.run();
+    h.get_by_role_and_label(egui::accesskit::Role::TextInput, "X0011")
+        .type_text("5");
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+    settle(&mut h);
+    assert_eq!(value(&h, "X0011"), 5);
+}

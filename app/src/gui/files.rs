@@ -533,7 +533,7 @@ impl LadderApp {
             Question::FirstForce => (
                 t(Msg::FirstForceTitle),
                 t(Msg::FirstForceQuestion).to_string(),
-                vec![Msg::ForceIt, Msg::Cancel],
+                vec![Msg::ForceValue, Msg::Cancel],
             ),
         };
         egui::Modal::new(egui::Id::unique("question")).show(ctx, |ui| {

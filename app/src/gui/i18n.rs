@@ -105,6 +105,12 @@ messages! {
     TabCnc => "CNC", "CNC";
     TabWatch => "监视表", "Watch";
     TabForces => "强制", "Forces";
+    TabSignals => "PLC 信号", "PLC signals";
+    SignalArea => "地址区", "Area";
+    SignalFrom => "从", "from";
+    SignalTo => "到", "to";
+    SignalClickForces => "单击强制/解除", "A click forces or releases";
+    SignalHint => "单击某位写入相反值一次（勾选上面的选项则强制或解除）；右键菜单两者都有；整字节或数值在右侧输入后写入或强制。悬停显示符号和注释。", "A click on a bit writes its opposite once (or forces and releases, with the box above ticked); its right-click menu has both; a whole byte or value is typed on the right, then written or forced. Hover for the symbol and comment.";
     TabTrace => "信号跟踪", "Trace";
     TabAlarms => "报警", "Alarms";
     TabMachine => "机床", "Machine";
@@ -127,7 +133,6 @@ messages! {
     ForcedCount => "强制生效", "Forces active";
     FirstForceTitle => "强制信号", "Force a signal";
     FirstForceQuestion => "强制会使信号保持指定值，不论程序和机床如何动作，直到解除强制。在真实机床上这可能使设备意外动作。确定要强制吗？（本次运行中不再询问）", "A force holds a signal at its value whatever the program and the machine do, until released. On a real machine this can move things unexpectedly. Force it? (Not asked again while the editor runs.)";
-    ForceIt => "强制", "Force";
     ScanSteps => "扫描步数", "Scan steps";
     ScanMax => "最大", "max";
     StepsWatchdog => "看门狗", "watchdog";

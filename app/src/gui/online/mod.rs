@@ -14,6 +14,7 @@ pub mod macro_view;
 pub mod panel_view;
 pub mod repaint;
 pub mod session;
+pub mod signals;
 pub mod toolpath_raster;
 pub mod toolpath_view;
 pub mod trace;
@@ -55,6 +56,8 @@ pub enum OnlineTab {
     Watch,
     /// The force list.
     Forces,
+    /// The PLC's memory by area, byte by byte (the diagnosis screen).
+    Signals,
     /// The signal trace.
     Trace,
     /// PLC and CNC alarms.
@@ -89,6 +92,8 @@ pub struct OnlineState {
     pub why: Option<Why>,
     /// The watch table's UI.
     pub watch: watch::WatchUi,
+    /// The signal page.
+    pub signals: signals::SignalPage,
     /// The PLC alarms with the tick each came on.
     pub alarms: alarms::AlarmList,
     /// The operator panel widget's state.

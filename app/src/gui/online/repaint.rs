@@ -158,6 +158,20 @@ impl super::super::LadderApp {
                         .extend((a.start as u32..a.end as u32).map(|o| (o, 0xFF)));
                     shown.cnc = true;
                 }
+                super::OnlineTab::Signals => {
+                    let p = &self.online.signals;
+                    let bytes = u32::from(p.area.element_bytes());
+                    let from = ladder_engine::Address {
+                        area: p.area,
+                        number: p.from,
+                        bit: None,
+                    };
+                    let start = layout.loc(from, false).off;
+                    let n = u32::from(p.to.saturating_sub(p.from)) + 1;
+                    shown
+                        .bytes
+                        .extend((start..start + n * bytes).map(|o| (o, 0xFF)));
+                }
                 super::OnlineTab::Watch | super::OnlineTab::Forces => {
                     if let Some(doc) = self.doc.as_ref() {
                         for r in self.watch_rows() {

@@ -175,6 +175,7 @@ impl LadderApp {
                 (OnlineTab::Cnc, Msg::TabCnc),
                 (OnlineTab::Watch, Msg::TabWatch),
                 (OnlineTab::Forces, Msg::TabForces),
+                (OnlineTab::Signals, Msg::TabSignals),
                 (OnlineTab::Trace, Msg::TabTrace),
                 (OnlineTab::Alarms, Msg::TabAlarms),
             ] {
@@ -196,6 +197,7 @@ impl LadderApp {
                 OnlineTab::Cnc => self.cnc_page_ui(ui),
                 OnlineTab::Watch => self.watch_ui(ui),
                 OnlineTab::Forces => self.forces_ui(ui),
+                OnlineTab::Signals => self.signals_ui(ui),
                 OnlineTab::Trace => self.trace_page_ui(ui),
                 OnlineTab::Alarms => self.alarms_ui(ui),
                 OnlineTab::Machine => self.machine_page_ui(ui),
