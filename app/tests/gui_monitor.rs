@@ -519,3 +519,48 @@ fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
     settle(&mut h);
     assert_eq!(value(&h, "X0011"), 5);
 }
+
+#[test]
+fn prepared_values_are_written_in_one_tick_and_rows_show_symbols_units_and_presets() {
+    use ladder_studio::gui::online::OnlineTab;
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    for a in ["X0010.0", "X0010.1", "T0000"] {
+        h.state_mut().add_watch(a).unwrap();
+    }
+    command(&mut h, Command::StepTick);
+    h.state_mut().online.tab = OnlineTab::Watch;
+    h.run();
+    h.get_by_label_contains(" ms / 1000 ms");
+    // Running as fast as it can: two separate writes would land ticks apart.
+    h.state_mut().online.speed = ladder_engine::runner::Speed::Max;
+    command(&mut h, Command::Speed(ladder_engine::runner::Speed::Max));
+    command(&mut h, Command::Run);
+    h.state_mut().online.watch.values = vec!["1".into(), "1".into(), String::new()];
+    h.run();
+    h.get_by_label_contains("2 rows have a prepared value");
+    h.get_by_label("Write prepared values").click();
+    h.run();
+    settle(&mut h);
+    command(&mut h, Command::Stop);
+    let s = h.state().online.session.as_ref().unwrap();
+    let layout = &s.running.layout;
+    let off = layout.loc("X0010.0".parse().unwrap(), false).off;
+    let newest = s.recorder().newest().unwrap();
+    let rec = s.recorder();
+    let (mut c0, mut c1) = (None, None);
+    let mut changes = Vec::new();
+    rec.changes_of(off, 1, newest, &mut changes);
+    for (tick, v) in &changes {
+        if v & 1 == 1 && c0.is_none() {
+            c0 = Some(*tick);
+        }
+        if v & 2 == 2 && c1.is_none() {
+            c1 = Some(*tick);
+        }
+    }
+    assert!(
+        c0.is_some() && c0 == c1,
+        "both bits came on in the same tick: {changes:?}"
+    );
+}

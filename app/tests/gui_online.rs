@@ -68,7 +68,8 @@ fn the_watch_table_shows_a_timer_counting() {
     assert_eq!(second - first, 80, "10 ticks of 8 ms");
     h.step();
     h.get_by_label("T0000");
-    h.get_by_label(&second.to_string());
+    // The elapsed time with its unit and the preset TMRB runs it to.
+    h.get_by_label(&format!("{second} ms / 1000 ms"));
 }
 
 fn set_cell(h: &mut Harness<'static, LadderApp>, network: usize, col: usize, cell: Cell) {

@@ -148,6 +148,10 @@ messages! {
     WatchAdd => "添加", "Add";
     WatchAddress => "地址/符号", "Address/symbol";
     WatchFormat => "格式", "Format";
+    WatchSymbol => "符号/注释", "Symbol/comment";
+    WatchWriteAll => "写入全部预备值", "Write prepared values";
+    WatchForceAll => "强制全部预备值", "Force prepared values";
+    WatchPrepared => "行有预备值（新值列），在同一扫描周期内一并写入或强制", "rows have a prepared value (the New value column), written or forced together in one tick";
     WatchValue => "当前值", "Value";
     WatchNew => "新值", "New value";
     WatchTraced => "跟踪", "Trace";

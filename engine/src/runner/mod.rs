@@ -31,6 +31,8 @@ const IDLE_PUBLISH: Duration = Duration::from_millis(250);
 pub enum Request {
     /// A command, as a script line would give it.
     Command(MachineCommand),
+    /// Commands carried out together between two ticks (prepared values written at once).
+    Batch(Vec<MachineCommand>),
     /// A momentary key goes down: its bit is written 1 now.
     Press(Target),
     /// The key is let go: its bit is written 0 once it has been 1 for [`MIN_PRESS_TICKS`].
@@ -297,6 +299,11 @@ impl Worker {
         self.handled += 1;
         match r {
             Request::Command(c) => self.command(c),
+            Request::Batch(cs) => {
+                for c in cs {
+                    self.command(c);
+                }
+            }
             Request::Press(t) => {
                 self.releases.retain(|(r, _)| *r != t);
                 self.presses.retain(|(p, _)| *p != t);

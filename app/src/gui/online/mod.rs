@@ -242,10 +242,17 @@ impl LadderApp {
     /// Sends a request to the machine (panel keys, swaps). While a recording is replayed the
     /// machine is not touched, and the output window says why.
     pub fn send_request(&mut self, r: Request) {
-        let forcing = matches!(
-            r,
-            Request::Command(MachineCommand::Force(..) | MachineCommand::ToggleForce(_))
-        );
+        let is_force = |c: &MachineCommand| {
+            matches!(
+                c,
+                MachineCommand::Force(..) | MachineCommand::ToggleForce(_)
+            )
+        };
+        let forcing = match &r {
+            Request::Command(c) => is_force(c),
+            Request::Batch(cs) => cs.iter().any(is_force),
+            _ => false,
+        };
         if forcing && !self.online.forces_confirmed && self.online.session.is_some() {
             self.online.force_pending.push(r);
             self.files.question = Some(super::dialogs::Question::FirstForce);

@@ -155,7 +155,7 @@ impl LadderApp {
     pub fn arm_trigger(&mut self) -> Result<(), String> {
         let setup = self.trigger_setup();
         let doc = self.doc.as_ref().ok_or_else(String::new)?;
-        resolve(doc.project(), &setup.signal)?;
+        resolve(doc.project(), &setup.signal).map_err(|e| e.text(self.settings.lang))?;
         let next = self
             .online
             .session

@@ -3,12 +3,15 @@
 //! The rows are the user's (settings, by project file), not the project's.
 
 use super::super::LadderApp;
+use super::super::i18n::Lang;
 use super::super::i18n::Msg;
 use super::super::settings::{NumFormat, WatchRow};
 use super::super::theme;
 use ladder_engine::Address;
+use ladder_engine::address::AddressError;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::model::Project;
+use ladder_engine::runner::Request;
 use std::path::PathBuf;
 
 /// The watch table's own UI state.
@@ -22,8 +25,42 @@ pub struct WatchUi {
     pub error: Option<String>,
 }
 
+/// Why a watch row's text names nothing, in either language.
+#[derive(Clone, Debug, PartialEq)]
+pub enum WatchError {
+    /// The width after `:` is not 1, 2 or 4.
+    Width(String),
+    /// Neither an address nor a symbol.
+    Unknown(String, AddressError),
+    /// An address outside the profile's ranges.
+    Range(String, AddressError),
+    /// A width on a bit address.
+    BitWidth(String),
+}
+
+impl WatchError {
+    /// The message in the UI language, naming the text to correct.
+    pub fn text(&self, lang: Lang) -> String {
+        let zh = lang == Lang::Zh;
+        match (self, zh) {
+            (WatchError::Width(w), false) => format!("`{w}`: the width after `:` is 1, 2 or 4"),
+            (WatchError::Width(w), true) => format!("`{w}`：`:` 后的宽度应为 1、2 或 4"),
+            (WatchError::Unknown(n, e), false) => {
+                format!("`{n}`: {e}, and no symbol has this name")
+            }
+            (WatchError::Unknown(n, e), true) => {
+                format!("`{n}`：{}，也没有此名称的符号", e.zh())
+            }
+            (WatchError::Range(n, e), false) => format!("`{n}`: {e}"),
+            (WatchError::Range(n, e), true) => format!("`{n}`：{}", e.zh()),
+            (WatchError::BitWidth(t), false) => format!("`{t}`: a bit address takes no width"),
+            (WatchError::BitWidth(t), true) => format!("`{t}`：位地址不带宽度"),
+        }
+    }
+}
+
 /// A watch row resolved: its address and width.
-pub fn resolve(project: &Project, text: &str) -> Result<Target, String> {
+pub fn resolve(project: &Project, text: &str) -> Result<Target, WatchError> {
     let (name, bytes) = match text.rsplit_once(':') {
         Some((n, b)) => {
             let b: u32 = b
@@ -31,7 +68,7 @@ pub fn resolve(project: &Project, text: &str) -> Result<Target, String> {
                 .parse()
                 .ok()
                 .filter(|b| matches!(b, 1 | 2 | 4))
-                .ok_or_else(|| format!("`{b}`: the width after `:` is 1, 2 or 4"))?;
+                .ok_or_else(|| WatchError::Width(b.trim().to_string()))?;
             (n.trim(), Some(b))
         }
         None => (text.trim(), None),
@@ -40,13 +77,13 @@ pub fn resolve(project: &Project, text: &str) -> Result<Target, String> {
         Ok(a) => a,
         Err(e) => project
             .resolve_symbol(name)
-            .ok_or_else(|| format!("`{name}`: {e}, and no symbol has this name"))?,
+            .ok_or_else(|| WatchError::Unknown(name.to_string(), e))?,
     };
     address
         .check_range(project.profile())
-        .map_err(|e| format!("`{name}`: {e}"))?;
+        .map_err(|e| WatchError::Range(name.to_string(), e))?;
     if address.bit.is_some() && bytes.is_some() {
-        return Err(format!("`{text}`: a bit address takes no width"));
+        return Err(WatchError::BitWidth(text.trim().to_string()));
     }
     Ok(Target {
         address,
@@ -124,7 +161,7 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return Err(String::new());
         };
-        let t = resolve(doc.project(), text)?;
+        let t = resolve(doc.project(), text).map_err(|e| e.text(self.settings.lang))?;
         let format = if t.address.bit.is_some() {
             NumFormat::Bit
         } else {
@@ -141,6 +178,81 @@ impl LadderApp {
                 traced: t.address.bit.is_some(),
             });
         Ok(())
+    }
+
+    /// Every row whose "New value" holds a value in its format: its target, format, value.
+    pub fn prepared_values(&self) -> Vec<(Target, NumFormat, f64)> {
+        let Some(doc) = self.doc.as_ref() else {
+            return Vec::new();
+        };
+        self.watch_rows()
+            .iter()
+            .zip(&self.online.watch.values)
+            .filter_map(|(row, text)| {
+                let t = resolve(doc.project(), &row.text).ok()?;
+                let v = parse_value(text, row.format)?;
+                Some((t, row.format, v))
+            })
+            .collect()
+    }
+
+    /// A row's symbol and comment (in the UI language), from the project.
+    fn row_note(&self, target: Option<Target>) -> String {
+        let (Some(doc), Some(t)) = (self.doc.as_ref(), target) else {
+            return String::new();
+        };
+        let p = doc.project();
+        let symbol = p.symbol_of(t.address).unwrap_or("");
+        match p.comment_of(t.address, self.settings.lang.code()) {
+            Some(c) if symbol.is_empty() => c.to_string(),
+            Some(c) => format!("{symbol} — {c}"),
+            None => symbol.to_string(),
+        }
+    }
+
+    /// A timer's unit and preset (` ms / 1000 ms`), a counter's preset (` / 5`), from the
+    /// instruction that runs it in the program that runs; a preset in memory is read live.
+    fn unit_and_preset(&self, a: Address) -> Option<String> {
+        use ladder_engine::catalog::Role;
+        let s = self.online.session.as_ref()?;
+        if !matches!(a.area, ladder_engine::Area::T | ladder_engine::Area::C) {
+            return None;
+        }
+        let unit = if a.area == ladder_engine::Area::T {
+            " ms"
+        } else {
+            ""
+        };
+        let preset = s
+            .running
+            .program
+            .blocks
+            .iter()
+            .flat_map(|b| &b.networks)
+            .flat_map(|n| &n.instrs)
+            .find_map(|i| {
+                let spec = i.op.spec();
+                let (k, _) = spec.memory_operand()?;
+                let number = i.operands.get(k)?.address()?;
+                if number != a {
+                    return None;
+                }
+                let p = i.operands.get(spec.operand_with(Role::Preset)?)?;
+                match p {
+                    ladder_engine::model::Operand::Int(v) => Some(*v),
+                    other => {
+                        let pa = other.address()?;
+                        Some(
+                            s.source()
+                                .value(pa, u32::from(pa.area.element_bytes()).max(1)),
+                        )
+                    }
+                }
+            });
+        Some(match preset {
+            Some(p) => format!("{unit} / {p}{unit}"),
+            None => unit.to_string(),
+        })
     }
 
     /// A row's value now, as shown.
@@ -177,6 +289,32 @@ impl LadderApp {
         if let Some(e) = &self.online.watch.error {
             ui.colored_label(theme::ERROR, e);
         }
+        // Prepared values (the "New value" column) all at once, in one tick.
+        let prepared = self.prepared_values();
+        let can = !scrubbing && self.online.session.is_some() && !prepared.is_empty();
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(can, egui::Button::new(t(Msg::WatchWriteAll)))
+                .clicked()
+            {
+                let batch = prepared
+                    .iter()
+                    .map(|(t, f, v)| write_command(*t, *f, *v))
+                    .collect();
+                self.send_request(Request::Batch(batch));
+            }
+            if ui
+                .add_enabled(can, egui::Button::new(t(Msg::WatchForceAll)))
+                .clicked()
+            {
+                let batch = prepared
+                    .iter()
+                    .map(|(t, f, v)| force_command(*t, *f, *v))
+                    .collect();
+                self.send_request(Request::Batch(batch));
+            }
+            ui.weak(format!("{} {}", prepared.len(), t(Msg::WatchPrepared)));
+        });
         let key = self.watch_key();
         let rows: Vec<WatchRow> = self.watch_rows().to_vec();
         self.online.watch.values.resize(rows.len(), String::new());
@@ -186,6 +324,7 @@ impl LadderApp {
         egui::Grid::new("watch").striped(true).show(ui, |ui| {
             for h in [
                 Msg::WatchAddress,
+                Msg::WatchSymbol,
                 Msg::WatchFormat,
                 Msg::WatchValue,
                 Msg::WatchNew,
@@ -199,7 +338,8 @@ impl LadderApp {
                     .doc
                     .as_ref()
                     .and_then(|d| resolve(d.project(), &row.text).ok());
-                ui.label(&row.text);
+                let name = ui.label(&row.text).id;
+                ui.label(self.row_note(target));
                 let mut format = row.format;
                 egui::ComboBox::from_id_salt(("watch-format", i))
                     .selected_text(format.name())
@@ -208,10 +348,15 @@ impl LadderApp {
                         for f in NumFormat::ALL {
                             ui.selectable_value(&mut format, f, f.name());
                         }
-                    });
+                    })
+                    .response
+                    .labelled_by(name);
                 let value = self.watch_value(row);
                 let forced = target.is_some_and(|t| self.is_forced(t.address));
-                let shown = value.map_or("—".to_string(), |v| v.1);
+                let mut shown = value.map_or("—".to_string(), |v| v.1);
+                if let Some(unit) = target.and_then(|t| self.unit_and_preset(t.address)) {
+                    shown.push_str(&unit);
+                }
                 if forced {
                     ui.colored_label(theme::FORCED, format!("{shown}  F"));
                 } else {
@@ -222,7 +367,8 @@ impl LadderApp {
                     ui.add_enabled(
                         !scrubbing,
                         egui::TextEdit::singleline(field).desired_width(70.0),
-                    );
+                    )
+                    .labelled_by(name);
                     let parsed = parse_value(field, format);
                     let can = !scrubbing && target.is_some() && self.online.session.is_some();
                     if ui
@@ -254,7 +400,7 @@ impl LadderApp {
                     }
                 });
                 let mut traced = row.traced;
-                ui.checkbox(&mut traced, "");
+                ui.checkbox(&mut traced, "").labelled_by(name);
                 if ui
                     .small_button("×")
                     .on_hover_text(t(Msg::WatchRemove))
@@ -317,7 +463,18 @@ mod tests {
             "X0002.3"
         );
         let e = resolve(&p, "NO_SUCH").unwrap_err();
-        assert!(e.contains("NO_SUCH"), "{e}");
+        assert!(e.text(Lang::En).contains("NO_SUCH"), "{e:?}");
+        let zh = e.text(Lang::Zh);
+        assert!(
+            zh.contains("NO_SUCH") && zh.contains("没有此名称的符号"),
+            "{zh}"
+        );
+        assert!(
+            resolve(&p, "D0010:3")
+                .unwrap_err()
+                .text(Lang::Zh)
+                .contains("宽度")
+        );
         assert!(resolve(&p, "X0002.3:2").is_err());
     }
 }
