@@ -67,7 +67,7 @@ fn the_watch_table_shows_a_timer_counting() {
     let second = value(&h, "T0000");
     assert_eq!(second - first, 80, "10 ticks of 8 ms");
     h.step();
-    h.get_by_label("T0000");
+    h.get_by_role_and_label(egui::accesskit::Role::Label, "T0000");
     // The elapsed time with its unit and the preset TMRB runs it to.
     h.get_by_label(&format!("{second} ms / 1000 ms"));
 }
