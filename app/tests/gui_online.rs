@@ -154,7 +154,13 @@ fn an_edit_that_does_not_compile_is_refused_and_the_status_says_so() {
         out.contains("NO_SUCH_SYMBOL"),
         "the compile error is listed: {out}"
     );
-    h.get_by_label_contains("Running program ≠ drawing");
+    // The status bar names the first error, where it is.
+    let status = "Running program ≠ drawing: 1 compile error(s); the first: LEVEL2:1:1:2: error:";
+    h.get_by_label_contains(status);
+    assert!(
+        h.query_all_by_label_contains("NO_SUCH_SYMBOL").count() >= 2,
+        "the error is named in the status bar as in the output window"
+    );
     // The machine runs on with the old program.
     ticks(&mut h, 2);
     assert!(h.state().online());

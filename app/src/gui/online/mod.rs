@@ -186,7 +186,7 @@ impl LadderApp {
                 self.say(t, false);
                 true
             }
-            Err(StartError::Compile(_)) => {
+            Err(StartError::Compile(..)) => {
                 let t = self.t(Msg::RunNeedsCompile).to_string();
                 self.say(t, true);
                 false
@@ -440,7 +440,7 @@ impl LadderApp {
             let (_, r) = self.online.startup.remove(0);
             s.send(r);
         }
-        let was_refused = matches!(s.sync, session::Sync::Refused(_));
+        let was_refused = matches!(s.sync, session::Sync::Refused(..));
         let mut recompile = false;
         if let Some(doc) = self.doc.as_ref()
             && s.scrub.is_none()

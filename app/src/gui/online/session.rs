@@ -41,15 +41,17 @@ pub enum Sync {
     Same,
     /// An edited program was sent and has not taken over yet.
     Swapping,
-    /// The drawing changed and cannot run: the reason (compile errors, a refused swap).
-    Refused(String),
+    /// The drawing changed and cannot run: the reason (compile errors, a refused swap), in
+    /// English and Chinese.
+    Refused(String, String),
 }
 
 /// What went wrong starting a machine.
 #[derive(Clone, Debug, PartialEq)]
 pub enum StartError {
-    /// The project has compile errors (how many).
-    Compile(usize),
+    /// The project has compile errors: how many, and the first, where it is, in English and
+    /// Chinese.
+    Compile(usize, String, String),
     /// The program could not be lowered or the thread could not start.
     Other(String),
 }
@@ -93,7 +95,18 @@ pub struct Session {
 fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
     let compiled = compile(project);
     if compiled.errors() > 0 {
-        return Err(StartError::Compile(compiled.errors()));
+        let first = compiled
+            .diagnostics
+            .iter()
+            .find(|d| d.severity() == ladder_engine::compiler::diag::Severity::Error);
+        let (en, zh) = first.map_or_else(Default::default, |d| {
+            let en = d.render("");
+            (
+                en.trim_start_matches(':').to_string(),
+                d.render_zh("").trim().to_string(),
+            )
+        });
+        return Err(StartError::Compile(compiled.errors(), en, zh));
     }
     let mut vm = Vm::from_program(&compiled.program, project.profile())
         .map_err(|e| StartError::Other(e.to_string()))?;
@@ -204,7 +217,7 @@ impl Session {
                 Reply::SwapRefused(n, m) => {
                     if self.pending.as_ref().is_some_and(|p| p.number == n) {
                         self.pending = None;
-                        self.sync = Sync::Refused(m.clone());
+                        self.sync = Sync::Refused(m.clone(), m.clone());
                     }
                     notices.push(Notice::SwapRefused(m));
                 }
@@ -249,12 +262,15 @@ impl Session {
                 self.send(Request::Swap(Box::new(vm), number));
                 None
             }
-            Err(StartError::Compile(n)) => {
-                self.sync = Sync::Refused(format!("{n}"));
+            Err(StartError::Compile(n, en, zh)) => {
+                self.sync = Sync::Refused(
+                    format!("{n} compile error(s); the first: {en}"),
+                    format!("{n} 个编译错误；第一个：{zh}"),
+                );
                 Some(n)
             }
             Err(StartError::Other(m)) => {
-                self.sync = Sync::Refused(m);
+                self.sync = Sync::Refused(m.clone(), m);
                 None
             }
         }

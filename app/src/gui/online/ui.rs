@@ -115,7 +115,12 @@ impl LadderApp {
             Sync::Swapping => {
                 ui.colored_label(theme::CAUTION, t(Msg::DrawingSwapping));
             }
-            Sync::Refused(why) => {
+            Sync::Refused(en, zh) => {
+                let why = if lang == super::super::i18n::Lang::Zh {
+                    zh
+                } else {
+                    en
+                };
                 ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::DrawingDiffers)));
             }
             Sync::Same => {
