@@ -564,3 +564,47 @@ fn prepared_values_are_written_in_one_tick_and_rows_show_symbols_units_and_prese
         "both bits came on in the same tick: {changes:?}"
     );
 }
+
+#[test]
+fn data_tables_show_running_values_edit_them_and_save_them_as_one_undo_step() {
+    use ladder_studio::gui::tables::DataTab;
+    // A D row in the file: D0010 = 5.
+    let mut p = ladder_engine::il::import(RUNG).project.unwrap();
+    p.data.d.push(ladder_engine::model::tables::DataRow::new(
+        "D0010".parse().unwrap(),
+        5,
+    ));
+    let path = tempfile_dir().join("d.ldp");
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut().ask(Command::ShowView(View::Data));
+    h.state_mut().tables.data_tab = DataTab::D;
+    h.run();
+    h.get_by_label("Running values (online)");
+    h.get_by_label_contains("0 rows differ");
+    // Typed while running: written on the machine, not into the file.
+    let field = egui::accesskit::Role::TextInput;
+    h.get_by_role_and_label(field, "D0010").click();
+    h.run();
+    h.get_by_role_and_label(field, "D0010").type_text("42");
+    h.key_press(egui::Key::Enter);
+    h.run();
+    settle(&mut h);
+    assert_eq!(value(&h, "D0010"), 42);
+    let file_value =
+        |h: &Harness<'static, LadderApp>| h.state().doc.as_ref().unwrap().project().data.d[0].value;
+    assert_eq!(file_value(&h), 5);
+    h.get_by_label_contains("1 rows differ");
+    h.get_by_label("Save running values into the project")
+        .click();
+    h.run();
+    assert_eq!(file_value(&h), 42);
+    command(&mut h, Command::Undo);
+    assert_eq!(
+        file_value(&h),
+        5,
+        "one undo step puts the file's values back"
+    );
+}

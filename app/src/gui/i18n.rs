@@ -149,6 +149,13 @@ messages! {
     WatchAddress => "地址/符号", "Address/symbol";
     WatchFormat => "格式", "Format";
     WatchSymbol => "符号/注释", "Symbol/comment";
+    DataRunning => "运行中的值（在线）", "Running values (online)";
+    DataSaveRunning => "将运行中的值存入工程", "Save running values into the project";
+    DataDiffer => "行的运行值与工程文件不同", "rows differ from the project file";
+    DataAddress => "地址", "Address";
+    DataFile => "工程文件", "Project file";
+    DataRunningValue => "运行中", "Running";
+    DataBadValue => "不是此表可用的数值", "is not a value this table takes";
     WatchWriteAll => "写入全部预备值", "Write prepared values";
     WatchForceAll => "强制全部预备值", "Force prepared values";
     WatchPrepared => "行有预备值（新值列），在同一扫描周期内一并写入或强制", "rows have a prepared value (the New value column), written or forced together in one tick";

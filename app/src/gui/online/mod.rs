@@ -7,6 +7,7 @@
 
 pub mod alarms;
 pub mod cnc_view;
+pub mod data_online;
 pub mod live;
 mod machine;
 pub mod machine_page;
@@ -94,6 +95,8 @@ pub struct OnlineState {
     pub watch: watch::WatchUi,
     /// The signal page.
     pub signals: signals::SignalPage,
+    /// Values typed for the data tables' running values, by address.
+    pub data_typed: std::collections::BTreeMap<Address, String>,
     /// The PLC alarms with the tick each came on.
     pub alarms: alarms::AlarmList,
     /// The operator panel widget's state.

@@ -357,6 +357,9 @@ fn row_height(ui: &egui::Ui) -> f32 {
 impl LadderApp {
     /// Draws the table the project tree selected and applies the edits made in it.
     pub fn tables_ui(&mut self, ui: &mut egui::Ui) {
+        if self.view == View::Data {
+            self.data_online_ui(ui);
+        }
         let Some(doc) = self.doc.as_ref() else {
             return;
         };
