@@ -28,9 +28,9 @@ fn cnc(m: &mut Machine, c: CncCommand) {
 
 /// Presses a panel key (an X bit) for one scan.
 fn press(m: &mut Machine, key: &str) {
-    m.plc.write(a(key), 1, 1);
+    m.plc_mut().write(a(key), 1, 1);
     m.tick();
-    m.plc.write(a(key), 1, 0);
+    m.plc_mut().write(a(key), 1, 0);
     m.tick();
 }
 
@@ -78,11 +78,11 @@ fn start_on_sample(path: &std::path::Path, setup: Setup) -> Machine {
     let project = file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample");
     let mut m = Machine::new(&project, true).expect("builds");
     assert!(m.plant().is_some(), "the sample ships with its machine");
-    m.plc.write(a("X0000.5"), 1, 1);
-    m.plc.write(a("X0005"), 1, 15);
-    m.plc.write(a("X0006"), 1, 5);
+    m.plc_mut().write(a("X0000.5"), 1, 1);
+    m.plc_mut().write(a("X0005"), 1, 15);
+    m.plc_mut().write(a("X0006"), 1, 5);
     if let Setup::Fanuc { turret } = setup {
-        m.plc.write(a("K0000.1"), 1, i64::from(turret));
+        m.plc_mut().write(a("K0000.1"), 1, i64::from(turret));
         for number in [3401, 3402] {
             let value = 0;
             cnc(
@@ -100,18 +100,18 @@ fn start_on_sample(path: &std::path::Path, setup: Setup) -> Machine {
     m.run_ticks(2, |_| {});
     // Reference return on the machine's own dogs: REF mode, X+ and Z+ pressed once.
     press(&mut m, "X0002.5");
-    m.plc.write(a("X0004.0"), 1, 1);
-    m.plc.write(a("X0004.2"), 1, 1);
+    m.plc_mut().write(a("X0004.0"), 1, 1);
+    m.plc_mut().write(a("X0004.2"), 1, 1);
     m.tick();
-    m.plc.write(a("X0004.0"), 1, 0);
-    m.plc.write(a("X0004.2"), 1, 0);
+    m.plc_mut().write(a("X0004.0"), 1, 0);
+    m.plc_mut().write(a("X0004.2"), 1, 0);
     for _ in 0..2000 {
         m.tick();
-        if m.plc.read(a("F0120"), 1) == 3 {
+        if m.plc().read(a("F0120"), 1) == 3 {
             break;
         }
     }
-    assert_eq!(m.plc.read(a("F0120"), 1), 3, "{nc}: reference points set");
+    assert_eq!(m.plc().read(a("F0120"), 1), 3, "{nc}: reference points set");
     press(&mut m, "X0002.1");
     press(&mut m, "X0002.6");
     m
@@ -138,7 +138,7 @@ fn run_until_end(m: &mut Machine, limit: u64) -> Outcome {
         alarms: value(m, "cnc.alarms"),
         block: value(m, "cnc.block"),
         ticks,
-        plc_alarm: m.plc.read(a("A0000.2"), 1),
+        plc_alarm: m.plc().read(a("A0000.2"), 1),
     }
 }
 
@@ -236,14 +236,14 @@ fn the_cell_dispatcher_waits_half_an_hour_for_an_idle_plc_then_runs_the_job_it_i
         (value(&m, "cnc.run").as_str(), o.alarms.as_str()),
         ("RUN", "0")
     );
-    assert_eq!(m.plc.read(a("F0214.0"), 1), 1, "#1100: ready");
+    assert_eq!(m.plc().read(a("F0214.0"), 1), 1, "#1100: ready");
     // A cell controller asks for job 2 through G214.1 (#1001): the CNC takes #1100 back,
     // runs O2002 with #1101 on, counts the job and waits again once the request drops.
-    m.plc.write(a("G0214.1"), 1, 1);
+    m.plc_mut().write(a("G0214.1"), 1, 1);
     m.tick();
     m.tick();
-    assert_eq!(m.plc.read(a("F0214.0"), 1), 0);
-    assert_eq!(m.plc.read(a("F0214.1"), 1), 1, "#1101: a job runs");
+    assert_eq!(m.plc().read(a("F0214.0"), 1), 0);
+    assert_eq!(m.plc().read(a("F0214.1"), 1), 1, "#1101: a job runs");
     let mut ticks = 0;
     while value(&m, "cnc.macro.510") != "1" && ticks < 20_000 {
         m.tick();
@@ -251,11 +251,11 @@ fn the_cell_dispatcher_waits_half_an_hour_for_an_idle_plc_then_runs_the_job_it_i
     }
     assert_eq!(value(&m, "cnc.macro.510"), "1", "job counted");
     assert_eq!(value(&m, "cnc.alarms"), "0");
-    m.plc.write(a("G0214.1"), 1, 0);
+    m.plc_mut().write(a("G0214.1"), 1, 0);
     for _ in 0..10 {
         m.tick();
     }
-    assert_eq!(m.plc.read(a("F0214.0"), 1), 1, "ready again");
-    assert_eq!(m.plc.read(a("F0214.1"), 1), 0);
+    assert_eq!(m.plc().read(a("F0214.0"), 1), 1, "ready again");
+    assert_eq!(m.plc().read(a("F0214.1"), 1), 0);
     assert_eq!(value(&m, "cnc.run"), "RUN");
 }

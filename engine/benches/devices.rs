@@ -42,7 +42,7 @@ fn sample() -> Machine {
     };
     let script = Script::parse_with(
         &setup,
-        m.plc.profile(),
+        m.plc().profile(),
         &Options {
             cnc: true,
             read_file: &read,

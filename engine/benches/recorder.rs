@@ -31,7 +31,7 @@ fn machine(project: &str) -> Machine {
 fn run_script(machine: &mut Machine, text: &str) {
     let script = Script::parse_with(
         text,
-        machine.plc.profile(),
+        machine.plc().profile(),
         &Options {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
@@ -44,7 +44,7 @@ fn run_script(machine: &mut Machine, text: &str) {
 }
 
 fn recorder_for(machine: &Machine) -> Recorder {
-    Recorder::new(machine.plc.layout().size as usize, DEFAULT_CAPACITY_TICKS)
+    Recorder::new(machine.plc().layout().size as usize, DEFAULT_CAPACITY_TICKS)
 }
 
 /// What changes the machine's inputs before a tick, besides the CNC.
@@ -61,7 +61,7 @@ fn step(machine: &mut Machine, stimulus: Stimulus) {
 /// An operator's inputs: one X byte of X0000–X0127 takes a new value each tick, so the
 /// stress program's outputs change too.
 fn inputs(machine: &mut Machine) {
-    let t = machine.plc.ticks();
+    let t = machine.plc().ticks();
     let target = Target {
         address: Address {
             area: Area::X,
@@ -78,7 +78,7 @@ fn inputs(machine: &mut Machine) {
 }
 
 fn record(machine: &Machine, rec: &mut Recorder) {
-    rec.record(machine.plc.ticks(), machine.plc.image());
+    rec.record(machine.plc().ticks(), machine.plc().image());
 }
 
 /// What [`scan_cost`] measured, in ns per tick.
@@ -246,7 +246,7 @@ fn main() {
     let mut stress = machine("projects/stress-5000.ldp");
     println!(
         "stress-5000: image {} bytes recorded",
-        stress.plc.layout().size
+        stress.plc().layout().size
     );
     stress.run_ticks(1000, |_| {});
     for (name, stimulus) in [
@@ -284,7 +284,7 @@ fn main() {
         None,
     );
     report("lathe-988ta looping the part program", &mut looping, None);
-    let status = looping.cnc.as_ref().unwrap().status();
+    let status = looping.cnc().unwrap().status();
     assert_eq!(
         status.run,
         ladder_engine::cnc::RunState::Run,

@@ -16,13 +16,13 @@ fn main() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../projects/stress-5000.ldp");
     let project = file::load(std::path::Path::new(path)).expect("the stress project loads");
     let machine = Machine::new(&project, true).expect("it compiles");
-    let size = machine.plc.layout().size as usize;
+    let size = machine.plc().layout().size as usize;
     let recorder = Arc::new(Mutex::new(Recorder::new(size, 7500)));
     let rec = Arc::clone(&recorder);
     let hook = Box::new(move |m: &Machine| {
         rec.lock()
             .unwrap()
-            .record(m.plc.ticks(), &m.plc.image()[..size]);
+            .record(m.plc().ticks(), &m.plc().image()[..size]);
     });
     let runner = Runner::start(machine, hook, Box::new(|_| {})).unwrap();
     let seconds: u64 = std::env::var("RUNNER_SECONDS")

@@ -91,7 +91,7 @@ fn main() {
     let text = std::fs::read_to_string(root.join("tests/lathe/cycle.script")).unwrap();
     let script = Script::parse_with(
         &text,
-        machine.plc.profile(),
+        machine.plc().profile(),
         &Options {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
@@ -104,7 +104,7 @@ fn main() {
     let t = Instant::now();
     machine.run_ticks(450_000, |_| {});
     let hour = t.elapsed().as_secs_f64();
-    let status = machine.cnc.as_ref().unwrap().status();
+    let status = machine.cnc().unwrap().status();
     assert_eq!(
         status.run,
         ladder_engine::cnc::RunState::Run,

@@ -130,9 +130,9 @@ pub enum DeviceAction {
 /// The PLC and, when attached, the simulated CNC.
 pub struct Machine {
     /// The PLC.
-    pub plc: Vm,
+    plc: Vm,
     /// The CNC; `None` runs the PLC alone (F keeps what the user writes).
-    pub cnc: Option<SimCnc>,
+    cnc: Option<SimCnc>,
     /// The machine model; `None` runs without one (inputs keep what the user writes).
     plant: Option<Plant>,
     watches: Vec<Probe>,
@@ -170,16 +170,59 @@ impl Machine {
     /// Compiles a project and builds its machine, with the simulated CNC when `with_cnc`
     /// and the project's machine model when it has one.
     pub fn new(project: &Project, with_cnc: bool) -> Result<Machine, BuildError> {
-        let plc = Vm::new(project)?;
+        let compiled = crate::compiler::compile(project);
+        if compiled.errors() > 0 {
+            return Err(crate::vm::code::LowerError::CompileErrors(
+                compiled.errors(),
+            ));
+        }
+        Machine::from_program(project, &compiled.program, with_cnc)
+    }
+
+    /// The one way a machine is built (the CLI, scripts, the editor online): `program`, an
+    /// error-free compilation of `project` (or a list run as written, with a default
+    /// project), on a PLC with the project's level-2 division and data tables, the simulated
+    /// CNC with its messages when `with_cnc`, and the project's machine model.
+    pub fn from_program(
+        project: &Project,
+        program: &crate::compiler::Program,
+        with_cnc: bool,
+    ) -> Result<Machine, BuildError> {
+        let mut plc = Vm::from_program(program, project.profile())?;
+        plc.set_division(project.level2_division);
+        plc.load_data_tables(project);
         let cnc = with_cnc.then(|| SimCnc::new(project.profile, &project.messages));
         let mut m = Machine::from_parts(plc, cnc);
-        if !project.machine.devices.is_empty() {
-            // `Vm::new` compiled the project, whose check refuses a model with errors.
-            let plant = Plant::new(&project.machine, project.profile())
-                .map_err(|e| crate::vm::code::LowerError::Unresolved(e.to_string()))?;
-            m.plant = Some(plant);
-        }
+        // The compiler's check refuses a model with errors; a list run as written has none.
+        m.load_model(&project.machine)
+            .map_err(|e| crate::vm::code::LowerError::Unresolved(e.to_string()))?;
         Ok(m)
+    }
+
+    /// The PLC, to read.
+    pub fn plc(&self) -> &Vm {
+        &self.plc
+    }
+
+    /// The PLC, to write memory, force and step (scripts, tests, the runner).
+    pub fn plc_mut(&mut self) -> &mut Vm {
+        &mut self.plc
+    }
+
+    /// The simulated CNC, if attached.
+    pub fn cnc(&self) -> Option<&SimCnc> {
+        self.cnc.as_ref()
+    }
+
+    /// The simulated CNC, to command directly (a script's own CNC actions, tests).
+    pub fn cnc_mut(&mut self) -> Option<&mut SimCnc> {
+        self.cnc.as_mut()
+    }
+
+    /// The PLC and the CNC at once, to tick one against the other by hand (the bench's
+    /// timed exchange).
+    pub fn parts_mut(&mut self) -> (&mut Vm, Option<&mut SimCnc>) {
+        (&mut self.plc, self.cnc.as_mut())
     }
 
     /// The machine without its model (`sim --no-machine`): inputs keep what is written.

@@ -224,6 +224,42 @@ impl Recorder {
             self.segment_mut().ends.push(0);
             return;
         }
+        let full = self.open_if_full(tick);
+        self.diff(image);
+        self.close_tick(tick, full);
+    }
+
+    /// Records the tick after the newest as the changes it made (offset, new value; in
+    /// offset order), as the runner's journal gives them: no image to compare. A tick that
+    /// does not follow the newest starts a new recording from the last image with these
+    /// changes.
+    pub fn record_changes(&mut self, tick: u64, changes: &[(u32, u8)]) {
+        if self.newest.and_then(|n| n.checked_add(1)) != Some(tick) {
+            let mut image = self.prev.clone();
+            for &(off, v) in changes {
+                if let Some(b) = image.get_mut(off as usize) {
+                    *b = v;
+                }
+            }
+            self.record(tick, &image);
+            return;
+        }
+        let full = self.open_if_full(tick);
+        let s = self.segments.back_mut().expect("a recording has a segment");
+        for &(off, v) in changes {
+            let at = off as usize;
+            if let Some(before) = self.prev.get_mut(at)
+                && *before != v
+            {
+                s.change(at, *before, v);
+                *before = v;
+            }
+        }
+        self.close_tick(tick, full);
+    }
+
+    /// Opens a new segment at `tick` when the current one is full; whether it did.
+    fn open_if_full(&mut self, tick: u64) -> bool {
         let full = {
             let s = self.segments.back().expect("a recording has a segment");
             s.ends.len() as u64 >= self.span || s.changes.len() >= self.budget
@@ -231,9 +267,14 @@ impl Recorder {
         if full {
             self.open(tick);
         }
-        self.diff(image);
+        full
+    }
+
+    /// Ends `tick`'s changes (a new segment's keyframe is the image after them) and drops
+    /// the segments the ring no longer covers.
+    fn close_tick(&mut self, tick: u64, opened: bool) {
         let s = self.segments.back_mut().expect("a recording has a segment");
-        if full {
+        if opened {
             s.key.extend_from_slice(&self.prev);
         }
         let end = s.changes.len() as u32;
@@ -444,6 +485,43 @@ mod tests {
             out.push(image.clone());
         }
         out
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// Fed the runner's journal (each tick's changes) instead of images, the recorder
+        /// holds exactly the same history.
+        #[test]
+        fn recording_changes_is_recording_images(
+            len in 1usize..200,
+            capacity in 1u64..100,
+            extra in 0usize..200,
+            seed: u64,
+        ) {
+            let images = history(len, capacity as usize + extra, seed);
+            let mut by_image = Recorder::new(len, capacity);
+            let mut by_changes = Recorder::new(len, capacity);
+            let mut journal = crate::runner::journal::Journaler::new(len);
+            for (i, image) in images.iter().enumerate() {
+                by_image.record(i as u64, image);
+                journal.note(i as u64, image);
+            }
+            let mut out = crate::runner::journal::Journal::default();
+            journal.hand_over(&mut out);
+            let (t0, base) = out.base.clone().expect("a base");
+            by_changes.record(t0, &base);
+            for (t, changes) in out.each_tick() {
+                by_changes.record_changes(t, changes);
+            }
+            prop_assert_eq!(by_image.oldest(), by_changes.oldest());
+            prop_assert_eq!(by_image.newest(), by_changes.newest());
+            let (mut a, mut b) = (Vec::new(), Vec::new());
+            for t in by_image.oldest().unwrap()..=by_image.newest().unwrap() {
+                prop_assert!(by_image.image_at(t, &mut a) && by_changes.image_at(t, &mut b));
+                prop_assert_eq!(&a, &b, "tick {}", t);
+            }
+        }
     }
 
     proptest! {

@@ -55,22 +55,22 @@ fn the_manual_example_moves_y_10_mm_and_axctl_sees_fin_from_tick_t_plus_125() {
     );
     m.tick();
     let a = |t: &str| Address::parse(t).unwrap();
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick(); // tick t
-    let t = m.plc.ticks();
-    assert!(m.plc.read_bit(a("F140.7")), "EBSYA at t");
-    assert!(m.plc.read_bit(a("F140.4")), "EGENA at t");
-    assert!(m.plc.read_bit(a("F129.7")), "*EAXSL at t");
-    assert_eq!(m.cnc.as_ref().unwrap().axes()[2].m, 80);
-    while m.plc.ticks() < t + 124 {
+    let t = m.plc().ticks();
+    assert!(m.plc().read_bit(a("F140.7")), "EBSYA at t");
+    assert!(m.plc().read_bit(a("F140.4")), "EGENA at t");
+    assert!(m.plc().read_bit(a("F129.7")), "*EAXSL at t");
+    assert_eq!(m.cnc().unwrap().axes()[2].m, 80);
+    while m.plc().ticks() < t + 124 {
         m.tick();
-        assert!(!m.plc.read_bit(a("R1.0")), "no FIN before t+125");
+        assert!(!m.plc().read_bit(a("R1.0")), "no FIN before t+125");
     }
-    assert_eq!(m.cnc.as_ref().unwrap().axes()[2].m, 10_000, "at t+124");
+    assert_eq!(m.cnc().unwrap().axes()[2].m, 10_000, "at t+124");
     m.tick();
-    assert!(m.plc.read_bit(a("R1.0")), "FIN from tick t+125");
-    assert!(!m.plc.read_bit(a("R1.1")));
-    assert!(!m.plc.read_bit(a("F129.7")));
+    assert!(m.plc().read_bit(a("R1.0")), "FIN from tick t+125");
+    assert!(!m.plc().read_bit(a("R1.1")));
+    assert!(!m.plc().read_bit(a("F129.7")));
 }
 
 #[test]
@@ -352,23 +352,26 @@ fn the_issuing_scan_never_reports_the_previous_command_as_this_ones_end() {
         "LEVEL2\nNETWORK\nLDI R0999.7\nMOVN 1 255 G0114\nMOVN 1 255 G0116\nOUT G0008.4\nOUT G0136.2\nMOVN 1 10 G0012\nNETWORK\nLD X0000.0\nAXCTL 1 1 600 8000 R0000.1 R0001.0 R0001.1\n",
     );
     let a = |t: &str| Address::parse(t).unwrap();
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
     m.tick();
-    m.plc.write(a("X0.0"), 1, 0); // ACT drops before the end: ESBK := 1
+    m.plc_mut().write(a("X0.0"), 1, 0); // ACT drops before the end: ESBK := 1
     m.tick();
-    assert!(m.plc.read_bit(a("G140.3")));
+    assert!(m.plc().read_bit(a("G140.3")));
     m.run_ticks(200, |_| {});
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
     assert!(
-        !m.plc.read_bit(a("G140.3")),
+        !m.plc().read_bit(a("G140.3")),
         "ESBK withdrawn by the new command"
     );
-    assert!(!m.plc.read_bit(a("R1.0")), "not ended on the issuing scan");
+    assert!(
+        !m.plc().read_bit(a("R1.0")),
+        "not ended on the issuing scan"
+    );
     m.run_ticks(101, |_| {});
-    assert!(m.plc.read_bit(a("R1.0")), "the new command ran and ended");
-    assert_eq!(m.cnc.as_ref().unwrap().axes()[2].m, 16_000);
+    assert!(m.plc().read_bit(a("R1.0")), "the new command ran and ended");
+    assert_eq!(m.cnc().unwrap().axes()[2].m, 16_000);
 }
 
 #[test]

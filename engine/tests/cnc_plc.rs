@@ -30,9 +30,9 @@ fn value(m: &Machine, key: &str) -> String {
 }
 
 fn start(m: &mut Machine) {
-    m.plc.write(a("X1.0"), 1, 1);
+    m.plc_mut().write(a("X1.0"), 1, 1);
     m.tick();
-    m.plc.write(a("X1.0"), 1, 0);
+    m.plc_mut().write(a("X1.0"), 1, 0);
     m.tick();
 }
 
@@ -41,21 +41,24 @@ fn the_ladder_answers_an_f_signal_in_the_tick_after_the_exchange_that_wrote_it()
     let mut m = machine();
     cnc(&mut m, CncCommand::Mdi("M03;M04".into()));
     start(&mut m); // tick n: N1 starts, MF is 1 after exchange n
-    assert!(m.plc.read_bit(a("F7.0")));
-    assert!(!m.plc.read_bit(a("G4.3")), "the ladder has not seen MF yet");
+    assert!(m.plc().read_bit(a("F7.0")));
+    assert!(
+        !m.plc().read_bit(a("G4.3")),
+        "the ladder has not seen MF yet"
+    );
     m.tick(); // n+1: the ladder reads MF, writes FIN; the exchange sees FIN: MF drops
-    assert!(m.plc.read_bit(a("G4.3")));
-    assert!(!m.plc.read_bit(a("F7.0")));
+    assert!(m.plc().read_bit(a("G4.3")));
+    assert!(!m.plc().read_bit(a("F7.0")));
     assert_eq!(
-        m.plc.read(a("F10"), 4),
+        m.plc().read(a("F10"), 4),
         3,
         "the code stays until FIN is 0 again"
     );
     m.tick(); // n+2: FIN 0, the block ends
-    assert!(!m.plc.read_bit(a("G4.3")));
-    assert_eq!(m.plc.read(a("F10"), 4), 0);
+    assert!(!m.plc().read_bit(a("G4.3")));
+    assert_eq!(m.plc().read(a("F10"), 4), 0);
     m.tick(); // n+3: the next block
-    assert_eq!(m.plc.read(a("F10"), 4), 4);
+    assert_eq!(m.plc().read(a("F10"), 4), 4);
 }
 
 #[test]
@@ -63,10 +66,10 @@ fn forces_win_over_the_cnc_and_unforced_bits_come_back() {
     let mut m = machine();
     m.apply(&MachineCommand::Force(a("F0.5"), 1)).unwrap();
     m.tick();
-    assert!(m.plc.read_bit(a("F0.5")), "STL forced although IDLE");
+    assert!(m.plc().read_bit(a("F0.5")), "STL forced although IDLE");
     m.apply(&MachineCommand::Unforce(a("F0.5"))).unwrap();
     m.tick();
-    assert!(!m.plc.read_bit(a("F0.5")), "the CNC writes it again");
+    assert!(!m.plc().read_bit(a("F0.5")), "the CNC writes it again");
     // A bit the CNC does not own keeps what the user set.
     m.apply(&MachineCommand::Write(
         ladder_engine::machine::Target {
@@ -78,7 +81,7 @@ fn forces_win_over_the_cnc_and_unforced_bits_come_back() {
     ))
     .unwrap();
     m.tick();
-    assert_eq!(m.plc.read(a("F64"), 1), 7);
+    assert_eq!(m.plc().read(a("F64"), 1), 7);
 }
 
 #[test]
@@ -87,9 +90,9 @@ fn the_cnc_keeps_running_while_the_plc_is_halted() {
     cnc(&mut m, CncCommand::Mdi("G04 P1000".into()));
     start(&mut m);
     assert_eq!(value(&m, "cnc.run"), "RUN");
-    m.plc.write(a("X3.0"), 1, 1);
+    m.plc_mut().write(a("X3.0"), 1, 1);
     m.tick();
-    assert!(m.plc.halt().is_some());
+    assert!(m.plc().halt().is_some());
     m.run_ticks(130, |_| {});
     assert_eq!(
         value(&m, "cnc.run"),
@@ -124,7 +127,7 @@ fn power_cycle_restarts_the_cnc_and_keeps_positions_programs_and_kept_data() {
     );
     cnc(&mut m, CncCommand::Program("O0007;G04 P5000".into()));
     cnc(&mut m, CncCommand::Alarm(3));
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
     assert_eq!(value(&m, "cnc.alarms"), "1");
     // A parameter written by the PLC's WINDR 18 is pending until power-cycle: here the
@@ -132,12 +135,16 @@ fn power_cycle_restarts_the_cnc_and_keeps_positions_programs_and_kept_data() {
     {
         use ladder_engine::vm::cnc::Cnc;
         let mut b = [18, 0, 1, 8130, 0, 0, 3];
-        m.cnc.as_mut().unwrap().window(&mut b);
+        m.cnc_mut().unwrap().window(&mut b);
         assert_eq!(b[1], 0);
     }
     assert_eq!(value(&m, "cnc.param.8130"), "2");
     m.apply(&MachineCommand::PowerCycle).unwrap();
-    assert_eq!(m.plc.read(a("F3"), 1), 0, "F all 0 until the next exchange");
+    assert_eq!(
+        m.plc().read(a("F3"), 1),
+        0,
+        "F all 0 until the next exchange"
+    );
     assert_eq!(value(&m, "cnc.alarms"), "0");
     assert_eq!(value(&m, "cnc.macro.100"), "vacant");
     assert_eq!(value(&m, "cnc.macro.500"), "2");
@@ -146,7 +153,10 @@ fn power_cycle_restarts_the_cnc_and_keeps_positions_programs_and_kept_data() {
     assert_eq!(value(&m, "cnc.prog"), "7");
     assert_eq!(value(&m, "cnc.mode"), "MDI");
     m.tick();
-    assert!(m.plc.read_bit(a("F3.5")), "MEM again from the ladder's G43");
+    assert!(
+        m.plc().read_bit(a("F3.5")),
+        "MEM again from the ladder's G43"
+    );
     assert_eq!(value(&m, "cnc.run"), "IDLE");
 }
 
@@ -157,8 +167,8 @@ fn a_snapshot_copies_memory_forces_and_the_cnc_screen() {
     start(&mut m);
     m.apply(&MachineCommand::Force(a("Y0.0"), 1)).unwrap();
     let s = m.snapshot();
-    assert_eq!(s.ticks, m.plc.ticks());
-    assert_eq!(s.memory.len(), m.plc.image().len());
+    assert_eq!(s.ticks, m.plc().ticks());
+    assert_eq!(s.memory.len(), m.plc().image().len());
     assert_eq!(s.forces.len(), 1);
     let c = s.cnc.expect("a CNC");
     assert_eq!(c.run, ladder_engine::cnc::RunState::Run);

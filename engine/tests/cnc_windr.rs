@@ -246,15 +246,14 @@ fn a_low_speed_write_completes_on_the_second_scan_and_needs_act_back_at_0() {
     let mut m = Machine::new(&p, true).unwrap();
     let a = |t: &str| Address::parse(t).unwrap();
     for (d, v) in [("D0", 14), ("D2", 1), ("D3", 1), ("D4", 2), ("D6", 1500)] {
-        m.plc.write(a(d), 4, v);
+        m.plc_mut().write(a(d), 4, v);
     }
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
-    assert!(!m.plc.read_bit(a("R1.0")), "first scan latches");
-    assert_eq!(m.cnc.as_ref().unwrap().status().absolute[1], 0);
+    assert!(!m.plc().read_bit(a("R1.0")), "first scan latches");
+    assert_eq!(m.cnc().unwrap().status().absolute[1], 0);
     let off = |m: &Machine| {
-        m.cnc
-            .as_ref()
+        m.cnc()
             .unwrap()
             .value(&ladder_engine::cnc::command::CncKey::Offset(
                 1,
@@ -265,29 +264,29 @@ fn a_low_speed_write_completes_on_the_second_scan_and_needs_act_back_at_0() {
     };
     assert_eq!(off(&m), "0.000");
     m.tick();
-    assert!(m.plc.read_bit(a("R1.0")), "complete at the second scan");
+    assert!(m.plc().read_bit(a("R1.0")), "complete at the second scan");
     assert_eq!(off(&m), "1.500");
-    assert_eq!(m.plc.read(a("D1"), 4), 0, "end code 0");
-    m.plc.write(a("D6"), 4, 2500);
+    assert_eq!(m.plc().read(a("D1"), 4), 0, "end code 0");
+    m.plc_mut().write(a("D6"), 4, 2500);
     m.tick();
     m.tick();
     assert_eq!(off(&m), "1.500", "ACT held: not executed again");
-    m.plc.write(a("X0.0"), 1, 0);
+    m.plc_mut().write(a("X0.0"), 1, 0);
     m.tick();
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
     m.tick();
     assert_eq!(off(&m), "2.500", "re-armed by ACT = 0");
     // A write with an error also takes two scans.
-    m.plc.write(a("X0.0"), 1, 0);
+    m.plc_mut().write(a("X0.0"), 1, 0);
     m.tick();
-    m.plc.write(a("D3"), 4, 100);
-    m.plc.write(a("X0.0"), 1, 1);
+    m.plc_mut().write(a("D3"), 4, 100);
+    m.plc_mut().write(a("X0.0"), 1, 1);
     m.tick();
-    assert!(!m.plc.read_bit(a("R1.0")));
+    assert!(!m.plc().read_bit(a("R1.0")));
     m.tick();
-    assert!(m.plc.read_bit(a("R1.0")));
-    assert_eq!(m.plc.read(a("D1"), 4), 3);
+    assert!(m.plc().read_bit(a("R1.0")));
+    assert_eq!(m.plc().read(a("D1"), 4), 3);
 }
 
 #[test]

@@ -216,13 +216,17 @@ fn a_force_wins_over_a_device_and_a_new_model_keeps_the_faults_by_name() {
     let mut m = Machine::new(&p, false).expect("it compiles");
     let y = a("Y0001.0");
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 1, "the device answers in the first tick");
+    assert_eq!(
+        m.plc().read(y, 1),
+        1,
+        "the device answers in the first tick"
+    );
     m.apply(&MachineCommand::Force(a("X0001.5"), 0)).unwrap();
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 0, "the force wins");
+    assert_eq!(m.plc().read(y, 1), 0, "the force wins");
     m.apply(&MachineCommand::Unforce(a("X0001.5"))).unwrap();
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 1);
+    assert_eq!(m.plc().read(y, 1), 1);
     // A fault, then the model edited online: the device keeps its fault.
     let stuck = Fault::Stuck {
         value: false,
@@ -231,22 +235,22 @@ fn a_force_wins_over_a_device_and_a_new_model_keeps_the_faults_by_name() {
     m.apply(&MachineCommand::Device(0, DeviceAction::Fault(stuck)))
         .unwrap();
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 0);
+    assert_eq!(m.plc().read(y, 1), 0);
     let mut edited = p.machine.clone();
     edited.devices.insert(0, follower("other", "X0002.0", "0"));
     m.apply(&MachineCommand::LoadModel(Box::new(edited)))
         .unwrap();
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 0, "still stuck after the edit");
+    assert_eq!(m.plc().read(y, 1), 0, "still stuck after the edit");
     assert_eq!(m.snapshot().devices[1].fault, Some(stuck));
     m.apply(&MachineCommand::Device(1, DeviceAction::Ok))
         .unwrap();
     m.tick();
-    assert_eq!(m.plc.read(y, 1), 1);
+    assert_eq!(m.plc().read(y, 1), 1);
     // Without the model the input keeps what is written.
     let mut bare = Machine::new(&p, false).unwrap().without_devices();
     bare.tick();
-    assert_eq!(bare.plc.read(y, 1), 0);
+    assert_eq!(bare.plc().read(y, 1), 0);
     assert!(
         bare.apply(&MachineCommand::Device(0, DeviceAction::Ok))
             .unwrap_err()

@@ -10,12 +10,10 @@ pub use say::Say;
 
 use crate::source::Source;
 use clap::{Parser, Subcommand};
-use ladder_engine::cnc::SimCnc;
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
 use ladder_engine::model::Project;
 use ladder_engine::sim;
-use ladder_engine::vm::Vm;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
 use std::io::Write;
@@ -439,11 +437,9 @@ fn machine(
                 return Ok(Err(1));
             }
             let base = Project::default();
-            let mut plc = Vm::from_program(&imported.compiled.program, base.profile())
+            let m = Machine::from_program(&base, &imported.compiled.program, cnc)
                 .map_err(|e| anyhow::anyhow!("{e}"))?;
-            plc.set_division(base.level2_division);
-            let cnc = cnc.then(|| SimCnc::new(base.profile, &base.messages));
-            return Ok(Ok(Machine::from_parts(plc, cnc)));
+            return Ok(Ok(m));
         }
     };
     let compiled = compile(&project);

@@ -89,7 +89,7 @@ fn read_script(
         read_file: &read_file,
         machine: machine.plant().map(|p| p.model()),
     };
-    match Script::parse_with(&text, machine.plc.profile(), &options) {
+    match Script::parse_with(&text, machine.plc().profile(), &options) {
         Ok(s) => Ok(Ok(s)),
         Err(e) => {
             let message = e.message_in(say.zh);
@@ -246,7 +246,7 @@ pub(super) fn bench(
         machine.tick();
     }
     let mut ticker = Ticker::new();
-    let before = machine.plc.executed_steps();
+    let before = machine.plc().executed_steps();
     let start = Instant::now();
     let mut timed = 0u64;
     // The clock and the flag are read once a block, so the figure stays the scan's.
@@ -275,7 +275,7 @@ pub(super) fn bench(
         }
     }
     let elapsed = start.elapsed().as_nanos() as f64;
-    if let Some(h) = machine.plc.halt() {
+    if let Some(h) = machine.plc().halt() {
         let why = h.text(say.zh);
         let _ = writeln!(
             err,
@@ -301,14 +301,14 @@ pub(super) fn bench(
         );
     }
     let scans = timed.max(1);
-    let steps = (machine.plc.executed_steps() - before) as f64 / scans as f64;
+    let steps = (machine.plc().executed_steps() - before) as f64 / scans as f64;
     let ns_per_scan = elapsed / scans as f64;
-    if !stopped && let Some(cnc) = &mut machine.cnc {
+    if !stopped && let (plc, Some(cnc)) = machine.parts_mut() {
         // The exchange alone, timed inside the same kind of run (the clock read adds a few
         // tens of ns to each figure).
         let mut timed = TimedCnc { cnc, nanos: 0 };
         for _ in 0..scans {
-            machine.plc.tick(&mut timed);
+            plc.tick(&mut timed);
         }
         let per = timed.nanos as f64 / scans as f64;
         let hour = ns_per_scan * 450_000.0 / 1e9;

@@ -8,6 +8,7 @@
 //! after each batch of ticks. Neither side waits for the other longer than that copy.
 
 mod clock;
+pub mod journal;
 
 pub use clock::{Lateness, Speed};
 
@@ -77,6 +78,9 @@ pub struct Published {
     pub replies: Vec<Reply>,
     /// The thread has ended (after a failure).
     pub stopped: bool,
+    /// Memory changes tick by tick since the editor last took them (the scan recorder's
+    /// feed).
+    pub journal: journal::Journal,
 }
 
 struct Shared {
@@ -97,7 +101,7 @@ pub struct Runner {
     handle: Option<JoinHandle<Machine>>,
 }
 
-/// Called on the machine thread after every tick (the scan recorder).
+/// Called on the machine thread after every tick (benchmarks, tests).
 pub type TickHook = Box<dyn FnMut(&Machine) + Send>;
 /// Called on the machine thread when there is something new to show, with the state just
 /// published: the UI decides there whether it changes what is on screen (a repaint request).
@@ -107,6 +111,7 @@ impl Runner {
     /// Starts the thread. The machine keeps its running state: send
     /// `Command(MachineCommand::Run)` to start ticking.
     pub fn start(machine: Machine, on_tick: TickHook, wake: Wake) -> std::io::Result<Runner> {
+        let machine_size = machine.plc().layout().size as usize;
         let (tx, rx) = mpsc::channel();
         let shared = Arc::new(Shared {
             state: Mutex::new(Published::default()),
@@ -120,6 +125,7 @@ impl Runner {
                     rx,
                     shared: thread_shared,
                     on_tick,
+                    journaler: journal::Journaler::new(machine_size),
                     wake,
                     clock: Clock::new(Speed::RealTime),
                     releases: Vec::new(),
@@ -181,6 +187,7 @@ impl Runner {
         into.lateness = s.lateness;
         into.stopped = s.stopped;
         into.replies = replies;
+        into.journal = std::mem::take(&mut s.journal);
         true
     }
 
@@ -207,6 +214,7 @@ struct Worker {
     rx: Receiver<Request>,
     shared: Arc<Shared>,
     on_tick: TickHook,
+    journaler: journal::Journaler,
     wake: Wake,
     clock: Clock,
     /// Keys let go but not yet written 0: the target and the tick from which it may be.
@@ -252,7 +260,7 @@ impl Worker {
             if self.machine.running() {
                 let due = self
                     .clock
-                    .due_ticks(Instant::now(), self.machine.plc.ticks());
+                    .due_ticks(Instant::now(), self.machine.plc().ticks());
                 for _ in 0..due {
                     self.tick();
                 }
@@ -266,10 +274,12 @@ impl Worker {
 
     fn tick(&mut self) {
         let now = Instant::now();
-        self.clock.ticked(now, self.machine.plc.ticks());
+        self.clock.ticked(now, self.machine.plc().ticks());
         self.machine.tick();
         (self.on_tick)(&self.machine);
-        let t = self.machine.plc.ticks();
+        self.journaler
+            .note(self.machine.plc().ticks(), self.machine.plc().image());
+        let t = self.machine.plc().ticks();
         let mut k = 0;
         while k < self.releases.len() {
             if self.releases[k].1 <= t {
@@ -291,7 +301,8 @@ impl Worker {
             self.replies.push(Reply::Refused(e));
         }
         if !was_running && self.machine.running() {
-            self.clock.restart(Instant::now(), self.machine.plc.ticks());
+            self.clock
+                .restart(Instant::now(), self.machine.plc().ticks());
         }
     }
 
@@ -307,7 +318,7 @@ impl Worker {
             Request::Press(t) => {
                 self.releases.retain(|(r, _)| *r != t);
                 self.presses.retain(|(p, _)| *p != t);
-                self.presses.push((t, self.machine.plc.ticks()));
+                self.presses.push((t, self.machine.plc().ticks()));
                 self.command(MachineCommand::Write(t, 1));
             }
             Request::Release(t) => {
@@ -318,7 +329,7 @@ impl Worker {
                     .map(|i| self.presses.swap_remove(i).1)
                     .unwrap_or(0);
                 let from = since + MIN_PRESS_TICKS;
-                if from <= self.machine.plc.ticks() {
+                if from <= self.machine.plc().ticks() {
                     self.command(MachineCommand::Write(t, 0));
                 } else {
                     self.releases.push((t, from));
@@ -333,7 +344,8 @@ impl Worker {
             },
             Request::Speed(s) => {
                 self.clock = Clock::new(s);
-                self.clock.restart(Instant::now(), self.machine.plc.ticks());
+                self.clock
+                    .restart(Instant::now(), self.machine.plc().ticks());
             }
         }
     }
@@ -366,6 +378,7 @@ impl Worker {
             s.speed = self.clock.speed();
             s.lateness = self.clock.lateness();
             s.replies.append(&mut self.replies);
+            self.journaler.hand_over(&mut s.journal);
             // The state stays in our copy too, for the wake's look at it after the lock.
             s.snapshot.clone_from(&self.snapshot);
         }

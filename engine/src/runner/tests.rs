@@ -21,7 +21,7 @@ fn t(s: &str) -> Target {
 
 fn read(p: &Published, s: &str) -> bool {
     let m = machine("LEVEL2\nNETWORK\nLD X0000.0\nOUT Y0000.0\n");
-    let loc = m.plc.layout().loc(a(s), false);
+    let loc = m.plc().layout().loc(a(s), false);
     p.snapshot.memory[loc.off as usize] >> a(s).bit.unwrap_or(0) & 1 == 1
 }
 
@@ -59,7 +59,7 @@ fn a_stopped_machine_steps_when_told_and_runs_on_its_own_when_started() {
     r.send(Request::Command(MachineCommand::Stop));
     wait(&r, &mut p, |p| !p.snapshot.running);
     let m = r.stop().expect("the thread ends cleanly");
-    assert!(m.plc.ticks() > 500);
+    assert!(m.plc().ticks() > 500);
 }
 
 #[test]
@@ -100,7 +100,11 @@ fn a_swapped_program_keeps_a_running_timer_and_says_so() {
         p.replies
     );
     let m = r.stop().unwrap();
-    assert_eq!(m.plc.read(a("T0"), 4), 80, "8 ms × 10 ticks, not restarted");
+    assert_eq!(
+        m.plc().read(a("T0"), 4),
+        80,
+        "8 ms × 10 ticks, not restarted"
+    );
 }
 
 #[test]

@@ -84,7 +84,7 @@ fn trace_row(m: &Machine, header: &mut bool, out: &mut dyn Write) -> std::io::Re
         out.write_all(b"\n")?;
         *header = true;
     }
-    write!(out, "{},{}", m.plc.ticks(), m.plc.now_ms())?;
+    write!(out, "{},{}", m.plc().ticks(), m.plc().now_ms())?;
     for p in watched {
         match m.read(p) {
             Ok(v) => write!(out, ",{v}")?,
@@ -148,7 +148,7 @@ pub fn run_with(
                     if let Some(t) = control.trace.as_deref_mut() {
                         trace_row(machine, &mut header, t)?;
                     }
-                    if let Some(h) = machine.plc.halt()
+                    if let Some(h) = machine.plc().halt()
                         && !reported_halt
                     {
                         out.output.push(format!("{name}:{line}: PLC halted at {h}"));
@@ -190,7 +190,7 @@ pub fn run_with(
                 }
             },
             Command::Expect(t, want) => {
-                let got = machine.plc.read(t.address, t.bytes);
+                let got = machine.plc().read(t.address, t.bytes);
                 if masked(got, t.bytes) == masked(*want, t.bytes) {
                     out.passed += 1;
                 } else {
@@ -239,7 +239,7 @@ pub fn run_with(
                 }
             }
             Command::ExpectReal(a, want, tol) => {
-                let got = machine.plc.read_real(*a);
+                let got = machine.plc().read_real(*a);
                 let tol = tol.unwrap_or(1e-4);
                 let ok = if *want == 0.0 {
                     got.abs() <= tol
@@ -334,7 +334,7 @@ mod tests {
                 ticks: 2 * PROGRESS_EVERY + 1,
             })
         );
-        assert_eq!(m.plc.ticks(), 2 * PROGRESS_EVERY + 1);
+        assert_eq!(m.plc().ticks(), 2 * PROGRESS_EVERY + 1);
         assert_eq!(calls.len(), 2);
         assert_eq!(calls[0].line, 4);
     }
@@ -349,7 +349,7 @@ mod tests {
         };
         let out = run_with(&mut m, &s, "s", control).unwrap();
         assert_eq!(out.stopped.map(|s| (s.line, s.ticks)), Some((1, 0)));
-        assert_eq!((out.passed, m.plc.ticks()), (0, 0));
+        assert_eq!((out.passed, m.plc().ticks()), (0, 0));
     }
 
     #[test]

@@ -2,7 +2,6 @@
 //! how that compares with the drawing, the scan recorder and the scrub position. No egui
 //! here: the views in this module's siblings read it, and commands change it.
 
-use ladder_engine::cnc::SimCnc;
 use ladder_engine::compiler::{Program, compile};
 use ladder_engine::devices::{MachineModel, check};
 use ladder_engine::machine::{Machine, MachineCommand};
@@ -14,7 +13,7 @@ use ladder_engine::vm::code::Code;
 use ladder_engine::vm::memory::Layout;
 use ladder_engine::vm::monitor::Source;
 use std::collections::BTreeSet;
-use std::sync::{Arc, Mutex, MutexGuard};
+use std::sync::Arc;
 
 /// Virtual seconds the scan recorder keeps by default.
 pub const RECORD_SECONDS: u64 = 60;
@@ -78,8 +77,9 @@ pub struct Session {
     pub running: Arc<Running>,
     pending: Option<Arc<Running>>,
     sent: u64,
-    /// The scan recorder, filled on the machine thread.
-    pub recorder: Arc<Mutex<Recorder>>,
+    /// The scan recorder, fed from the journal each publication carries (the machine
+    /// thread never waits for it).
+    recorder: Recorder,
     /// The tick shown instead of the present, while scrubbing.
     pub scrub: Option<u64>,
     scrub_image: Vec<u8>,
@@ -92,7 +92,8 @@ pub struct Session {
     watched: BTreeSet<usize>,
 }
 
-fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
+/// The project compiled, or why it cannot run: how many errors, the first one, where.
+fn compiled(project: &Project) -> Result<Program, StartError> {
     let compiled = compile(project);
     if compiled.errors() > 0 {
         let first = compiled
@@ -108,16 +109,27 @@ fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
         });
         return Err(StartError::Compile(compiled.errors(), en, zh));
     }
-    let mut vm = Vm::from_program(&compiled.program, project.profile())
+    Ok(compiled.program)
+}
+
+/// What runs, from the PLC that runs it.
+fn running(project: &Project, program: Program, plc: &Vm, number: u64) -> Running {
+    Running {
+        ladder: project.ladder.clone(),
+        program,
+        code: plc.code().clone(),
+        layout: plc.layout().clone(),
+        number,
+    }
+}
+
+/// An edited drawing's PLC, to take over the running one's memory (a swap).
+fn build(project: &Project, number: u64) -> Result<(Vm, Running), StartError> {
+    let program = compiled(project)?;
+    let mut vm = Vm::from_program(&program, project.profile())
         .map_err(|e| StartError::Other(e.to_string()))?;
     vm.set_division(project.level2_division);
-    let running = Running {
-        ladder: project.ladder.clone(),
-        program: compiled.program,
-        code: vm.code().clone(),
-        layout: vm.layout().clone(),
-        number,
-    };
+    let running = running(project, program, &vm, number);
     Ok((vm, running))
 }
 
@@ -139,24 +151,15 @@ impl Session {
         generation: u64,
         wake: ladder_engine::runner::Wake,
     ) -> Result<Session, StartError> {
-        let (mut vm, running) = build(project, 0)?;
-        vm.load_data_tables(project);
-        let size = running.layout.size as usize;
-        let cnc = SimCnc::new(project.profile, &project.messages);
-        let mut machine = Machine::from_parts(vm, Some(cnc));
-        // `build` compiled the project, and its check refuses a model with errors.
-        machine
-            .load_model(&project.machine)
+        let program = compiled(project)?;
+        let machine = Machine::from_program(project, &program, true)
             .map_err(|e| StartError::Other(e.to_string()))?;
+        let running = running(project, program, machine.plc(), 0);
+        let size = running.layout.size as usize;
         let ticks = RECORD_SECONDS * 1000 / ladder_engine::vm::TICK_MS;
-        let recorder = Arc::new(Mutex::new(Recorder::new(size, ticks)));
-        let rec = Arc::clone(&recorder);
-        let hook = Box::new(move |m: &Machine| {
-            let mut r = rec.lock().unwrap_or_else(|e| e.into_inner());
-            r.record(m.plc.ticks(), &m.plc.image()[..size]);
-        });
-        let runner =
-            Runner::start(machine, hook, wake).map_err(|e| StartError::Other(e.to_string()))?;
+        let recorder = Recorder::new(size, ticks);
+        let runner = Runner::start(machine, Box::new(|_| {}), wake)
+            .map_err(|e| StartError::Other(e.to_string()))?;
         Ok(Session {
             runner,
             published: Published::default(),
@@ -199,6 +202,13 @@ impl Session {
     pub fn poll(&mut self) -> (bool, Vec<Notice>) {
         if !self.runner.take(&mut self.published) {
             return (false, Vec::new());
+        }
+        let journal = std::mem::take(&mut self.published.journal);
+        if let Some((tick, image)) = &journal.base {
+            self.recorder.record(*tick, image);
+        }
+        for (tick, changes) in journal.each_tick() {
+            self.recorder.record_changes(tick, changes);
         }
         let mut notices = Vec::new();
         for r in std::mem::take(&mut self.published.replies) {
@@ -293,9 +303,14 @@ impl Session {
         self.scrub_image = image;
     }
 
-    /// The recorder, locked (briefly: the machine thread waits for it at its next tick).
-    pub fn recorder(&self) -> MutexGuard<'_, Recorder> {
-        self.recorder.lock().unwrap_or_else(|e| e.into_inner())
+    /// The scan recorder.
+    pub fn recorder(&self) -> &Recorder {
+        &self.recorder
+    }
+
+    /// Throws the recorded ticks away (the trace's Clear).
+    pub fn clear_record(&mut self) {
+        self.recorder.clear();
     }
 
     /// The memory shown: the recorded tick while scrubbing, else the last published state.

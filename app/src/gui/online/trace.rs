@@ -121,7 +121,7 @@ impl LadderApp {
             data.signals.push(TraceSignal {
                 name: name.clone(),
                 bit: t.address.bit.is_some(),
-                points: signal_points(&rec, s, t, &image, first, last),
+                points: signal_points(rec, s, t, &image, first, last),
             });
         }
         data
@@ -248,8 +248,8 @@ impl LadderApp {
                     self.start_dialog(super::super::files::DialogKind::ExportTrace);
                 }
                 TraceEvent::Clear => {
-                    if let Some(s) = self.online.session.as_ref() {
-                        s.recorder().clear();
+                    if let Some(s) = self.online.session.as_mut() {
+                        s.clear_record();
                     }
                 }
             }
