@@ -164,6 +164,9 @@ pub struct Snapshot {
     pub devices: Vec<DeviceStatus>,
     /// The scan time in steps: the last tick's and the most since power-on.
     pub tick_steps: (u64, u64),
+    /// Every forced address: the bits of byte areas one by one (a whole forced byte as the
+    /// byte), 4-byte values whole.
+    pub forced: Vec<Address>,
 }
 
 impl Machine {
@@ -409,6 +412,24 @@ impl Machine {
         s.memory.extend_from_slice(self.plc.image());
         s.forces.clear();
         s.forces.extend(self.plc.forces());
+        s.forced.clear();
+        let layout = self.plc.layout();
+        for &(off, mask, _) in &s.forces {
+            let Some(whole) = layout.address_at(off, None) else {
+                continue;
+            };
+            if whole.area.element_bytes() == 4 || mask == 0xFF {
+                if !s.forced.contains(&whole) {
+                    s.forced.push(whole);
+                }
+            } else {
+                s.forced.extend(
+                    (0..8)
+                        .filter(|b| mask >> b & 1 == 1)
+                        .filter_map(|b| layout.address_at(off, Some(b))),
+                );
+            }
+        }
         s.halt = self.plc.halt().cloned();
         s.trace.clear();
         s.trace.extend_from_slice(self.plc.trace());

@@ -192,12 +192,7 @@ impl LadderApp {
                     continue;
                 }
             };
-            if self.online() {
-                self.send_command(MachineCommand::Cnc(c));
-            } else {
-                let t = Msg::OfflineHint.text(lang).to_string();
-                self.say(t, true);
-            }
+            self.send_command(MachineCommand::Cnc(c));
         }
     }
 

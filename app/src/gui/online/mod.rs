@@ -242,9 +242,16 @@ impl LadderApp {
         self.send_request(Request::Command(c));
     }
 
-    /// Sends a request to the machine (panel keys, swaps). While a recording is replayed the
-    /// machine is not touched, and the output window says why.
+    /// The one door of every online action (the ladder's keys, the watch table, the signal
+    /// page, the panel, the CNC page, the value window, the data tables): offline nothing is
+    /// sent and the output window says how to go online; while a recording is replayed the
+    /// machine is not touched and the output window says why; the first force of the run
+    /// asks first.
     pub fn send_request(&mut self, r: Request) {
+        if self.online.session.is_none() {
+            self.say_once(Msg::OfflineHint);
+            return;
+        }
         let is_force = |c: &MachineCommand| {
             matches!(
                 c,
@@ -264,10 +271,15 @@ impl LadderApp {
         if let Some(s) = self.online.session.as_mut()
             && !s.send(r)
         {
-            let t = self.t(Msg::Replaying).to_string();
-            if self.output.last().is_none_or(|l| l.text != t) {
-                self.say(t, true);
-            }
+            self.say_once(Msg::Replaying);
+        }
+    }
+
+    /// Says a refusal, unless it is already the output window's last line.
+    fn say_once(&mut self, m: Msg) {
+        let t = self.t(m).to_string();
+        if self.output.last().is_none_or(|l| l.text != t) {
+            self.say(t, true);
         }
     }
 
@@ -365,30 +377,13 @@ impl LadderApp {
             .is_some_and(|s| forced_in(s, a))
     }
 
-    /// Every forced address: bits of byte areas one by one, 4-byte values whole.
+    /// Every forced address, as the machine published them: bits of byte areas one by one,
+    /// 4-byte values whole.
     pub fn forced_addresses(&self) -> Vec<Address> {
-        let Some(s) = self.online.session.as_ref() else {
-            return Vec::new();
-        };
-        let layout = &s.running.layout;
-        let mut out: Vec<Address> = Vec::new();
-        for &(off, mask, _) in &s.published.snapshot.forces {
-            let Some(whole) = layout.address_at(off, None) else {
-                continue;
-            };
-            if whole.area.element_bytes() == 4 || mask == 0xFF {
-                if !out.contains(&whole) {
-                    out.push(whole);
-                }
-            } else {
-                for b in 0..8 {
-                    if mask >> b & 1 == 1 {
-                        out.extend(layout.address_at(off, Some(b)));
-                    }
-                }
-            }
-        }
-        out
+        self.online
+            .session
+            .as_ref()
+            .map_or_else(Vec::new, |s| s.published.snapshot.forced.clone())
     }
 
     fn at_cursor(&mut self, c: Command) {
