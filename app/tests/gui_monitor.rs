@@ -608,3 +608,25 @@ fn data_tables_show_running_values_edit_them_and_save_them_as_one_undo_step() {
         "one undo step puts the file's values back"
     );
 }
+
+#[test]
+fn the_online_window_can_stand_on_its_own_and_the_ladder_takes_the_width() {
+    let mut h = harness(Some(lathe()), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    command(&mut h, Command::StepTick);
+    h.run();
+    let beside = h.state().edit.geometry.visible.unwrap().width();
+    command(&mut h, Command::DetachOnline);
+    h.run();
+    h.run();
+    assert!(h.state().settings.online_window);
+    // Headless there is no second native window: it stands as a window over the editor,
+    // and the ladder has the whole width.
+    let alone = h.state().edit.geometry.visible.unwrap().width();
+    assert!(alone > beside + 200.0, "{beside} → {alone}");
+    h.get_by_label("Panel");
+    command(&mut h, Command::DetachOnline);
+    h.run();
+    assert!(!h.state().settings.online_window);
+}

@@ -240,6 +240,8 @@ commands! {
     LiveView => LiveView;
     /// The online panel shown (on/off).
     ToggleOnline => OnlineWindow;
+    /// The online panel in a native window of its own (a second screen holds it), on/off.
+    DetachOnline => OnlineDetached;
     /// The Machine page: the machine model's devices, online or not.
     MachineModel => MachineModelPage;
     /// The cursor to the first column of its row.
@@ -274,6 +276,8 @@ pub const PLC_MENU: &[Option<Command>] = &[
     Some(Command::Why),
     Some(Command::LiveView),
     None,
+    Some(Command::ToggleOnline),
+    Some(Command::DetachOnline),
     Some(Command::MachineModel),
 ];
 

@@ -73,7 +73,7 @@ impl LadderApp {
             }
             Command::Why => self.online() && self.in_ladder(),
             Command::LiveView => self.scrubbing(),
-            Command::Speed(_) | Command::ToggleOnline => true,
+            Command::Speed(_) | Command::ToggleOnline | Command::DetachOnline => true,
             Command::MachineModel => doc.is_some(),
             c if c.navigates() => self.in_ladder(),
             // A recorded past is read-only: no edits while the view shows one.
@@ -96,6 +96,7 @@ impl LadderApp {
             Command::ToggleToolbar => s.show_toolbar,
             Command::ToggleStatus => s.show_status,
             Command::ToggleOnline => s.show_online,
+            Command::DetachOnline => s.online_window,
             Command::Speed(sp) => self.online.speed == sp,
             Command::Display(m) => s.display == m,
             Command::Language(l) => s.lang == l,
@@ -297,6 +298,10 @@ impl LadderApp {
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
+            Command::DetachOnline => {
+                self.settings.online_window = !self.settings.online_window;
+                self.settings.show_online = true;
+            }
             Command::MachineModel => {
                 self.settings.show_online = true;
                 self.online.tab = super::online::OnlineTab::Machine;

@@ -72,6 +72,7 @@ messages! {
     Why => "为什么？", "Why?";
     LiveView => "回到实时", "Back to live";
     OnlineWindow => "在线窗口", "Online window";
+    OnlineDetached => "在线窗口独立显示", "Online window on its own";
     MachineModelPage => "机床模型…", "Machine model…";
     SpeedReal => "实时", "Real time";
     Speed10 => "×10", "×10";

@@ -641,9 +641,11 @@ impl eframe::App for LadderApp {
         // The online panel takes its room only while online: offline the tables and the
         // ladder keep the whole width.
         // The Machine page is also where the machine model is edited offline.
-        if self.settings.show_online
-            && (self.online() || self.online.tab == online::OnlineTab::Machine)
-        {
+        let online_shown = self.settings.show_online
+            && (self.online() || self.online.tab == online::OnlineTab::Machine);
+        if online_shown && self.settings.online_window {
+            self.online_viewport(&ctx);
+        } else if online_shown {
             // At most half the window: the ladder stays the main view; a wide page scrolls.
             let max = (ui.available_width() * 0.5).max(260.0);
             egui::Panel::right("online")

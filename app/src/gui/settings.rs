@@ -233,6 +233,8 @@ pub struct Settings {
     /// The ladder's zoom follows the view's width so the output column is always on screen
     /// (on when going online; a zoom step turns it off).
     pub fit_width: bool,
+    /// The online panel in a native window of its own rather than beside the ladder.
+    pub online_window: bool,
     /// The first network on screen in each block (by label) of each project file: a
     /// project opens again where each of its blocks was being read. Networks, not pixels,
     /// so the place survives another zoom or comments shown.
@@ -256,6 +258,7 @@ impl Default for Settings {
             watches: Default::default(),
             triggers: Default::default(),
             fit_width: false,
+            online_window: false,
             tops: Default::default(),
             show_toolbar: true,
             show_output: true,

@@ -169,6 +169,32 @@ impl LadderApp {
         });
     }
 
+    /// The online panel in a native window of its own (in a window inside the main one where
+    /// the platform has no second window); closing it puts the panel back beside the ladder.
+    pub(crate) fn online_viewport(&mut self, ctx: &egui::Context) {
+        let title = format!(
+            "Ladder Studio — {}",
+            Msg::OnlineWindow.text(self.settings.lang)
+        );
+        let builder = egui::ViewportBuilder::default()
+            .with_title(title)
+            .with_inner_size([720.0, 820.0]);
+        let id = egui::ViewportId::from_hash_of("online-window");
+        ctx.show_viewport_immediate(id, builder, |ui, class| {
+            if class == egui::ViewportClass::EmbeddedWindow {
+                self.online_panel_ui(ui);
+            } else {
+                egui::Frame::central_panel(ui.style()).show(ui, |ui| {
+                    ui.set_min_size(ui.available_size());
+                    self.online_panel_ui(ui);
+                });
+            }
+            if ui.input(|i| i.viewport().close_requested()) {
+                self.settings.online_window = false;
+            }
+        });
+    }
+
     /// The online panel: its pages.
     pub fn online_panel_ui(&mut self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
