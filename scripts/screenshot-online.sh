@@ -18,8 +18,9 @@ sleep 8
 DISPLAY=:98 import -window root /tmp/ladder-studio-online.png
 convert /tmp/ladder-studio-online.png -crop 1280x800+0+0 +repage docs/online.png
 wid=$(DISPLAY=:98 xdotool search --name "Ladder Studio" | head -1)
-# The CNC page: the third tab of the online panel, at the panel's default width.
-DISPLAY=:98 xdotool windowfocus --sync "$wid" mousemove "${CNC_TAB_X:-897}" 108 click 1
+# The CNC page: the third tab of the online panel, at the panel's default width (the
+# Chinese toolbar takes two rows at 1280 px, so the tabs are at y 131).
+DISPLAY=:98 xdotool windowfocus --sync "$wid" mousemove "${CNC_TAB_X:-895}" "${CNC_TAB_Y:-131}" click 1
 sleep 2
 DISPLAY=:98 import -window root /tmp/ladder-studio-online-cnc.png
 convert /tmp/ladder-studio-online-cnc.png -crop 1280x800+0+0 +repage docs/online-cnc.png

@@ -378,7 +378,7 @@ fn the_toolbar_shows_the_scan_in_steps_and_the_watchdog_limit() {
         .tick_steps;
     // Two networks: LD, AND, OUT and LD, TMRB (with its R coil) run every tick.
     assert!(last >= 5 && max >= last, "{last} {max}");
-    h.get_by_label_contains(&format!("Scan steps {last} (max {max}) · watchdog 200000"));
+    h.get_by_label_contains(&format!("Scan {last}/{max}/200000"));
 }
 
 #[test]

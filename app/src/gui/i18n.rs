@@ -79,7 +79,7 @@ messages! {
     Speed100 => "×100", "×100";
     SpeedMax => "最快", "As fast as possible";
     SpeedLabel => "速度", "Speed";
-    LiveFormat => "数值格式", "Values as";
+    LiveFormat => "数值格式", "Format";
     ValuesTitle => "在线数值", "live values";
     StepNHint => "“运行 N 个周期”（Shift+F8）的周期数", "Ticks of \"Step N ticks\" (Shift+F8)";
     Ticks => "周期", "ticks";
@@ -134,9 +134,8 @@ messages! {
     ForcedCount => "强制生效", "Forces active";
     FirstForceTitle => "强制信号", "Force a signal";
     FirstForceQuestion => "强制会使信号保持指定值，不论程序和机床如何动作，直到解除强制。在真实机床上这可能使设备意外动作。确定要强制吗？（本次运行中不再询问）", "A force holds a signal at its value whatever the program and the machine do, until released. On a real machine this can move things unexpectedly. Force it? (Not asked again while the editor runs.)";
-    ScanSteps => "扫描步数", "Scan steps";
-    ScanMax => "最大", "max";
-    StepsWatchdog => "看门狗", "watchdog";
+    ScanSteps => "扫描", "Scan";
+    ScanHint => "每个扫描周期执行的步数：上一周期 / 上电以来最大 / 看门狗上限（一级程序每周期、二级程序每轮超过此步数即停止 PLC）", "Steps executed per tick: the last tick / the most since power-on / the watchdog's limit (a level stops the PLC past it: level 1 per tick, level 2 per cycle)";
     OfflineHint => "脱机：Ctrl+F9 运行或 F8 单步后显示在线状态", "Offline: Ctrl+F9 (run) or F8 (single tick) shows the live state";
     NoForces => "没有强制", "Nothing is forced";
     Release => "解除", "Release";

@@ -30,6 +30,7 @@ impl LadderApp {
         let lang = self.settings.lang;
         let t = |m: Msg| m.text(lang);
         egui::ComboBox::new("speed", t(Msg::SpeedLabel))
+            .width(84.0)
             .selected_text(Command::Speed(self.online.speed).text().text(lang))
             .show_ui(ui, |ui| {
                 for s in Speed::ALL {
@@ -43,6 +44,7 @@ impl LadderApp {
                 }
             });
         egui::ComboBox::new("live-format", t(Msg::LiveFormat))
+            .width(56.0)
             .selected_text(self.settings.live_format.name())
             .show_ui(ui, |ui| {
                 for f in super::super::settings::NumFormat::ALL {
@@ -58,25 +60,23 @@ impl LadderApp {
         if let Some(s) = &self.online.session {
             let snap = &s.published.snapshot;
             ui.separator();
-            ui.monospace(format!(
-                "{}  {} {}",
-                clock_text(snap.ticks),
-                t(Msg::Ticks),
-                snap.ticks
-            ));
+            // The virtual clock and the tick count (#), named on hover.
+            ui.monospace(format!("{} #{}", clock_text(snap.ticks), snap.ticks))
+                .on_hover_text(t(Msg::Ticks));
             ui.label(if snap.running {
                 t(Msg::StateRunning)
             } else {
                 t(Msg::StateStopped)
             });
             let (last, max) = snap.tick_steps;
-            ui.monospace(format!(
-                "{} {last} ({} {max}) · {} {}",
+            // Compact (the toolbar is one row at 1280 px); the hover says what each figure is.
+            let text = format!(
+                "{} {last}/{max}/{}",
                 t(Msg::ScanSteps),
-                t(Msg::ScanMax),
-                t(Msg::StepsWatchdog),
                 ladder_engine::vm::WATCHDOG_STEPS
-            ));
+            );
+            ui.add(egui::Label::new(text).wrap_mode(egui::TextWrapMode::Extend))
+                .on_hover_text(t(Msg::ScanHint));
             if let Some(h) = &snap.halt {
                 let why = h.text(lang == super::super::i18n::Lang::Zh);
                 ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::PlcHalted)));
