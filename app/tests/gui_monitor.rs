@@ -630,3 +630,19 @@ fn the_online_window_can_stand_on_its_own_and_the_ladder_takes_the_width() {
     h.run();
     assert!(!h.state().settings.online_window);
 }
+
+#[test]
+fn a_refusal_from_the_machine_is_in_the_ui_language() {
+    let mut h = harness(Some(il_project(RUNG)), Lang::Zh);
+    h.run();
+    command(&mut h, Command::StepTick);
+    h.state_mut()
+        .send_command(ladder_engine::machine::MachineCommand::Device(
+            0,
+            ladder_engine::machine::DeviceAction::Reset,
+        ));
+    settle(&mut h);
+    let out = output(&h);
+    assert!(out.contains("没有运行机床模型"), "{out}");
+    assert!(!out.contains("no machine model"), "{out}");
+}

@@ -16,6 +16,7 @@ pub mod machine;
 pub mod model;
 pub mod profile;
 pub mod recorder;
+pub mod refusal;
 pub mod runner;
 pub mod sim;
 pub mod vm;

@@ -8,6 +8,7 @@ use crate::cnc::command::{CncCommand, CncKey, CncValue};
 use crate::cnc::{CncStatus, SimCnc};
 use crate::devices::{DeviceStatus, Fault, MachineModel, ModelError, Plant};
 use crate::model::Project;
+use crate::refusal::Refusal;
 use crate::vm::cnc::NoCnc;
 use crate::vm::swap::{SwapError, Swapped};
 use crate::vm::{BuildError, Halt, Vm};
@@ -325,7 +326,7 @@ impl Machine {
 
     /// Carries out a command. A CNC command that cannot apply now (or any CNC command without
     /// a CNC) says why and changes nothing.
-    pub fn apply(&mut self, cmd: &MachineCommand) -> Result<(), String> {
+    pub fn apply(&mut self, cmd: &MachineCommand) -> Result<(), Refusal> {
         match cmd {
             MachineCommand::Run => self.running = true,
             MachineCommand::Stop => self.running = false,
@@ -365,14 +366,25 @@ impl Machine {
             MachineCommand::Division(n) => self.plc.set_division(*n),
             MachineCommand::Cnc(c) => match &mut self.cnc {
                 Some(cnc) => cnc.apply(c)?,
-                None => return Err("no CNC is attached (run with the simulated CNC)".into()),
+                None => {
+                    return Err(Refusal::new(
+                        "no CNC is attached (run with the simulated CNC)",
+                        "没有连接 CNC（请带仿真 CNC 运行）",
+                    ));
+                }
             },
             MachineCommand::Device(i, action) => {
                 let Some(p) = &mut self.plant else {
-                    return Err("no machine model is running (the project has no devices, or it runs with --no-machine)".into());
+                    return Err(Refusal::new(
+                        "no machine model is running (the project has no devices, or it runs with --no-machine)",
+                        "没有运行机床模型（工程中没有设备，或以 --no-machine 运行）",
+                    ));
                 };
                 if *i >= p.names().count() {
-                    return Err(format!("there is no device {}", i + 1));
+                    return Err(Refusal::new(
+                        format!("there is no device {}", i + 1),
+                        format!("没有第 {} 号设备", i + 1),
+                    ));
                 }
                 match action {
                     DeviceAction::Fault(f) => p.set_fault(*i, Some(*f)),
@@ -380,9 +392,9 @@ impl Machine {
                     DeviceAction::Reset => p.reset(*i),
                 }
             }
-            MachineCommand::LoadModel(model) => {
-                self.load_model(model).map_err(|e| e.to_string())?
-            }
+            MachineCommand::LoadModel(model) => self
+                .load_model(model)
+                .map_err(|e| Refusal::new(e.to_string(), e.zh()))?,
         }
         Ok(())
     }

@@ -6,6 +6,7 @@ use super::data::{MacroSlot, OffsetType, WORK_SYSTEMS, parse_clock, work_system}
 use super::params::{self, ParamError, Params, Selector, TABLE};
 use super::{AXES, AXIS_NAMES, RunState, SimCnc};
 use crate::profile::ProfileId;
+use crate::refusal::Refusal;
 
 pub use super::keys::{CncKey, CncValue};
 
@@ -105,6 +106,26 @@ pub(super) fn int(text: &str, what: &str) -> Result<i64, String> {
         .map_err(|_| format!("`{text}` is not an integer ({what})"))
 }
 
+/// [`param_error`] in Chinese.
+pub(super) fn param_error_zh(e: ParamError, number: u16) -> String {
+    match e {
+        ParamError::Number => format!("没有参数 {number}"),
+        ParamError::Selector => {
+            let s = params::spec(number).expect("number checked first");
+            match s.selector {
+                Selector::None => format!("参数 {number} 不带轴号或主轴号"),
+                Selector::Axis => format!("参数 {number} 需要轴号 1–5"),
+                Selector::Spindle => format!("参数 {number} 需要主轴号 1–4"),
+            }
+        }
+        ParamError::Value => {
+            let s = params::spec(number).expect("number checked first");
+            format!("参数 {number} 的范围为 {}…{}", s.min, s.max)
+        }
+    }
+}
+
+/// Why a parameter setting was refused, in English.
 pub(super) fn param_error(e: ParamError, number: u16) -> String {
     match e {
         ParamError::Number => format!(
@@ -364,7 +385,7 @@ const SUBCOMMANDS: [&str; 12] = [
 impl SimCnc {
     /// Carries out a command between ticks; its effect on F appears at the next exchange.
     /// A command that cannot apply now says why.
-    pub fn apply(&mut self, cmd: &CncCommand) -> Result<(), String> {
+    pub fn apply(&mut self, cmd: &CncCommand) -> Result<(), Refusal> {
         if matches!(
             cmd,
             CncCommand::Param { .. } | CncCommand::Offset { .. } | CncCommand::Workpiece { .. }
@@ -375,9 +396,15 @@ impl SimCnc {
         match cmd {
             CncCommand::Program(text) | CncCommand::Mdi(text) => {
                 if self.auto.state != RunState::Idle {
-                    return Err(format!(
-                        "the program cannot be replaced while automatic operation is {} (reset first)",
-                        self.auto.state.name()
+                    return Err(Refusal::new(
+                        format!(
+                            "the program cannot be replaced while automatic operation is {} (reset first)",
+                            self.auto.state.name()
+                        ),
+                        format!(
+                            "自动运行状态为 {} 时不能替换程序（请先复位）",
+                            self.auto.state.name()
+                        ),
                     ));
                 }
                 if matches!(cmd, CncCommand::Program(_)) {
@@ -396,8 +423,9 @@ impl SimCnc {
                 {
                     self.params.set_word980(usize::from(*number), *value as i32);
                 } else {
-                    let (i, slot) = Params::check(*number, *selector, *value)
-                        .map_err(|e| param_error(e, *number))?;
+                    let (i, slot) = Params::check(*number, *selector, *value).map_err(|e| {
+                        Refusal::new(param_error(e, *number), param_error_zh(e, *number))
+                    })?;
                     self.params.set(i, slot, *value);
                     if i == params::P3402 && self.auto.state == RunState::Idle {
                         // Set up before a run, the feed mode is the one power-on would give.
@@ -412,14 +440,17 @@ impl SimCnc {
             } => {
                 let range = offset_range(self.profile);
                 if !range.contains(number) {
-                    return Err(format!(
-                        "tool offsets are {}–{}, not {number}",
-                        range.start(),
-                        range.end()
+                    let (a, b) = (range.start(), range.end());
+                    return Err(Refusal::new(
+                        format!("tool offsets are {a}–{b}, not {number}"),
+                        format!("刀具补偿号为 {a}–{b}，不是 {number}"),
                     ));
                 }
                 if *kind == OffsetType::Tip && !(0..=9).contains(value) {
-                    return Err(format!("the tip direction is 0–9, not {value}"));
+                    return Err(Refusal::new(
+                        format!("the tip direction is 0–9, not {value}"),
+                        format!("刀尖方向为 0–9，不是 {value}"),
+                    ));
                 }
                 self.offsets[usize::from(*number)].set(*kind, *value);
             }
@@ -432,28 +463,36 @@ impl SimCnc {
                     .work
                     .get_mut(usize::from(*system))
                     .and_then(|w| w.get_mut(usize::from(*axis)))
-                    .ok_or_else(|| "no such workpiece system or axis".to_string())?;
+                    .ok_or_else(|| {
+                        Refusal::new("no such workpiece system or axis", "没有此工件坐标系或轴")
+                    })?;
                 *slot = *value;
             }
             CncCommand::Macro { number, value } => match MacroSlot::of(i64::from(*number)) {
                 MacroSlot::Local => self.set_local(usize::from(*number), *value),
-                slot => self
-                    .set_macro(slot, *value)
-                    .map_err(|()| format!("#{number} cannot take that value"))?,
+                slot => self.set_macro(slot, *value).map_err(|()| {
+                    Refusal::new(
+                        format!("#{number} cannot take that value"),
+                        format!("#{number} 不能取此值"),
+                    )
+                })?,
             },
             CncCommand::Position { axis, value } => {
                 let n = usize::from(*axis);
+                let name = AXIS_NAMES.get(n).unwrap_or(&"?");
                 if n >= self.axis_count() {
-                    return Err(format!(
-                        "axis {} is beyond the {} controlled axes (#8130)",
-                        AXIS_NAMES.get(n).unwrap_or(&"?"),
-                        self.axis_count()
+                    let count = self.axis_count();
+                    return Err(Refusal::new(
+                        format!("axis {name} is beyond the {count} controlled axes (#8130)"),
+                        format!("{name} 轴超出 {count} 个控制轴（#8130）"),
                     ));
                 }
                 if self.remaining(n) != 0 || self.manual.moving(n) || self.plc_moving(n) {
-                    return Err(format!(
-                        "axis {} is moving; its position can be set only while it is still",
-                        AXIS_NAMES[n]
+                    return Err(Refusal::new(
+                        format!(
+                            "axis {name} is moving; its position can be set only while it is still"
+                        ),
+                        format!("{name} 轴正在移动；只有停止时才能设定其位置"),
                     ));
                 }
                 self.axes[n].m = (*value).clamp(-99_999_999, 99_999_999);

@@ -49,11 +49,11 @@ pub enum Request {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Reply {
     /// A command could not be carried out, and why.
-    Refused(String),
+    Refused(crate::refusal::Refusal),
     /// Program `n` runs now.
     Swapped(u64, Swapped),
     /// Program `n` could not take over, and why; the old one runs on.
-    SwapRefused(u64, String),
+    SwapRefused(u64, crate::refusal::Refusal),
     /// The machine thread failed; it has stopped.
     Failed(String),
 }
@@ -340,7 +340,10 @@ impl Worker {
                     self.program = n;
                     self.replies.push(Reply::Swapped(n, s));
                 }
-                Err(e) => self.replies.push(Reply::SwapRefused(n, e.to_string())),
+                Err(e) => self.replies.push(Reply::SwapRefused(
+                    n,
+                    crate::refusal::Refusal::new(e.to_string(), e.zh()),
+                )),
             },
             Request::Speed(s) => {
                 self.clock = Clock::new(s);

@@ -24,6 +24,17 @@ pub enum SwapError {
     },
 }
 
+impl SwapError {
+    /// The same message in Chinese.
+    pub fn zh(&self) -> String {
+        match self {
+            SwapError::Profile { old, new } => {
+                format!("程序是为 {new} 编写的，而运行中的 PLC 是 {old}：请停止后重新运行")
+            }
+        }
+    }
+}
+
 /// What a swap kept.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Swapped {

@@ -26,7 +26,7 @@ pub mod watch;
 
 use super::LadderApp;
 use super::command::Command;
-use super::i18n::Msg;
+use super::i18n::{self, Msg};
 use ladder_engine::Address;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::runner::{Request, Speed};
@@ -411,7 +411,14 @@ impl LadderApp {
         let lang = self.settings.lang;
         for n in notices {
             lines.push(match n {
-                Notice::Refused(m) => (format!("{}: {m}", Msg::MachineRefused.text(lang)), true),
+                Notice::Refused(m) => (
+                    format!(
+                        "{}: {}",
+                        Msg::MachineRefused.text(lang),
+                        m.text(lang == i18n::Lang::Zh)
+                    ),
+                    true,
+                ),
                 Notice::Swapped(kept, fresh) => (
                     format!(
                         "{} ({} {kept}, {} {fresh})",
@@ -421,9 +428,14 @@ impl LadderApp {
                     ),
                     false,
                 ),
-                Notice::SwapRefused(m) => {
-                    (format!("{}: {m}", Msg::EditNotSwapped.text(lang)), true)
-                }
+                Notice::SwapRefused(m) => (
+                    format!(
+                        "{}: {}",
+                        Msg::EditNotSwapped.text(lang),
+                        m.text(lang == i18n::Lang::Zh)
+                    ),
+                    true,
+                ),
                 Notice::Failed(m) => (format!("{}: {m}", Msg::MachineFailed.text(lang)), true),
             });
         }

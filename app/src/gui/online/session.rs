@@ -7,6 +7,7 @@ use ladder_engine::devices::{MachineModel, check};
 use ladder_engine::machine::{Machine, MachineCommand};
 use ladder_engine::model::{Ladder, Project};
 use ladder_engine::recorder::Recorder;
+use ladder_engine::refusal::Refusal;
 use ladder_engine::runner::{Published, Reply, Request, Runner, Speed};
 use ladder_engine::vm::Vm;
 use ladder_engine::vm::code::Code;
@@ -59,11 +60,11 @@ pub enum StartError {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Notice {
     /// A command was refused by the machine.
-    Refused(String),
+    Refused(Refusal),
     /// An edit runs now: function instances kept and new.
     Swapped(usize, usize),
     /// An edit could not take over.
-    SwapRefused(String),
+    SwapRefused(Refusal),
     /// The machine thread failed.
     Failed(String),
 }
@@ -227,7 +228,7 @@ impl Session {
                 Reply::SwapRefused(n, m) => {
                     if self.pending.as_ref().is_some_and(|p| p.number == n) {
                         self.pending = None;
-                        self.sync = Sync::Refused(m.clone(), m.clone());
+                        self.sync = Sync::Refused(m.en.clone(), m.zh.clone());
                     }
                     notices.push(Notice::SwapRefused(m));
                 }
