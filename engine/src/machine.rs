@@ -26,6 +26,15 @@ pub struct Target {
 }
 
 impl Target {
+    /// An address as a whole: a bit, a byte, or a 4-byte value, at its own width.
+    pub fn whole(address: Address) -> Target {
+        Target {
+            address,
+            bytes: u32::from(address.area.element_bytes()).max(1),
+            explicit: false,
+        }
+    }
+
     /// The address as printed in messages: canonical, with `:N` when it was given.
     pub fn text(&self) -> String {
         if self.explicit {

@@ -571,3 +571,29 @@ fn coordinates_follow_tool_and_workpiece_offsets() {
     assert_eq!(r.v("cnc.pos.X"), "12.000");
     assert_eq!(r.v("cnc.pos.Z"), "96.500");
 }
+
+#[test]
+fn after_m30_and_after_an_mdi_run_the_screen_marks_where_the_cursor_is() {
+    let mut r = mem("O0001\nN10 G04 X0.01\nN20 M30");
+    r.auto_fin = true;
+    r.start();
+    r.xs(10);
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    let s = r.cnc.status();
+    // M30 rewinds: the marker is on the program's first block (line 2), in the program.
+    assert_eq!((s.line, s.line_in_mdi), (Some(2), false));
+    // An MDI run ends with the cursor in the MDI buffer: its line is the MDI's, not the
+    // program's.
+    r.mode(ladder_engine::cnc::Mode::Mdi);
+    r.x();
+    r.cnc
+        .apply(&ladder_engine::cnc::command::CncCommand::Mdi(
+            "G04 X0.01".into(),
+        ))
+        .unwrap();
+    r.start();
+    r.xs(10);
+    let s = r.cnc.status();
+    assert_eq!(r.v("cnc.run"), "IDLE");
+    assert!(s.line_in_mdi && !s.mdi, "{s:?}");
+}

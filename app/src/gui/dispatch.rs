@@ -111,9 +111,11 @@ impl LadderApp {
             || self.function_dialog.is_some()
             || self.files.question.is_some()
             || ctx.egui_wants_keyboard_input();
+        // Whether each command is enabled is decided when it runs (after the frame, in
+        // order): a press that an earlier press of the same frame enables still counts.
         let keyed: Vec<(Command, egui::KeyboardShortcut)> = Command::keyed()
             .iter()
-            .filter(|&&c| (!typing || c.global()) && self.enabled(c))
+            .filter(|&&c| !typing || c.global())
             .filter_map(|&c| c.shortcut().map(|s| (c, s)))
             .collect();
         // Every key press of the frame, in order, becomes its command (Down Down moves twice;

@@ -538,6 +538,7 @@ messages! {
     CncSendMdi => "送入 MDI", "Send MDI";
     CncReset => "复位", "RESET";
     CncCycleStart => "循环启动", "Cycle start";
+    NoPanelKey => "操作面板上没有此键（在机床操作面板的编辑模式中添加）", "the operator panel has no such key (add it in the panel's edit mode)";
     CncFeedHold => "进给保持", "Feed hold";
     CncMdiSent => "已送入 MDI 程序段数：", "Sent to the CNC's MDI buffer, blocks:";
     CncMdiHow => "在 MDI 方式下按循环启动执行。", "In MDI mode, Cycle start runs it.";

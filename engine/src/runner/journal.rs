@@ -3,9 +3,13 @@
 //! thread would wait on. The first tick after a start (or after the editor fell behind by
 //! more than the journal holds) carries the whole image as a base.
 
-/// Ticks of changes kept between two publications at most; an editor that falls further
-/// behind gets a fresh base instead (its recording restarts there).
+/// Ticks of changes the published journal holds at most: an editor that falls further
+/// behind (no frames drawn) gets a fresh base instead, its recording restarting there.
 pub const MAX_TICKS: usize = 7_500;
+
+/// Ticks the machine thread gathers before it hands them over without waiting for a
+/// publication (a quiet image at full speed publishes rarely).
+pub const HAND_OVER_TICKS: usize = 1_024;
 
 /// Memory changes tick by tick.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -42,6 +46,8 @@ pub struct Journaler {
     prev: Vec<u8>,
     size: usize,
     out: Journal,
+    /// The last tick noted.
+    last: u64,
 }
 
 impl Journaler {
@@ -51,13 +57,15 @@ impl Journaler {
             prev: Vec::new(),
             size,
             out: Journal::default(),
+            last: 0,
         }
     }
 
     /// Notes the image as of the end of `tick`.
     pub fn note(&mut self, tick: u64, image: &[u8]) {
         let image = &image[..self.size.min(image.len())];
-        if self.prev.len() != image.len() || self.out.ticks.len() >= MAX_TICKS {
+        self.last = tick;
+        if self.prev.len() != image.len() {
             self.prev.clear();
             self.prev.extend_from_slice(image);
             self.out.ticks.clear();
@@ -74,8 +82,20 @@ impl Journaler {
         self.out.ticks.push((tick, self.out.changes.len() as u32));
     }
 
-    /// Moves what was noted into `into` (appending), leaving this journal empty.
+    /// Ticks noted and not handed over yet.
+    pub fn pending(&self) -> usize {
+        self.out.ticks.len()
+    }
+
+    /// Moves what was noted into `into` (appending), leaving this journal empty. When `into`
+    /// would hold more than [`MAX_TICKS`] (the editor has not taken it for that long), it is
+    /// replaced by a base of the image as of the last tick noted.
     pub fn hand_over(&mut self, into: &mut Journal) {
+        if into.ticks.len() + self.out.ticks.len() > MAX_TICKS {
+            self.out.base = Some((self.last, self.prev.clone()));
+            self.out.ticks.clear();
+            self.out.changes.clear();
+        }
         if let Some(base) = self.out.base.take() {
             // A new base makes whatever the editor had not taken yet irrelevant.
             into.base = Some(base);
@@ -113,5 +133,26 @@ mod tests {
         j.hand_over(&mut out);
         assert_eq!(out.each_tick().last().unwrap(), (5, &[(1, 6)][..]));
         assert!(!out.is_empty());
+    }
+
+    #[test]
+    fn an_editor_that_takes_nothing_for_long_gets_a_base_not_an_endless_journal() {
+        let mut j = Journaler::new(2);
+        let mut out = Journal::default();
+        j.note(0, &[0, 0]);
+        for t in 1..=(MAX_TICKS as u64 + 10) {
+            j.note(t, &[t as u8, 1]);
+            if j.pending() >= HAND_OVER_TICKS {
+                j.hand_over(&mut out);
+            }
+        }
+        j.hand_over(&mut out);
+        assert!(out.ticks.len() <= MAX_TICKS, "{}", out.ticks.len());
+        let (t, image) = out.base.clone().expect("a fresh base");
+        assert!(t > 0, "the base is a recent tick");
+        assert_eq!(image[1], 1);
+        // What follows the base carries on from it.
+        let last = out.each_tick().last().map_or(t, |(t, _)| t);
+        assert_eq!(last, MAX_TICKS as u64 + 10);
     }
 }

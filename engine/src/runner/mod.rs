@@ -279,6 +279,12 @@ impl Worker {
         (self.on_tick)(&self.machine);
         self.journaler
             .note(self.machine.plc().ticks(), self.machine.plc().image());
+        if self.journaler.pending() >= journal::HAND_OVER_TICKS {
+            // A quiet image at full speed publishes rarely: hand the ticks over now, so the
+            // machine thread's own buffer stays small (the editor takes them at its next look).
+            let mut s = self.shared.lock();
+            self.journaler.hand_over(&mut s.journal);
+        }
         let t = self.machine.plc().ticks();
         let mut k = 0;
         while k < self.releases.len() {

@@ -164,21 +164,15 @@ impl LadderApp {
             let command = match (real, text.trim().parse::<f64>()) {
                 (true, Ok(v)) => Some(MachineCommand::WriteReal(a, v as f32)),
                 (false, _) => {
-                    super::watch::parse_value(&text, super::super::settings::NumFormat::Dec)
-                        .or_else(|| {
-                            super::watch::parse_value(&text, super::super::settings::NumFormat::Bin)
-                        })
-                        .map(|v| {
-                            let bytes = u32::from(a.area.element_bytes());
-                            MachineCommand::Write(
-                                Target {
-                                    address: a,
-                                    bytes,
-                                    explicit: false,
-                                },
-                                v as i64,
-                            )
-                        })
+                    // The K page is shown in binary, so it is read in binary first.
+                    let format = if tab == DataTab::K {
+                        super::super::settings::NumFormat::Bin
+                    } else {
+                        super::super::settings::NumFormat::Dec
+                    };
+                    super::watch::parse_value(&text, format)
+                        .filter(|v| tab != DataTab::K || (0.0..=255.0).contains(v))
+                        .map(|v| MachineCommand::Write(Target::whole(a), v as i64))
                 }
                 _ => None,
             };

@@ -151,16 +151,26 @@ impl LadderApp {
         (!lines.is_empty()).then(|| lines.join("\n"))
     }
 
-    fn operand_line(&self, p: &Project, o: &Operand) -> Option<String> {
-        let lang = self.settings.lang;
-        let a = address_of(p, o)?;
+    /// An address named as the tooltips, the watch table and the signal page name it:
+    /// `ADDRESS  SYMBOL  — comment` (the comment in the UI language), what the project has.
+    pub(crate) fn address_note(&self, a: ladder_engine::Address) -> String {
         let mut line = a.to_string();
+        let Some(p) = self.doc.as_ref().map(|d| d.project()) else {
+            return line;
+        };
         if let Some(sym) = p.symbol_of(a) {
             line.push_str(&format!("  {sym}"));
         }
-        if let Some(c) = p.comment_of(a, lang.code()) {
+        if let Some(c) = p.comment_of(a, self.settings.lang.code()) {
             line.push_str(&format!("  — {c}"));
         }
+        line
+    }
+
+    fn operand_line(&self, p: &Project, o: &Operand) -> Option<String> {
+        let lang = self.settings.lang;
+        let a = address_of(p, o)?;
+        let mut line = self.address_note(a);
         if let Some(s) = self.online.session.as_ref() {
             let bytes = u32::from(a.area.element_bytes()).max(1);
             let v = s.source().value(a, bytes);

@@ -185,9 +185,15 @@ impl LadderApp {
                     } else {
                         "Feed hold"
                     };
-                    if let Some(a) = self.panel_key(name) {
-                        self.send_request(Request::Press(target(a)));
-                        self.send_request(Request::Release(target(a)));
+                    match self.panel_key(name) {
+                        Some(a) => {
+                            self.send_request(Request::Press(target(a)));
+                            self.send_request(Request::Release(target(a)));
+                        }
+                        None => {
+                            let m = format!("{name}: {}", Msg::NoPanelKey.text(lang));
+                            self.say(m, true);
+                        }
                     }
                     continue;
                 }

@@ -161,13 +161,15 @@ impl super::super::LadderApp {
                 super::OnlineTab::Signals => {
                     let p = &self.online.signals;
                     let bytes = u32::from(p.area.element_bytes());
-                    let from = ladder_engine::Address {
-                        area: p.area,
-                        number: p.from,
-                        bit: None,
-                    };
-                    let start = layout.loc(from, false).off;
-                    let n = u32::from(p.to.saturating_sub(p.from)) + 1;
+                    let (lo, hi) = self
+                        .doc
+                        .as_ref()
+                        .map_or((0, 0), |d| d.project().profile().range(p.area));
+                    let from = p.from.clamp(lo, hi);
+                    let to = p.to.clamp(lo, hi).max(from);
+                    let first = ladder_engine::Address::byte(p.area, from);
+                    let start = layout.loc(first, false).off;
+                    let n = u32::from(to - from) + 1;
                     shown
                         .bytes
                         .extend((start..start + n * bytes).map(|o| (o, 0xFF)));
@@ -176,11 +178,15 @@ impl super::super::LadderApp {
                     if let Some(doc) = self.doc.as_ref() {
                         for r in self.watch_rows() {
                             if let Ok(t) = super::watch::resolve(doc.project(), &r.text) {
+                                // A bit row watches its bit only.
                                 let loc = layout.loc(t.address, false);
                                 let n = t.bytes.max(1);
-                                shown
-                                    .bytes
-                                    .extend((loc.off..loc.off + n).map(|o| (o, 0xFF)));
+                                match t.address.bit {
+                                    Some(b) => shown.bytes.push((loc.off, 1 << b)),
+                                    None => shown
+                                        .bytes
+                                        .extend((loc.off..loc.off + n).map(|o| (o, 0xFF))),
+                                }
                             }
                         }
                     }

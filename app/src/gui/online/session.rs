@@ -18,6 +18,8 @@ use std::sync::Arc;
 
 /// Virtual seconds the scan recorder keeps by default.
 pub const RECORD_SECONDS: u64 = 60;
+/// The ticks the scan recorder keeps.
+pub const RECORD_TICKS: u64 = RECORD_SECONDS * 1000 / ladder_engine::vm::TICK_MS;
 
 /// A program the machine runs (or is about to): what was compiled, and from which drawing.
 pub struct Running {
@@ -157,8 +159,7 @@ impl Session {
             .map_err(|e| StartError::Other(e.to_string()))?;
         let running = running(project, program, machine.plc(), 0);
         let size = running.layout.size as usize;
-        let ticks = RECORD_SECONDS * 1000 / ladder_engine::vm::TICK_MS;
-        let recorder = Recorder::new(size, ticks);
+        let recorder = Recorder::new(size, RECORD_TICKS);
         let runner = Runner::start(machine, Box::new(|_| {}), wake)
             .map_err(|e| StartError::Other(e.to_string()))?;
         Ok(Session {

@@ -31,14 +31,14 @@ pub const AREAS: [Area; 12] = [
 pub struct SignalPage {
     /// The area shown.
     pub area: Area,
-    /// The first and last address number shown.
+    /// The first address number shown.
     pub from: u16,
     /// The last address number shown.
     pub to: u16,
     /// A click on a bit forces it (or releases its force) instead of writing it once.
     pub click_forces: bool,
-    /// Values being typed, by address number.
-    pub typed: std::collections::BTreeMap<u16, String>,
+    /// Values being typed, by address.
+    pub typed: std::collections::BTreeMap<Address, String>,
 }
 
 impl Default for SignalPage {
@@ -82,6 +82,7 @@ impl LadderApp {
                             let (lo, _) = profile.range(a);
                             page.from = lo;
                             page.to = lo.saturating_add(31);
+                            page.typed.clear();
                         }
                     }
                 })
@@ -98,10 +99,8 @@ impl LadderApp {
         });
         ui.weak(t(Msg::SignalHint));
         let (lo, hi) = profile.range(page.area);
-        let (from, to) = (
-            page.from.clamp(lo, hi),
-            page.to.clamp(lo, hi).max(page.from),
-        );
+        let from = page.from.clamp(lo, hi);
+        let to = page.to.clamp(lo, hi).max(from);
         let area = page.area;
         let mut acts = Vec::new();
         let numbers: Vec<u16> = (from..=to).collect();
@@ -121,15 +120,10 @@ impl LadderApp {
                     });
             });
         for act in acts {
-            let target = |a: Address| Target {
-                address: a,
-                bytes: u32::from(a.area.element_bytes()),
-                explicit: false,
-            };
             self.send_command(match act {
                 Act::Invert(a) => MachineCommand::Invert(a),
                 Act::ToggleForce(a) => MachineCommand::ToggleForce(a),
-                Act::Write(a, v) => MachineCommand::Write(target(a), v),
+                Act::Write(a, v) => MachineCommand::Write(Target::whole(a), v),
                 Act::Force(a, v) => MachineCommand::Force(a, v),
             });
         }
@@ -199,7 +193,7 @@ impl LadderApp {
         }
         // A value typed for the whole byte or value: Enter (or Write) writes it once, Force
         // holds it.
-        let typed = self.online.signals.typed.entry(n).or_default();
+        let typed = self.online.signals.typed.entry(whole).or_default();
         let r = ui
             .add(egui::TextEdit::singleline(typed).desired_width(70.0))
             .labelled_by(name);
@@ -223,17 +217,7 @@ impl LadderApp {
     /// An address with its symbol and comment, for a hover.
     fn describe(&self, a: Address) -> String {
         let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_ref() else {
-            return a.to_string();
-        };
-        let p = doc.project();
-        let mut s = a.to_string();
-        if let Some(sym) = p.symbol_of(a) {
-            s.push_str(&format!("  {sym}"));
-        }
-        if let Some(c) = p.comment_of(a, lang.code()) {
-            s.push_str(&format!("  — {c}"));
-        }
+        let mut s = self.address_note(a);
         if self.is_forced(a) {
             s.push_str(&format!("  ({})", Msg::Forced.text(lang)));
         }

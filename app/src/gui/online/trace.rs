@@ -5,7 +5,7 @@
 use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::settings::{TriggerSetup, TriggerWhen};
-use super::session::Session;
+use super::session::{RECORD_TICKS, Session};
 use super::trace_view::{TraceData, TraceEvent, TraceSignal, trace_csv, trace_ui};
 use super::watch::resolve;
 use ladder_engine::machine::Target;
@@ -206,19 +206,25 @@ impl LadderApp {
             };
         }
         if let TriggerState::Fired { at } = self.online.trace.trigger
-            && newest >= at + setup.post
+            && newest >= at.saturating_add(setup.post)
         {
             let mut signals = self.traced();
             if !signals.iter().any(|(_, t)| *t == target) {
                 signals.insert(0, (target.text(), target));
             }
-            let data = self.trace_window(&signals, at.saturating_sub(setup.pre), at + setup.post);
+            let data = self.trace_window(
+                &signals,
+                at.saturating_sub(setup.pre),
+                at.saturating_add(setup.post),
+            );
             self.online.trace.capture = Some(Capture { at, data });
             self.online.trace.show_capture = true;
             self.online.trace.trigger = TriggerState::Idle;
         }
     }
 
+    /// The trace page: the trigger's row, then the chart of what is shown (the capture, the
+    /// paused copy or the record).
     pub(super) fn trace_page_ui(&mut self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
         if !self.watch_rows().iter().any(|r| r.traced) {
@@ -233,11 +239,17 @@ impl LadderApp {
                     self.online.trace.frozen = on.then(|| self.trace_data());
                 }
                 TraceEvent::Remove(i) => {
+                    // A lane is named by its address; its row may be typed as a symbol or in
+                    // lower case: rows are matched by what they name.
                     let key = self.watch_key();
                     let name = data.signals.get(i).map(|s| s.name.clone());
+                    let Some(doc) = self.doc.as_ref() else {
+                        continue;
+                    };
+                    let names = |text: &str| resolve(doc.project(), text).ok().map(|t| t.text());
                     if let (Some(list), Some(name)) = (self.settings.watches.get_mut(&key), name) {
                         for r in list.iter_mut() {
-                            if r.traced && r.text == name {
+                            if r.traced && names(&r.text).as_deref() == Some(name.as_str()) {
                                 r.traced = false;
                             }
                         }
@@ -286,11 +298,13 @@ impl LadderApp {
                 ui.add(egui::DragValue::new(&mut setup.value))
                     .labelled_by(name);
             }
+            // Before and after together fit the recorder's window.
+            let window = RECORD_TICKS - 1;
             let pre = ui.label(t(Msg::TriggerPre)).id;
-            ui.add(egui::DragValue::new(&mut setup.pre).range(0..=7000))
+            ui.add(egui::DragValue::new(&mut setup.pre).range(0..=window))
                 .labelled_by(pre);
             let post = ui.label(t(Msg::TriggerPost)).id;
-            ui.add(egui::DragValue::new(&mut setup.post).range(0..=7000))
+            ui.add(egui::DragValue::new(&mut setup.post).range(0..=window - setup.pre.min(window)))
                 .labelled_by(post);
             let (label, status) = match state {
                 TriggerState::Idle => (Msg::TriggerArm, None),

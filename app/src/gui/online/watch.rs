@@ -198,16 +198,11 @@ impl LadderApp {
 
     /// A row's symbol and comment (in the UI language), from the project.
     fn row_note(&self, target: Option<Target>) -> String {
-        let (Some(doc), Some(t)) = (self.doc.as_ref(), target) else {
-            return String::new();
-        };
-        let p = doc.project();
-        let symbol = p.symbol_of(t.address).unwrap_or("");
-        match p.comment_of(t.address, self.settings.lang.code()) {
-            Some(c) if symbol.is_empty() => c.to_string(),
-            Some(c) => format!("{symbol} — {c}"),
-            None => symbol.to_string(),
-        }
+        // The address is in the row's first column: what follows it here.
+        target.map_or_else(String::new, |t| {
+            let note = self.address_note(t.address);
+            note[t.address.to_string().len()..].trim_start().to_string()
+        })
     }
 
     /// A timer's unit and preset (` ms / 1000 ms`), a counter's preset (` / 5`), from the
@@ -264,7 +259,9 @@ impl LadderApp {
         Some((v, row.format.show(v, t.bytes)))
     }
 
-    pub(super) fn watch_ui(&mut self, ui: &mut egui::Ui) {
+    /// Above the table: the field that adds a row (and why a text was refused), and the
+    /// buttons that write or force every prepared value in one tick.
+    fn watch_bars_ui(&mut self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
         let t = |m: Msg| m.text(lang);
         let scrubbing = self.scrubbing();
@@ -315,6 +312,15 @@ impl LadderApp {
             }
             ui.weak(format!("{} {}", prepared.len(), t(Msg::WatchPrepared)));
         });
+    }
+
+    /// The watch table: the bar that adds a row, the prepared values' buttons, then a row per
+    /// watched address (format, value, new value with Write, Force and Release, Trace).
+    pub(super) fn watch_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let t = |m: Msg| m.text(lang);
+        let scrubbing = self.scrubbing();
+        self.watch_bars_ui(ui);
         let key = self.watch_key();
         let rows: Vec<WatchRow> = self.watch_rows().to_vec();
         self.online.watch.values.resize(rows.len(), String::new());
