@@ -455,9 +455,14 @@ fn the_view_follows_the_cursor_after_an_insert_and_a_paste() {
 }
 
 #[test]
-fn each_block_opens_again_where_it_was_left() {
+fn each_block_opens_again_where_it_was_left_cursor_included() {
     let (mut h, path) = stress_at(120);
     h.run();
+    // The cursor one column along, as a user leaves it.
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    let cursor = h.state().edit.cursor;
+    assert_eq!((cursor.network, cursor.col), (119, 1));
     let top = h.state().settings.tops[&path]["LEVEL2"];
     assert!(
         (100..=119).contains(&top),
@@ -482,6 +487,11 @@ fn each_block_opens_again_where_it_was_left() {
     assert!(
         shown.top() >= 0.0 && shown.top() < 200.0,
         "network {top} is at the top again: {shown:?}"
+    );
+    assert_eq!(
+        h.state().edit.cursor,
+        cursor,
+        "the cursor came back with the view"
     );
 }
 

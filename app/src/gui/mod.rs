@@ -417,6 +417,18 @@ impl LadderApp {
                         .get(path)
                         .and_then(|t| t.get(&label))
                         .copied();
+                    // The cursor comes back with the view (clamped if the block shrank).
+                    if let Some(&[network, row, col]) =
+                        self.settings.cursors.get(path).and_then(|c| c.get(&label))
+                        && let Some(net) = block.networks.get(network)
+                    {
+                        self.edit.cursor = model::CellRef {
+                            block: b,
+                            network,
+                            row: row.min(net.rows.len().saturating_sub(1)),
+                            col: col.min(doc.project().ladder.width),
+                        };
+                    }
                 }
                 if self.settings.fit_width {
                     let columns = doc.project().ladder.width;
@@ -445,6 +457,7 @@ impl LadderApp {
                     self.zoom_step(up, Some(at));
                 }
                 self.remember_top(&label, events.visible.start);
+                self.remember_cursor(&label, b);
                 self.pointer_events(b, events);
             }
             View::RefIndex | View::RefBits | View::RefBytes => self.xref_view_ui(ui),

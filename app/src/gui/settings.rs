@@ -239,6 +239,10 @@ pub struct Settings {
     /// project opens again where each of its blocks was being read. Networks, not pixels,
     /// so the place survives another zoom or comments shown.
     pub tops: std::collections::BTreeMap<PathBuf, std::collections::BTreeMap<String, usize>>,
+    /// The cursor (network, row, column) in each block of each project file, so the cursor
+    /// comes back with the view.
+    pub cursors:
+        std::collections::BTreeMap<PathBuf, std::collections::BTreeMap<String, [usize; 3]>>,
 }
 
 impl Default for Settings {
@@ -260,6 +264,7 @@ impl Default for Settings {
             fit_width: false,
             online_window: false,
             tops: Default::default(),
+            cursors: Default::default(),
             show_toolbar: true,
             show_output: true,
             show_tree: true,
