@@ -339,3 +339,42 @@ fn without_a_system_dialog_save_as_asks_in_the_window_and_saves_under_the_typed_
     );
     assert!(first.exists(), "the first file is left as it was");
 }
+
+#[test]
+fn each_project_starts_with_its_own_output() {
+    use ladder_studio::gui::command::Command;
+    use ladder_studio::gui::files::Action;
+    let dir = tempfile_dir();
+    // A project that does not compile: its red summary in the output window.
+    let bad = ladder_engine::il::import("LEVEL2\nNETWORK\nLD X0010.0\nOUT Y0010.0\n")
+        .project
+        .unwrap();
+    let mut bad = bad;
+    if let ladder_engine::model::Cell::Contact { operand, .. } =
+        &mut bad.ladder.blocks[1].networks[0].rows[0].cells[0]
+    {
+        *operand = ladder_engine::model::Operand::parse("NO_SUCH_SYMBOL").unwrap();
+    }
+    let bad_path = dir.join("bad.ldp");
+    ladder_engine::file::save(&bad, &bad_path).unwrap();
+    let good_path = dir.join("good.ldp");
+    ladder_engine::file::save(&ladder_engine::model::Project::default(), &good_path).unwrap();
+    let mut h = harness(Some(bad_path), Lang::En);
+    h.run();
+    h.state_mut().ask(Command::Compile);
+    h.run();
+    assert!(
+        h.state().output.iter().any(|l| l.error),
+        "the errors are listed"
+    );
+    h.state_mut().perform(Action::Open(good_path));
+    h.run();
+    assert!(
+        h.state()
+            .output
+            .iter()
+            .all(|l| !l.error && !l.text.contains("NO_SUCH_SYMBOL")),
+        "nothing of the other project: {:?}",
+        h.state().output.iter().map(|l| &l.text).collect::<Vec<_>>()
+    );
+}

@@ -135,17 +135,13 @@ impl LadderApp {
         self.replace = None;
         self.tables = Default::default();
         self.online.machine = Default::default();
-        // Nothing of the old project stays pointed at: cursor, selection, drag, tabs, and
-        // output lines whose targets were its cells. (The clipboard stays: copying between
-        // projects is how networks move from one machine's ladder to another's.)
+        // Nothing of the old project stays: cursor, selection, drag, tabs, and its output —
+        // each document starts with its own (what opening it says comes after). The clipboard
+        // stays: copying between projects is how networks move from one machine's ladder to
+        // another's.
         self.edit.start_over();
         self.tabs.clear();
-        if self.doc.is_none() {
-            // Closed: the old project's messages go with it.
-            self.output.clear();
-        } else {
-            self.output.retain(|l| l.target.is_none());
-        }
+        self.output.clear();
     }
 
     pub(super) fn start_dialog(&mut self, kind: DialogKind) {
