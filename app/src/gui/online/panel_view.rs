@@ -339,10 +339,17 @@ pub fn panel_ui(
     state.cell = CELL * scale;
     let grid = ui.scope(|ui| {
         scale_style(ui.style_mut(), scale);
+        let mut d = Drawing {
+            panel,
+            memory,
+            lang,
+            events: &mut events,
+            drawn: &mut drawn,
+        };
         if wrap {
-            panel_rows(ui, panel, memory, lang, state, &mut events, &mut drawn);
+            panel_rows(ui, &mut d, state);
         } else {
-            panel_grid(ui, panel, memory, lang, state, &mut events, &mut drawn);
+            panel_grid(ui, &mut d, state);
         }
     });
     // The full-size width is measured on the grid only (a wrapped panel is as wide as its
@@ -381,35 +388,62 @@ fn scale_style(style: &mut egui::Style, scale: f32) {
     s.item_spacing *= scale;
 }
 
-/// The panel's items on their grid of rows and columns.
-fn panel_grid(
-    ui: &mut egui::Ui,
-    panel: &Panel,
-    memory: &dyn Fn(Address) -> i64,
+/// What drawing the panel's items needs besides the Ui and the view's state, and what it
+/// gives back (the events, the keys drawn).
+struct Drawing<'a> {
+    panel: &'a Panel,
+    memory: &'a dyn Fn(Address) -> i64,
     lang: Lang,
-    state: &mut PanelViewState,
-    events: &mut Vec<PanelEvent>,
-    drawn: &mut Vec<Address>,
-) {
-    let rows = panel.items.iter().map(|i| i.row).max().map_or(0, |r| r + 1);
-    let cols = panel.items.iter().map(|i| i.col).max().map_or(0, |c| c + 1);
+    events: &'a mut Vec<PanelEvent>,
+    drawn: &'a mut Vec<Address>,
+}
+
+impl Drawing<'_> {
+    /// Item `i`: its form button in the edit mode, else the item in operation.
+    fn item(&mut self, ui: &mut egui::Ui, state: &mut PanelViewState, i: usize) {
+        if state.editing {
+            edit_cell(ui, self.panel, i, self.lang, state);
+        } else {
+            let item = &self.panel.items[i];
+            operate_cell(ui, item, i, self.memory, self.lang, state, self.events);
+            self.drawn.extend(item.kind.input());
+        }
+    }
+
+    /// The number of rows the panel uses.
+    fn rows(&self) -> u8 {
+        self.panel
+            .items
+            .iter()
+            .map(|i| i.row)
+            .max()
+            .map_or(0, |r| r + 1)
+    }
+}
+
+/// The panel's items on their grid of rows and columns.
+fn panel_grid(ui: &mut egui::Ui, d: &mut Drawing<'_>, state: &mut PanelViewState) {
+    let cols = d
+        .panel
+        .items
+        .iter()
+        .map(|i| i.col)
+        .max()
+        .map_or(0, |c| c + 1);
     let gap = 6.0 * state.cell.x / CELL.x;
     egui::Grid::new("operator-panel")
         .spacing([gap, gap])
         .min_col_width(state.cell.x)
         .show(ui, |ui| {
-            for row in 0..rows {
+            for row in 0..d.rows() {
                 for col in 0..cols {
-                    match panel
+                    let at = d
+                        .panel
                         .items
                         .iter()
-                        .position(|i| (i.row, i.col) == (row, col))
-                    {
-                        Some(i) if state.editing => edit_cell(ui, panel, i, lang, state),
-                        Some(i) => {
-                            operate_cell(ui, &panel.items[i], i, memory, lang, state, events);
-                            drawn.extend(panel.items[i].kind.input());
-                        }
+                        .position(|i| (i.row, i.col) == (row, col));
+                    match at {
+                        Some(i) => d.item(ui, state, i),
                         None => {
                             ui.allocate_space(state.cell);
                         }
@@ -421,30 +455,16 @@ fn panel_grid(
 }
 
 /// The panel's rows one after another, each wrapping to the room there is.
-fn panel_rows(
-    ui: &mut egui::Ui,
-    panel: &Panel,
-    memory: &dyn Fn(Address) -> i64,
-    lang: Lang,
-    state: &mut PanelViewState,
-    events: &mut Vec<PanelEvent>,
-    drawn: &mut Vec<Address>,
-) {
+fn panel_rows(ui: &mut egui::Ui, d: &mut Drawing<'_>, state: &mut PanelViewState) {
     ui.set_max_width(ui.available_width());
-    let rows = panel.items.iter().map(|i| i.row).max().map_or(0, |r| r + 1);
-    for row in 0..rows {
-        let mut items: Vec<usize> = (0..panel.items.len())
-            .filter(|&i| panel.items[i].row == row)
+    for row in 0..d.rows() {
+        let mut items: Vec<usize> = (0..d.panel.items.len())
+            .filter(|&i| d.panel.items[i].row == row)
             .collect();
-        items.sort_by_key(|&i| panel.items[i].col);
+        items.sort_by_key(|&i| d.panel.items[i].col);
         ui.horizontal_wrapped(|ui| {
             for i in items {
-                if state.editing {
-                    edit_cell(ui, panel, i, lang, state);
-                } else {
-                    operate_cell(ui, &panel.items[i], i, memory, lang, state, events);
-                    drawn.extend(panel.items[i].kind.input());
-                }
+                d.item(ui, state, i);
             }
         });
     }

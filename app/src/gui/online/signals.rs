@@ -10,22 +10,6 @@ use super::super::theme;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::{Address, Area};
 
-/// The areas the page shows, in the order of its menu.
-pub const AREAS: [Area; 12] = [
-    Area::X,
-    Area::Y,
-    Area::F,
-    Area::G,
-    Area::R,
-    Area::A,
-    Area::K,
-    Area::T,
-    Area::C,
-    Area::D,
-    Area::Dt,
-    Area::Dc,
-];
-
 /// The page's own state.
 #[derive(Clone, Debug)]
 pub struct SignalPage {
@@ -74,7 +58,8 @@ impl LadderApp {
             egui::ComboBox::from_id_salt("signal-area")
                 .selected_text(page.area.letters())
                 .show_ui(ui, |ui| {
-                    for a in AREAS {
+                    // Every area with memory (labels and subprograms have none), in table order.
+                    for a in Area::ALL.into_iter().filter(|a| a.element_bytes() > 0) {
                         if ui
                             .selectable_value(&mut page.area, a, a.letters())
                             .changed()
