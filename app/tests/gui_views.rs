@@ -370,21 +370,6 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
     );
 }
 
-/// The stress project on level 2, in a window, with the cursor sent to network `n` (1-based).
-fn stress_at(n: usize) -> (Harness<'static, LadderApp>, PathBuf) {
-    let path = PathBuf::from(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../projects/stress-5000.ldp"
-    ));
-    let mut h = harness(Some(path.clone()), Lang::En);
-    h.run();
-    on_level2(&mut h);
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
-    enter_operand(&mut h, &format!("{n} 1"));
-    h.run();
-    (h, ladder_studio::gui::settings::canonical(&path))
-}
-
 #[test]
 fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
     let (mut h, _) = stress_at(40);

@@ -445,7 +445,7 @@ impl LadderApp {
                     cursor,
                     selection,
                     document: doc.serial,
-                    anchor: self.edit.anchor.take(),
+                    anchor: self.edit.next_anchor(),
                     follow,
                     element_comments: self
                         .settings

@@ -456,7 +456,7 @@ impl LadderApp {
                 .flatten()
                 .map(|r| r.center())
         });
-        self.edit.anchor = point.and_then(|p| g.anchor_at(p));
+        self.edit.anchor = point.and_then(|p| g.anchor_at(p)).map(|a| (a, 2));
         self.settings.zoom = zoom;
     }
 

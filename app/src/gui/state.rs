@@ -35,8 +35,10 @@ pub struct EditState {
     pub geometry: Geometry,
     /// The last text searched for (Ctrl+F offers it again, to find the next match).
     pub last_find: String,
-    /// A ladder point to keep in place at the next frame: the zoom has just changed.
-    pub anchor: Option<super::ladder_view::Anchor>,
+    /// A ladder point to keep in place, and for how many more frames: the zoom has just
+    /// changed. It is applied twice because the scroll area bounds an offset by the content
+    /// size of the frame before, which is the old zoom's on the first frame.
+    pub anchor: Option<(super::ladder_view::Anchor, u8)>,
     /// The cursor and the document's change count the view last followed: when either
     /// differs, the view brings the cursor into sight.
     pub followed: Option<(Cursor, u64, u64)>,
@@ -65,6 +67,17 @@ impl Default for EditState {
 }
 
 impl EditState {
+    /// The ladder point to keep in place this frame, if the zoom changed a frame or two ago.
+    pub fn next_anchor(&mut self) -> Option<super::ladder_view::Anchor> {
+        let (a, left) = self.anchor.as_mut()?;
+        let a = *a;
+        *left = left.saturating_sub(1);
+        if *left == 0 {
+            self.anchor = None;
+        }
+        Some(a)
+    }
+
     /// Another project: nothing of the old one stays pointed at (cursor, selection, drag,
     /// saved cursors, search). The clipboard and the pen stay: copying between projects is
     /// how networks move from one machine's ladder to another's.

@@ -231,3 +231,18 @@ pub fn fill(h: &mut Harness<'static, LadderApp>, label: &str, text: &str) {
         .type_text(text);
     h.run();
 }
+
+/// The stress project on level 2, in a window, with the cursor sent to network `n` (1-based).
+pub fn stress_at(n: usize) -> (Harness<'static, LadderApp>, PathBuf) {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/stress-5000.ldp"
+    ));
+    let mut h = harness(Some(path.clone()), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, &format!("{n} 1"));
+    h.run();
+    (h, ladder_studio::gui::settings::canonical(&path))
+}

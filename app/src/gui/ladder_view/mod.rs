@@ -434,13 +434,23 @@ pub fn block_ui(
     let mut area = egui::ScrollArea::both()
         .id_salt(("ladder", opts.document, block))
         .auto_shrink([false, false]);
+    // Past the last network there is room for what the view shows: an anchored zoom at the
+    // end of a block may need the last network higher than the block's end allows, and the
+    // room stays while the view is there (it shrinks as the view scrolls back up).
+    let mut room = 0.0f32;
+    // No spring past the edges: the first frame of a zoom sets an offset beyond the old
+    // content's end, which a rubber band would take for an overscroll and pull back from.
+    ui.spacing_mut().scroll.kinetic.rubber_band = false;
     if let Some(a) = &opts.anchor {
-        let view_min = ui.available_rect_before_wrap().min;
-        if let Some(off) = scroll::offset_for(a, b, &placed, &m, zoom, comments, view_min) {
+        let view = ui.available_rect_before_wrap();
+        if let Some(off) = scroll::offset_for(a, b, &placed, &m, zoom, comments, view.min) {
             area = area.scroll_offset(off);
+            room = off.y + view.height();
+            ui.ctx().request_repaint();
         }
     }
     area.show_viewport(ui, |ui, viewport| {
+        let total = vec2(total.x, total.y.max(room).max(viewport.max.y));
         let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
         geometry.origin = rect.min;
         geometry.visible = Some(viewport.translate(rect.min.to_vec2()));
@@ -534,23 +544,7 @@ pub fn block_ui(
             ui.scroll_to_rect(cell.expand(m.row * 0.25), None);
         }
         if response.contains_pointer() {
-            let delta = ui.input(|i| i.zoom_delta());
-            if delta != 1.0 {
-                // Wheel notches arrive spread over frames: one step per 15 % of zoom.
-                let id = response.id.with("zoom");
-                let acc = ui.data_mut(|d| {
-                    let acc = d.get_temp_mut_or_default::<f32>(id);
-                    *acc += delta.ln();
-                    std::mem::take(acc)
-                });
-                let step = 1.15f32.ln();
-                let pos = ui.input(|i| i.pointer.hover_pos());
-                if acc.abs() >= step {
-                    events.zoom = pos.map(|p| (acc > 0.0, p));
-                } else {
-                    ui.data_mut(|d| d.insert_temp(id, acc));
-                }
-            }
+            events.zoom = wheel_zoom(ui, response.id.with("zoom"));
         }
         // Only the networks that intersect the visible part.
         let first = placed.partition_point(|p| p.top + p.height < viewport.min.y);
@@ -683,4 +677,29 @@ mod tests {
             "room for each line"
         );
     }
+}
+
+/// Ctrl+wheel over the view: one zoom step per wheel notch, in (`true`) or out, about the
+/// pointer. egui spreads a notch over several frames (about ln 1.22 of zoom in all); the step
+/// is taken once half a notch has come and the notch's tail then pays back the rest, so no
+/// remainder carries into the next notch and turns one notch into two steps.
+fn wheel_zoom(ui: &egui::Ui, id: egui::Id) -> Option<(bool, Pos2)> {
+    const NOTCH: f32 = 0.2;
+    let delta = ui.input(|i| i.zoom_delta());
+    if delta == 1.0 {
+        // The wheel has stopped: what is left of a gesture is dropped.
+        ui.data_mut(|d| d.remove::<f32>(id));
+        return None;
+    }
+    let acc = ui.data_mut(|d| {
+        let acc = d.get_temp_mut_or_default::<f32>(id);
+        *acc += delta.ln();
+        *acc
+    });
+    if acc.abs() < NOTCH / 2.0 {
+        return None;
+    }
+    ui.data_mut(|d| d.insert_temp(id, acc - NOTCH.copysign(acc)));
+    let pos = ui.input(|i| i.pointer.hover_pos())?;
+    Some((acc > 0.0, pos))
 }
