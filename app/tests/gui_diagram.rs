@@ -68,3 +68,124 @@ fn zoom_keeps_the_element_under_the_pointer_on_the_first_network() {
     h.run();
     zoom_keeps_the_cell_under_the_mouse(&mut h);
 }
+
+/// The bundled lathe project on level 2: symbols and element comments on most contacts.
+fn lathe() -> Harness<'static, LadderApp> {
+    let path = PathBuf::from(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../projects/lathe-988ta.ldp"
+    ));
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    on_level2(&mut h);
+    h
+}
+
+#[test]
+fn no_label_is_drawn_over_another_or_across_its_cell_in_any_display_mode() {
+    use ladder_studio::gui::command::DISPLAY_MODES;
+    let mut h = lathe();
+    h.key_press(egui::Key::F11);
+    h.run();
+    assert!(h.state().settings.show_element_comments);
+    for zoom in [75, 100, 150] {
+        for mode in DISPLAY_MODES {
+            h.state_mut().settings.zoom = zoom;
+            h.state_mut().settings.display = mode;
+            h.run();
+            h.run();
+            let g = h.state().edit.geometry.clone();
+            let labels: Vec<_> = g.labels.iter().filter(|(_, t)| !t.is_empty()).collect();
+            assert!(labels.len() > 20, "{mode:?}: {} labels", labels.len());
+            assert!(
+                labels.iter().any(|(r, _)| labels
+                    .iter()
+                    .any(|(q, _)| q.top() > r.bottom() && q.top() - r.bottom() < g.cell)),
+                "comments are drawn under the contacts"
+            );
+            for (i, (a, ta)) in labels.iter().enumerate() {
+                for (b, tb) in &labels[i + 1..] {
+                    assert!(
+                        !a.intersects(*b),
+                        "{mode:?} at {zoom} %: {ta:?} {a:?} overlaps {tb:?} {b:?}"
+                    );
+                }
+                // The label is inside one cell, clear of the cursor's 2 px outline.
+                let inside = (0..g.tops.len()).any(|n| {
+                    (0..g.rows[n].len()).any(|r| {
+                        (0..=g.width).any(|c| {
+                            g.cell_rect(n, r, c).is_some_and(|cell| {
+                                let cell = if c == g.width {
+                                    cell.with_max_x(cell.max.x + g.cell)
+                                } else {
+                                    cell
+                                };
+                                cell.shrink(2.0).contains_rect(*a)
+                            })
+                        })
+                    })
+                });
+                assert!(
+                    inside,
+                    "{mode:?} at {zoom} %: {ta:?} {a:?} crosses its cell's edge"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
+    let mut h = lathe();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, "5 1");
+    // A new network with a lone contact: it leads to no coil, an error.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
+    h.run();
+    let wrong = h.state().edit.cursor;
+    h.key_press(egui::Key::F1);
+    enter_operand(&mut h, "X0.0");
+    h.run();
+    // Before the first compile nothing is marked: a drawing in progress is not an error.
+    assert!(h.state().edit.geometry.error_marks.is_empty());
+    h.key_press(egui::Key::F9);
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
+    h.run();
+    h.key_press(egui::Key::F12);
+    h.run();
+    h.run();
+    let c = h.state().edit.cursor;
+    assert_eq!(
+        (c.network, c.row, c.col),
+        (wrong.network, 0, 0),
+        "F12 went to it"
+    );
+    let g = h.state().edit.geometry.clone();
+    let cell = g.cell_rect(c.network, c.row, c.col).unwrap();
+    assert!(
+        g.error_marks.iter().any(|m| cell.contains_rect(*m)),
+        "the element carries the mark: {cell:?} in {:?}",
+        g.error_marks
+    );
+    assert!(
+        h.query_by_label_contains("1 errors, 0 warnings (F12)")
+            .is_some(),
+        "the status bar counts it"
+    );
+    // Shift+F12 from the first cell wraps round to the last mark: the same one.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F12);
+    h.run();
+    assert_eq!(h.state().edit.cursor.network, wrong.network);
+    // Fixed (the contact taken back), the mark goes without compiling again.
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    h.run();
+    assert!(h.state().edit.geometry.error_marks.is_empty());
+    assert!(
+        h.query_by_label_contains("1 errors, 0 warnings (F12)")
+            .is_none()
+    );
+}

@@ -212,6 +212,10 @@ commands! {
     ZoomFit => ZoomFit, COMMAND Num0;
     /// Compile into the output window.
     Compile => Compile, NONE F9;
+    /// The cursor to the next cell the last compile found wrong.
+    NextError => NextError, NONE F12;
+    /// The cursor to the previous cell the last compile found wrong.
+    PreviousError => PreviousError, SHIFT F12;
     /// A new subprogram.
     NewSub => NewSub;
     /// Compile and run the PLC with the simulated CNC (online).
@@ -261,6 +265,8 @@ commands! {
 /// The PLC menu: compiling and the online commands (`None` is a separator).
 pub const PLC_MENU: &[Option<Command>] = &[
     Some(Command::Compile),
+    Some(Command::NextError),
+    Some(Command::PreviousError),
     None,
     Some(Command::Run),
     Some(Command::Stop),

@@ -299,6 +299,8 @@ impl LadderApp {
             Command::ZoomOut => self.zoom_step(false, None),
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
+            Command::NextError => self.step_error(true),
+            Command::PreviousError => self.step_error(false),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::DetachOnline => {
                 self.settings.online_window = !self.settings.online_window;

@@ -6,9 +6,10 @@
 //! [`Document::begin_group`] … [`Document::end_group`] become one undo step) and counts the
 //! change, so views that cache what they derive from the project know to refresh.
 
+use ladder_engine::compiler::Origin;
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::file;
-use ladder_engine::model::{Change, EditError, History, Project};
+use ladder_engine::model::{CellRef, Change, EditError, History, Project};
 use std::path::{Path, PathBuf};
 
 /// The bundled sample, opened on first start.
@@ -50,6 +51,9 @@ pub struct Document {
     pub serial: u64,
     /// Counts changes, so views can cache what they derive from the project.
     pub generation: u64,
+    /// Compiled once by the user: from then on every change is checked again, so the
+    /// diagram's error marks follow the drawing.
+    checking: bool,
 }
 
 impl Document {
@@ -67,6 +71,7 @@ impl Document {
             read_only: false,
             replaying: false,
             recovered_from: None,
+            checking: false,
         }
     }
 
@@ -184,9 +189,44 @@ impl Document {
         Ok(())
     }
 
-    /// Compiles and keeps the result.
+    /// Compiles and keeps the result; from now on changes are checked as they are made.
     pub fn compile(&mut self) -> &Compiled {
+        self.checking = true;
         self.compiled.insert(compile(&self.project))
+    }
+
+    /// Compiles again after a change, once the user has compiled (a drawing in progress is
+    /// not marked with errors before it is first compiled).
+    pub fn recheck(&mut self) {
+        if self.checking && self.compiled.is_none() {
+            self.compiled = Some(compile(&self.project));
+        }
+    }
+
+    /// The last compile's diagnostics that point at a cell, in ladder order: where, and
+    /// whether it is an error (else a warning).
+    pub fn marks(&self) -> Vec<(CellRef, &ladder_engine::compiler::Diagnostic)> {
+        let Some(c) = &self.compiled else {
+            return Vec::new();
+        };
+        let mut marks: Vec<_> = c
+            .diagnostics
+            .iter()
+            .filter_map(|d| match d.location.origin {
+                Origin::Cell { row, col } => Some((
+                    CellRef {
+                        block: d.location.block,
+                        network: d.location.network,
+                        row: row as usize,
+                        col: col as usize,
+                    },
+                    d,
+                )),
+                _ => None,
+            })
+            .collect();
+        marks.sort_by_key(|m| m.0);
+        marks
     }
 
     /// The name shown in the title bar.

@@ -178,6 +178,11 @@ messages! {
     Exit => "退出", "Exit";
     Recent => "最近打开的文件", "Recent files";
     Compile => "编译", "Compile";
+    NextError => "下一个错误", "Next error";
+    PreviousError => "上一个错误", "Previous error";
+    NoMarks => "上次编译没有指向梯形图单元的错误或警告", "The last compile found no error or warning in a ladder cell";
+    ErrorsInDiagram => "错误", "errors";
+    WarningsInDiagram => "警告", "warnings";
     Language => "语言", "Language";
     Chinese => "中文", "中文 (Chinese)";
     English => "English (英文)", "English";

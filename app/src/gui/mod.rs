@@ -2,6 +2,7 @@
 //! a window; `main.rs` only starts it.
 
 pub mod command;
+pub mod diagnostics;
 pub mod dialogs;
 pub mod dispatch;
 pub mod document;
@@ -434,6 +435,17 @@ impl LadderApp {
                     let columns = doc.project().ladder.width;
                     self.settings.zoom = settings::fit_zoom(ui.available_width(), columns);
                 }
+                let errors: Vec<ladder_view::ErrorMark> = doc
+                    .marks()
+                    .into_iter()
+                    .filter(|(c, _)| c.block == b)
+                    .map(|(c, d)| ladder_view::ErrorMark {
+                        network: c.network,
+                        row: c.row,
+                        col: c.col,
+                        error: d.severity() == Severity::Error,
+                    })
+                    .collect();
                 let seen = (self.edit.cursor, doc.serial, doc.generation);
                 let follow = self.edit.followed != Some(seen);
                 self.edit.followed = Some(seen);
@@ -451,6 +463,7 @@ impl LadderApp {
                         .settings
                         .show_element_comments
                         .then_some(self.settings.lang.code()),
+                    errors: &errors,
                 };
                 let events = self.live_block_ui(ui, b, &opts);
                 if let Some((up, at)) = events.zoom {
@@ -579,6 +592,7 @@ impl LadderApp {
                 ui.separator();
                 ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
+            self.marks_status_ui(ui);
             self.online_status_ui(ui);
             ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
@@ -591,6 +605,9 @@ impl eframe::App for LadderApp {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
         self.clamp_ui_state();
+        if let Some(doc) = self.doc.as_mut() {
+            doc.recheck();
+        }
         self.files.dialogs.show(&ctx, self.settings.lang);
         self.poll_dialogs();
         self.dropped_files(&ctx);

@@ -6,7 +6,7 @@ mod network;
 mod scroll;
 
 pub use network::{LiveNetwork, address_of};
-use network::{Style, cursor_ui, network_ui, selection_ui};
+use network::{Style, cursor_ui, error_mark_ui, network_ui, selection_ui};
 pub use scroll::Anchor;
 
 use super::settings::{DisplayMode, NumFormat};
@@ -53,6 +53,9 @@ fn right_type(project: &Project, o: &Operand, place: Place, operands: &[Operand]
 /// The space under a network's last row, at every zoom.
 pub const NETWORK_GAP: f32 = 8.0;
 
+/// Most lines of an element comment in the diagram: longer comments end with "…".
+pub const COMMENT_LINES: usize = 3;
+
 /// Sizes at a zoom.
 #[derive(Clone, Copy, Debug)]
 pub struct Metrics {
@@ -62,7 +65,7 @@ pub struct Metrics {
     pub row: f32,
     /// Width of the output column.
     pub output: f32,
-    /// Height of one operand line in a box.
+    /// Height of one operand line in a box, and of one label line.
     pub line: f32,
     /// Height of a network's header.
     pub header: f32,
@@ -70,31 +73,52 @@ pub struct Metrics {
     pub font: f32,
     /// Left of the left rail: row numbers, and where a click selects a whole row.
     pub margin: f32,
+    /// How far below a row's top its wire runs (contacts and coils sit on it).
+    pub mid: f32,
+    /// Half the height of a contact; a coil's radius is a little less.
+    pub symbol: f32,
+    /// Label lines above a contact or coil (1, or 2 for "address and symbol").
+    pub above: usize,
+    /// Label lines below it (the element comment's, when shown).
+    pub below: usize,
 }
 
+/// Room between a label and the row's edge or the symbol.
+const LABEL_PAD: f32 = 3.0;
+
 impl Metrics {
-    /// The sizes at `zoom` percent.
+    /// The sizes at `zoom` percent, with one label line above each contact.
     pub fn at(zoom: u16) -> Metrics {
+        Metrics::with_labels(zoom, DisplayMode::Address, false)
+    }
+
+    /// The sizes at `zoom` with room for the labels: one line above a contact (two for
+    /// "address and symbol"), and the element comment's lines under it when shown. Each
+    /// row holds its own labels, so no label reaches into the row above or below.
+    pub fn with_labels(zoom: u16, mode: DisplayMode, element_comments: bool) -> Metrics {
         let z = f32::from(zoom) / 100.0;
+        // Whole pixels: text rows are laid out on the pixel grid.
+        let line = (14.0 * z).ceil();
+        let symbol = 44.0 * z * 0.22;
+        let above = if mode == DisplayMode::Both { 2 } else { 1 };
+        let below = if element_comments { COMMENT_LINES } else { 0 };
+        let top = LABEL_PAD + above as f32 * line + LABEL_PAD + symbol;
+        let bottom = symbol + LABEL_PAD + below as f32 * line + LABEL_PAD;
+        let row = (44.0 * z).max(top + bottom);
         Metrics {
             cell: 84.0 * z,
-            row: 44.0 * z,
+            row,
             output: 150.0 * z,
-            line: 14.0 * z,
+            line,
             header: 22.0 * z,
             font: 11.0 * z,
             margin: 26.0 * z,
+            // What is left over goes half above, half below: the symbol stays central.
+            mid: top + (row - top - bottom) * 0.5,
+            symbol,
+            above,
+            below,
         }
-    }
-
-    /// The sizes at `zoom` with room for the labels: "address and symbol" writes two lines
-    /// above a contact, element comments one line under it. The row grows evenly, so
-    /// contacts stay on the row's middle line and wires stay straight.
-    pub fn with_labels(zoom: u16, mode: DisplayMode, element_comments: bool) -> Metrics {
-        let mut m = Metrics::at(zoom);
-        let more = u8::from(mode == DisplayMode::Both).max(u8::from(element_comments));
-        m.row += f32::from(more) * 2.0 * m.line;
-        m
     }
 
     /// Height of a row: function boxes grow with their operands.
@@ -195,6 +219,8 @@ pub struct Geometry {
     /// Every contact and coil label drawn (operand lines and element comments): where, and
     /// the text as shown, ellipsis included.
     pub labels: Vec<(Rect, String)>,
+    /// Every cell drawn with an error mark (frame) last frame.
+    pub error_marks: Vec<Rect>,
     /// The part of the ladder on screen, in screen coordinates.
     pub visible: Option<Rect>,
 }
@@ -213,9 +239,22 @@ impl Geometry {
     }
 }
 
+/// A cell the last compile found wrong, in the block shown.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ErrorMark {
+    /// The network.
+    pub network: usize,
+    /// The row.
+    pub row: usize,
+    /// The column (the output column is the ladder's width).
+    pub col: usize,
+    /// An error (else a warning).
+    pub error: bool,
+}
+
 /// How a block is shown.
 #[derive(Clone, Copy, Debug)]
-pub struct ViewOptions {
+pub struct ViewOptions<'a> {
     /// Zoom in percent.
     pub zoom: u16,
     /// Operand display.
@@ -237,6 +276,8 @@ pub struct ViewOptions {
     pub follow: bool,
     /// Element comments under contacts and coils, in this language (`zh`, `en`).
     pub element_comments: Option<&'static str>,
+    /// The cells of this block the last compile found wrong.
+    pub errors: &'a [ErrorMark],
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,
@@ -402,7 +443,7 @@ pub fn block_ui(
     ui: &mut egui::Ui,
     project: &Project,
     block: usize,
-    opts: &ViewOptions,
+    opts: &ViewOptions<'_>,
     jump_to: &mut Option<usize>,
     geometry: &mut Geometry,
     live: Option<&Live<'_>>,
@@ -460,6 +501,7 @@ pub fn block_ui(
         geometry.margin = m.margin;
         geometry.zoom = zoom;
         geometry.labels.clear();
+        geometry.error_marks.clear();
         geometry.tops = placed.iter().map(|p| p.top).collect();
         geometry.heights = placed.iter().map(|p| p.height).collect();
         geometry.rows = b
@@ -519,7 +561,7 @@ pub fn block_ui(
                 .filter(|c| c.0 == target)
                 .and_then(|(n, r, c)| geometry.cell_rect(n, r, c));
             let left = cell.map_or(0.0, |cell| {
-                let pad = m.row * 0.25;
+                let pad = m.cell * 0.15;
                 let (a, b) = (cell.min.x - rect.min.x - pad, cell.max.x - rect.min.x + pad);
                 if a < viewport.min.x {
                     a
@@ -541,7 +583,7 @@ pub fn block_ui(
             && let Some(cell) = geometry.cell_rect(n, r, c)
         {
             // The least scrolling that shows the cell with a little room around it.
-            ui.scroll_to_rect(cell.expand(m.row * 0.25), None);
+            ui.scroll_to_rect(cell.expand(m.cell * 0.15), None);
         }
         if response.contains_pointer() {
             events.zoom = wheel_zoom(ui, response.id.with("zoom"));
@@ -582,6 +624,7 @@ pub fn block_ui(
                 }
                 _ => None,
             };
+            let labels_before = geometry.labels.len();
             network_ui(
                 &painter,
                 project,
@@ -591,18 +634,17 @@ pub fn block_ui(
                 shown.as_ref(),
                 &mut geometry.labels,
             );
+            for mark in opts.errors.iter().filter(|e| e.network == i) {
+                let drawn = &geometry.labels[labels_before..];
+                let width = project.ladder.width;
+                let r = error_mark_ui(&painter, &b.networks[i], origin, mark, width, &style, drawn);
+                geometry.error_marks.push(r);
+            }
             if let Some((cn, cr, cc)) = opts.cursor
                 && cn == i
             {
-                cursor_ui(
-                    &painter,
-                    &b.networks[i],
-                    origin,
-                    cr,
-                    cc,
-                    project.ladder.width,
-                    &style,
-                );
+                let width = project.ladder.width;
+                cursor_ui(&painter, &b.networks[i], origin, (cr, cc), width, &style);
             }
             let sep = origin.y + p.height - 2.0;
             painter.line_segment(
@@ -614,6 +656,31 @@ pub fn block_ui(
         events
     })
     .inner
+}
+
+/// Ctrl+wheel over the view: one zoom step per wheel notch, in (`true`) or out, about the
+/// pointer. egui spreads a notch over several frames (about ln 1.22 of zoom in all); the step
+/// is taken once half a notch has come and the notch's tail then pays back the rest, so no
+/// remainder carries into the next notch and turns one notch into two steps.
+fn wheel_zoom(ui: &egui::Ui, id: egui::Id) -> Option<(bool, Pos2)> {
+    const NOTCH: f32 = 0.2;
+    let delta = ui.input(|i| i.zoom_delta());
+    if delta == 1.0 {
+        // The wheel has stopped: what is left of a gesture is dropped.
+        ui.data_mut(|d| d.remove::<f32>(id));
+        return None;
+    }
+    let acc = ui.data_mut(|d| {
+        let acc = d.get_temp_mut_or_default::<f32>(id);
+        *acc += delta.ln();
+        *acc
+    });
+    if acc.abs() < NOTCH / 2.0 {
+        return None;
+    }
+    ui.data_mut(|d| d.insert_temp(id, acc - NOTCH.copysign(acc)));
+    let pos = ui.input(|i| i.pointer.hover_pos())?;
+    Some((acc > 0.0, pos))
 }
 
 #[cfg(test)]
@@ -677,29 +744,4 @@ mod tests {
             "room for each line"
         );
     }
-}
-
-/// Ctrl+wheel over the view: one zoom step per wheel notch, in (`true`) or out, about the
-/// pointer. egui spreads a notch over several frames (about ln 1.22 of zoom in all); the step
-/// is taken once half a notch has come and the notch's tail then pays back the rest, so no
-/// remainder carries into the next notch and turns one notch into two steps.
-fn wheel_zoom(ui: &egui::Ui, id: egui::Id) -> Option<(bool, Pos2)> {
-    const NOTCH: f32 = 0.2;
-    let delta = ui.input(|i| i.zoom_delta());
-    if delta == 1.0 {
-        // The wheel has stopped: what is left of a gesture is dropped.
-        ui.data_mut(|d| d.remove::<f32>(id));
-        return None;
-    }
-    let acc = ui.data_mut(|d| {
-        let acc = d.get_temp_mut_or_default::<f32>(id);
-        *acc += delta.ln();
-        *acc
-    });
-    if acc.abs() < NOTCH / 2.0 {
-        return None;
-    }
-    ui.data_mut(|d| d.insert_temp(id, acc - NOTCH.copysign(acc)));
-    let pos = ui.input(|i| i.pointer.hover_pos())?;
-    Some((acc > 0.0, pos))
 }

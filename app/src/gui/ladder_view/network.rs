@@ -2,7 +2,7 @@
 //! what the online monitor shows (power flow, live values, forces, the "why?" marks), the
 //! selection and the cursor.
 
-use super::{Metrics, Place, operand_text, row_tops};
+use super::{COMMENT_LINES, ErrorMark, Metrics, Place, operand_text, row_tops};
 use crate::gui::settings::{DisplayMode, NumFormat};
 use crate::gui::theme::{self, SELECTED};
 use egui::{Align2, FontId, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
@@ -123,10 +123,11 @@ pub(super) fn network_ui(
         mode,
         font: &font,
         size: m.font,
+        line: m.line,
         comment: *element_comments,
     };
     for (r, row) in net.rows.iter().enumerate() {
-        let mid = row_tops[r] + m.row * 0.5;
+        let mid = row_tops[r] + m.mid;
         for (c, cell) in row.cells.iter().enumerate() {
             let x0 = col_x(c);
             let x1 = if c == width {
@@ -156,7 +157,7 @@ pub(super) fn network_ui(
                 Cell::Contact { negated, operand } => {
                     let cx = (x0 + x1) * 0.5;
                     let gap = m.cell * 0.12;
-                    let h = m.row * 0.22;
+                    let h = m.symbol;
                     if v.and_then(|v| v.closed) == Some(true) {
                         // A closed contact is filled, as on GSKLadder's monitor screen.
                         painter.rect_filled(
@@ -181,16 +182,17 @@ pub(super) fn network_ui(
                         operand,
                         Span {
                             centre: cx,
-                            left: x0 + 2.0,
-                            right: x1 - 2.0,
+                            left: x0 + 3.0,
+                            right: x1 - 3.0,
                         },
-                        (mid - h - 2.0, mid + h + 2.0),
+                        (mid - h - 3.0, mid + h + 3.0),
                         forced(operand).then_some(pos2(cx + gap + 2.0, mid + h)),
                     );
                 }
                 Cell::Coil { negated, operand } => {
                     let cx = x1 - m.output * 0.3;
-                    let rad = m.row * 0.2;
+                    let rad = m.symbol * 0.9;
+                    let h_coil = m.symbol;
                     if p_in {
                         painter.circle_filled(pos2(cx, mid), rad, theme::POWER_FILL);
                     }
@@ -213,10 +215,10 @@ pub(super) fn network_ui(
                         operand,
                         Span {
                             centre: (x0 + right_rail) * 0.5,
-                            left: x0 + 2.0,
+                            left: x0 + 3.0,
                             right: right_rail - 4.0,
                         },
-                        (mid - rad - 2.0, mid + rad + 2.0),
+                        (mid - h_coil - 3.0, mid + h_coil + 3.0),
                         forced(operand).then_some(pos2(cx + rad + 2.0, mid + rad)),
                     );
                 }
@@ -273,7 +275,7 @@ pub(super) fn network_ui(
             }
             // A vertical link at the left edge of this column, down to the next row.
             if c > 0 && row.links.get(c).copied().unwrap_or(false) && r + 1 < net.rows.len() {
-                let next_mid = row_tops[r + 1] + m.row * 0.5;
+                let next_mid = row_tops[r + 1] + m.mid;
                 // The link joins the nodes of both rows: powered when either side is.
                 let on = cell_view(r, c - 1).is_some_and(|v| v.power_out)
                     || cell_view(r + 1, c - 1).is_some_and(|v| v.power_out);
@@ -289,6 +291,8 @@ struct BitLabel<'a> {
     mode: DisplayMode,
     font: &'a FontId,
     size: f32,
+    /// The distance between two label lines.
+    line: f32,
     /// The language of the element comment written under it, when comments are shown.
     comment: Option<&'static str>,
 }
@@ -322,7 +326,7 @@ impl BitLabel<'_> {
             Place::Bit,
             std::slice::from_ref(operand),
         );
-        let line = self.size * 1.25;
+        let line = self.line;
         // "ADDRESS:SYMBOL" is one text for the find and the tooltip; drawn, it is two lines.
         let lines: Vec<&str> = match (self.mode, text.split_once(':')) {
             (DisplayMode::Both, Some((a, s))) => vec![a, s],
@@ -336,11 +340,49 @@ impl BitLabel<'_> {
             && let Some(a) = address_of(self.project, operand)
             && let Some(c) = self.project.comment_of(a, lang)
         {
-            drawn.push(self.line(painter, c, span, ys.1, Align2::CENTER_TOP, theme::COMMENT));
+            drawn.push(self.comment(painter, c, span, ys.1));
         }
         if let Some(at) = mark {
             force_mark(painter, at, self.size);
         }
+    }
+
+    /// An element comment from height `y` down: wrapped to the span (its own line breaks
+    /// kept), at most [`COMMENT_LINES`] lines, the last ending with "…" when more is left.
+    fn comment(&self, painter: &egui::Painter, text: &str, span: Span, y: f32) -> (Rect, String) {
+        let width = (span.right - span.left).max(self.size);
+        let mut job = egui::text::LayoutJob::default();
+        job.append(
+            text,
+            0.0,
+            egui::TextFormat {
+                font_id: self.font.clone(),
+                color: theme::COMMENT,
+                line_height: Some(self.line),
+                ..Default::default()
+            },
+        );
+        job.halign = egui::Align::Center;
+        job.wrap = egui::text::TextWrapping {
+            max_width: width,
+            max_rows: COMMENT_LINES,
+            break_anywhere: false,
+            overflow_character: Some('…'),
+        };
+        let galley = painter.layout_job(job);
+        // A centred galley is laid out about x = 0; its rectangle says how far each way.
+        let r = galley.rect;
+        let x = span
+            .centre
+            .clamp(span.left - r.min.x, (span.right - r.max.x).max(span.left));
+        let rect = r.translate(vec2(x, y));
+        let shown = galley
+            .rows
+            .iter()
+            .flat_map(|r| r.glyphs.iter().map(|g| g.chr))
+            .collect();
+        painter.galley(pos2(x, y), galley, theme::COMMENT);
+        (rect, shown)
     }
 
     /// One line of text at height `y`, shortened with "…" to fit the span; returns where
@@ -441,16 +483,15 @@ pub(super) fn selection_ui(
     }
 }
 
-/// Outlines the cursor's cell.
-pub(super) fn cursor_ui(
-    painter: &egui::Painter,
+/// A cell's rectangle in a network drawn with its top-left at `origin` (the output column
+/// is `width`).
+fn cell_rect(
     net: &Network,
     origin: Pos2,
-    row: usize,
-    col: usize,
+    (row, col): (usize, usize),
     width: usize,
     style: &Style,
-) {
+) -> Rect {
     let m = &style.m;
     let y = origin.y
         + row_tops(net, m, style.comments)
@@ -458,13 +499,72 @@ pub(super) fn cursor_ui(
             .copied()
             .unwrap_or(m.header);
     let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
-    let x = origin.x + m.margin + col as f32 * m.cell;
+    let x = origin.x + m.margin + col.min(width) as f32 * m.cell;
     let w = if col >= width { m.output } else { m.cell };
-    let rect = Rect::from_min_size(pos2(x, y), vec2(w, h));
+    Rect::from_min_size(pos2(x, y), vec2(w, h))
+}
+
+/// Outlines the cursor's cell.
+pub(super) fn cursor_ui(
+    painter: &egui::Painter,
+    net: &Network,
+    origin: Pos2,
+    (row, col): (usize, usize),
+    width: usize,
+    style: &Style,
+) {
     painter.rect_stroke(
-        rect,
+        cell_rect(net, origin, (row, col), width, style),
         2.0,
         Stroke::new(2.0, theme::CURSOR),
         StrokeKind::Inside,
     );
+}
+
+/// Marks a cell the last compile found wrong: a dashed red (warnings: amber) frame, a "!"
+/// badge in its corner, and its operand underlined (`labels`: the labels drawn in its
+/// network).
+pub(super) fn error_mark_ui(
+    painter: &egui::Painter,
+    net: &Network,
+    origin: Pos2,
+    mark: &ErrorMark,
+    width: usize,
+    style: &Style,
+    labels: &[(Rect, String)],
+) -> Rect {
+    let rect = cell_rect(net, origin, (mark.row, mark.col), width, style).shrink(3.0);
+    let color = if mark.error {
+        theme::ERROR
+    } else {
+        theme::CAUTION
+    };
+    let stroke = Stroke::new(1.5, color);
+    let c = [
+        rect.left_top(),
+        rect.right_top(),
+        rect.right_bottom(),
+        rect.left_bottom(),
+        rect.left_top(),
+    ];
+    for w in c.windows(2) {
+        painter.extend(egui::Shape::dashed_line(w, stroke, 4.0, 3.0));
+    }
+    let at = rect.right_top() + vec2(-6.0, 6.0);
+    painter.circle_filled(at, 5.5, color);
+    painter.text(
+        at,
+        Align2::CENTER_CENTER,
+        "!",
+        FontId::proportional(9.0),
+        egui::Color32::WHITE,
+    );
+    let mid = rect.top() + style.m.mid;
+    for (r, _) in labels
+        .iter()
+        .filter(|(r, _)| rect.contains(r.center()) && r.bottom() < mid)
+    {
+        painter.line_segment([r.left_bottom(), r.right_bottom()], Stroke::new(1.5, color));
+    }
+    rect
 }

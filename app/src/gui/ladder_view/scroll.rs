@@ -127,6 +127,7 @@ mod tests {
             margin: m.margin,
             zoom,
             labels: Vec::new(),
+            error_marks: Vec::new(),
             visible: None,
         };
         (placed, g)

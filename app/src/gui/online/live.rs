@@ -15,7 +15,7 @@ impl LadderApp {
         &mut self,
         ui: &mut egui::Ui,
         b: usize,
-        opts: &super::super::ladder_view::ViewOptions,
+        opts: &super::super::ladder_view::ViewOptions<'_>,
     ) -> super::super::ladder_view::ViewEvents {
         let Some(doc) = self.doc.as_ref() else {
             return Default::default();
