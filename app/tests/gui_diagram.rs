@@ -63,9 +63,9 @@ fn zoom_keeps_the_element_under_the_pointer_on_the_last_network() {
 
 #[test]
 fn zoom_keeps_the_element_under_the_pointer_on_the_first_network() {
+    // The block's first element: the view cannot scroll before the block's start, so this
+    // is the hardest place to keep still when zooming out.
     let (mut h, _) = stress_at(1);
-    h.key_press(egui::Key::ArrowDown);
-    h.run();
     zoom_keeps_the_cell_under_the_mouse(&mut h);
 }
 
@@ -188,4 +188,59 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
         h.query_by_label_contains("1 errors, 0 warnings (F12)")
             .is_none()
     );
+}
+
+#[test]
+fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_before_typing() {
+    let mut h = lathe();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, "2 1");
+    let rows = |h: &Harness<'static, LadderApp>| {
+        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[1]
+            .rows
+            .len()
+    };
+    let before = rows(&h);
+    let undo_depth = h.state().doc.as_ref().unwrap().history().undo_len();
+    // F6 on the first row: refused at once, no prompt to type into.
+    h.key_press(egui::Key::F6);
+    h.run();
+    assert!(h.state().prompt.is_none(), "no operand is asked for");
+    assert!(
+        h.state().output.last().is_some_and(|l| l.error),
+        "the refusal is said: {:?}",
+        h.state().output.last()
+    );
+    for _ in 0..before {
+        h.key_press(egui::Key::ArrowDown);
+        h.run();
+    }
+    let c = h.state().edit.cursor;
+    assert_eq!(
+        (c.network, c.row),
+        (1, before),
+        "on the new row below the last"
+    );
+    assert!(
+        h.state()
+            .edit
+            .geometry
+            .cell_rect(1, before, c.col)
+            .is_some(),
+        "the new row is drawn"
+    );
+    assert_eq!(rows(&h), before, "offered, not yet added");
+    // F6 there: a contact in parallel with the last row, the row added with it, one undo step.
+    h.key_press(egui::Key::F6);
+    enter_operand(&mut h, "X0.3");
+    h.run();
+    assert_eq!(rows(&h), before + 1);
+    let doc = h.state().doc.as_ref().unwrap();
+    assert_eq!(doc.history().undo_len(), undo_depth + 1, "one undo step");
+    // Down again from an offered row goes on to the next network.
+    h.key_press(egui::Key::ArrowDown);
+    h.run();
+    h.key_press(egui::Key::ArrowDown);
+    h.run();
+    assert_eq!(h.state().edit.cursor.network, 2);
 }

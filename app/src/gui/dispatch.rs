@@ -219,11 +219,16 @@ impl LadderApp {
             Command::Function => self.open_function_dialog(),
             Command::Wire => self.wire(),
             Command::Link => self.link(),
-            Command::Parallel => {
-                self.open_prompt(PlaceKind::Parallel { negated: false }, "".into())
-            }
-            Command::ParallelNc => {
-                self.open_prompt(PlaceKind::Parallel { negated: true }, "".into())
+            Command::Parallel | Command::ParallelNc => {
+                // Refused before any typing when there is nothing above to be parallel with.
+                let at = self.edit.cursor;
+                match ladder_engine::model::Ladder::can_parallel(at) {
+                    Err(e) if self.view == View::Block(at.block) => self.report_edit_error(&e),
+                    _ => {
+                        let negated = c == Command::ParallelNc;
+                        self.open_prompt(PlaceKind::Parallel { negated }, "".into())
+                    }
+                }
             }
             Command::Cut => {
                 self.cut();

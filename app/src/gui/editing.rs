@@ -132,6 +132,27 @@ impl LadderApp {
             .map_or(0, |b| b.networks.len())
     }
 
+    /// Whether the cursor is on the new row offered below its network's last row (Down
+    /// there): a place to draw that is not in the project until something is drawn in it.
+    pub fn on_new_row(&self) -> bool {
+        let c = self.edit.cursor;
+        self.block() == Some(c.block) && {
+            let rows = self.rows_of(c.block, c.network);
+            rows > 0 && c.row == rows
+        }
+    }
+
+    /// As [`LadderApp::ensure_network`], and the new row below a network opened for real
+    /// when the cursor is on it: drawing there adds the row, in the gesture's undo step.
+    pub fn ensure_row(&mut self) -> Option<Cursor> {
+        if self.on_new_row() {
+            let c = self.edit.cursor;
+            let insert = self.ladder()?.plan_insert_row(c.block, c.network, c.row);
+            self.edit(insert);
+        }
+        self.ensure_network()
+    }
+
     /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
     /// An empty block gets a network first; the gesture that needed it runs in an undo group
     /// (every command does), so one undo takes back both. `None` when there is no cell to edit (no project, not a
@@ -292,7 +313,7 @@ impl LadderApp {
         ) {
             operand(text)?;
         }
-        let Some(at) = self.ensure_network() else {
+        let Some(at) = self.ensure_row() else {
             return Err(Msg::NoProject.text(self.settings.lang).into());
         };
         let width = self.width();
@@ -385,11 +406,12 @@ impl LadderApp {
         if row < 0 && c.network > 0 {
             c.network -= 1;
             c.row = self.rows_of(block, c.network).saturating_sub(1);
-        } else if row >= rows && c.network + 1 < self.networks_of(block) {
+        } else if row > rows && c.network + 1 < self.networks_of(block) {
             c.network += 1;
             c.row = 0;
         } else {
-            c.row = row.clamp(0, (rows - 1).max(0)) as usize;
+            // Down from the last row goes to the new row offered below it (`on_new_row`).
+            c.row = row.clamp(0, rows.max(0)) as usize;
         }
         // The view follows with the least scrolling (ladder_view's `follow`), so an arrow
         // key never throws the network to the top of the screen.
@@ -436,7 +458,7 @@ impl LadderApp {
 
     /// F4: a wire at the cursor.
     pub fn wire(&mut self) {
-        if let Some(at) = self.ensure_network() {
+        if let Some(at) = self.ensure_row() {
             let at = Cursor {
                 col: at.col.min(self.width() - 1),
                 ..at

@@ -276,8 +276,9 @@ impl LadderApp {
         }
         let networks = &blocks[c.block].networks;
         c.network = c.network.min(networks.len().saturating_sub(1));
-        let rows = networks.get(c.network).map_or(1, |n| n.rows.len());
-        c.row = c.row.min(rows.saturating_sub(1));
+        // A network's row count is a valid row: the new row offered below its last one.
+        let rows = networks.get(c.network).map_or(0, |n| n.rows.len());
+        c.row = c.row.min(rows);
         c.col = c.col.min(p.ladder.width);
         if let Some((b, sel)) = self.edit.selection {
             let fits = |n: usize, r: usize| {

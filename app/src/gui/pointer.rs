@@ -21,7 +21,7 @@ impl LadderApp {
         };
         let ladder = &self.doc.as_ref()?.project().ladder;
         let n = ladder.blocks.get(block)?.networks.len();
-        if n == 0 {
+        if n == 0 || self.on_new_row() {
             return None;
         }
         self.ensure_network()

@@ -124,7 +124,7 @@ impl LadderApp {
             self.note(Msg::ClipboardEmpty.text(lang).into(), false);
             return;
         };
-        let Some(at) = self.ensure_network() else {
+        let Some(at) = self.ensure_row() else {
             return;
         };
         let ok = match self.ladder().map(|l| l.plan_paste(at, clip)) {

@@ -12,9 +12,7 @@ impl Ladder {
     /// F6: a contact at `at` with both its ends linked up to the row above, so that it is in
     /// parallel with what stands above it. Refused on the first row.
     pub fn plan_parallel_contact(at: CellRef, contact: Cell) -> Result<Edit, EditError> {
-        if at.row == 0 {
-            return Err(EditError::NothingAbove);
-        }
+        Ladder::can_parallel(at)?;
         let above = CellRef {
             row: at.row - 1,
             ..at
@@ -34,6 +32,15 @@ impl Ladder {
             on: true,
         });
         Ok(Edit::Batch(edits))
+    }
+
+    /// Whether F6 can place a contact at `at`: there must be a row above to be parallel
+    /// with. The editor asks before the operand is typed.
+    pub fn can_parallel(at: CellRef) -> Result<(), EditError> {
+        if at.row == 0 {
+            return Err(EditError::NothingAbove);
+        }
+        Ok(())
     }
 
     /// An empty row before `row`.

@@ -80,7 +80,7 @@ impl LadderApp {
                 ..self.edit.cursor
             };
             dialog.at = self
-                .ensure_network()
+                .ensure_row()
                 .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
         }
         let ladder = self

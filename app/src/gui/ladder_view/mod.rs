@@ -456,8 +456,14 @@ pub fn block_ui(
     // Offsets of every network: plain arithmetic over the model, no layout or text.
     let mut placed = Vec::with_capacity(b.networks.len());
     let mut y = 0.0;
-    for n in &b.networks {
-        let h = m.network_height(n, comments);
+    // The cursor on the new row below a network's last row: the network shows that row.
+    let new_row = opts
+        .cursor
+        .filter(|(n, r, _)| b.networks.get(*n).is_some_and(|net| *r == net.rows.len()))
+        .map(|c| c.0);
+    for (i, n) in b.networks.iter().enumerate() {
+        let extra = if new_row == Some(i) { m.row } else { 0.0 };
+        let h = m.network_height(n, comments) + extra;
         placed.push(Placed { top: y, height: h });
         y += h;
     }
@@ -507,7 +513,16 @@ pub fn block_ui(
         geometry.rows = b
             .networks
             .iter()
-            .map(|n| row_tops(n, &m, comments))
+            .enumerate()
+            .map(|(i, n)| {
+                let mut tops = row_tops(n, &m, comments);
+                if new_row == Some(i) {
+                    let end = tops.last().copied().unwrap_or(m.header)
+                        + n.rows.last().map_or(0.0, |r| m.row_height(&r.cells));
+                    tops.push(end);
+                }
+                tops
+            })
             .collect();
         let hit = |p: Pos2| {
             let y = p.y - rect.min.y;

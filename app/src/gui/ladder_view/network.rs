@@ -493,11 +493,13 @@ fn cell_rect(
     style: &Style,
 ) -> Rect {
     let m = &style.m;
+    let tops = row_tops(net, m, style.comments);
+    // Past the last row: the new row offered below it, a plain row high.
     let y = origin.y
-        + row_tops(net, m, style.comments)
-            .get(row)
-            .copied()
-            .unwrap_or(m.header);
+        + tops.get(row).copied().unwrap_or_else(|| {
+            tops.last().copied().unwrap_or(m.header)
+                + net.rows.last().map_or(0.0, |r| m.row_height(&r.cells))
+        });
     let h = net.rows.get(row).map_or(m.row, |r| m.row_height(&r.cells));
     let x = origin.x + m.margin + col.min(width) as f32 * m.cell;
     let w = if col >= width { m.output } else { m.cell };
