@@ -244,3 +244,60 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     h.run();
     assert_eq!(h.state().edit.cursor.network, 2);
 }
+
+#[test]
+fn at_900_by_600_the_ladder_keeps_half_the_height_and_replace_opens_ready_to_type() {
+    use egui::accesskit::Role;
+    for lang in [Lang::En, Lang::Zh] {
+        let path = PathBuf::from(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../projects/lathe-988ta.ldp"
+        ));
+        let mut h = harness_sized(Some(path), lang, egui::vec2(900.0, 600.0));
+        h.run();
+        h.run();
+        let shown = h
+            .state()
+            .edit
+            .geometry
+            .visible
+            .expect("the ladder is drawn");
+        assert!(
+            shown.height() >= 300.0,
+            "{lang:?}: the ladder has {} px of 600",
+            shown.height()
+        );
+        // The tools that do not fit are in the overflow menu.
+        h.get_by_label("»").click();
+        h.run();
+        let more = match lang {
+            Lang::En => "Single tick (8 ms)",
+            Lang::Zh => "单步（1 个 8 ms",
+        };
+        assert!(h.query_by_label_contains(more).is_some(), "{lang:?}");
+        h.key_press(egui::Key::Escape);
+        h.run();
+        h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::H);
+        h.run();
+        h.run();
+        let find = ladder_studio::gui::i18n::Msg::ReplaceFrom.text(lang);
+        let field = h.get_by_role_and_label(Role::TextInput, find);
+        assert!(
+            field.is_focused(),
+            "{lang:?}: the first field has the keyboard"
+        );
+        let window = h.get_by_label(match lang {
+            Lang::En => "Replace",
+            Lang::Zh => "替换",
+        });
+        let menu = h.get_by_label(match lang {
+            Lang::En => "File",
+            Lang::Zh => "文件",
+        });
+        let (w, m) = (window.rect(), menu.rect());
+        assert!(
+            w.min.y >= m.max.y,
+            "{lang:?}: the window {w:?} is below the menu {m:?}"
+        );
+    }
+}

@@ -179,6 +179,7 @@ messages! {
     Recent => "最近打开的文件", "Recent files";
     Compile => "编译", "Compile";
     NextError => "下一个错误", "Next error";
+    MoreTools => "更多工具", "More tools";
     PreviousError => "上一个错误", "Previous error";
     NoMarks => "上次编译没有指向梯形图单元的错误或警告", "The last compile found no error or warning in a ladder cell";
     ErrorsInDiagram => "错误", "errors";

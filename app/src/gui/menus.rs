@@ -10,6 +10,10 @@ use super::command::{
 use super::i18n::{Lang, Msg};
 use super::place::View;
 
+/// The narrowest window whose toolbars show every tool in full rows; narrower, the toolbar
+/// is one row with an overflow menu.
+const WIDE_TOOLBAR: f32 = 1250.0;
+
 impl LadderApp {
     /// One menu entry: a switch shows a check mark, any other command a button with its key.
     fn entry(&mut self, ui: &mut egui::Ui, c: Command) {
@@ -163,7 +167,9 @@ impl LadderApp {
 
     /// The basic toolbar and the ladder toolbar: each button runs what its key runs.
     pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
-        // Rows wrap in a narrow window: every tool stays on screen.
+        if ui.available_width() < WIDE_TOOLBAR {
+            return self.compact_toolbar_ui(ui);
+        }
         let lang = self.settings.lang;
         let button = |app: &mut LadderApp, ui: &mut egui::Ui, c: Command| {
             let r = ui.add_enabled(app.enabled(c), egui::Button::new(c.tool_text().text(lang)));
@@ -232,6 +238,63 @@ impl LadderApp {
             }
             self.online_toolbar_ui(ui);
         });
+    }
+
+    /// The toolbar of a narrow window: one row of as many tools as fit, the rest in the
+    /// overflow menu (»), so the ladder keeps the height; the display mode and the zoom are in
+    /// the View menu, and the online settings get their row only while online.
+    fn compact_toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.settings.lang;
+        let tools = BASIC_TOOLBAR
+            .iter()
+            .chain(LADDER_TOOLBAR)
+            .chain(super::command::ONLINE_TOOLBAR)
+            .chain([&Command::Pen]);
+        ui.horizontal(|ui| {
+            let gap = ui.spacing().item_spacing.x + 2.0 * ui.spacing().button_padding.x;
+            // Room for the overflow button at the end.
+            let room = ui.available_width() - 40.0;
+            let mut used = 0.0;
+            let mut rest = Vec::new();
+            for c in tools {
+                let text = egui::WidgetText::from(c.tool_text().text(lang));
+                let w =
+                    text.into_galley(
+                        ui,
+                        Some(egui::TextWrapMode::Extend),
+                        f32::INFINITY,
+                        egui::TextStyle::Button,
+                    )
+                    .size()
+                    .x + gap;
+                if rest.is_empty() && *c != Command::Pen && used + w <= room {
+                    used += w;
+                    let r = ui.add_enabled(
+                        self.enabled(*c),
+                        egui::Button::new(c.tool_text().text(lang)),
+                    );
+                    let r = match c.shortcut_text() {
+                        Some(keys) => r.on_hover_text(keys),
+                        None => r,
+                    };
+                    if r.clicked() {
+                        self.ask(*c);
+                    }
+                } else {
+                    rest.push(*c);
+                }
+            }
+            ui.menu_button("»", |ui| {
+                for c in rest {
+                    self.entry(ui, c);
+                }
+            })
+            .response
+            .on_hover_text(Msg::MoreTools.text(lang));
+        });
+        if self.online.session.is_some() {
+            ui.horizontal_wrapped(|ui| self.online_toolbar_ui(ui));
+        }
     }
 
     /// The Help windows.

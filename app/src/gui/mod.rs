@@ -623,9 +623,11 @@ impl eframe::App for LadderApp {
         if self.files.question.is_some() {
             self.question_ui(&ctx);
         }
-        self.replace_ui(&ctx);
-        self.keys(&ctx);
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        // Below the menu bar: the replace window never covers it. It reads its keys
+        // (Enter, Escape) before the editor's.
+        self.replace_ui(&ctx, ui.available_rect_before_wrap());
+        self.keys(&ctx);
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
         }

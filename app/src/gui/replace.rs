@@ -19,6 +19,8 @@ pub struct ReplaceDialog {
     pub selected: usize,
     /// Why the last replace was refused.
     pub error: Option<String>,
+    /// Just opened: the first field takes the keyboard.
+    pub focus_first: bool,
     /// The preview, for the texts and the document change it was made from.
     plan: Option<(PlanKey, Result<Vec<Planned>, String>)>,
 }
@@ -44,6 +46,7 @@ impl LadderApp {
         if self.replace.is_none() {
             self.replace = Some(ReplaceDialog {
                 from: self.edit.last_find.clone(),
+                focus_first: true,
                 ..Default::default()
             });
         }
@@ -81,7 +84,8 @@ impl LadderApp {
     }
 
     /// Draws the replace window while it is open.
-    pub fn replace_ui(&mut self, ctx: &egui::Context) {
+    /// The window stays inside `area` (below the menu bar).
+    pub fn replace_ui(&mut self, ctx: &egui::Context, area: egui::Rect) {
         let Some(mut d) = self.replace.take() else {
             return;
         };
@@ -95,6 +99,8 @@ impl LadderApp {
             .id(egui::Id::unique("replace"))
             .open(&mut open)
             .default_size([520.0, 340.0])
+            .default_pos(area.min + egui::vec2(40.0, 40.0))
+            .constrain_to(area)
             .resizable(true)
             .collapsible(false)
             .show(ctx, |ui| {
@@ -102,12 +108,17 @@ impl LadderApp {
                     .num_columns(2)
                     .show(ui, |ui| {
                         let l = ui.label(t(Msg::ReplaceFrom));
-                        ui.add(
-                            egui::TextEdit::singleline(&mut d.from)
-                                .hint_text("X0002.1 · START · R100")
-                                .desired_width(220.0),
-                        )
-                        .labelled_by(l.id);
+                        let from = ui
+                            .add(
+                                egui::TextEdit::singleline(&mut d.from)
+                                    .hint_text("X0002.1 · START · R100")
+                                    .desired_width(220.0),
+                            )
+                            .labelled_by(l.id);
+                        // Opened: the keyboard goes to the first field.
+                        if std::mem::take(&mut d.focus_first) {
+                            from.request_focus();
+                        }
                         ui.end_row();
                         let l = ui.label(t(Msg::ReplaceTo));
                         ui.add(

@@ -342,7 +342,7 @@ impl FunctionDialog {
             .collect();
         let parsed: Vec<Result<Operand, String>> = texts
             .iter()
-            .map(|t| Operand::parse(t).map_err(|e| e.to_string()))
+            .map(|t| Operand::parse(t).map_err(|e| crate::gui::errors::operand_error(&e, lang)))
             .collect();
         // What the checks see: symbols resolved; what cannot be used yet is a symbol, which
         // the catalogue check accepts, so one bad operand does not make its neighbours red.

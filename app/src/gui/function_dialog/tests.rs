@@ -318,3 +318,20 @@ fn refusals_say_what_is_allowed() {
     );
     assert_eq!(check("TMRB T0 DT4")[2], Check::Empty);
 }
+
+#[test]
+fn a_wrong_operand_is_explained_in_the_ui_language() {
+    let project = Project::default();
+    let mut d = FunctionDialog::new(CellRef {
+        block: 1,
+        network: 0,
+        row: 0,
+        col: 0,
+    });
+    d.line = "SET X0.9".into();
+    d.fill_from_line(Lang::Zh);
+    match &d.checks(&project, Lang::Zh)[0] {
+        Check::Bad(why) => assert_eq!(why, "`X0.9`：位号必须为 0–7"),
+        other => panic!("{other:?}"),
+    }
+}
