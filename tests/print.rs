@@ -3,6 +3,10 @@
 
 use ladder_tests::run;
 
+fn sample_path() -> String {
+    sample()
+}
+
 fn sample() -> String {
     ladder_tests::here()
         .join("../projects/lathe-988ta.ldp")
@@ -143,6 +147,23 @@ fn bad_requests_are_refused_with_a_message() {
             "write the date as YYYY-MM-DD",
         ),
         (vec!["print", "no-such.ldp", "-o", ok], "no-such.ldp"),
+        (
+            vec!["print", &sample, "-o", ok, "--networks", "LEVEL2:9-3"],
+            "write N or FIRST-LAST",
+        ),
+        (
+            vec![
+                "print",
+                &sample,
+                "-o",
+                ok,
+                "--network",
+                "LEVEL1:1",
+                "--blocks",
+                "level2",
+            ],
+            "not among the --blocks printed",
+        ),
     ];
     for (args, says) in cases {
         let r = run(&args);
@@ -162,4 +183,104 @@ fn an_instruction_list_prints_through_its_drawing() {
     let r = run(&["print", il.to_str().unwrap(), "-o", out.to_str().unwrap()]);
     assert_eq!(r.code, 0, "{r:?}");
     assert!(std::fs::read(&out).unwrap().starts_with(b"%PDF-"));
+}
+
+#[test]
+fn a_range_of_networks_prints_those_networks_only() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("range.svg");
+    let r = run(&[
+        "print",
+        &sample(),
+        "-o",
+        out.to_str().unwrap(),
+        "--networks",
+        "LEVEL2:3-5",
+        "--language",
+        "en",
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    let text: String = r
+        .stdout
+        .lines()
+        .map(|f| std::fs::read_to_string(f).unwrap())
+        .collect();
+    for n in ["N0003", "N0004", "N0005"] {
+        assert!(text.contains(&format!(">{n}  ")), "{n} printed");
+    }
+    for n in ["N0002", "N0006"] {
+        assert!(!text.contains(&format!(">{n}")), "{n} not printed");
+    }
+}
+
+#[test]
+fn a_shorter_svg_print_removes_the_stale_pages_of_a_longer_one() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("doc.svg");
+    let print = |extra: &[&str]| {
+        let mut args = vec!["print", &sample_path(), "-o", out.to_str().unwrap()]
+            .into_iter()
+            .map(String::from)
+            .collect::<Vec<_>>();
+        args.extend(extra.iter().map(|s| s.to_string()));
+        let r = run(&args.iter().map(String::as_str).collect::<Vec<_>>());
+        assert_eq!(r.code, 0, "{r:?}");
+        r.stdout.lines().count()
+    };
+    let long = print(&[]);
+    assert!(long > 3);
+    assert!(dir.path().join(format!("doc-{long}.svg")).exists());
+    let short = print(&["--blocks", "level1"]);
+    assert!(short < long);
+    let files = std::fs::read_dir(dir.path()).unwrap().count();
+    assert_eq!(files, short, "only the new document's pages are left");
+    // One page is OUT.svg itself: every numbered page goes.
+    print(&["--network", "LEVEL2:1"]);
+    let files: Vec<_> = std::fs::read_dir(dir.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(files, ["doc.svg"]);
+}
+
+#[test]
+fn a_killed_print_leaves_no_temporary_file_for_ever() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("doc.pdf");
+    // What a print killed while writing leaves: its temporary file, named for its process.
+    let left = dir.path().join(".doc.pdf.4000000000.tmp");
+    std::fs::write(&left, b"%PDF-1.7 half").unwrap();
+    let r = run(&["print", &sample(), "-o", out.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{r:?}");
+    assert!(!left.exists(), "the next print of that name removed it");
+    assert!(out.exists());
+}
+
+#[test]
+fn the_cross_reference_names_each_address_once_then_its_uses() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("x.svg");
+    let r = run(&[
+        "print",
+        &sample(),
+        "-o",
+        out.to_str().unwrap(),
+        "--xref",
+        "--blocks",
+        "level1",
+        "--language",
+        "en",
+    ]);
+    assert_eq!(r.code, 0, "{r:?}");
+    // The index's pages: those with its column heads.
+    let index: String = r
+        .stdout
+        .lines()
+        .map(|f| std::fs::read_to_string(f).unwrap())
+        .filter(|page| page.contains("Network:row:col"))
+        .collect();
+    // R0000.0 is used on many lines of the sample; its address is written once.
+    assert!(index.matches(">LEVEL1<").count() > 10, "many uses listed");
+    assert_eq!(index.matches(">R0000.0<").count(), 1, "the address once");
+    assert!(index.matches(">Always 1<").count() <= 1, "the symbol once");
 }

@@ -108,11 +108,7 @@ pub fn document(project: &Project, name: &str, options: &Options) -> Document {
     pages.new_page("");
     let mut contents: Vec<(String, usize)> = Vec::new();
     for (b, block) in project.ladder.blocks.iter().enumerate() {
-        let wanted = match block.kind {
-            BlockKind::Level1 => options.blocks.level1,
-            BlockKind::Level2 => options.blocks.level2,
-            BlockKind::Sub { .. } => options.blocks.subs,
-        };
+        let wanted = options.blocks.includes(&block.kind);
         let chosen: Vec<usize> = (0..block.networks.len())
             .filter(|n| {
                 options

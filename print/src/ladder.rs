@@ -370,31 +370,7 @@ impl Painter<'_, '_> {
                 let r = g.font * 0.9;
                 items.push(Item::line(x, wire, mid - r, wire, 0.8));
                 items.push(Item::line(mid + r, wire, g.right_rail(), wire, 0.8));
-                let k = r * 0.55;
-                items.push(Item::Path {
-                    segs: vec![
-                        Seg::Move(mid - r * 0.5, wire - r),
-                        Seg::Cubic(
-                            mid - r - k * 0.3,
-                            wire - r * 0.6,
-                            mid - r - k * 0.3,
-                            wire + r * 0.6,
-                            mid - r * 0.5,
-                            wire + r,
-                        ),
-                        Seg::Move(mid + r * 0.5, wire - r),
-                        Seg::Cubic(
-                            mid + r + k * 0.3,
-                            wire - r * 0.6,
-                            mid + r + k * 0.3,
-                            wire + r * 0.6,
-                            mid + r * 0.5,
-                            wire + r,
-                        ),
-                    ],
-                    width: 1.0,
-                    ink: Ink::Black,
-                });
+                items.push(circle(mid, wire, r));
                 if *negated {
                     items.push(Item::line(
                         mid - r * 0.5,
@@ -447,5 +423,23 @@ impl Painter<'_, '_> {
                 }
             }
         }
+    }
+}
+
+/// A circle of radius `r` about (`x`, `y`): four Bézier quarters (the coil, as the editor
+/// draws it).
+fn circle(x: Pt, y: Pt, r: Pt) -> Item {
+    // The control distance that makes a cubic quarter follow the circle within 0.03 %.
+    let k = r * 0.552_284_8;
+    Item::Path {
+        segs: vec![
+            Seg::Move(x + r, y),
+            Seg::Cubic(x + r, y + k, x + k, y + r, x, y + r),
+            Seg::Cubic(x - k, y + r, x - r, y + k, x - r, y),
+            Seg::Cubic(x - r, y - k, x - k, y - r, x, y - r),
+            Seg::Cubic(x + k, y - r, x + r, y - k, x + r, y),
+        ],
+        width: 1.0,
+        ink: Ink::Black,
     }
 }

@@ -90,6 +90,18 @@ pub struct Blocks {
     pub subs: bool,
 }
 
+impl Blocks {
+    /// Whether a block of this kind is printed.
+    pub fn includes(&self, kind: &ladder_engine::model::BlockKind) -> bool {
+        use ladder_engine::model::BlockKind;
+        match kind {
+            BlockKind::Level1 => self.level1,
+            BlockKind::Level2 => self.level2,
+            BlockKind::Sub { .. } => self.subs,
+        }
+    }
+}
+
 impl Default for Blocks {
     fn default() -> Self {
         Blocks {

@@ -326,13 +326,24 @@ pub(crate) fn xref(
     let lang = options.lang;
     let x = ladder_engine::xref::build(project);
     let names = crate::ladder::Names::new(project);
+    // Grouped by address: the address and its symbol once, then each use on its own line.
+    let mut last = None;
     let rows = x
         .refs
         .iter()
         .map(|r| {
+            let first = last.replace(r.address) != Some(r.address);
+            let (address, symbol) = if first {
+                (
+                    r.address.to_string(),
+                    names.symbol(r.address).unwrap_or("").to_string(),
+                )
+            } else {
+                (String::new(), String::new())
+            };
             vec![
-                r.address.to_string(),
-                names.symbol(r.address).unwrap_or("").to_string(),
+                address,
+                symbol,
                 r.usage.letters().to_string(),
                 project.ladder.blocks[r.block].kind.label(),
                 format!("N{:04} {}:{}", r.network + 1, r.row + 1, r.col + 1),

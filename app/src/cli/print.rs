@@ -62,8 +62,9 @@ pub struct PrintArgs {
     /// The blocks to print (default: all).
     #[arg(long, value_delimiter = ',', value_enum)]
     pub blocks: Vec<BlockArg>,
-    /// Only this network, as BLOCK:N (LEVEL2:3, P0001:1), without the title page.
-    #[arg(long)]
+    /// Only this network or range of networks, as BLOCK:N or BLOCK:FIRST-LAST (LEVEL2:3,
+    /// LEVEL2:10-40, P0001:1), without the title page.
+    #[arg(long, visible_alias = "networks")]
     pub network: Option<String>,
     /// Also the symbol, data-setting and message tables.
     #[arg(long)]
@@ -99,11 +100,12 @@ enum Kind {
     Svg,
 }
 
-/// Finds `BLOCK:N` (`LEVEL2:3`, `P0001:1`) in the project: (block index, network index).
-fn find_network(
+/// Finds `BLOCK:N` or `BLOCK:FIRST-LAST` (`LEVEL2:3`, `LEVEL2:10-40`, `P0001:1`) in the
+/// project: (block index, network index) of each network.
+fn find_networks(
     project: &ladder_engine::model::Project,
     text: &str,
-) -> Result<(usize, usize), String> {
+) -> Result<Vec<(usize, usize)>, String> {
     let (block, n) = text
         .split_once(':')
         .ok_or_else(|| format!("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3"))?;
@@ -116,9 +118,18 @@ fn find_network(
             format!("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")
         })?;
     let count = project.ladder.blocks[b].networks.len();
-    match n.parse::<usize>() {
-        Ok(n) if (1..=count).contains(&n) => Ok((b, n - 1)),
-        _ => Err(format!("`{n}`: {block} has networks 1 to {count}")),
+    let (first, last) = n.split_once('-').unwrap_or((n, n));
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=count).contains(n))
+    };
+    match (number(first), number(last)) {
+        (Some(a), Some(z)) if a <= z => Ok((a - 1..z).map(|i| (b, i)).collect()),
+        _ => Err(format!(
+            "`{n}`: {block} has networks 1 to {count} (write N or FIRST-LAST, e.g. 10-40)"
+        )),
     }
 }
 
@@ -158,9 +169,9 @@ pub(super) fn print(
         Err(code) => return Ok(code),
     };
     let only = match args.network.as_deref() {
-        Some(text) => Some(vec![find_network(&project, text).map_err(|e| {
+        Some(text) => Some(find_networks(&project, text).map_err(|e| {
             anyhow::anyhow!(say.pick(format!("--network {e}"), format!("--network {e}")))
-        })?]),
+        })?),
         None => None,
     };
     let blocks = if args.blocks.is_empty() {
@@ -172,6 +183,14 @@ pub(super) fn print(
             subs: args.blocks.contains(&BlockArg::Subs),
         }
     };
+    if let (Some(text), Some(&[(b, _), ..])) = (args.network.as_deref(), only.as_deref())
+        && !blocks.includes(&project.ladder.blocks[b].kind)
+    {
+        anyhow::bail!(say.pick(
+            format!("--network {text}: that block is not among the --blocks printed; add it or leave --blocks out"),
+            format!("--network {text}：该程序块不在 --blocks 所选之中；请加上它或去掉 --blocks")
+        ));
+    }
     let lang = match args.language {
         Some(LanguageArg::Zh) => Lang::Zh,
         Some(LanguageArg::En) => Lang::En,
@@ -246,9 +265,26 @@ pub(super) fn print(
                 write_atomic(&path, svg.as_bytes()).map_err(|e| cannot(&path, e))?;
                 let _ = writeln!(out, "{}", path.display());
             }
+            if args.page.is_none() {
+                remove_stale_pages(&args.output, count);
+            }
         }
     }
     Ok(0)
+}
+
+/// Removes the pages an earlier, longer SVG print of the same name left after this one's
+/// `count` (`OUT-<count+1>.svg` on; all numbered pages when this one is `OUT.svg` itself), so
+/// the folder holds one document.
+fn remove_stale_pages(output: &Path, count: usize) {
+    let from = if count == 1 { 0 } else { count };
+    for i in from.. {
+        // Numbered as in a document of more than one page.
+        let stale = ladder_print::svg_page_path(output, i, usize::MAX);
+        if std::fs::remove_file(&stale).is_err() {
+            break;
+        }
+    }
 }
 
 /// Whether `d` reads as `YYYY-MM-DD` with a month 1–12 and a day 1–31.
