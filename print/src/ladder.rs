@@ -111,6 +111,8 @@ pub(crate) struct Grid {
 }
 
 const ELEMENT: Pt = 2.2; // element height, in label font sizes
+/// Most lines of an element comment, per language; longer ones end with "…".
+const COMMENT_LINES: usize = 3;
 const PAD: Pt = 2.0;
 
 impl Grid {
@@ -127,7 +129,7 @@ impl Grid {
             width,
             label_lines: if options.labels == Labels::Both { 2 } else { 1 },
             comment_lines: if options.element_comments {
-                options.lang.comment_langs().len()
+                options.lang.comment_langs().len() * COMMENT_LINES
             } else {
                 0
             },
@@ -324,17 +326,31 @@ impl Painter<'_, '_> {
             && let Some(a) = self.names.address(o)
         {
             let below = top + g.wire() + g.font * ELEMENT / 2.0;
-            for (i, lang) in self.options.lang.comment_langs().iter().enumerate() {
-                if let Some(c) = self.names.comment(a, lang) {
-                    let text = self.metrics.fit(c, g.font * 0.9, span - 2.0);
+            // Clear of the rails and links at the cell's edges by a good margin.
+            let width = span - g.font;
+            let size = g.font * 0.9;
+            let mut line = 0;
+            for lang in self.options.lang.comment_langs() {
+                let Some(c) = self.names.comment(a, lang) else {
+                    continue;
+                };
+                let mut wrapped = self.metrics.wrap(c.trim_end(), size, width);
+                if wrapped.len() > COMMENT_LINES {
+                    let rest = wrapped.split_off(COMMENT_LINES - 1).join(" ");
+                    wrapped.push(self.metrics.fit(&rest, size, width));
+                }
+                for text in wrapped {
+                    // A word longer than the cell is cut too.
+                    let text = self.metrics.fit(&text, size, width);
                     items.push(Item::text(
                         mid,
-                        below + (i as Pt + 0.85) * g.line,
-                        g.font * 0.9,
+                        below + (line as Pt + 0.85) * g.line,
+                        size,
                         Anchor::Middle,
                         Ink::Grey,
                         text,
                     ));
+                    line += 1;
                 }
             }
         }
