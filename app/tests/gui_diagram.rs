@@ -301,3 +301,60 @@ fn at_900_by_600_the_ladder_keeps_half_the_height_and_replace_opens_ready_to_typ
         );
     }
 }
+
+#[test]
+fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
+    use egui::accesskit::Role;
+    use ladder_studio::gui::i18n::Msg;
+    let mut h = lathe();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, "3 1");
+    h.key_press(egui::Key::ArrowRight);
+    h.run();
+    let c = h.state().edit.cursor;
+    let before = h.state().edit.geometry.clone();
+    let cell = before.cell_rect(c.network, c.row, c.col).unwrap();
+    h.key_press(egui::Key::F1);
+    h.run();
+    h.run();
+    let field = h.get_by_role_and_label(Role::TextInput, Msg::Operand.text(Lang::En));
+    assert!(field.is_focused());
+    let at = field.rect();
+    assert!(
+        cell.expand(40.0).contains(at.left_top()) && at.top() >= cell.top() - 1.0,
+        "the field {at:?} is at the cell {cell:?}"
+    );
+    assert_eq!(
+        h.state().edit.geometry.origin,
+        before.origin,
+        "the ladder did not move"
+    );
+    // The suggestions come under the field.
+    field.type_text("KEY_A");
+    h.run();
+    use egui_kittest::kittest::NodeT;
+    let first = h
+        .get_all_by_role(Role::Button)
+        .find(|b| {
+            b.accesskit_node()
+                .label()
+                .is_some_and(|l| l.starts_with("KEY_AUTO"))
+        })
+        .expect("a suggestion");
+    assert!(first.rect().top() >= at.bottom(), "under the field");
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(h.state().prompt.is_none());
+    // A title is typed at the network's header.
+    h.state_mut()
+        .ask(ladder_studio::gui::command::Command::NetworkTitle);
+    h.run();
+    h.run();
+    let field = h.get_by_role_and_label(Role::TextInput, Msg::TitlePrompt.text(Lang::En));
+    let top = before.origin.y + before.tops[c.network];
+    assert!(
+        (field.rect().top() - top).abs() < 30.0,
+        "the title field {:?} is at the header ({top})",
+        field.rect()
+    );
+}

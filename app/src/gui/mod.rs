@@ -19,6 +19,7 @@ pub mod online;
 pub mod place;
 pub mod pointer;
 pub mod printing;
+pub mod prompt;
 pub mod replace;
 pub mod selection;
 pub mod settings;
@@ -631,7 +632,7 @@ impl eframe::App for LadderApp {
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
         }
-        if self.prompt.is_some() {
+        if self.prompt.is_some() && self.prompt_place().is_none() {
             egui::Panel::top("prompt").show(ui, |ui| self.prompt_ui(ui));
         }
         if self.settings.show_status {
@@ -692,6 +693,7 @@ impl eframe::App for LadderApp {
             self.tabs_ui(ui);
             self.main_ui(ui)
         });
+        self.prompt_window(&ctx);
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }
