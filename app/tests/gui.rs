@@ -189,7 +189,15 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
 fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     use egui::{Key, Modifiers};
     let (mut h, _) = editor_on(TWO_NETWORKS, "clip.ldp");
-    let header = cell_pos(&h, 0, 0, 3) - egui::vec2(0.0, 24.0);
+    // Just above the first row: the network's header.
+    let header = h
+        .state()
+        .edit
+        .geometry
+        .cell_rect(0, 0, 3)
+        .unwrap()
+        .center_top()
+        - egui::vec2(0.0, 8.0);
     pointer(&mut h, header, egui::PointerButton::Primary);
     assert!(
         matches!(
@@ -234,7 +242,14 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     h.run();
     assert_eq!(il_now(&h).len(), 9, "one undo takes the paste back");
     // Cut the second network: it goes, and comes back with Ctrl+V below the first.
-    let header2 = cell_pos(&h, 1, 0, 3) - egui::vec2(0.0, 24.0);
+    let header2 = h
+        .state()
+        .edit
+        .geometry
+        .cell_rect(1, 0, 3)
+        .unwrap()
+        .center_top()
+        - egui::vec2(0.0, 8.0);
     pointer(&mut h, header2, egui::PointerButton::Primary);
     h.key_press_modifiers(Modifiers::COMMAND, Key::X);
     h.run();

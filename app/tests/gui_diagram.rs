@@ -358,3 +358,114 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
         field.rect()
     );
 }
+
+#[test]
+fn element_properties_edit_the_symbol_table_in_one_undo_step() {
+    use egui::accesskit::Role;
+    use ladder_studio::gui::i18n::Msg;
+    let mut h = lathe();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
+    enter_operand(&mut h, "3 1");
+    let c = h.state().edit.cursor;
+    let project = h.state().doc.as_ref().unwrap().project();
+    let Some(ladder_engine::model::Cell::Contact { operand, .. }) =
+        project.ladder.blocks[1].networks[c.network].cell(c.row, c.col)
+    else {
+        panic!("a contact at the cursor")
+    };
+    let x = ladder_studio::gui::ladder_view::address_of(project, operand).unwrap();
+    let name = project
+        .symbols()
+        .find(|s| s.address == x)
+        .unwrap()
+        .name
+        .clone();
+    let taken = project
+        .symbols()
+        .find(|s| s.address != x && !s.name.is_empty())
+        .unwrap()
+        .name
+        .clone();
+    let symbols = |h: &Harness<'static, LadderApp>| {
+        h.state()
+            .doc
+            .as_ref()
+            .unwrap()
+            .project()
+            .symbol_tables
+            .clone()
+    };
+    let before = symbols(&h);
+    let depth = h.state().doc.as_ref().unwrap().history().undo_len();
+    // A double-click on the contact's label opens its properties over it.
+    let g = h.state().edit.geometry.clone();
+    let cell = g.cell_rect(c.network, c.row, c.col).unwrap();
+    let label = g
+        .labels
+        .iter()
+        .find(|(r, _)| cell.contains_rect(*r))
+        .expect("the contact's label")
+        .0;
+    double_click(&mut h, label.center());
+    h.run();
+    let form = h
+        .state()
+        .properties
+        .clone()
+        .expect("the properties are open");
+    assert_eq!(form.address, x);
+    assert_eq!(form.props.name, name);
+    let symbol = h.get_by_role_and_label(Role::TextInput, Msg::SymbolLabel.text(Lang::En));
+    assert!(symbol.is_focused());
+    assert!(
+        cell.expand(cell.height())
+            .contains(symbol.rect().left_top()),
+        "in place"
+    );
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    symbol.type_text("AUTO_KEY");
+    h.get_by_role_and_label(Role::MultilineTextInput, "Comment (en)")
+        .focus();
+    h.run();
+    h.key_press(egui::Key::End);
+    h.get_by_role_and_label(Role::MultilineTextInput, "Comment (en)")
+        .type_text(" (front panel)\nsecond line");
+    h.run();
+    h.get_by_role_and_label(Role::Button, "OK").click();
+    h.run();
+    assert!(
+        h.state().properties.is_none(),
+        "closed on OK: {:?}",
+        h.state().properties
+    );
+    let p = h.state().doc.as_ref().unwrap().project();
+    assert_eq!(p.resolve_symbol("AUTO_KEY"), Some(x));
+    assert!(
+        p.comment_of(x, "en")
+            .unwrap()
+            .ends_with("(front panel)\nsecond line")
+    );
+    assert_eq!(
+        h.state().doc.as_ref().unwrap().history().undo_len(),
+        depth + 1,
+        "one undo step"
+    );
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(symbols(&h), before, "undone whole");
+    // The undo showed the symbol table it changed; back to the ladder.
+    on_level2(&mut h);
+    // Alt+Enter opens them from the keyboard; a taken name is refused in the form.
+    h.key_press_modifiers(egui::Modifiers::ALT, egui::Key::Enter);
+    h.run();
+    h.run();
+    let symbol = h.get_by_role_and_label(Role::TextInput, Msg::SymbolLabel.text(Lang::En));
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    symbol.type_text(&taken);
+    h.run();
+    h.get_by_role_and_label(Role::Button, "OK").click();
+    h.run();
+    let form = h.state().properties.clone().expect("still open");
+    assert!(form.error.is_some_and(|e| e.contains(&taken)));
+    assert_eq!(symbols(&h), before, "nothing written");
+}

@@ -186,6 +186,8 @@ commands! {
     NetworkTitle => NetworkTitle;
     /// Edit the network's comment.
     NetworkComment => NetworkComment;
+    /// The symbol and comments of the element at the cursor, edited in place.
+    Properties => ElementProperties, ALT Enter;
     /// Drop the selection.
     ClearSelection => ClearSelection, NONE Escape;
     /// Dragging draws wires and links (on/off).
@@ -327,6 +329,7 @@ pub const EDIT_GROUPS: [&[Command]; 3] = [
         Command::DeleteNetwork,
         Command::NetworkTitle,
         Command::NetworkComment,
+        Command::Properties,
     ],
 ];
 

@@ -180,6 +180,11 @@ messages! {
     Compile => "编译", "Compile";
     NextError => "下一个错误", "Next error";
     MoreTools => "更多工具", "More tools";
+    ElementProperties => "元件属性", "Element properties";
+    SymbolLabel => "符号", "Symbol";
+    CommentLabel => "注释", "Comment";
+    PropertiesHint => "写入符号表（可撤销）；注释最多显示三行", "Written into the symbol table (undoable); up to three comment lines are shown";
+    PropertiesNoAddress => "光标处不是带地址的触点或线圈", "The cursor is not on a contact or coil with an address";
     PreviousError => "上一个错误", "Previous error";
     NoMarks => "上次编译没有指向梯形图单元的错误或警告", "The last compile found no error or warning in a ladder cell";
     ErrorsInDiagram => "错误", "errors";

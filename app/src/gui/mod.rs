@@ -20,6 +20,7 @@ pub mod place;
 pub mod pointer;
 pub mod printing;
 pub mod prompt;
+pub mod properties;
 pub mod replace;
 pub mod selection;
 pub mod settings;
@@ -84,6 +85,8 @@ pub struct LadderApp {
     pub function_dialog: Option<function_dialog::FunctionDialog>,
     /// The open Help window.
     pub help: Option<HelpPage>,
+    /// The open element-properties form.
+    pub properties: Option<properties::PropertiesForm>,
     /// The table editors' UI state (selected row, text being typed, caches).
     pub tables: tables::TableState,
     /// The cross-reference views: the index filter and what was derived from the project.
@@ -123,6 +126,7 @@ impl LadderApp {
             prompt: None,
             function_dialog: None,
             help: None,
+            properties: None,
             tables: tables::TableState::default(),
             xref: Default::default(),
             print: Default::default(),
@@ -694,6 +698,7 @@ impl eframe::App for LadderApp {
             self.main_ui(ui)
         });
         self.prompt_window(&ctx);
+        self.properties_ui(&ctx);
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }

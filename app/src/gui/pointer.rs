@@ -126,6 +126,14 @@ impl LadderApp {
                 Hit::Cell { network, row, col } if self.online() => {
                     self.operate_element(cell(network, row, col))
                 }
+                // On the element's label (its address, symbol or comment): its properties.
+                Hit::Cell { network, row, col }
+                    if ev.double_click_at.is_some_and(|p| {
+                        self.edit.geometry.labels.iter().any(|(r, _)| r.contains(p))
+                    }) =>
+                {
+                    self.open_properties(Some(cell(network, row, col)))
+                }
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {
                     self.edit.cursor = cell(network, 0, 0);

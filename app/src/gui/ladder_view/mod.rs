@@ -216,6 +216,8 @@ pub struct Geometry {
     pub heights: Vec<f32>,
     /// The zoom it was drawn at, in percent.
     pub zoom: u16,
+    /// How far below a row's top its wire runs (where contacts and coils sit).
+    pub mid: f32,
     /// Every contact and coil label drawn (operand lines and element comments): where, and
     /// the text as shown, ellipsis included.
     pub labels: Vec<(Rect, String)>,
@@ -235,7 +237,8 @@ impl Geometry {
         } else {
             self.cell
         };
-        Some(pos2(x + w * 0.5, top + 12.0))
+        // On the element itself, not on its label above.
+        Some(pos2(x + w * 0.5, top + self.mid))
     }
 }
 
@@ -371,6 +374,8 @@ pub struct ViewEvents {
     pub click: Option<(Hit, egui::Modifiers)>,
     /// A double click.
     pub double_click: Option<Hit>,
+    /// Where the double click was, on screen.
+    pub double_click_at: Option<Pos2>,
     /// A drag started this frame, where the button went down.
     pub drag_start: Option<Hit>,
     /// Where a drag in progress (or ending) is now.
@@ -506,6 +511,7 @@ pub fn block_ui(
         geometry.width = project.ladder.width;
         geometry.margin = m.margin;
         geometry.zoom = zoom;
+        geometry.mid = m.mid;
         geometry.labels.clear();
         geometry.error_marks.clear();
         geometry.tops = placed.iter().map(|p| p.top).collect();
@@ -540,6 +546,7 @@ pub fn block_ui(
         // A third quick click is still a double-click to a user.
         if response.double_clicked() || response.triple_clicked() {
             events.double_click = pointer.and_then(hit);
+            events.double_click_at = pointer;
         }
         if response.secondary_clicked() {
             events.secondary = pointer.and_then(hit);

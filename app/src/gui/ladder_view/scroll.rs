@@ -126,6 +126,7 @@ mod tests {
             width: 9,
             margin: m.margin,
             zoom,
+            mid: m.mid,
             labels: Vec::new(),
             error_marks: Vec::new(),
             visible: None,

@@ -9,6 +9,7 @@
 
 mod commit;
 mod error;
+mod properties;
 mod rows;
 mod rules;
 #[cfg(test)]
@@ -16,6 +17,7 @@ mod tests;
 
 pub use commit::{cell_text, commit, set_password};
 pub use error::{TableError, Taken};
+pub use properties::{Properties, plan_properties, properties_of};
 pub use rows::{changed_row, k_bit, next_free_address, row_op, seed};
 pub use rules::{
     ALARM_NUMBERS, COMMENT_MAX_BYTES, M_CODES, SYMBOL_AREAS, VALUE_AREAS, alarm_number,
