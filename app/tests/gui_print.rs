@@ -65,10 +65,94 @@ fn the_preview_opens_on_the_sample_and_its_pages_turn() {
     h.get_by_label("◀").click();
     h.run();
     assert_eq!(h.state().print.preview.as_ref().unwrap().page, 1);
-    // Zoom in: the page is drawn larger.
+    // It opened at fit width; zoom in: the page is drawn larger and fit width is off.
+    let fitted = h.state().print.preview.as_ref().unwrap().zoom;
+    assert!(h.state().print.preview.as_ref().unwrap().fit);
     h.get_by_label("+").click();
     h.run();
-    assert_eq!(h.state().print.preview.as_ref().unwrap().zoom, 100);
+    let p = h.state().print.preview.as_ref().unwrap();
+    assert!(p.zoom > fitted && !p.fit, "{} after {fitted}", p.zoom);
+}
+
+#[test]
+fn the_preview_opens_at_fit_width() {
+    let mut h = on_sample();
+    h.state_mut()
+        .ask(ladder_studio::gui::command::Command::PrintPreview);
+    h.run();
+    h.run();
+    let p = h.state().print.preview.as_ref().unwrap();
+    // An A4 page (595 pt) in a preview window about 760 px wide: more than 100 %.
+    assert!(p.fit && (100..=140).contains(&p.zoom), "{}", p.zoom);
+}
+
+#[test]
+fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
+    use ladder_studio::gui::printing::Printers;
+    let mut h = on_sample();
+    let q = ScriptedQueue {
+        present: true,
+        printers: Printers {
+            names: vec!["office".into(), "shop-floor".into()],
+            default: Some("shop-floor".into()),
+        },
+        ..ScriptedQueue::default()
+    };
+    h.state_mut().print.queue = Box::new(q.clone());
+    h.state_mut()
+        .ask(ladder_studio::gui::command::Command::PageSetup);
+    h.run();
+    h.run();
+    assert_eq!(h.state().chosen_printer().as_deref(), Some("shop-floor"));
+    h.get_by_role_and_label(egui::accesskit::Role::ComboBox, "Printer")
+        .click();
+    h.run();
+    assert!(h.query_by_label("shop-floor (default)").is_some());
+    h.get_by_label("office").click();
+    h.run();
+    assert_eq!(
+        h.state().settings.page_setup.printer.as_deref(),
+        Some("office"),
+        "kept in the settings"
+    );
+    h.key_press_modifiers(Modifiers::COMMAND, Key::P);
+    h.run();
+    let jobs = q.jobs.lock().unwrap();
+    assert_eq!(jobs[0].1.as_deref(), Some("office"));
+}
+
+#[test]
+fn a_network_range_in_the_page_setup_prints_those_networks() {
+    let mut h = on_sample();
+    h.state_mut().settings.page_setup.networks = "LEVEL2:3-5".into();
+    let doc = h.state().print_document().unwrap();
+    let titles: Vec<String> = doc
+        .pages
+        .iter()
+        .flat_map(|p| p.texts())
+        .filter(|t| t.starts_with("N0") && t.len() >= 5)
+        .map(|t| t[..5].to_string())
+        .collect();
+    assert_eq!(titles, ["N0003", "N0004", "N0005"]);
+}
+
+#[test]
+fn without_a_queue_the_preview_says_so() {
+    let mut h = on_sample();
+    queue(&mut h, false);
+    scripted(&mut h, vec![None]);
+    h.state_mut()
+        .ask(ladder_studio::gui::command::Command::PrintPreview);
+    h.run();
+    h.key_press_modifiers(Modifiers::COMMAND, Key::P);
+    h.run();
+    h.run();
+    assert!(h.state().print.preview.is_some(), "the preview stays open");
+    assert_eq!(
+        h.query_all_by_label_contains("no print queue").count(),
+        2,
+        "the notice is in the preview, not only in the output behind it"
+    );
 }
 
 #[test]
@@ -79,7 +163,7 @@ fn ctrl_p_sends_one_pdf_to_the_print_queue() {
     h.run();
     let jobs = q.jobs.lock().unwrap();
     assert_eq!(jobs.len(), 1, "one job");
-    assert!(jobs[0].starts_with(b"%PDF-"), "a PDF");
+    assert!(jobs[0].0.starts_with(b"%PDF-"), "a PDF");
     let out = output(&h);
     assert!(
         out.contains("Sent to the print queue") && out.contains("scripted-1"),
@@ -112,8 +196,8 @@ fn the_selected_networks_alone_print_when_asked() {
     let all = h.state().print_document().unwrap().pages.len();
     {
         let app = h.state_mut();
-        app.print.setup.selection_only = true;
-        app.print.setup.tables = false;
+        app.settings.page_setup.selection_only = true;
+        app.settings.page_setup.tables = false;
     }
     let one = h.state().print_document().unwrap();
     assert!(one.pages.len() < all, "{} against {all}", one.pages.len());
@@ -129,7 +213,7 @@ fn the_selected_networks_alone_print_when_asked() {
 #[test]
 fn export_as_svg_writes_a_file_per_page() {
     let mut h = on_sample();
-    h.state_mut().print.setup.selection_only = true;
+    h.state_mut().settings.page_setup.selection_only = true;
     let dir = tempfile_dir();
     scripted(&mut h, vec![Some(dir.join("net.svg"))]);
     h.get_by_label("File").click();

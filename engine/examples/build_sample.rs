@@ -126,6 +126,7 @@ fn main() {
         });
     }
     project.version.set(
+        "",
         "Ladder Studio",
         "1.0",
         "GSK988TA 车床样例梯形图 / GSK988TA lathe sample ladder",

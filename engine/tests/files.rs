@@ -65,7 +65,7 @@ fn full_project() -> Project {
         code: 8,
         comments: comments("冷却开", "coolant on"),
     });
-    p.version.set("GSK 用户", "V1.0", "样例");
+    p.version.set("车床 A", "GSK 用户", "V1.0", "样例");
     p.version.password = Some(PasswordHash::new("1234", "5eed"));
     p
 }
@@ -190,7 +190,7 @@ fn an_interrupted_save_leaves_the_old_or_the_new_file() {
     let old = full_project();
     file::save(&old, &path).unwrap();
     let mut new = old.clone();
-    new.version.set("someone else", "V2.0", "");
+    new.version.set("", "someone else", "V2.0", "");
     for stage in [Interrupt::MidWrite, Interrupt::BeforeRename] {
         assert!(file::save_interruptible(&new, &path, stage).is_err());
         assert_eq!(
@@ -211,9 +211,9 @@ fn a_save_killed_while_writing_the_backup_keeps_the_last_good_backup() {
     let bak = dir.path().join("p.ldp.bak");
     let first = full_project();
     let mut second = first.clone();
-    second.version.set("second", "V2.0", "");
+    second.version.set("", "second", "V2.0", "");
     let mut third = first.clone();
-    third.version.set("third", "V3.0", "");
+    third.version.set("", "third", "V3.0", "");
     file::save(&first, &path).unwrap();
     file::save(&second, &path).unwrap();
     assert_eq!(file::load(&bak).unwrap(), first);

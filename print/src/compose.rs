@@ -90,6 +90,11 @@ impl Pages {
 
 /// Lays out the document of `project`, called `name`.
 pub fn document(project: &Project, name: &str, options: &Options) -> Document {
+    // The version information's project name is the title; the file's name otherwise.
+    let name = match project.version.name.trim() {
+        "" => name,
+        given => given,
+    };
     let (width, height) = options.page_size();
     let mut metrics = Metrics::new();
     let names = Names::new(project);

@@ -2,8 +2,8 @@
 
 use crate::page::Pt;
 
-/// Paper sizes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// Paper sizes (kept in the editor's settings, hence serde).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Paper {
     /// ISO A4, 210 × 297 mm.
     #[default]
@@ -185,6 +185,39 @@ fn civil_from_days(z: i64) -> (i64, u32, u32) {
     let d = (doy - (153 * mp + 2) / 5 + 1) as u32;
     let m = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
     (yoe + era * 400 + i64::from(m <= 2), m, d)
+}
+
+/// Finds `BLOCK:N` or `BLOCK:FIRST-LAST` (`LEVEL2:3`, `LEVEL2:10-40`, `P0001:1`) in the
+/// project: (block index, network index) of each network.
+pub fn find_networks(
+    project: &ladder_engine::model::Project,
+    text: &str,
+) -> Result<Vec<(usize, usize)>, String> {
+    let (block, n) = text
+        .split_once(':')
+        .ok_or_else(|| format!("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3"))?;
+    let b = project
+        .ladder
+        .blocks
+        .iter()
+        .position(|b| b.kind.label().eq_ignore_ascii_case(block))
+        .ok_or_else(|| {
+            format!("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")
+        })?;
+    let count = project.ladder.blocks[b].networks.len();
+    let (first, last) = n.split_once('-').unwrap_or((n, n));
+    let number = |t: &str| {
+        t.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=count).contains(n))
+    };
+    match (number(first), number(last)) {
+        (Some(a), Some(z)) if a <= z => Ok((a - 1..z).map(|i| (b, i)).collect()),
+        _ => Err(format!(
+            "`{n}`: {block} has networks 1 to {count} (write N or FIRST-LAST, e.g. 10-40)"
+        )),
+    }
 }
 
 #[cfg(test)]

@@ -88,3 +88,26 @@ fn element_comments_never_cross_a_rail_or_a_link_and_wrap_in_their_cell() {
         );
     }
 }
+
+#[test]
+fn the_title_is_the_project_name_of_the_version_information() {
+    let mut project = sample();
+    let options = Options {
+        date: "2026-12-03".into(),
+        ..Options::default()
+    };
+    let title = |p: &ladder_engine::model::Project| {
+        document(p, "lathe-988ta", &options).pages[0]
+            .texts()
+            .next()
+            .unwrap_or_default()
+            .to_string()
+    };
+    assert_eq!(
+        title(&project),
+        "lathe-988ta",
+        "the file's name without one"
+    );
+    project.version.name = "CK6140 lathe, order 2026-117".into();
+    assert_eq!(title(&project), "CK6140 lathe, order 2026-117");
+}

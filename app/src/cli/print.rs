@@ -100,39 +100,6 @@ enum Kind {
     Svg,
 }
 
-/// Finds `BLOCK:N` or `BLOCK:FIRST-LAST` (`LEVEL2:3`, `LEVEL2:10-40`, `P0001:1`) in the
-/// project: (block index, network index) of each network.
-fn find_networks(
-    project: &ladder_engine::model::Project,
-    text: &str,
-) -> Result<Vec<(usize, usize)>, String> {
-    let (block, n) = text
-        .split_once(':')
-        .ok_or_else(|| format!("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3"))?;
-    let b = project
-        .ladder
-        .blocks
-        .iter()
-        .position(|b| b.kind.label().eq_ignore_ascii_case(block))
-        .ok_or_else(|| {
-            format!("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")
-        })?;
-    let count = project.ladder.blocks[b].networks.len();
-    let (first, last) = n.split_once('-').unwrap_or((n, n));
-    let number = |t: &str| {
-        t.trim()
-            .parse::<usize>()
-            .ok()
-            .filter(|n| (1..=count).contains(n))
-    };
-    match (number(first), number(last)) {
-        (Some(a), Some(z)) if a <= z => Ok((a - 1..z).map(|i| (b, i)).collect()),
-        _ => Err(format!(
-            "`{n}`: {block} has networks 1 to {count} (write N or FIRST-LAST, e.g. 10-40)"
-        )),
-    }
-}
-
 /// Runs `print`.
 pub(super) fn print(
     args: &PrintArgs,
@@ -169,7 +136,7 @@ pub(super) fn print(
         Err(code) => return Ok(code),
     };
     let only = match args.network.as_deref() {
-        Some(text) => Some(find_networks(&project, text).map_err(|e| {
+        Some(text) => Some(ladder_print::find_networks(&project, text).map_err(|e| {
             anyhow::anyhow!(say.pick(format!("--network {e}"), format!("--network {e}")))
         })?),
         None => None,

@@ -202,7 +202,10 @@ impl LadderApp {
             Command::ExportIl => self.start_dialog(DialogKind::ExportIl),
             Command::ExportComments => self.start_dialog(DialogKind::ExportComments),
             Command::ImportComments => self.start_dialog(DialogKind::ImportComments),
-            Command::PageSetup => self.print.setup_open = true,
+            Command::PageSetup => {
+                self.print.setup_open = true;
+                self.refresh_printers();
+            }
             Command::PrintPreview => self.open_preview(),
             Command::Print => self.print_now(),
             Command::ExportDocument => self.start_dialog(DialogKind::ExportDocument),

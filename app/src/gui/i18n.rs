@@ -180,6 +180,10 @@ messages! {
     Compile => "编译", "Compile";
     NextError => "下一个错误", "Next error";
     MoreTools => "更多工具", "More tools";
+    Printer => "打印机", "Printer";
+    NoPrinters => "（打印系统未列出打印机）", "(the print system lists no printer)";
+    DefaultPrinter => "默认", "default";
+    PrintNetworks => "网络范围", "Networks";
     ElementProperties => "元件属性", "Element properties";
     SymbolLabel => "符号", "Symbol";
     CommentLabel => "注释", "Comment";
@@ -446,6 +450,7 @@ messages! {
     TblErrMCode => "M 代码的范围是 0–9999", "M codes are 0–9999";
     TblErrMCodeTwice => "M 代码已存在", "This M code is already listed";
     TblErrNoFree => "没有可插入的空闲地址", "No free address left to insert";
+    TblProjectName => "工程名称", "Project name";
     TblDesigner => "梯形图设计", "Designer";
     TblVersion => "梯形图版本", "Version";
     TblRemarks => "备注", "Remarks";

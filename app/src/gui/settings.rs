@@ -243,6 +243,8 @@ pub struct Settings {
     /// comes back with the view.
     pub cursors:
         std::collections::BTreeMap<PathBuf, std::collections::BTreeMap<String, [usize; 3]>>,
+    /// The page setup of printing, as last left.
+    pub page_setup: super::printing::PageSetup,
 }
 
 impl Default for Settings {
@@ -265,6 +267,7 @@ impl Default for Settings {
             online_window: false,
             tops: Default::default(),
             cursors: Default::default(),
+            page_setup: Default::default(),
             show_toolbar: true,
             show_output: true,
             show_tree: true,

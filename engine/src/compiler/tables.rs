@@ -12,7 +12,8 @@ use crate::model::sheets::{
     check_symbol_form, check_value_area,
 };
 use crate::model::tables::{
-    AddressRow, Comments, DESIGNER_MAX, MessageTable, REMARKS_MAX, VALUE_LIMIT, VERSION_MAX,
+    AddressRow, Comments, DESIGNER_MAX, MessageTable, NAME_MAX, REMARKS_MAX, VALUE_LIMIT,
+    VERSION_MAX,
 };
 use std::collections::HashMap;
 
@@ -408,6 +409,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
     sink.at(VERSION, "VERSION", 0);
     let v = &project.version;
     for (field, field_zh, text, max) in [
+        ("name", "工程名称", &v.name, NAME_MAX),
         ("designer", "设计者", &v.designer, DESIGNER_MAX),
         ("version", "版本", &v.version, VERSION_MAX),
         ("remarks", "备注", &v.remarks, REMARKS_MAX),

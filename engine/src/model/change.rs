@@ -323,7 +323,7 @@ mod tests {
         let mut h = History::new(3);
         for i in 0..5 {
             let mut v = p.version.clone();
-            v.set("me", &format!("1.{i}"), "");
+            v.set("", "me", &format!("1.{i}"), "");
             h.apply(&mut p, TableEdit::Version(Box::new(v))).unwrap();
         }
         assert_eq!(h.undo_len(), 3);

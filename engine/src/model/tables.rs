@@ -353,6 +353,8 @@ impl PasswordHash {
 
 /// Limits of the version information (§3.4.7), in characters.
 pub const DESIGNER_MAX: usize = 63;
+/// Longest project name.
+pub const NAME_MAX: usize = 63;
 /// Longest version text.
 pub const VERSION_MAX: usize = 19;
 /// Longest remarks.
@@ -361,6 +363,10 @@ pub const REMARKS_MAX: usize = 511;
 /// The ladder version information (§3.4.7).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct VersionInfo {
+    /// 工程名称: the project's name (the machine, the customer's order), ≤ 63 characters;
+    /// the printout's title. Not written while empty, so older projects save unchanged.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub name: String,
     /// 梯形图设计: designer, ≤ 63 characters.
     #[serde(default)]
     pub designer: String,
@@ -377,8 +383,9 @@ pub struct VersionInfo {
 
 impl VersionInfo {
     /// Sets the fields, cutting each to its limit.
-    pub fn set(&mut self, designer: &str, version: &str, remarks: &str) {
+    pub fn set(&mut self, name: &str, designer: &str, version: &str, remarks: &str) {
         let cut = |s: &str, n: usize| s.chars().take(n).collect::<String>();
+        self.name = cut(name, NAME_MAX);
         self.designer = cut(designer, DESIGNER_MAX);
         self.version = cut(version, VERSION_MAX);
         self.remarks = cut(remarks, REMARKS_MAX);

@@ -102,7 +102,7 @@ pub struct TableState {
     /// A row to bring into view at the next frame.
     scroll_to: Option<(Sheet, usize)>,
     /// Designer, version and remarks being typed, with when they were typed.
-    version: [Option<(String, u64)>; 3],
+    version: [Option<(String, u64)>; 4],
     /// The password fields.
     password: PasswordDraft,
     /// The view and document generation the drafts were typed against.

@@ -6,7 +6,10 @@ use super::super::i18n::{Lang, Msg};
 use super::{ERROR_RED, OK_GREEN, PasswordDraft, TableEvent, TableState};
 use egui::Key;
 use ladder_engine::model::sheets::{TableError, set_password};
-use ladder_engine::model::tables::{DESIGNER_MAX, REMARKS_MAX, VERSION_MAX};
+use ladder_engine::model::tables::{DESIGNER_MAX, NAME_MAX, REMARKS_MAX, VERSION_MAX};
+
+/// The field of the remarks, the one of several lines.
+const REMARKS: usize = 3;
 use ladder_engine::model::{TableEdit, VersionInfo};
 
 /// Draws the version view.
@@ -29,6 +32,7 @@ pub(super) fn version_ui(
         .spacing([12.0, 8.0])
         .show(ui, |ui| {
             let fields = [
+                (Msg::TblProjectName, NAME_MAX, &current.name),
                 (Msg::TblDesigner, DESIGNER_MAX, &current.designer),
                 (Msg::TblVersion, VERSION_MAX, &current.version),
                 (Msg::TblRemarks, REMARKS_MAX, &current.remarks),
@@ -38,12 +42,12 @@ pub(super) fn version_ui(
                 let mut text = state.version[i]
                     .as_ref()
                     .map_or_else(|| saved.clone(), |(d, _)| d.clone());
-                let edit = if i == 2 {
+                let edit = if i == REMARKS {
                     egui::TextEdit::multiline(&mut text).desired_rows(6)
                 } else {
                     egui::TextEdit::singleline(&mut text)
                 };
-                let height = if i == 2 {
+                let height = if i == REMARKS {
                     6.0 * ui.text_style_height(&egui::TextStyle::Body) + 8.0
                 } else {
                     ui.spacing().interact_size.y
@@ -70,9 +74,10 @@ pub(super) fn version_ui(
             }
         });
     if commit {
-        let [d, v, r] = std::mem::take(&mut state.version).map(|f| f.map(|(text, _)| text));
+        let [n, d, v, r] = std::mem::take(&mut state.version).map(|f| f.map(|(text, _)| text));
         let mut next = current.clone();
         next.set(
+            &n.unwrap_or(current.name.clone()),
             &d.unwrap_or(current.designer.clone()),
             &v.unwrap_or(current.version.clone()),
             &r.unwrap_or(current.remarks.clone()),
