@@ -26,7 +26,7 @@ sleep 1
 # The version page: the last entry of the project tree, scrolled into view.
 DISPLAY=:97 xdotool mousemove 100 350 click --repeat 8 --delay 80 5
 sleep 1
-DISPLAY=:97 xdotool mousemove "${VERSION_X:-60}" "${VERSION_Y:-423}" click 1
+DISPLAY=:97 xdotool mousemove "${VERSION_X:-60}" "${VERSION_Y:-408}" click 1
 sleep 2
 DISPLAY=:97 import -window root "${PROBE:-docs/small-version.png}"
 echo "docs/small-f3.png docs/small-version.png"

@@ -8,7 +8,7 @@ Xvfb :99 -screen 0 1400x900x24 &
 xvfb=$!
 trap 'kill $app $xvfb 2>/dev/null || true' EXIT
 sleep 2
-DISPLAY=:99 LANG=zh_CN.UTF-8 ./target/release/ladder-studio projects/lathe-988ta.ldp &
+DISPLAY=:99 ./target/release/ladder-studio --lang zh projects/lathe-988ta.ldp &
 app=$!
 sleep 8
 wid=$(DISPLAY=:99 xdotool search --name "Ladder Studio" | head -1)

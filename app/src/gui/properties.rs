@@ -82,6 +82,7 @@ impl LadderApp {
             .fixed_pos(pos)
             .show(ctx, |ui| {
                 egui::Frame::popup(ui.style()).show(ui, |ui| {
+                    ui.set_min_width(360.0);
                     ui.strong(format!("{}  {}", t(Msg::ElementProperties), form.address));
                     egui::Grid::new("properties").num_columns(2).show(ui, |ui| {
                         let l = ui.label(t(Msg::SymbolLabel));
