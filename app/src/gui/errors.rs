@@ -5,7 +5,7 @@ use super::document::Refused;
 use super::i18n::{Lang, Msg};
 use ladder_engine::address::AddressError;
 use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
-use ladder_engine::model::{EditError, OperandError};
+use ladder_engine::model::{EditError, OperandError, SubError};
 
 /// Why the document refused a change.
 pub fn refused(e: &Refused, lang: Lang) -> String {
@@ -111,6 +111,21 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
             FileError::Encoding(b) => format!("文件不是 UTF-8 文本（第 {b} 字节）"),
             FileError::Structure(m) => format!("梯形图结构错误：{m}"),
         },
+    }
+}
+
+/// Why a subprogram command was refused.
+pub fn sub_error(e: &SubError, lang: Lang) -> String {
+    match (lang, e) {
+        (Lang::En, e) => e.to_string(),
+        (Lang::Zh, SubError::Usage { lo, hi }) => {
+            format!("{}: P{lo:04}–P{hi:04}", Msg::SubUsage.text(lang))
+        }
+        (Lang::Zh, SubError::BadName(name)) => {
+            format!("`{name}`: {}", Msg::BadSymbolName.text(lang))
+        }
+        (Lang::Zh, SubError::Exists(n)) => format!("P{n:04}: {}", Msg::SubExists.text(lang)),
+        (Lang::Zh, SubError::NoSuch(n)) => format!("P{n:04}: {}", Msg::NoSuchSub.text(lang)),
     }
 }
 

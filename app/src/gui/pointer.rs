@@ -10,8 +10,7 @@ pub use super::place::BlockKey;
 use super::place::View;
 use super::selection::Selection;
 use super::{LadderApp, OutputLine};
-use ladder_engine::address::Area;
-use ladder_engine::model::{Block, BlockKind, Cell, Edit};
+use ladder_engine::model::{Cell, Edit, parse_sub};
 
 impl LadderApp {
     /// The cursor's cell when the shown block has it (deleting never adds a network first).
@@ -297,23 +296,15 @@ impl LadderApp {
     /// A new subprogram from `NUMBER [NAME]`, inserted in number order and shown.
     pub fn new_subprogram(&mut self, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
-        let (number, name) = self.parse_sub(text)?;
-        let ladder = &self
+        let sub = |e| super::errors::sub_error(&e, lang);
+        let project = self
             .doc
             .as_ref()
             .ok_or(Msg::NoProject.text(lang))?
-            .project()
-            .ladder;
-        if ladder.sub_index(number).is_some() {
-            return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
-        }
-        let index = ladder.sub_insert_index(number);
-        let mut block = Block::new(BlockKind::Sub { number, name });
-        block.networks.push(ladder.new_network());
-        if self.try_edit(Edit::InsertBlock {
-            index,
-            block: Box::new(block),
-        })? {
+            .project();
+        let (number, name) = parse_sub(text, project.profile()).map_err(sub)?;
+        let (index, edit) = project.ladder.plan_new_sub(number, name).map_err(sub)?;
+        if self.try_edit(edit)? {
             // Blocks from `index` on moved down one place: their tabs follow.
             for v in &mut self.tabs {
                 if let View::Block(b) = v
@@ -334,62 +325,21 @@ impl LadderApp {
         Ok(())
     }
 
-    fn parse_sub(&self, text: &str) -> Result<(u16, String), String> {
-        let lang = self.settings.lang;
-        let mut words = text.split_whitespace();
-        let number = words
-            .next()
-            .map(|w| w.trim_start_matches(['P', 'p']))
-            .and_then(|w| w.parse::<u16>().ok());
-        let name = words.collect::<Vec<_>>().join(" ");
-        let profile = self
-            .doc
-            .as_ref()
-            .map(|d| d.project().profile())
-            .ok_or(Msg::NoProject.text(lang))?;
-        let (lo, hi) = profile.range(Area::P);
-        match number {
-            Some(n) if (lo..=hi).contains(&n) => {}
-            _ => return Err(format!("{}: P{lo:04}–P{hi:04}", Msg::SubUsage.text(lang))),
-        }
-        if !name.is_empty() && !ladder_engine::model::is_symbol_name(&name) {
-            return Err(format!("`{name}`: {}", Msg::BadSymbolName.text(lang)));
-        }
-        Ok((number.unwrap_or(0), name))
-    }
-
     /// Renames (and renumbers) subprogram P`old` from `NUMBER [NAME]`.
     pub fn rename_subprogram(&mut self, old: u16, text: &str) -> Result<(), String> {
         let lang = self.settings.lang;
-        let (number, name) = self.parse_sub(text)?;
-        let ladder = &self
+        let sub = |e| super::errors::sub_error(&e, lang);
+        let project = self
             .doc
             .as_ref()
             .ok_or(Msg::NoProject.text(lang))?
-            .project()
-            .ladder;
-        let index = ladder
-            .sub_index(old)
-            .ok_or_else(|| format!("P{old:04}: {}", Msg::NoSuchSub.text(lang)))?;
-        if ladder.sub_index(number).is_some_and(|i| i != index) {
-            return Err(format!("P{number:04}: {}", Msg::SubExists.text(lang)));
-        }
-        let info = ladder.blocks[index].info.clone();
-        let target = ladder.sub_insert_index(number);
-        // Renumbering keeps subprograms sorted: take the block out and put it back in its
-        // place, in the same undo step.
-        let mut block = ladder.blocks[index].clone();
-        block.kind = BlockKind::Sub { number, name };
-        block.info = info;
-        let to = if target > index { target - 1 } else { target };
-        let ok = self.try_edit(Edit::Batch(vec![
-            Edit::DeleteBlock { index },
-            Edit::InsertBlock {
-                index: to,
-                block: Box::new(block),
-            },
-        ]))?;
-        if ok
+            .project();
+        let (number, name) = parse_sub(text, project.profile()).map_err(sub)?;
+        let edit = project
+            .ladder
+            .plan_rename_sub(old, number, name)
+            .map_err(sub)?;
+        if self.try_edit(edit)?
             && let Some(i) = self
                 .doc
                 .as_ref()

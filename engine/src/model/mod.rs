@@ -9,6 +9,7 @@ pub mod network;
 pub mod operand;
 pub mod panel;
 pub mod plan;
+pub mod plan_sub;
 pub mod project;
 pub mod region;
 pub mod sheets;
@@ -22,6 +23,7 @@ pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH};
 pub use network::{Network, NetworkId, Row};
 pub use operand::{Operand, OperandError, is_symbol_name};
 pub use panel::{Panel, PanelError, PanelItem, PanelKind};
+pub use plan_sub::{SubError, parse_sub};
 pub use project::{Project, SymbolIndex};
 pub use tables::{
     AddressRow, Comments, DataRow, DataTables, MCodeRow, Message, MessageTable, PasswordHash,
