@@ -32,7 +32,7 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::S);
     h.run();
     let drawn = h.state().doc.as_ref().unwrap().project().ladder.clone();
-    assert!(!h.state().doc.as_ref().unwrap().dirty, "saved");
+    assert!(!h.state().doc.as_ref().unwrap().is_dirty(), "saved");
 
     // Reopened from the file, the ladder exports the manual's instruction list.
     assert_eq!(
@@ -633,5 +633,5 @@ fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block()
     let doc = h.state().doc.as_ref().unwrap();
     assert!(doc.project().ladder.blocks[1].networks.is_empty());
     assert_eq!(doc.history().undo_len(), 0);
-    assert!(!doc.dirty);
+    assert!(!doc.is_dirty());
 }

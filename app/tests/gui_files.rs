@@ -131,7 +131,7 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     h.get_by_label("Open read-only").click();
     h.run();
     let doc = h.state().doc.as_ref().unwrap();
-    assert!(doc.read_only && doc.path.is_none());
+    assert!(doc.is_read_only() && doc.path().is_none());
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
     assert_eq!(
@@ -159,7 +159,7 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
         il.contains("OUT  Y0003.6"),
         "what could be read was kept: {il}"
     );
-    assert!(!h.state().doc.as_ref().unwrap().read_only);
+    assert!(!h.state().doc.as_ref().unwrap().is_read_only());
 }
 
 #[test]
@@ -284,7 +284,10 @@ fn the_window_title_names_the_project_and_marks_unsaved_changes() {
     assert_eq!(h.state().title, "mill.ldp — Ladder Studio");
     h.key_press(egui::Key::F4);
     h.run();
-    assert!(h.state().doc.as_ref().unwrap().dirty, "a wire was drawn");
+    assert!(
+        h.state().doc.as_ref().unwrap().is_dirty(),
+        "a wire was drawn"
+    );
     assert_eq!(h.state().title, "mill.ldp* — Ladder Studio");
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
     h.run();

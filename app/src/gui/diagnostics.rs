@@ -25,7 +25,7 @@ impl LadderApp {
     /// F12 / Shift+F12: the cursor to the next or previous cell the last compile found wrong
     /// (compiling first when nothing was compiled yet).
     pub fn step_error(&mut self, forward: bool) {
-        if self.doc.as_ref().is_some_and(|d| d.compiled.is_none()) {
+        if self.doc.as_ref().is_some_and(|d| d.compiled().is_none()) {
             self.compile();
         }
         let Some(doc) = self.doc.as_ref() else { return };

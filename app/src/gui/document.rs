@@ -35,22 +35,22 @@ pub struct Document {
     /// An undo group is open: changes from this undo depth on become one step.
     group: Option<usize>,
     /// Where it is saved; `None` for the sample and new projects.
-    pub path: Option<PathBuf>,
+    path: Option<PathBuf>,
     /// Changed since the last save.
-    pub dirty: bool,
+    dirty: bool,
     /// The last compile, if any.
-    pub compiled: Option<Compiled>,
+    compiled: Option<Compiled>,
     /// Opened from a damaged file: looked at, never saved over the original.
-    pub read_only: bool,
+    read_only: bool,
     /// A recorded past of the machine is on screen: no change, undo or redo, so the program
     /// that runs at "back to live" is the one that ran.
-    pub replaying: bool,
+    replaying: bool,
     /// The damaged file a read-only document was recovered from.
-    pub recovered_from: Option<PathBuf>,
+    recovered_from: Option<PathBuf>,
     /// Tells documents apart (a new or reopened project gets a new one), for caches.
-    pub serial: u64,
+    serial: u64,
     /// Counts changes, so views can cache what they derive from the project.
-    pub generation: u64,
+    generation: u64,
     /// Compiled once by the user: from then on every change is checked again, so the
     /// diagram's error marks follow the drawing.
     checking: bool,
@@ -187,6 +187,66 @@ impl Document {
         self.read_only = false;
         self.recovered_from = None;
         Ok(())
+    }
+
+    /// Where it is saved; `None` for the sample and new projects.
+    pub fn path(&self) -> Option<&Path> {
+        self.path.as_deref()
+    }
+
+    /// Changed since the last save.
+    pub fn is_dirty(&self) -> bool {
+        self.dirty
+    }
+
+    /// Opened from a damaged file: looked at, never saved over the original.
+    pub fn is_read_only(&self) -> bool {
+        self.read_only
+    }
+
+    /// A recorded past of the machine is on screen.
+    pub fn is_replaying(&self) -> bool {
+        self.replaying
+    }
+
+    /// The damaged file a read-only document was recovered from.
+    pub fn recovered_from(&self) -> Option<&Path> {
+        self.recovered_from.as_deref()
+    }
+
+    /// The last compile, if the project has not changed since.
+    pub fn compiled(&self) -> Option<&Compiled> {
+        self.compiled.as_ref()
+    }
+
+    /// Tells documents apart (a new or reopened project gets a new one), for caches.
+    pub fn serial(&self) -> u64 {
+        self.serial
+    }
+
+    /// Counts changes, so views can cache what they derive from the project.
+    pub fn generation(&self) -> u64 {
+        self.generation
+    }
+
+    /// What could be read of the damaged file `from`: read-only, never saved over it.
+    pub fn recovered(project: Project, from: PathBuf) -> Document {
+        let mut doc = Document::new(project, None);
+        doc.read_only = true;
+        doc.recovered_from = Some(from);
+        doc
+    }
+
+    /// A recovery copy restored: the project as it was, unsaved, under its own file's name.
+    pub fn restored(project: Project, original: Option<PathBuf>) -> Document {
+        let mut doc = Document::new(project, original);
+        doc.dirty = true;
+        doc
+    }
+
+    /// Read-only exactly while a recorded past of the machine is shown.
+    pub fn set_replaying(&mut self, on: bool) {
+        self.replaying = on;
     }
 
     /// Compiles and keeps the result; from now on changes are checked as they are made.

@@ -91,7 +91,7 @@ impl LadderApp {
     /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
     /// question.
     pub fn request(&mut self, action: Action) {
-        if self.doc.as_ref().is_some_and(|d| d.dirty) {
+        if self.doc.as_ref().is_some_and(|d| d.is_dirty()) {
             self.files.question = Some(Question::Unsaved { then: action });
         } else {
             self.perform(action);
@@ -147,7 +147,7 @@ impl LadderApp {
     pub(super) fn start_dialog(&mut self, kind: DialogKind) {
         let doc = self.doc.as_ref();
         let stem = doc
-            .and_then(|d| d.path.as_ref().or(d.recovered_from.as_ref()))
+            .and_then(|d| d.path().or(d.recovered_from()))
             .and_then(|p| p.file_stem())
             .map_or("project".to_string(), |s| s.to_string_lossy().into_owned());
         let ext = match kind {
@@ -157,7 +157,7 @@ impl LadderApp {
             DialogKind::ExportComments | DialogKind::ExportTrace => Some("csv"),
             DialogKind::ExportDocument => Some("pdf"),
         };
-        let dir = doc.and_then(|d| d.path.as_ref()).and_then(|p| p.parent());
+        let dir = doc.and_then(|d| d.path()).and_then(|p| p.parent());
         let suggested = ext.map(|e| {
             let name = format!("{stem}.{e}");
             dir.map_or(PathBuf::from(&name), |d| d.join(&name))
@@ -238,9 +238,7 @@ impl LadderApp {
             .and_then(|b| file::recover(&b).map_err(|e| super::errors::file_error(&e, lang)));
         match result {
             Ok(project) => {
-                let mut doc = Document::new(project, None);
-                doc.read_only = true;
-                doc.recovered_from = Some(path.to_path_buf());
+                let doc = Document::recovered(project, path.to_path_buf());
                 self.drop_recovery_copy();
                 self.doc = Some(doc);
                 self.reset_view();
@@ -264,8 +262,8 @@ impl LadderApp {
     pub fn save(&mut self) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_mut() else { return };
-        if doc.read_only || doc.path.is_none() {
-            if doc.read_only {
+        if doc.is_read_only() || doc.path().is_none() {
+            if doc.is_read_only() {
                 self.say(Msg::ReadOnlySaveAs.text(lang).into(), false);
             }
             self.start_dialog(DialogKind::SaveProjectAs);
@@ -290,7 +288,7 @@ impl LadderApp {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_mut() else { return };
         let path = &canonical(path);
-        if doc.recovered_from.as_deref() == Some(path.as_path()) {
+        if doc.recovered_from() == Some(path.as_path()) {
             self.files.after_save = None;
             self.say(Msg::NotOverDamaged.text(lang).into(), true);
             return;
@@ -299,13 +297,9 @@ impl LadderApp {
             .files
             .recovery_dir
             .as_ref()
-            .map(|d| recovery_path(d, doc.path.as_deref()));
-        match file::save(doc.project(), path) {
+            .map(|d| recovery_path(d, doc.path()));
+        match doc.save_as(path) {
             Ok(()) => {
-                doc.path = Some(path.to_path_buf());
-                doc.dirty = false;
-                doc.read_only = false;
-                doc.recovered_from = None;
                 if let Some(c) = old_copy {
                     remove_copy(&c);
                 }
@@ -342,7 +336,7 @@ impl LadderApp {
         self.compile();
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_ref() else { return };
-        let Some(compiled) = doc.compiled.as_ref() else {
+        let Some(compiled) = doc.compiled() else {
             return;
         };
         if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
@@ -377,7 +371,7 @@ impl LadderApp {
     pub fn import_comments(&mut self, path: &Path) {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_mut() else { return };
-        if doc.read_only {
+        if doc.is_read_only() {
             self.say(Msg::ReadOnly.text(lang).into(), true);
             return;
         }
@@ -404,10 +398,10 @@ impl LadderApp {
         let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) else {
             return;
         };
-        if !doc.dirty || doc.read_only {
+        if !doc.is_dirty() || doc.is_read_only() {
             return;
         }
-        let copy = recovery_path(dir, doc.path.as_deref());
+        let copy = recovery_path(dir, doc.path());
         let written = std::fs::create_dir_all(dir)
             .map_err(|e| e.to_string())
             .and_then(|()| {
@@ -416,7 +410,7 @@ impl LadderApp {
             })
             .and_then(|()| {
                 let origin = doc
-                    .path
+                    .path()
                     .as_ref()
                     .map_or(String::new(), |p| p.to_string_lossy().into_owned());
                 write_atomic(&copy.with_extension("origin"), &origin).map_err(|e| e.to_string())
@@ -444,7 +438,7 @@ impl LadderApp {
     /// The current project's recovery copy is no longer needed (saved, closed, replaced).
     pub fn drop_recovery_copy(&mut self) {
         if let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) {
-            remove_copy(&recovery_path(dir, doc.path.as_deref()));
+            remove_copy(&recovery_path(dir, doc.path()));
         }
     }
 
@@ -465,9 +459,7 @@ impl LadderApp {
         let lang = self.settings.lang;
         match file::load(&copy.copy) {
             Ok(project) => {
-                let mut doc = Document::new(project, copy.original.clone());
-                doc.dirty = true;
-                self.doc = Some(doc);
+                self.doc = Some(Document::restored(project, copy.original.clone()));
                 self.reset_view();
                 self.say(Msg::Restored.text(lang).into(), false);
             }
@@ -585,7 +577,7 @@ impl LadderApp {
     /// The window's close button: asks about unsaved changes first.
     pub fn close_requested(&mut self, ctx: &egui::Context) {
         if !self.files.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
-            if self.doc.as_ref().is_some_and(|d| d.dirty) {
+            if self.doc.as_ref().is_some_and(|d| d.is_dirty()) {
                 ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
                 self.files.question = Some(Question::Unsaved { then: Action::Exit });
             } else {

@@ -173,7 +173,7 @@ impl LadderApp {
                 let name = doc
                     .name()
                     .unwrap_or_else(|| self.t(Msg::Untitled).to_string());
-                let mark = if doc.dirty { "*" } else { "" };
+                let mark = if doc.is_dirty() { "*" } else { "" };
                 format!("{name}{mark} — Ladder Studio")
             }
             None => "Ladder Studio".to_string(),
@@ -414,9 +414,9 @@ impl LadderApp {
                     return;
                 };
                 let label = block.kind.label();
-                if self.edit.shown.insert((doc.serial, b))
+                if self.edit.shown.insert((doc.serial(), b))
                     && self.edit.jump_to.is_none()
-                    && let Some(path) = &doc.path
+                    && let Some(path) = doc.path()
                 {
                     self.edit.jump_to = self
                         .settings
@@ -452,7 +452,7 @@ impl LadderApp {
                         error: d.severity() == Severity::Error,
                     })
                     .collect();
-                let seen = (self.edit.cursor, doc.serial, doc.generation);
+                let seen = (self.edit.cursor, doc.serial(), doc.generation());
                 let follow = self.edit.followed != Some(seen);
                 self.edit.followed = Some(seen);
                 let opts = ladder_view::ViewOptions {
@@ -462,7 +462,7 @@ impl LadderApp {
                     titles: self.settings.show_titles,
                     cursor,
                     selection,
-                    document: doc.serial,
+                    document: doc.serial(),
                     anchor: self.edit.next_anchor(),
                     follow,
                     element_comments: self
@@ -540,14 +540,14 @@ impl LadderApp {
         let t = |m: Msg| m.text(lang);
         let Some(doc) = &self.doc else { return };
         let name = doc.name().unwrap_or_else(|| t(Msg::Untitled).into());
-        let steps = doc.compiled.as_ref().map(|c| c.steps.total);
+        let steps = doc.compiled().map(|c| c.steps.total);
         ui.horizontal(|ui| {
             ui.label(name);
-            if doc.dirty {
+            if doc.is_dirty() {
                 ui.label(t(Msg::Modified));
             }
             ui.separator();
-            ui.label(if doc.read_only {
+            ui.label(if doc.is_read_only() {
                 t(Msg::ModeReadOnly)
             } else {
                 t(Msg::ModeEdit)

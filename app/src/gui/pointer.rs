@@ -421,7 +421,7 @@ impl LadderApp {
     /// Keeps the cursor's place in block `b` (labelled `label`) of the open project.
     pub fn remember_cursor(&mut self, label: &str, b: usize) {
         let c = self.edit.cursor;
-        let Some(path) = self.doc.as_ref().and_then(|d| d.path.as_ref()) else {
+        let Some(path) = self.doc.as_ref().and_then(|d| d.path()) else {
             return;
         };
         if c.block != b {
@@ -429,18 +429,18 @@ impl LadderApp {
         }
         let at = [c.network, c.row, c.col];
         if self.settings.cursors.get(path).and_then(|t| t.get(label)) != Some(&at) {
-            let cursors = self.settings.cursors.entry(path.clone()).or_default();
+            let cursors = self.settings.cursors.entry(path.to_path_buf()).or_default();
             cursors.insert(label.to_string(), at);
         }
     }
 
     /// Keeps `top` as the first network on screen of block `label` of the open project.
     pub fn remember_top(&mut self, label: &str, top: usize) {
-        let Some(path) = self.doc.as_ref().and_then(|d| d.path.as_ref()) else {
+        let Some(path) = self.doc.as_ref().and_then(|d| d.path()) else {
             return;
         };
         if self.settings.tops.get(path).and_then(|t| t.get(label)) != Some(&top) {
-            let tops = self.settings.tops.entry(path.clone()).or_default();
+            let tops = self.settings.tops.entry(path.to_path_buf()).or_default();
             tops.insert(label.to_string(), top);
         }
     }

@@ -60,7 +60,7 @@ impl LadderApp {
             d.plan = None;
             return;
         };
-        let key = (d.from.clone(), d.to.clone(), doc.serial, doc.generation);
+        let key = (d.from.clone(), d.to.clone(), doc.serial(), doc.generation());
         if d.plan.as_ref().is_some_and(|(k, _)| *k == key) {
             return;
         }

@@ -47,7 +47,7 @@ struct XrefCache {
 impl XrefCache {
     /// Rebuilds the cross-reference when the document changed since it was built.
     fn refresh(&mut self, doc: &Document) {
-        let key = (doc.serial, doc.generation);
+        let key = (doc.serial(), doc.generation());
         if self.key == Some(key) {
             return;
         }

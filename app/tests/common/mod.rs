@@ -103,8 +103,8 @@ pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usiz
 pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bool, usize)> {
     h.state().doc.as_ref().map(|d| {
         (
-            d.path.clone(),
-            d.dirty,
+            d.path().map(|p| p.to_path_buf()),
+            d.is_dirty(),
             d.project()
                 .ladder
                 .blocks

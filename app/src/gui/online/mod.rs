@@ -176,7 +176,7 @@ impl LadderApp {
                 c.request_repaint_after(soon);
             }
         });
-        match Session::start(doc.project(), doc.generation, wake) {
+        match Session::start(doc.project(), doc.generation(), wake) {
             Ok(mut s) => {
                 s.set_speed(self.online.speed);
                 // The online window narrows the ladder: keep its coils and boxes in sight.
@@ -298,7 +298,7 @@ impl LadderApp {
     pub(crate) fn lock_while_replaying(&mut self) {
         let replaying = self.scrubbing();
         if let Some(d) = self.doc.as_mut() {
-            d.replaying = replaying;
+            d.set_replaying(replaying);
         }
     }
 
@@ -455,7 +455,7 @@ impl LadderApp {
         if let Some(doc) = self.doc.as_ref()
             && s.scrub.is_none()
         {
-            if s.follow_edit(doc.project(), doc.generation).is_some() {
+            if s.follow_edit(doc.project(), doc.generation()).is_some() {
                 recompile = true;
                 let t = Msg::EditNotCompiled.text(lang).to_string();
                 lines.push((t, true));

@@ -144,7 +144,7 @@ impl LadderApp {
     pub fn watch_key(&self) -> PathBuf {
         self.doc
             .as_ref()
-            .and_then(|d| d.path.clone())
+            .and_then(|d| d.path().map(|p| p.to_path_buf()))
             .unwrap_or_default()
     }
 

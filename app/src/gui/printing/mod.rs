@@ -158,7 +158,7 @@ impl LadderApp {
     fn print_name(&self) -> String {
         self.doc
             .as_ref()
-            .and_then(|d| d.path.as_ref().or(d.recovered_from.as_ref()))
+            .and_then(|d| d.path().or(d.recovered_from()))
             .and_then(|p| p.file_stem())
             .map_or_else(
                 || "project".to_string(),

@@ -280,7 +280,7 @@ pub fn tables_ui(
 ) -> Vec<TableEvent> {
     // Drafts belong to the rows they were typed in: after an undo, another document or
     // another view those may be other rows, so the drafts go.
-    if state.seen != Some((view, doc.generation)) {
+    if state.seen != Some((view, doc.generation())) {
         state.forget_drafts();
     }
     let project = doc.project();
@@ -316,7 +316,7 @@ pub fn tables_ui(
         }
         View::Block(_) | View::RefIndex | View::RefBits | View::RefBytes => {}
     }
-    state.seen(view, doc.generation);
+    state.seen(view, doc.generation());
     events
 }
 
@@ -370,7 +370,7 @@ impl LadderApp {
             }
         }
         if let Some(doc) = &self.doc {
-            self.tables.seen(self.view, doc.generation);
+            self.tables.seen(self.view, doc.generation());
         }
     }
 }

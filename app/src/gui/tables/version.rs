@@ -87,7 +87,7 @@ pub(super) fn version_ui(
         }
     }
     ui.separator();
-    password_ui(ui, current, doc.read_only, state, lang, events);
+    password_ui(ui, current, doc.is_read_only(), state, lang, events);
 }
 
 fn password_ui(
