@@ -34,7 +34,7 @@ impl LadderApp {
             Some(at) => self.jump(at),
             None => {
                 let text = Msg::NoMarks.text(self.settings.lang).to_string();
-                self.say(text, false);
+                self.output.say(text, false);
             }
         }
     }

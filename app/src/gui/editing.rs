@@ -218,7 +218,7 @@ impl LadderApp {
             error: false,
             target: None,
         });
-        self.output = lines;
+        self.output.list(lines);
         // The same search again steps past the cursor; a new one may start on it.
         let again = self.edit.last_find == text;
         let c = self.edit.cursor;

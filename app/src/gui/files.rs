@@ -3,6 +3,7 @@
 //! instruction list, export and import of comments; the read-only recovery open of a damaged
 //! file; and the autosaved recovery copy offered back after a crash.
 
+use super::LadderApp;
 pub use super::dialogs::{
     Action, DialogKind, FileDialogs, NativeDialogs, Question, RecoveryCopy, ScriptedDialogs,
 };
@@ -10,7 +11,6 @@ use super::document::Document;
 use super::i18n::Msg;
 use super::place::View;
 pub use super::settings::canonical;
-use super::{LadderApp, OutputLine};
 use ladder_engine::file::{self, FileError};
 use ladder_engine::model::{Change, Project};
 use std::path::{Path, PathBuf};
@@ -78,16 +78,6 @@ pub(super) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
 }
 
 impl LadderApp {
-    pub(crate) fn say(&mut self, text: String, error: bool) {
-        self.output.push(OutputLine {
-            text,
-            error,
-            target: None,
-        });
-        // What was said last is what the user must see, even after a list replaced above it.
-        self.output_to_last = true;
-    }
-
     /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
     /// question.
     pub fn request(&mut self, action: Action) {
@@ -208,7 +198,7 @@ impl LadderApp {
             }
             Err(e) => {
                 let lang = self.settings.lang;
-                self.say(
+                self.output.say(
                     format!(
                         "{} {}: {}",
                         Msg::OpenFailed.text(lang),
@@ -242,14 +232,14 @@ impl LadderApp {
                 self.drop_recovery_copy();
                 self.doc = Some(doc);
                 self.reset_view();
-                self.say(
+                self.output.say(
                     format!("{}: {}", Msg::OpenedReadOnly.text(lang), path.display()),
                     false,
                 );
                 true
             }
             Err(e) => {
-                self.say(
+                self.output.say(
                     format!("{} {}: {e}", Msg::CannotRecover.text(lang), path.display()),
                     true,
                 );
@@ -264,7 +254,8 @@ impl LadderApp {
         let Some(doc) = self.doc.as_mut() else { return };
         if doc.is_read_only() || doc.path().is_none() {
             if doc.is_read_only() {
-                self.say(Msg::ReadOnlySaveAs.text(lang).into(), false);
+                self.output
+                    .say(Msg::ReadOnlySaveAs.text(lang).into(), false);
             }
             self.start_dialog(DialogKind::SaveProjectAs);
             return;
@@ -278,7 +269,7 @@ impl LadderApp {
             }
             Err(e) => {
                 self.files.after_save = None;
-                self.say(super::errors::file_error(&e, lang), true);
+                self.output.say(super::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -290,7 +281,7 @@ impl LadderApp {
         let path = &canonical(path);
         if doc.recovered_from() == Some(path.as_path()) {
             self.files.after_save = None;
-            self.say(Msg::NotOverDamaged.text(lang).into(), true);
+            self.output.say(Msg::NotOverDamaged.text(lang).into(), true);
             return;
         }
         let old_copy = self
@@ -310,7 +301,7 @@ impl LadderApp {
             }
             Err(e) => {
                 self.files.after_save = None;
-                self.say(super::errors::file_error(&e, lang), true);
+                self.output.say(super::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -322,11 +313,11 @@ impl LadderApp {
             return;
         };
         match write_atomic(path, &text) {
-            Ok(()) => self.say(
+            Ok(()) => self.output.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
                 false,
             ),
-            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
@@ -340,16 +331,16 @@ impl LadderApp {
             return;
         };
         if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
-            self.say(Msg::IlNotWritten.text(lang).into(), true);
+            self.output.say(Msg::IlNotWritten.text(lang).into(), true);
             return;
         }
         let text = ladder_engine::il::print(&compiled.program);
         match write_atomic(path, &text) {
-            Ok(()) => self.say(
+            Ok(()) => self.output.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
                 false,
             ),
-            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
@@ -359,11 +350,11 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else { return };
         let text = ladder_engine::comments::export(doc.project(), None);
         match write_atomic(path, &text) {
-            Ok(()) => self.say(
+            Ok(()) => self.output.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
                 false,
             ),
-            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
@@ -372,23 +363,25 @@ impl LadderApp {
         let lang = self.settings.lang;
         let Some(doc) = self.doc.as_mut() else { return };
         if doc.is_read_only() {
-            self.say(Msg::ReadOnly.text(lang).into(), true);
+            self.output.say(Msg::ReadOnly.text(lang).into(), true);
             return;
         }
         let text = match std::fs::read_to_string(path) {
             Ok(t) => t,
             Err(e) => {
-                self.say(format!("{}: {e}", path.display()), true);
+                self.output.say(format!("{}: {e}", path.display()), true);
                 return;
             }
         };
         let mut project = doc.project().clone();
         match ladder_engine::comments::import(&mut project, &text, None) {
             Ok(n) => match doc.apply(Change::Whole(Box::new(project))) {
-                Ok(_) => self.say(format!("{n} {}", Msg::RowsApplied.text(lang)), false),
-                Err(e) => self.say(super::errors::refused(&e, lang), true),
+                Ok(_) => self
+                    .output
+                    .say(format!("{n} {}", Msg::RowsApplied.text(lang)), false),
+                Err(e) => self.output.say(super::errors::refused(&e, lang), true),
             },
-            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
@@ -417,7 +410,8 @@ impl LadderApp {
             });
         if let Err(e) = written {
             let lang = self.settings.lang;
-            self.say(format!("{}: {e}", Msg::AutosaveFailed.text(lang)), true);
+            self.output
+                .say(format!("{}: {e}", Msg::AutosaveFailed.text(lang)), true);
         }
     }
 
@@ -461,12 +455,13 @@ impl LadderApp {
             Ok(project) => {
                 self.doc = Some(Document::restored(project, copy.original.clone()));
                 self.reset_view();
-                self.say(Msg::Restored.text(lang).into(), false);
+                self.output.say(Msg::Restored.text(lang).into(), false);
             }
             Err(e) => {
                 remove_copy(&copy.copy);
                 let e = super::errors::file_error(&e, lang);
-                self.say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
+                self.output
+                    .say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
             }
         }
     }

@@ -16,6 +16,7 @@ pub mod i18n;
 pub mod ladder_view;
 pub mod menus;
 pub mod online;
+pub mod output;
 pub mod place;
 pub mod pointer;
 pub mod printing;
@@ -44,16 +45,7 @@ use tree::View;
 /// The application's name for eframe (window title, storage folder).
 pub const APP_ID: &str = "Ladder Studio";
 
-/// One line of the output window; diagnostics remember where to jump.
-#[derive(Clone, Debug, PartialEq)]
-pub struct OutputLine {
-    /// The text.
-    pub text: String,
-    /// An error (shown red).
-    pub error: bool,
-    /// The cell to show on a click.
-    pub target: Option<model::CellRef>,
-}
+pub use output::OutputLine;
 
 /// The application: persisted settings, the open document and the UI state around it, in
 /// groups (see `state.rs`).
@@ -67,14 +59,9 @@ pub struct LadderApp {
     /// The view tabs above the main area, in the order they were opened.
     pub tabs: Vec<View>,
     /// The output window.
-    pub output: Vec<OutputLine>,
+    pub output: output::Output,
     /// The replace window, while open.
     pub replace: Option<replace::ReplaceDialog>,
-    /// What the output window showed last frame (line count, first line), to scroll to
-    /// what is new: the first line of a new list, or the last of lines added.
-    output_seen: (usize, String),
-    /// A line was said since the output window was drawn: it scrolls to the last line.
-    output_to_last: bool,
     /// The ladder editor: cursor, selection, clipboard, gestures.
     pub edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
@@ -117,9 +104,7 @@ impl LadderApp {
             doc: None,
             view: View::Block(0),
             tabs: Vec::new(),
-            output: Vec::new(),
-            output_seen: (0, String::new()),
-            output_to_last: false,
+            output: Default::default(),
             replace: None,
             edit: Default::default(),
             files: Default::default(),
@@ -235,7 +220,7 @@ impl LadderApp {
             error: compiled.errors() > 0,
             target: None,
         });
-        self.output = lines;
+        self.output.list(lines);
     }
 
     /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
@@ -484,57 +469,6 @@ impl LadderApp {
         }
     }
 
-    fn output_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        ui.horizontal(|ui| {
-            ui.label(self.t(Msg::Output));
-            if !self.output.is_empty() && ui.small_button(Msg::CopyAll.text(lang)).clicked() {
-                let all: Vec<&str> = self.output.iter().map(|l| l.text.as_str()).collect();
-                ui.ctx().copy_text(all.join("\n"));
-            }
-        });
-        let first = self.output.first().map_or("", |l| l.text.as_str());
-        let to_last = std::mem::take(&mut self.output_to_last);
-        let new_list = first != self.output_seen.1 && !to_last;
-        let added =
-            to_last || (first == self.output_seen.1 && self.output.len() > self.output_seen.0);
-        if new_list || self.output.len() != self.output_seen.0 {
-            self.output_seen = (self.output.len(), first.to_string());
-        }
-        let mut jump = None;
-        egui::ScrollArea::vertical()
-            .auto_shrink([false, false])
-            .show(ui, |ui| {
-                let last = self.output.len().saturating_sub(1);
-                for (i, line) in self.output.iter().enumerate() {
-                    let color = if line.error {
-                        theme::ERROR
-                    } else {
-                        ui.visuals().text_color()
-                    };
-                    let r = ui.add(
-                        egui::Label::new(egui::RichText::new(&line.text).color(color))
-                            .sense(egui::Sense::click()),
-                    );
-                    if r.double_clicked() || r.clicked() {
-                        jump = line.target;
-                    }
-                    r.context_menu(|ui| {
-                        if ui.button(Msg::CopyLine.text(lang)).clicked() {
-                            ui.ctx().copy_text(line.text.clone());
-                            ui.close();
-                        }
-                    });
-                    if (new_list && i == 0) || (added && i == last) {
-                        r.scroll_to_me(None);
-                    }
-                }
-            });
-        if let Some(at) = jump {
-            self.jump(at);
-        }
-    }
-
     fn status_ui(&self, ui: &mut egui::Ui) {
         let lang = self.settings.lang;
         let t = |m: Msg| m.text(lang);
@@ -651,7 +585,11 @@ impl eframe::App for LadderApp {
                 .resizable(true)
                 .default_size(self.settings.output_height)
                 .min_size(60.0)
-                .show(ui, |ui| self.output_ui(ui));
+                .show(ui, |ui| {
+                    if let Some(at) = self.output.ui(ui, self.settings.lang) {
+                        self.jump(at);
+                    }
+                });
             let height = shown.response.rect.height();
             if (height - self.settings.output_height).abs() >= 1.0 {
                 self.settings.output_height = height;

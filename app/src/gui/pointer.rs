@@ -290,7 +290,7 @@ impl LadderApp {
             error: false,
             target: None,
         });
-        self.output = lines;
+        self.output.list(lines);
     }
 
     /// A new subprogram from `NUMBER [NAME]`, inserted in number order and shown.

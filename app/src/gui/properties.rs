@@ -51,7 +51,8 @@ impl LadderApp {
             _ => None,
         };
         let Some(address) = address else {
-            self.say(Msg::PropertiesNoAddress.text(lang).into(), true);
+            self.output
+                .say(Msg::PropertiesNoAddress.text(lang).into(), true);
             return;
         };
         self.edit.cursor = at;

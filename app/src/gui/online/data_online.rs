@@ -180,7 +180,7 @@ impl LadderApp {
                 Some(c) => self.send_command(c),
                 None => {
                     let m = format!("{a}: `{text}` {}", t(Msg::DataBadValue));
-                    self.say(m, true);
+                    self.output.say(m, true);
                 }
             }
         }

@@ -214,7 +214,7 @@ impl LadderApp {
         });
         if !is_output || !s.drawing_runs(p) {
             let text = Msg::WhyNeedsOutput.text(lang).to_string();
-            self.say(text, true);
+            self.output.say(text, true);
             return;
         }
         let view = network_view(
@@ -269,7 +269,7 @@ impl LadderApp {
             cells,
             text: text.clone(),
         });
-        self.say(text, false);
+        self.output.say(text, false);
         if let (Some(t), Some(s)) = (jump, self.online.session.as_mut()) {
             s.scrub_to(Some(t));
         }

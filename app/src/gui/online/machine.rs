@@ -127,7 +127,7 @@ impl LadderApp {
                 }
                 PanelEvent::Edited(p) => {
                     if let Err(e) = self.try_edit(TableEdit::Panel(Box::new(p))) {
-                        self.say(e, true);
+                        self.output.say(e, true);
                     }
                 }
                 _ => {}
@@ -192,7 +192,7 @@ impl LadderApp {
                         }
                         None => {
                             let m = format!("{name}: {}", Msg::NoPanelKey.text(lang));
-                            self.say(m, true);
+                            self.output.say(m, true);
                         }
                     }
                     continue;

@@ -324,7 +324,7 @@ impl LadderApp {
             match e {
                 Event::Edit(m) => {
                     if let Err(e) = self.try_edit(TableEdit::Machine(Box::new(m))) {
-                        self.say(e, true);
+                        self.output.say(e, true);
                     }
                 }
                 Event::Device(name, action) => {

@@ -186,17 +186,17 @@ impl LadderApp {
                 self.online.why = None;
                 self.apply_panel_defaults();
                 let t = self.t(Msg::OnlineStarted).to_string();
-                self.say(t, false);
+                self.output.say(t, false);
                 true
             }
             Err(StartError::Compile(..)) => {
                 let t = self.t(Msg::RunNeedsCompile).to_string();
-                self.say(t, true);
+                self.output.say(t, true);
                 false
             }
             Err(StartError::Other(m)) => {
                 let t = format!("{}: {m}", self.t(Msg::RunFailed));
-                self.say(t, true);
+                self.output.say(t, true);
                 false
             }
         }
@@ -279,7 +279,7 @@ impl LadderApp {
     fn say_once(&mut self, m: Msg) {
         let t = self.t(m).to_string();
         if self.output.last().is_none_or(|l| l.text != t) {
-            self.say(t, true);
+            self.output.say(t, true);
         }
     }
 
@@ -389,7 +389,7 @@ impl LadderApp {
     fn at_cursor(&mut self, c: Command) {
         let Some(a) = self.cursor_bit() else {
             let t = self.t(Msg::NoBitAtCursor).to_string();
-            self.say(t, true);
+            self.output.say(t, true);
             return;
         };
         // The machine decides which way from its state when the command runs: a second
@@ -476,7 +476,7 @@ impl LadderApp {
             self.online.alarms.update(doc.project(), s);
         }
         for (t, e) in lines {
-            self.say(t, e);
+            self.output.say(t, e);
         }
         if failed {
             self.go_offline();

@@ -343,7 +343,7 @@ impl LadderApp {
             Some(true) => {
                 if let Err(e) = self.arm_trigger() {
                     let msg = format!("{}: {e}", t(Msg::TriggerBadSignal));
-                    self.say(msg, true);
+                    self.output.say(msg, true);
                 }
             }
             Some(false) => self.online.trace.trigger = TriggerState::Idle,

@@ -200,18 +200,22 @@ impl LadderApp {
         if !self.print.queue.available() {
             let text = Msg::NoPrintQueue.text(lang).to_string();
             self.print.notice = Some(text.clone());
-            self.say(text, false);
+            self.output.say(text, false);
             self.start_dialog(DialogKind::ExportDocument);
             return;
         }
         let printer = self.chosen_printer();
         let bytes = match ladder_print::pdf(&doc) {
             Ok(b) => b,
-            Err(e) => return self.say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true),
+            Err(e) => {
+                return self
+                    .output
+                    .say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true);
+            }
         };
         let name = doc.title.clone();
         match self.print.queue.submit(&bytes, &name, printer.as_deref()) {
-            Ok(reply) => self.say(
+            Ok(reply) => self.output.say(
                 format!(
                     "{} ({} {}) {reply}",
                     Msg::SentToPrinter.text(lang),
@@ -223,7 +227,7 @@ impl LadderApp {
             Err(e) => {
                 let text = format!("{}: {e}", Msg::PrintFailed.text(lang));
                 self.print.notice = Some(text.clone());
-                self.say(text, true)
+                self.output.say(text, true)
             }
         }
     }
@@ -272,11 +276,15 @@ impl LadderApp {
         } else {
             match ladder_print::pdf(&doc) {
                 Ok(bytes) => crate::atomic::write_atomic(path, &bytes).map(|()| path.to_path_buf()),
-                Err(e) => return self.say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true),
+                Err(e) => {
+                    return self
+                        .output
+                        .say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true);
+                }
             }
         };
         match written {
-            Ok(p) => self.say(
+            Ok(p) => self.output.say(
                 format!(
                     "{} {} ({} {})",
                     Msg::Written.text(lang),
@@ -286,7 +294,7 @@ impl LadderApp {
                 ),
                 false,
             ),
-            Err(e) => self.say(format!("{}: {e}", path.display()), true),
+            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 }
