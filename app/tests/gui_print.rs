@@ -6,7 +6,7 @@ mod common;
 
 use common::*;
 use egui::{Key, Modifiers};
-use ladder_studio::gui::printing::ScriptedQueue;
+use ladder_studio::gui::printing::{PrintState, ScriptedQueue};
 
 fn on_sample() -> Harness<'static, LadderApp> {
     let dir = tempfile_dir();
@@ -103,7 +103,13 @@ fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
         .ask(ladder_studio::gui::command::Command::PageSetup);
     h.run();
     h.run();
-    assert_eq!(h.state().chosen_printer().as_deref(), Some("shop-floor"));
+    assert_eq!(
+        h.state()
+            .print
+            .chosen_printer(&h.state().settings)
+            .as_deref(),
+        Some("shop-floor")
+    );
     h.get_by_role_and_label(egui::accesskit::Role::ComboBox, "Printer")
         .click();
     h.run();
@@ -125,7 +131,10 @@ fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
 fn a_network_range_in_the_page_setup_prints_those_networks() {
     let mut h = on_sample();
     h.state_mut().settings.page_setup.networks = "LEVEL2:3-5".into();
-    let doc = h.state().print_document().unwrap();
+    let doc = h
+        .state_mut()
+        .printing(|_, cx| PrintState::document(cx))
+        .unwrap();
     let titles: Vec<String> = doc
         .pages
         .iter()
@@ -193,13 +202,21 @@ fn without_a_print_queue_the_pdf_is_saved_where_the_user_says() {
 #[test]
 fn the_selected_networks_alone_print_when_asked() {
     let mut h = on_sample();
-    let all = h.state().print_document().unwrap().pages.len();
+    let all = h
+        .state_mut()
+        .printing(|_, cx| PrintState::document(cx))
+        .unwrap()
+        .pages
+        .len();
     {
         let app = h.state_mut();
         app.settings.page_setup.selection_only = true;
         app.settings.page_setup.tables = false;
     }
-    let one = h.state().print_document().unwrap();
+    let one = h
+        .state_mut()
+        .printing(|_, cx| PrintState::document(cx))
+        .unwrap();
     assert!(one.pages.len() < all, "{} against {all}", one.pages.len());
     let titles: Vec<&str> = one
         .pages

@@ -204,10 +204,10 @@ impl LadderApp {
             Command::ImportComments => self.start_dialog(DialogKind::ImportComments),
             Command::PageSetup => {
                 self.print.setup_open = true;
-                self.refresh_printers();
+                self.print.refresh_printers();
             }
-            Command::PrintPreview => self.open_preview(),
-            Command::Print => self.print_now(),
+            Command::PrintPreview => self.printing(|p, cx| p.open_preview(cx)),
+            Command::Print => self.printing(|p, cx| p.print_now(cx)),
             Command::ExportDocument => self.start_dialog(DialogKind::ExportDocument),
             Command::Exit => self.request(Action::Exit),
             Command::Undo => self.undo(),

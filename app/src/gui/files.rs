@@ -181,7 +181,9 @@ impl LadderApp {
             DialogKind::ExportComments => self.export_comments(&path),
             DialogKind::ImportComments => self.import_comments(&path),
             DialogKind::ExportTrace => self.export_trace(&path),
-            DialogKind::ExportDocument => self.export_document(&path),
+            DialogKind::ExportDocument => {
+                self.printing(|_, cx| super::printing::PrintState::export(cx, &path))
+            }
         }
     }
 

@@ -2,6 +2,7 @@
 //! a window; `main.rs` only starts it.
 
 pub mod command;
+pub mod context;
 pub mod diagnostics;
 pub mod dialogs;
 pub mod dispatch;
@@ -97,6 +98,22 @@ pub struct LadderApp {
 const MAX_TABS: usize = 10;
 
 impl LadderApp {
+    /// Runs `f` on the print feature with the part of the editor it may use.
+    pub fn printing<R>(
+        &mut self,
+        f: impl FnOnce(&mut printing::PrintState, &mut context::Context) -> R,
+    ) -> R {
+        let mut cx = context::Context {
+            doc: self.doc.as_ref(),
+            settings: &mut self.settings,
+            output: &mut self.output,
+            pending: &mut self.pending,
+            cursor: self.edit.cursor,
+            selection: self.edit.selection,
+        };
+        f(&mut self.print, &mut cx)
+    }
+
     /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").
     pub fn new(settings: Settings, path: Option<&Path>) -> LadderApp {
         let mut app = LadderApp {
@@ -641,7 +658,7 @@ impl eframe::App for LadderApp {
             self.function_dialog_ui(&ctx);
         }
         self.help_ui(&ctx);
-        self.print_ui(&ctx);
+        self.printing(|p, cx| p.ui(&ctx, cx));
         self.value_window_ui(&ctx);
         self.publish_shown();
         self.run_pending();

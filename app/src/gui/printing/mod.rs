@@ -9,10 +9,10 @@ mod queue;
 pub use preview::paint_page;
 pub use queue::{LpQueue, PrintQueue, Printers, ScriptedQueue, parse_lpstat};
 
-use super::LadderApp;
-use super::dialogs::DialogKind;
+use super::command::Command;
+use super::context::Context;
 use super::i18n::{Lang as UiLang, Msg};
-use super::settings::DisplayMode;
+use super::settings::{DisplayMode, Settings};
 use ladder_print::{Document, Labels, Lang, Options, Paper};
 use std::path::Path;
 
@@ -97,16 +97,15 @@ impl Default for PrintState {
 
 pub(super) const ZOOMS: &[u16] = &[50, 75, 100, 125, 150, 200];
 
-impl LadderApp {
+impl PrintState {
     /// The document options from the page setup, the view and the selection.
-    fn print_options(&self) -> Options {
-        let s = &self.settings.page_setup;
+    fn options(cx: &Context) -> Options {
+        let s = &cx.settings.page_setup;
         let only = if s.selection_only {
-            let networks: Vec<(usize, usize)> = match &self.edit.selection {
+            let networks: Vec<(usize, usize)> = match &cx.selection {
                 Some((block, region)) => {
-                    let count = self
+                    let count = cx
                         .doc
-                        .as_ref()
                         .and_then(|d| d.project().ladder.blocks.get(*block))
                         .map_or(0, |b| b.networks.len());
                     (0..count)
@@ -122,25 +121,24 @@ impl LadderApp {
                         .map(|n| (*block, n))
                         .collect()
                 }
-                None => vec![(self.edit.cursor.block, self.edit.cursor.network)],
+                None => vec![(cx.cursor.block, cx.cursor.network)],
             };
             Some(networks)
         } else {
             // A range that does not read is shown in the page setup and prints everything.
-            self.doc
-                .as_ref()
+            cx.doc
                 .filter(|_| !s.networks.trim().is_empty())
                 .and_then(|d| ladder_print::find_networks(d.project(), s.networks.trim()).ok())
         };
         Options {
             paper: s.paper,
             landscape: s.landscape,
-            lang: match (s.both_languages, self.settings.lang) {
+            lang: match (s.both_languages, cx.settings.lang) {
                 (true, _) => Lang::Both,
                 (false, UiLang::Zh) => Lang::Zh,
                 (false, UiLang::En) => Lang::En,
             },
-            labels: match self.settings.display {
+            labels: match cx.settings.display {
                 DisplayMode::Address => Labels::Address,
                 DisplayMode::Symbol => Labels::Symbol,
                 DisplayMode::Both => Labels::Both,
@@ -155,9 +153,8 @@ impl LadderApp {
     }
 
     /// The project's name as printed.
-    fn print_name(&self) -> String {
-        self.doc
-            .as_ref()
+    fn name(cx: &Context) -> String {
+        cx.doc
             .and_then(|d| d.path().or(d.recovered_from()))
             .and_then(|p| p.file_stem())
             .map_or_else(
@@ -167,20 +164,20 @@ impl LadderApp {
     }
 
     /// The document as the page setup says.
-    pub fn print_document(&self) -> Option<Document> {
-        let doc = self.doc.as_ref()?;
+    pub fn document(cx: &Context) -> Option<Document> {
+        let doc = cx.doc?;
         Some(ladder_print::document(
             doc.project(),
-            &self.print_name(),
-            &self.print_options(),
+            &PrintState::name(cx),
+            &PrintState::options(cx),
         ))
     }
 
     /// File → Print preview: the pages, from the first.
-    pub fn open_preview(&mut self) {
-        if let Some(doc) = self.print_document() {
-            let zoom = self.print.preview.as_ref().map_or(100, |p| p.zoom);
-            self.print.preview = Some(Preview {
+    pub fn open_preview(&mut self, cx: &Context) {
+        if let Some(doc) = PrintState::document(cx) {
+            let zoom = self.preview.as_ref().map_or(100, |p| p.zoom);
+            self.preview = Some(Preview {
                 doc,
                 page: 0,
                 zoom,
@@ -192,30 +189,30 @@ impl LadderApp {
 
     /// File → Print (Ctrl+P): the PDF to the print queue, or, with none, to a file the user
     /// picks. The output window says which.
-    pub fn print_now(&mut self) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.print_document() else {
+    pub fn print_now(&mut self, cx: &mut Context) {
+        let lang = cx.settings.lang;
+        let Some(doc) = PrintState::document(cx) else {
             return;
         };
-        if !self.print.queue.available() {
+        if !self.queue.available() {
             let text = Msg::NoPrintQueue.text(lang).to_string();
-            self.print.notice = Some(text.clone());
-            self.output.say(text, false);
-            self.start_dialog(DialogKind::ExportDocument);
+            self.notice = Some(text.clone());
+            cx.output.say(text, false);
+            cx.pending.push(Command::ExportDocument);
             return;
         }
-        let printer = self.chosen_printer();
+        let printer = self.chosen_printer(cx.settings);
         let bytes = match ladder_print::pdf(&doc) {
             Ok(b) => b,
             Err(e) => {
-                return self
+                return cx
                     .output
                     .say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true);
             }
         };
         let name = doc.title.clone();
-        match self.print.queue.submit(&bytes, &name, printer.as_deref()) {
-            Ok(reply) => self.output.say(
+        match self.queue.submit(&bytes, &name, printer.as_deref()) {
+            Ok(reply) => cx.output.say(
                 format!(
                     "{} ({} {}) {reply}",
                     Msg::SentToPrinter.text(lang),
@@ -226,17 +223,17 @@ impl LadderApp {
             ),
             Err(e) => {
                 let text = format!("{}: {e}", Msg::PrintFailed.text(lang));
-                self.print.notice = Some(text.clone());
-                self.output.say(text, true)
+                self.notice = Some(text.clone());
+                cx.output.say(text, true)
             }
         }
     }
 
     /// The printer a print goes to: the one chosen in the page setup while the queue still
     /// offers it, else the system's default.
-    pub fn chosen_printer(&self) -> Option<String> {
-        let p = &self.print.printers;
-        self.settings
+    pub fn chosen_printer(&self, settings: &Settings) -> Option<String> {
+        let p = &self.printers;
+        settings
             .page_setup
             .printer
             .clone()
@@ -246,15 +243,15 @@ impl LadderApp {
 
     /// Asks the queue for its printers (when the page setup or the preview opens).
     pub fn refresh_printers(&mut self) {
-        self.print.printers = self.print.queue.printers();
-        self.print.notice = None;
+        self.printers = self.queue.printers();
+        self.notice = None;
     }
 
     /// The answer of the Export as PDF/SVG dialog: `.svg` writes one file per page
     /// (`NAME-1.svg` …), anything else a PDF.
-    pub fn export_document(&mut self, path: &Path) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.print_document() else {
+    pub fn export(cx: &mut Context, path: &Path) {
+        let lang = cx.settings.lang;
+        let Some(doc) = PrintState::document(cx) else {
             return;
         };
         let svg = path
@@ -277,14 +274,14 @@ impl LadderApp {
             match ladder_print::pdf(&doc) {
                 Ok(bytes) => crate::atomic::write_atomic(path, &bytes).map(|()| path.to_path_buf()),
                 Err(e) => {
-                    return self
+                    return cx
                         .output
                         .say(format!("{}: {e}", Msg::PrintFailed.text(lang)), true);
                 }
             }
         };
         match written {
-            Ok(p) => self.output.say(
+            Ok(p) => cx.output.say(
                 format!(
                     "{} {} ({} {})",
                     Msg::Written.text(lang),
@@ -294,7 +291,7 @@ impl LadderApp {
                 ),
                 false,
             ),
-            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
+            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 }

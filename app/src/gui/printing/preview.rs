@@ -1,29 +1,31 @@
 //! The page setup and print preview windows: the preview paints the same items the PDF
 //! and SVG writers write.
 
-use super::super::LadderApp;
+use super::super::context::Context;
 use super::super::i18n::{Lang as UiLang, Msg};
+use super::super::settings::Settings;
 use super::super::theme;
+use super::PrintState;
 use super::ZOOMS;
 use egui::{Align2, FontId, Pos2, Rect, Stroke, vec2};
 use ladder_print::{Anchor, Ink, Item, Paper, Seg};
 
-impl LadderApp {
+impl PrintState {
     /// The page setup and preview windows, when open.
-    pub fn print_ui(&mut self, ctx: &egui::Context) {
-        if self.print.setup_open {
-            self.page_setup_ui(ctx);
+    pub fn ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+        if self.setup_open {
+            self.page_setup_ui(ctx, cx);
         }
-        if self.print.preview.is_some() {
-            self.preview_ui(ctx);
+        if self.preview.is_some() {
+            self.preview_ui(ctx, cx);
         }
     }
 
     /// The printer choice: the print system's printers, the default preselected.
-    fn printer_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        let chosen = self.chosen_printer();
-        let printers = self.print.printers.names.clone();
+    fn printer_ui(&mut self, ui: &mut egui::Ui, settings: &mut Settings) {
+        let lang = settings.lang;
+        let chosen = self.chosen_printer(settings);
+        let printers = self.printers.names.clone();
         let label = ui.label(Msg::Printer.text(lang));
         if printers.is_empty() {
             ui.label(Msg::NoPrinters.text(lang)).labelled_by(label.id);
@@ -34,13 +36,13 @@ impl LadderApp {
             .show_ui(ui, |ui| {
                 for name in printers {
                     let on = chosen.as_deref() == Some(name.as_str());
-                    let shown = if self.print.printers.default.as_deref() == Some(&name) {
+                    let shown = if self.printers.default.as_deref() == Some(&name) {
                         format!("{name} ({})", Msg::DefaultPrinter.text(lang))
                     } else {
                         name.clone()
                     };
                     if ui.selectable_label(on, shown).clicked() {
-                        self.settings.page_setup.printer = Some(name);
+                        settings.page_setup.printer = Some(name);
                     }
                 }
             })
@@ -50,17 +52,17 @@ impl LadderApp {
 
     /// What the last Print could not do, in the window that covers the output.
     fn notice_ui(&self, ui: &mut egui::Ui) {
-        if let Some(n) = &self.print.notice {
+        if let Some(n) = &self.notice {
             ui.colored_label(theme::CAUTION, n);
         }
     }
 
-    fn page_setup_ui(&mut self, ctx: &egui::Context) {
-        let lang = self.settings.lang;
+    fn page_setup_ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+        let lang = cx.settings.lang;
         let mut open = true;
         let mut preview = false;
-        let range_error = self.doc.as_ref().and_then(|d| {
-            let text = self.settings.page_setup.networks.trim();
+        let range_error = cx.doc.and_then(|d| {
+            let text = cx.settings.page_setup.networks.trim();
             (!text.is_empty())
                 .then(|| ladder_print::find_networks(d.project(), text).err())
                 .flatten()
@@ -71,7 +73,7 @@ impl LadderApp {
             .resizable(false)
             .show(ctx, |ui| {
                 egui::Grid::new("page-setup").num_columns(2).show(ui, |ui| {
-                    let s = &mut self.settings.page_setup;
+                    let s = &mut cx.settings.page_setup;
                     let l = ui.label(Msg::Paper.text(lang));
                     egui::ComboBox::from_id_salt("paper")
                         .selected_text(format!("{:?}", s.paper))
@@ -97,13 +99,13 @@ impl LadderApp {
                     )
                     .labelled_by(l.id);
                     ui.end_row();
-                    self.printer_ui(ui);
+                    self.printer_ui(ui, cx.settings);
                     ui.end_row();
                 });
                 if let Some(e) = &range_error {
                     ui.colored_label(theme::ERROR, e);
                 }
-                let s = &mut self.settings.page_setup;
+                let s = &mut cx.settings.page_setup;
                 ui.checkbox(&mut s.both_languages, Msg::BothLanguages.text(lang));
                 ui.checkbox(&mut s.element_comments, Msg::ElementComments.text(lang));
                 ui.checkbox(&mut s.tables, Msg::PrintTables.text(lang));
@@ -114,14 +116,14 @@ impl LadderApp {
                     preview = true;
                 }
             });
-        self.print.setup_open = open && !preview;
+        self.setup_open = open && !preview;
         if preview {
-            self.open_preview();
+            self.open_preview(cx);
         }
     }
 
-    fn preview_ui(&mut self, ctx: &egui::Context) {
-        let lang = self.settings.lang;
+    fn preview_ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+        let lang = cx.settings.lang;
         let mut open = true;
         let (mut print, mut export) = (false, false);
         egui::Window::new(Msg::PrintPreview.text(lang))
@@ -129,18 +131,18 @@ impl LadderApp {
             .default_size(vec2(760.0, 780.0))
             .show(ctx, |ui| {
                 ui.horizontal(|ui| {
-                    let Some(preview) = self.print.preview.as_mut() else {
+                    let Some(preview) = self.preview.as_mut() else {
                         return;
                     };
                     preview_toolbar(ui, preview, lang);
                     ui.separator();
                     print = ui.button(Msg::Print.text(lang)).clicked();
                     export = ui.button(Msg::ExportDocument.text(lang)).clicked();
-                    self.printer_ui(ui);
+                    self.printer_ui(ui, cx.settings);
                 });
                 self.notice_ui(ui);
                 ui.separator();
-                let Some(preview) = self.print.preview.as_mut() else {
+                let Some(preview) = self.preview.as_mut() else {
                     return;
                 };
                 egui::ScrollArea::both().show(ui, |ui| {
@@ -162,13 +164,13 @@ impl LadderApp {
                 });
             });
         if !open {
-            self.print.preview = None;
+            self.preview = None;
         }
         if print {
-            self.pending.push(super::super::command::Command::Print);
+            cx.pending.push(super::super::command::Command::Print);
         }
         if export {
-            self.pending
+            cx.pending
                 .push(super::super::command::Command::ExportDocument);
         }
     }
