@@ -5,13 +5,13 @@
 mod network;
 mod scroll;
 
+use network::{Drawn, Style};
 pub use network::{LiveNetwork, address_of};
-use network::{Style, cursor_ui, error_mark_ui, network_ui, selection_ui};
 pub use scroll::Anchor;
 
 use super::settings::{DisplayMode, NumFormat};
 use super::theme;
-use egui::{Color32, Pos2, Rect, Sense, Stroke, pos2, vec2};
+use egui::{Color32, Pos2, Rect, Sense, pos2, vec2};
 use ladder_engine::Address;
 use ladder_engine::model::region::Region as Selection;
 use ladder_engine::model::{Cell, Network, Operand, Project};
@@ -228,6 +228,43 @@ pub struct Geometry {
 }
 
 impl Geometry {
+    /// Takes the sizes of a block laid out at `zoom` in `style`: network tops and heights,
+    /// row tops (with the new row offered below network `new_row`); the labels and marks
+    /// drawn last frame are forgotten.
+    fn lay_out(
+        &mut self,
+        b: &ladder_engine::model::Block,
+        placed: &[Placed],
+        style: &Style,
+        zoom: u16,
+        new_row: Option<usize>,
+    ) {
+        let m = &style.m;
+        self.cell = m.cell;
+        self.output = m.output;
+        self.margin = m.margin;
+        self.zoom = zoom;
+        self.mid = m.mid;
+        self.labels.clear();
+        self.error_marks.clear();
+        self.tops = placed.iter().map(|p| p.top).collect();
+        self.heights = placed.iter().map(|p| p.height).collect();
+        self.rows = b
+            .networks
+            .iter()
+            .enumerate()
+            .map(|(i, n)| {
+                let mut tops = row_tops(n, m, style.comments);
+                if new_row == Some(i) {
+                    let end = tops.last().copied().unwrap_or(m.header)
+                        + n.rows.last().map_or(0.0, |r| m.row_height(&r.cells));
+                    tops.push(end);
+                }
+                tops
+            })
+            .collect();
+    }
+
     /// The screen centre of a cell.
     pub fn cell_center(&self, network: usize, row: usize, col: usize) -> Option<Pos2> {
         let top = self.origin.y + self.tops.get(network)? + self.rows.get(network)?.get(row)?;
@@ -506,30 +543,8 @@ pub fn block_ui(
         let (rect, response) = ui.allocate_exact_size(total, Sense::click_and_drag());
         geometry.origin = rect.min;
         geometry.visible = Some(viewport.translate(rect.min.to_vec2()));
-        geometry.cell = m.cell;
-        geometry.output = m.output;
         geometry.width = project.ladder.width;
-        geometry.margin = m.margin;
-        geometry.zoom = zoom;
-        geometry.mid = m.mid;
-        geometry.labels.clear();
-        geometry.error_marks.clear();
-        geometry.tops = placed.iter().map(|p| p.top).collect();
-        geometry.heights = placed.iter().map(|p| p.height).collect();
-        geometry.rows = b
-            .networks
-            .iter()
-            .enumerate()
-            .map(|(i, n)| {
-                let mut tops = row_tops(n, &m, comments);
-                if new_row == Some(i) {
-                    let end = tops.last().copied().unwrap_or(m.header)
-                        + n.rows.last().map_or(0.0, |r| m.row_height(&r.cells));
-                    tops.push(end);
-                }
-                tops
-            })
-            .collect();
+        geometry.lay_out(b, &placed, &style, zoom, new_row);
         let hit = |p: Pos2| {
             let y = p.y - rect.min.y;
             let i = placed.partition_point(|q| q.top + q.height <= y);
@@ -537,31 +552,7 @@ pub fn block_ui(
             let origin = rect.min + vec2(0.0, q.top);
             hit_in(project, &b.networks[i], i, origin, p, &m, comments)
         };
-        let mut events = ViewEvents::default();
-        let pointer = response.interact_pointer_pos();
-        if response.clicked() {
-            let mods = ui.input(|i| i.modifiers);
-            events.click = pointer.and_then(hit).map(|h| (h, mods));
-        }
-        // A third quick click is still a double-click to a user.
-        if response.double_clicked() || response.triple_clicked() {
-            events.double_click = pointer.and_then(hit);
-            events.double_click_at = pointer;
-        }
-        if response.secondary_clicked() {
-            events.secondary = pointer.and_then(hit);
-        }
-        if response.hovered() {
-            events.hover = ui.input(|i| i.pointer.hover_pos()).and_then(hit);
-        }
-        if response.drag_started() {
-            events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(hit);
-        }
-        if response.dragged() || response.drag_stopped() {
-            let now = pointer.or_else(|| ui.input(|i| i.pointer.latest_pos()));
-            events.drag_now = now.and_then(hit);
-            events.drag_done = response.drag_stopped();
-        }
+        let mut events = pointer_events(ui, &response, hit);
         let painter = ui.painter_at(rect);
         // Black on white, like a printed ladder, whatever the UI theme.
         painter.rect_filled(
@@ -619,60 +610,14 @@ pub fn block_ui(
                 break;
             }
             events.visible.end = i + 1;
-            let origin = rect.min + vec2(0.0, p.top);
-            if let Some(sel) = opts.selection {
-                selection_ui(
-                    &painter,
-                    &b.networks[i],
-                    i,
-                    origin,
-                    p.height,
-                    total.x,
-                    &sel,
-                    &style,
-                );
-            }
-            let view = live.and_then(|l| (l.network)(i));
-            let shown = match (live, &view) {
-                (Some(l), Some(v)) => {
-                    marks.clear();
-                    marks.extend(l.marked.iter().filter(|m| m.0 == i).map(|m| (m.1, m.2)));
-                    Some(LiveNetwork {
-                        view: v,
-                        format: l.format,
-                        forced: l.forced,
-                        marked: &marks,
-                    })
-                }
-                _ => None,
-            };
-            let labels_before = geometry.labels.len();
-            network_ui(
-                &painter,
+            let drawn = Drawn {
+                painter: &painter,
                 project,
-                (&b.networks[i], i),
-                origin,
-                &style,
-                shown.as_ref(),
-                &mut geometry.labels,
-            );
-            for mark in opts.errors.iter().filter(|e| e.network == i) {
-                let drawn = &geometry.labels[labels_before..];
-                let width = project.ladder.width;
-                let r = error_mark_ui(&painter, &b.networks[i], origin, mark, width, &style, drawn);
-                geometry.error_marks.push(r);
-            }
-            if let Some((cn, cr, cc)) = opts.cursor
-                && cn == i
-            {
-                let width = project.ladder.width;
-                cursor_ui(&painter, &b.networks[i], origin, (cr, cc), width, &style);
-            }
-            let sep = origin.y + p.height - 2.0;
-            painter.line_segment(
-                [pos2(rect.left(), sep), pos2(rect.right(), sep)],
-                Stroke::new(0.5, theme::NETWORK_RULE),
-            );
+                style: &style,
+                rect,
+                width: total.x,
+            };
+            drawn.network(b, (i, p), opts, live, geometry, &mut marks);
         }
         events.response = Some(response);
         events
@@ -703,6 +648,40 @@ fn wheel_zoom(ui: &egui::Ui, id: egui::Id) -> Option<(bool, Pos2)> {
     ui.data_mut(|d| d.insert_temp(id, acc - NOTCH.copysign(acc)));
     let pos = ui.input(|i| i.pointer.hover_pos())?;
     Some((acc > 0.0, pos))
+}
+
+/// What the pointer did over the view this frame, each place read through `hit`.
+fn pointer_events(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    hit: impl Fn(Pos2) -> Option<Hit>,
+) -> ViewEvents {
+    let mut events = ViewEvents::default();
+    let pointer = response.interact_pointer_pos();
+    if response.clicked() {
+        let mods = ui.input(|i| i.modifiers);
+        events.click = pointer.and_then(&hit).map(|h| (h, mods));
+    }
+    // A third quick click is still a double-click to a user.
+    if response.double_clicked() || response.triple_clicked() {
+        events.double_click = pointer.and_then(&hit);
+        events.double_click_at = pointer;
+    }
+    if response.secondary_clicked() {
+        events.secondary = pointer.and_then(&hit);
+    }
+    if response.hovered() {
+        events.hover = ui.input(|i| i.pointer.hover_pos()).and_then(&hit);
+    }
+    if response.drag_started() {
+        events.drag_start = ui.input(|i| i.pointer.press_origin()).and_then(&hit);
+    }
+    if response.dragged() || response.drag_stopped() {
+        let now = pointer.or_else(|| ui.input(|i| i.pointer.latest_pos()));
+        events.drag_now = now.and_then(&hit);
+        events.drag_done = response.drag_stopped();
+    }
+    events
 }
 
 #[cfg(test)]

@@ -570,3 +570,99 @@ pub(super) fn error_mark_ui(
     }
     rect
 }
+
+/// Where and with what the networks of a view are drawn.
+pub(super) struct Drawn<'a> {
+    pub(super) painter: &'a egui::Painter,
+    pub(super) project: &'a Project,
+    pub(super) style: &'a Style,
+    /// The whole block's rectangle on screen.
+    pub(super) rect: Rect,
+    /// Its width.
+    pub(super) width: f32,
+}
+
+impl Drawn<'_> {
+    /// Network `i` (placed at `p`) in full: its selection, the network with the monitor's
+    /// state, the error marks, the cursor and the rule under it; what was drawn goes into
+    /// `geometry` (`marks`: a buffer for the "why?" cells of the network).
+    pub(super) fn network(
+        &self,
+        b: &ladder_engine::model::Block,
+        (i, p): (usize, &super::Placed),
+        opts: &super::ViewOptions<'_>,
+        live: Option<&super::Live<'_>>,
+        geometry: &mut super::Geometry,
+        marks: &mut Vec<(usize, usize)>,
+    ) {
+        let origin = self.rect.min + vec2(0.0, p.top);
+        if let Some(sel) = opts.selection {
+            selection_ui(
+                self.painter,
+                &b.networks[i],
+                i,
+                origin,
+                p.height,
+                self.width,
+                &sel,
+                self.style,
+            );
+        }
+        let view = live.and_then(|l| (l.network)(i));
+        let shown = match (live, &view) {
+            (Some(l), Some(v)) => {
+                marks.clear();
+                marks.extend(l.marked.iter().filter(|m| m.0 == i).map(|m| (m.1, m.2)));
+                Some(LiveNetwork {
+                    view: v,
+                    format: l.format,
+                    forced: l.forced,
+                    marked: marks,
+                })
+            }
+            _ => None,
+        };
+        let labels_before = geometry.labels.len();
+        network_ui(
+            self.painter,
+            self.project,
+            (&b.networks[i], i),
+            origin,
+            self.style,
+            shown.as_ref(),
+            &mut geometry.labels,
+        );
+        for mark in opts.errors.iter().filter(|e| e.network == i) {
+            let drawn = &geometry.labels[labels_before..];
+            let width = self.project.ladder.width;
+            let r = error_mark_ui(
+                self.painter,
+                &b.networks[i],
+                origin,
+                mark,
+                width,
+                self.style,
+                drawn,
+            );
+            geometry.error_marks.push(r);
+        }
+        if let Some((cn, cr, cc)) = opts.cursor
+            && cn == i
+        {
+            let width = self.project.ladder.width;
+            cursor_ui(
+                self.painter,
+                &b.networks[i],
+                origin,
+                (cr, cc),
+                width,
+                self.style,
+            );
+        }
+        let sep = origin.y + p.height - 2.0;
+        self.painter.line_segment(
+            [pos2(self.rect.left(), sep), pos2(self.rect.right(), sep)],
+            Stroke::new(0.5, theme::NETWORK_RULE),
+        );
+    }
+}
