@@ -244,7 +244,7 @@ pub struct Settings {
     pub cursors:
         std::collections::BTreeMap<PathBuf, std::collections::BTreeMap<String, [usize; 3]>>,
     /// The page setup of printing, as last left.
-    pub page_setup: super::printing::PageSetup,
+    pub page_setup: PageSetup,
 }
 
 impl Default for Settings {
@@ -302,5 +302,45 @@ pub fn canonical(path: &Path) -> PathBuf {
             std::fs::canonicalize(dir).map_or_else(|_| path.to_path_buf(), |d| d.join(name))
         }
         _ => path.to_path_buf(),
+    }
+}
+
+/// The page setup as the user left it: kept in the settings, never in the project.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(default)]
+pub struct PageSetup {
+    /// Paper size.
+    pub paper: ladder_print::Paper,
+    /// Landscape pages.
+    pub landscape: bool,
+    /// Chinese and English (else the UI's language).
+    pub both_languages: bool,
+    /// The tables after the ladder.
+    pub tables: bool,
+    /// The cross-reference index.
+    pub xref: bool,
+    /// Element comments under contacts and coils.
+    pub element_comments: bool,
+    /// Only the selected networks (or the cursor's).
+    pub selection_only: bool,
+    /// Only these networks, as `BLOCK:FIRST-LAST` (`LEVEL2:10-40`); empty for all.
+    pub networks: String,
+    /// The printer chosen; `None` (or one no longer offered) is the system's default.
+    pub printer: Option<String>,
+}
+
+impl Default for PageSetup {
+    fn default() -> Self {
+        PageSetup {
+            paper: ladder_print::Paper::A4,
+            landscape: false,
+            both_languages: false,
+            tables: false,
+            xref: false,
+            element_comments: true,
+            selection_only: false,
+            networks: String::new(),
+            printer: None,
+        }
     }
 }

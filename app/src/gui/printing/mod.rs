@@ -12,49 +12,10 @@ pub use queue::{LpQueue, PrintQueue, Printers, ScriptedQueue, parse_lpstat};
 use super::command::Command;
 use super::context::Context;
 use super::i18n::{Lang as UiLang, Msg};
+pub use super::settings::PageSetup;
 use super::settings::{DisplayMode, Settings};
-use ladder_print::{Document, Labels, Lang, Options, Paper};
+use ladder_print::{Document, Labels, Lang, Options};
 use std::path::Path;
-
-/// The page setup as the user left it: kept in the settings, never in the project.
-#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(default)]
-pub struct PageSetup {
-    /// Paper size.
-    pub paper: Paper,
-    /// Landscape pages.
-    pub landscape: bool,
-    /// Chinese and English (else the UI's language).
-    pub both_languages: bool,
-    /// The tables after the ladder.
-    pub tables: bool,
-    /// The cross-reference index.
-    pub xref: bool,
-    /// Element comments under contacts and coils.
-    pub element_comments: bool,
-    /// Only the selected networks (or the cursor's).
-    pub selection_only: bool,
-    /// Only these networks, as `BLOCK:FIRST-LAST` (`LEVEL2:10-40`); empty for all.
-    pub networks: String,
-    /// The printer chosen; `None` (or one no longer offered) is the system's default.
-    pub printer: Option<String>,
-}
-
-impl Default for PageSetup {
-    fn default() -> Self {
-        PageSetup {
-            paper: Paper::A4,
-            landscape: false,
-            both_languages: false,
-            tables: false,
-            xref: false,
-            element_comments: true,
-            selection_only: false,
-            networks: String::new(),
-            printer: None,
-        }
-    }
-}
 
 /// The print preview's pages and where the user is in them.
 pub struct Preview {
