@@ -411,6 +411,7 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     let form = h
         .state()
         .properties
+        .form
         .clone()
         .expect("the properties are open");
     assert_eq!(form.address, x);
@@ -434,9 +435,9 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
     assert!(
-        h.state().properties.is_none(),
+        h.state().properties.form.is_none(),
         "closed on OK: {:?}",
-        h.state().properties
+        h.state().properties.form
     );
     let p = h.state().doc.as_ref().unwrap().project();
     assert_eq!(p.resolve_symbol("AUTO_KEY"), Some(x));
@@ -465,7 +466,7 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     h.run();
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
-    let form = h.state().properties.clone().expect("still open");
+    let form = h.state().properties.form.clone().expect("still open");
     assert!(form.error.is_some_and(|e| e.contains(&taken)));
     assert_eq!(symbols(&h), before, "nothing written");
 }

@@ -1,28 +1,75 @@
-//! What a feature may use of the editor while it runs: the open document (to read), the
-//! settings, the output window, the command queue and where the cursor and the selection
-//! are. A feature owns its own state and takes this narrow context instead of the whole
-//! app (rerun's `ViewerContext` is the model), so a new page or command touches its feature
-//! and the command list only.
+//! What a feature may use of the editor while it runs: the open document (to read, and to
+//! change through its one `apply`), the settings, the output window, the command queue and
+//! the ladder cursor and selection. A feature owns its own state and takes this narrow
+//! context instead of the whole app (rerun's `ViewerContext` is the model), so a new page
+//! or command touches its feature and the command list only.
 
 use super::command::Command;
 use super::document::Document;
+use super::i18n::Msg;
 use super::output::Output;
 use super::selection::Selection;
 use super::settings::Settings;
-use ladder_engine::model::CellRef;
+use ladder_engine::model::{CellRef, Change};
 
 /// The editor as a feature sees it.
 pub struct Context<'a> {
-    /// The open project, to read (changes go through commands).
-    pub doc: Option<&'a Document>,
+    /// The open project.
+    doc: Option<&'a mut Document>,
     /// The settings (a feature's own persisted choices live there).
     pub settings: &'a mut Settings,
     /// The output window.
     pub output: &'a mut Output,
-    /// Commands to run after the frame (another feature's dialog, a file to pick).
+    /// Commands to run after the frame (another feature's dialog, a jump to a cell).
     pub pending: &'a mut Vec<Command>,
     /// The ladder cursor.
-    pub cursor: CellRef,
+    pub cursor: &'a mut CellRef,
     /// The ladder selection: its block and region.
     pub selection: Option<(usize, Selection)>,
+    /// A change was applied through [`Context::apply`].
+    changed: bool,
+}
+
+impl<'a> Context<'a> {
+    /// The context over these parts of the editor.
+    pub fn new(
+        doc: Option<&'a mut Document>,
+        settings: &'a mut Settings,
+        output: &'a mut Output,
+        pending: &'a mut Vec<Command>,
+        cursor: &'a mut CellRef,
+        selection: Option<(usize, Selection)>,
+    ) -> Context<'a> {
+        Context {
+            doc,
+            settings,
+            output,
+            pending,
+            cursor,
+            selection,
+            changed: false,
+        }
+    }
+
+    /// The open project's document, to read.
+    pub fn doc(&self) -> Option<&Document> {
+        self.doc.as_deref()
+    }
+
+    /// Hands a change to the document's one apply (read-only check, undo record, change
+    /// count); a refusal comes back in the UI's language.
+    pub fn apply(&mut self, change: impl Into<Change>) -> Result<bool, String> {
+        let lang = self.settings.lang;
+        let doc = self.doc.as_deref_mut().ok_or(Msg::NoProject.text(lang))?;
+        let changed = doc
+            .apply(change)
+            .map_err(|e| super::errors::refused(&e, lang))?;
+        self.changed |= changed;
+        Ok(changed)
+    }
+
+    /// Whether a change was applied.
+    pub fn changed(&self) -> bool {
+        self.changed
+    }
 }

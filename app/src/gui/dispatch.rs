@@ -308,7 +308,7 @@ impl LadderApp {
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
             Command::NextError => self.step_error(true),
-            Command::Properties => self.open_properties(None),
+            Command::Properties => self.element_properties(|p, cx| p.open(cx, None)),
             Command::PreviousError => self.step_error(false),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::DetachOnline => {

@@ -73,8 +73,8 @@ pub struct LadderApp {
     pub function_dialog: Option<function_dialog::FunctionDialog>,
     /// The open Help window.
     pub help: Option<HelpPage>,
-    /// The open element-properties form.
-    pub properties: Option<properties::PropertiesForm>,
+    /// Element properties: the form, while open.
+    pub properties: properties::ElementProperties,
     /// The table editors' UI state (selected row, text being typed, caches).
     pub tables: tables::TableState,
     /// The cross-reference views: the index filter and what was derived from the project.
@@ -94,6 +94,28 @@ pub struct LadderApp {
     pub title: String,
 }
 
+/// Runs `$f` on feature `$field` of the app with the context it may use: the one door
+/// every feature goes through. A change it applied marks the tables' draft clock, so undo
+/// takes back the later of a change and a draft.
+macro_rules! with_feature {
+    ($app:expr, $field:ident, $f:expr) => {{
+        let app = $app;
+        let mut cx = context::Context::new(
+            app.doc.as_mut(),
+            &mut app.settings,
+            &mut app.output,
+            &mut app.pending,
+            &mut app.edit.cursor,
+            app.edit.selection,
+        );
+        let r = ($f)(&mut app.$field, &mut cx);
+        if cx.changed() {
+            app.last_change = app.tables.mark();
+        }
+        r
+    }};
+}
+
 /// Most view tabs kept open; the oldest closes first.
 const MAX_TABS: usize = 10;
 
@@ -103,15 +125,15 @@ impl LadderApp {
         &mut self,
         f: impl FnOnce(&mut printing::PrintState, &mut context::Context) -> R,
     ) -> R {
-        let mut cx = context::Context {
-            doc: self.doc.as_ref(),
-            settings: &mut self.settings,
-            output: &mut self.output,
-            pending: &mut self.pending,
-            cursor: self.edit.cursor,
-            selection: self.edit.selection,
-        };
-        f(&mut self.print, &mut cx)
+        with_feature!(self, print, f)
+    }
+
+    /// Runs `f` on the element-properties feature with the part of the editor it may use.
+    pub fn element_properties<R>(
+        &mut self,
+        f: impl FnOnce(&mut properties::ElementProperties, &mut context::Context) -> R,
+    ) -> R {
+        with_feature!(self, properties, f)
     }
 
     /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").
@@ -128,7 +150,7 @@ impl LadderApp {
             prompt: None,
             function_dialog: None,
             help: None,
-            properties: None,
+            properties: Default::default(),
             tables: tables::TableState::default(),
             xref: Default::default(),
             print: Default::default(),
@@ -481,7 +503,13 @@ impl LadderApp {
                 self.remember_cursor(&label, b);
                 self.pointer_events(b, events);
             }
-            View::RefIndex | View::RefBits | View::RefBytes => self.xref_view_ui(ui),
+            View::RefIndex | View::RefBits | View::RefBytes => {
+                let lang = self.settings.lang;
+                let event = xref_view::xref_ui(ui, doc, self.view, &mut self.xref, lang);
+                if let Some(xref_view::XrefEvent::Jump(at)) = event {
+                    self.jump(at);
+                }
+            }
             _ => self.tables_ui(ui),
         }
     }
@@ -653,7 +681,8 @@ impl eframe::App for LadderApp {
             self.main_ui(ui)
         });
         self.prompt_window(&ctx);
-        self.properties_ui(&ctx);
+        let geometry = self.edit.geometry.clone();
+        self.element_properties(|p, cx| p.ui(&ctx, cx, &geometry));
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }

@@ -131,7 +131,8 @@ impl LadderApp {
                         self.edit.geometry.labels.iter().any(|(r, _)| r.contains(p))
                     }) =>
                 {
-                    self.open_properties(Some(cell(network, row, col)))
+                    let at = Some(cell(network, row, col));
+                    self.element_properties(|p, cx| p.open(cx, at))
                 }
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {

@@ -3,9 +3,9 @@
 //! form over the element, and written into the symbol tables as one undoable change
 //! (`ladder_engine::model::sheets::plan_properties`).
 
-use super::LadderApp;
+use super::context::Context;
 use super::i18n::Msg;
-use super::ladder_view::address_of;
+use super::ladder_view::{Geometry, address_of};
 use super::theme;
 use ladder_engine::Address;
 use ladder_engine::model::sheets::{Properties, plan_properties, properties_of};
@@ -29,13 +29,20 @@ pub struct PropertiesForm {
     focus: bool,
 }
 
-impl LadderApp {
+/// The element-properties feature: its form, while open.
+#[derive(Default)]
+pub struct ElementProperties {
+    /// The open form.
+    pub form: Option<PropertiesForm>,
+}
+
+impl ElementProperties {
     /// Opens the properties of the contact or coil at `at` (the cursor's cell when `None`);
     /// an element without an address (a constant, an undefined symbol) says why not.
-    pub fn open_properties(&mut self, at: Option<CellRef>) {
-        let at = at.unwrap_or(self.edit.cursor);
-        let lang = self.settings.lang;
-        let Some(project) = self.doc.as_ref().map(|d| d.project()) else {
+    pub fn open(&mut self, cx: &mut Context, at: Option<CellRef>) {
+        let at = at.unwrap_or(*cx.cursor);
+        let lang = cx.settings.lang;
+        let Some(project) = cx.doc().map(|d| d.project()) else {
             return;
         };
         let cell = project
@@ -51,28 +58,30 @@ impl LadderApp {
             _ => None,
         };
         let Some(address) = address else {
-            self.output
+            cx.output
                 .say(Msg::PropertiesNoAddress.text(lang).into(), true);
             return;
         };
-        self.edit.cursor = at;
-        self.properties = Some(PropertiesForm {
+        let props = properties_of(project, address, &LANGS);
+        *cx.cursor = at;
+        self.form = Some(PropertiesForm {
             at,
             address,
-            props: properties_of(project, address, &LANGS),
+            props,
             error: None,
             focus: true,
         });
     }
 
-    /// The form, over its element (or below the toolbar when the element is not in view).
-    pub fn properties_ui(&mut self, ctx: &egui::Context) {
-        let Some(mut form) = self.properties.take() else {
+    /// The form, under its element as drawn in `geometry` (or near the top left when the
+    /// element is not in view).
+    pub fn ui(&mut self, ctx: &egui::Context, cx: &mut Context, geometry: &Geometry) {
+        let Some(mut form) = self.form.take() else {
             return;
         };
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let g = &self.edit.geometry;
+        let g = geometry;
         let pos = g
             .cell_rect(form.at.network, form.at.row, form.at.col)
             .filter(|r| g.visible.is_some_and(|v| v.contains(r.center())))
@@ -123,23 +132,23 @@ impl LadderApp {
             });
         close |= ctx.input(|i| i.key_pressed(egui::Key::Escape));
         if ok {
-            match self.apply_properties(&form) {
+            match apply(cx, &form) {
                 Ok(()) => close = true,
                 Err(e) => form.error = Some(e),
             }
         }
         if !close {
-            self.properties = Some(form);
+            self.form = Some(form);
         }
     }
+}
 
-    /// Writes the form into the symbol tables: one change, one undo step.
-    fn apply_properties(&mut self, form: &PropertiesForm) -> Result<(), String> {
-        let lang = self.settings.lang;
-        let doc = self.doc.as_ref().ok_or(Msg::NoProject.text(lang))?;
-        let project = doc.project();
-        let change = plan_properties(project, form.address, &form.props)
-            .map_err(|e| super::tables::table_error(&e, project.profile(), lang))?;
-        self.try_edit(change).map(|_| ())
-    }
+/// Writes the form into the symbol tables: one change, one undo step.
+fn apply(cx: &mut Context, form: &PropertiesForm) -> Result<(), String> {
+    let lang = cx.settings.lang;
+    let doc = cx.doc().ok_or(Msg::NoProject.text(lang))?;
+    let project = doc.project();
+    let change = plan_properties(project, form.address, &form.props)
+        .map_err(|e| super::tables::table_error(&e, project.profile(), lang))?;
+    cx.apply(change).map(|_| ())
 }

@@ -5,7 +5,6 @@
 //! A widget: [`xref_ui`] takes the document and its own state and returns what the user
 //! asked for; the application does it.
 
-use super::LadderApp;
 use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::tree::View;
@@ -181,17 +180,5 @@ pub fn xref_ui(
                 });
             });
         jump.map(XrefEvent::Jump)
-    }
-}
-
-impl LadderApp {
-    /// The cross-reference view shown now; a double-click jumps to the element.
-    pub fn xref_view_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(doc) = self.doc.as_ref() else { return };
-        let event = xref_ui(ui, doc, self.view, &mut self.xref, self.settings.lang);
-        match event {
-            Some(XrefEvent::Jump(at)) => self.jump(at),
-            None => {}
-        }
     }
 }

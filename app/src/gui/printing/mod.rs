@@ -66,7 +66,7 @@ impl PrintState {
             let networks: Vec<(usize, usize)> = match &cx.selection {
                 Some((block, region)) => {
                     let count = cx
-                        .doc
+                        .doc()
                         .and_then(|d| d.project().ladder.blocks.get(*block))
                         .map_or(0, |b| b.networks.len());
                     (0..count)
@@ -87,7 +87,7 @@ impl PrintState {
             Some(networks)
         } else {
             // A range that does not read is shown in the page setup and prints everything.
-            cx.doc
+            cx.doc()
                 .filter(|_| !s.networks.trim().is_empty())
                 .and_then(|d| ladder_print::find_networks(d.project(), s.networks.trim()).ok())
         };
@@ -115,7 +115,7 @@ impl PrintState {
 
     /// The project's name as printed.
     fn name(cx: &Context) -> String {
-        cx.doc
+        cx.doc()
             .and_then(|d| d.path().or(d.recovered_from()))
             .and_then(|p| p.file_stem())
             .map_or_else(
@@ -126,7 +126,7 @@ impl PrintState {
 
     /// The document as the page setup says.
     pub fn document(cx: &Context) -> Option<Document> {
-        let doc = cx.doc?;
+        let doc = cx.doc()?;
         Some(ladder_print::document(
             doc.project(),
             &PrintState::name(cx),

@@ -61,7 +61,7 @@ impl PrintState {
         let lang = cx.settings.lang;
         let mut open = true;
         let mut preview = false;
-        let range_error = cx.doc.and_then(|d| {
+        let range_error = cx.doc().and_then(|d| {
             let text = cx.settings.page_setup.networks.trim();
             (!text.is_empty())
                 .then(|| ladder_print::find_networks(d.project(), text).err())
