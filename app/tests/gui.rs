@@ -117,7 +117,7 @@ fn find_and_replace_an_address() {
     h.key_press(Key::Escape);
     h.run();
     assert!(
-        h.state().replace.is_none(),
+        h.state().replace.dialog.is_none(),
         "Escape closes the replace window"
     );
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);

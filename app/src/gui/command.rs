@@ -70,6 +70,8 @@ macro_rules! commands {
             Display(DisplayMode),
             /// Show a view.
             ShowView(View),
+            /// Show a cell: its block, scrolled to it, the cursor on it (a feature's jump).
+            ShowCell(ladder_engine::model::CellRef),
             /// Open a Help window.
             Help(HelpPage),
             /// Move the cursor.
@@ -422,6 +424,7 @@ impl Command {
             Command::ShowView(View::RefBits) => Msg::RefBits,
             Command::ShowView(View::RefBytes) => Msg::RefBytes,
             Command::ShowView(_) => Msg::RefIndex,
+            Command::ShowCell(_) => Msg::GoTo,
             Command::Help(HelpPage::Shortcuts) => Msg::Shortcuts,
             Command::Help(HelpPage::Instructions) => Msg::InstructionHelp,
             Command::Help(HelpPage::About) => Msg::About,

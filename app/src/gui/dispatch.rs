@@ -213,7 +213,10 @@ impl LadderApp {
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
             Command::Find => self.open_prompt(PlaceKind::Find, self.edit.last_find.clone()),
-            Command::Replace => self.open_replace(),
+            Command::Replace => {
+                let last = self.edit.last_find.clone();
+                self.replace.open(&last);
+            }
             Command::GoTo => self.open_prompt(PlaceKind::GoTo, String::new()),
             Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
             Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),
@@ -365,6 +368,7 @@ impl LadderApp {
             Command::Language(l) => self.settings.lang = l,
             Command::Display(m) => self.settings.display = m,
             Command::ShowView(v) => self.show_view(v),
+            Command::ShowCell(at) => self.jump(at),
             Command::Help(p) => self.help = Some(p),
             Command::Move(d) => {
                 let (dr, dc) = d.delta();

@@ -122,7 +122,7 @@ impl LadderApp {
         self.view = View::Block(0);
         self.prompt = None;
         self.function_dialog = None;
-        self.replace = None;
+        self.replace.dialog = None;
         self.tables = Default::default();
         self.online.machine = Default::default();
         // Nothing of the old project stays: cursor, selection, drag, tabs, and its output —

@@ -61,8 +61,8 @@ pub struct LadderApp {
     pub tabs: Vec<View>,
     /// The output window.
     pub output: output::Output,
-    /// The replace window, while open.
-    pub replace: Option<replace::ReplaceDialog>,
+    /// Find and replace: its window, while open.
+    pub replace: replace::Replace,
     /// The ladder editor: cursor, selection, clipboard, gestures.
     pub edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
@@ -128,6 +128,14 @@ impl LadderApp {
         with_feature!(self, print, f)
     }
 
+    /// Runs `f` on the find-and-replace feature with the part of the editor it may use.
+    pub fn replacing<R>(
+        &mut self,
+        f: impl FnOnce(&mut replace::Replace, &mut context::Context) -> R,
+    ) -> R {
+        with_feature!(self, replace, f)
+    }
+
     /// Runs `f` on the element-properties feature with the part of the editor it may use.
     pub fn element_properties<R>(
         &mut self,
@@ -144,7 +152,7 @@ impl LadderApp {
             view: View::Block(0),
             tabs: Vec::new(),
             output: Default::default(),
-            replace: None,
+            replace: Default::default(),
             edit: Default::default(),
             files: Default::default(),
             prompt: None,
@@ -610,7 +618,8 @@ impl eframe::App for LadderApp {
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         // Below the menu bar: the replace window never covers it. It reads its keys
         // (Enter, Escape) before the editor's.
-        self.replace_ui(&ctx, ui.available_rect_before_wrap());
+        let area = ui.available_rect_before_wrap();
+        self.replacing(|r, cx| r.ui(&ctx, cx, area));
         self.keys(&ctx);
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));

@@ -2,7 +2,8 @@
 //! (where, the cell before and after, or why it is skipped) with the counts, before anything
 //! changes; *Replace all* is one undo step, *Replace the selected one* changes one place.
 
-use super::LadderApp;
+use super::command::Command;
+use super::context::Context;
 use super::i18n::Msg;
 use super::theme;
 use ladder_engine::find::{self, Planned, Query};
@@ -40,12 +41,19 @@ fn cell_text(cell: &Cell) -> String {
     }
 }
 
-impl LadderApp {
-    /// Opens the replace window (with the last text searched for as what to find).
-    pub fn open_replace(&mut self) {
-        if self.replace.is_none() {
-            self.replace = Some(ReplaceDialog {
-                from: self.edit.last_find.clone(),
+/// The find-and-replace feature: its window, while open.
+#[derive(Default)]
+pub struct Replace {
+    /// The open window.
+    pub dialog: Option<ReplaceDialog>,
+}
+
+impl Replace {
+    /// Opens the window, with `last_find` (the last text searched for) as what to find.
+    pub fn open(&mut self, last_find: &str) {
+        if self.dialog.is_none() {
+            self.dialog = Some(ReplaceDialog {
+                from: last_find.to_string(),
                 focus_first: true,
                 ..Default::default()
             });
@@ -54,9 +62,9 @@ impl LadderApp {
 
     /// The preview of `d` on the open project, computed again only when the texts or the
     /// project changed.
-    fn replace_plan(&self, d: &mut ReplaceDialog) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_ref() else {
+    fn plan(cx: &Context, d: &mut ReplaceDialog) {
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc() else {
             d.plan = None;
             return;
         };
@@ -85,13 +93,13 @@ impl LadderApp {
 
     /// Draws the replace window while it is open.
     /// The window stays inside `area` (below the menu bar).
-    pub fn replace_ui(&mut self, ctx: &egui::Context, area: egui::Rect) {
-        let Some(mut d) = self.replace.take() else {
+    pub fn ui(&mut self, ctx: &egui::Context, cx: &mut Context, area: egui::Rect) {
+        let Some(mut d) = self.dialog.take() else {
             return;
         };
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        self.replace_plan(&mut d);
+        Replace::plan(cx, &mut d);
         let mut open = true;
         let mut apply: Option<Edit> = None;
         let mut show = None;
@@ -149,7 +157,7 @@ impl LadderApp {
                             .auto_shrink([false, true])
                             .show(ui, |ui| {
                                 for (i, p) in plan.iter().enumerate() {
-                                    let project = self.doc.as_ref().map(|d| d.project());
+                                    let project = cx.doc().map(|d| d.project());
                                     let block = project
                                         .and_then(|pr| pr.ladder.blocks.get(p.at.block))
                                         .map_or(String::new(), |b| b.kind.label());
@@ -215,17 +223,17 @@ impl LadderApp {
                 }
             });
         if let Some(at) = show {
-            self.jump(at);
+            cx.pending.push(Command::ShowCell(at));
         }
         if let Some(edit) = apply {
             // One apply: the whole replace is one undo step.
-            match self.try_edit(edit) {
+            match cx.apply(edit) {
                 Ok(_) => d.error = None,
                 Err(e) => d.error = Some(e),
             }
         }
         if open && !ctx.input(|i| i.key_pressed(egui::Key::Escape)) {
-            self.replace = Some(d);
+            self.dialog = Some(d);
         }
     }
 }
