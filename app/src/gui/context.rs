@@ -68,6 +68,17 @@ impl<'a> Context<'a> {
         Ok(changed)
     }
 
+    /// Compiles the open project (the document keeps the result) and gives the result with
+    /// the project's name as diagnostics cite it.
+    pub fn compile(&mut self) -> Option<(&ladder_engine::compiler::Compiled, String)> {
+        let lang = self.settings.lang;
+        let doc = self.doc.as_deref_mut()?;
+        let name = doc
+            .name()
+            .unwrap_or_else(|| Msg::Untitled.text(lang).to_string());
+        Some((doc.compile(), name))
+    }
+
     /// Whether a change was applied.
     pub fn changed(&self) -> bool {
         self.changed

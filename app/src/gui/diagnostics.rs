@@ -1,10 +1,14 @@
-//! The last compile's findings on the diagram: stepping from one marked cell to the next
-//! (F12, Shift+F12), and their count and the message under the cursor in the status bar.
+//! The compiler's findings: F9's list in the output window, stepping from one marked cell
+//! of the diagram to the next (F12, Shift+F12), and their count and the message under the
+//! cursor in the status bar.
 
-use super::LadderApp;
-use super::i18n::Msg;
+use super::OutputLine;
+use super::command::Command;
+use super::context::Context;
+use super::document::Document;
+use super::i18n::{Lang, Msg};
 use super::theme;
-use ladder_engine::compiler::Severity;
+use ladder_engine::compiler::{Origin, Severity};
 use ladder_engine::model::CellRef;
 
 /// The marked cell after (`forward`) or before `from` in ladder order, wrapping around.
@@ -21,62 +25,111 @@ pub fn step(marks: &[CellRef], from: CellRef, forward: bool) -> Option<CellRef> 
     }
 }
 
-impl LadderApp {
-    /// F12 / Shift+F12: the cursor to the next or previous cell the last compile found wrong
-    /// (compiling first when nothing was compiled yet).
-    pub fn step_error(&mut self, forward: bool) {
-        if self.doc.as_ref().is_some_and(|d| d.compiled().is_none()) {
-            self.compile();
-        }
-        let Some(doc) = self.doc.as_ref() else { return };
-        let marks: Vec<CellRef> = doc.marks().into_iter().map(|(c, _)| c).collect();
-        match step(&marks, self.edit.cursor, forward) {
-            Some(at) => self.jump(at),
-            None => {
-                let text = Msg::NoMarks.text(self.settings.lang).to_string();
-                self.output.say(text, false);
-            }
+/// F9: compiles into the output window, a line per diagnostic (a click goes to its cell)
+/// and the summary.
+pub fn compile(cx: &mut Context) {
+    let lang = cx.settings.lang;
+    let Some((compiled, name)) = cx.compile() else {
+        return;
+    };
+    let mut lines: Vec<OutputLine> = compiled
+        .diagnostics
+        .iter()
+        .map(|d| OutputLine {
+            // The Chinese rendering keeps the English message for its specifics
+            // (docs/diagnostics.md lists each code's meaning, which the title gives).
+            text: match lang {
+                Lang::Zh => d.render_zh(&name),
+                Lang::En => d.render(&name),
+            },
+            error: d.severity() == Severity::Error,
+            target: match d.location.origin {
+                Origin::Cell { row, col } => Some(CellRef {
+                    block: d.location.block,
+                    network: d.location.network,
+                    row: row as usize,
+                    col: col as usize,
+                }),
+                _ => None,
+            },
+        })
+        .collect();
+    let summary = if compiled.errors() + compiled.warnings() == 0 {
+        format!(
+            "{} ({} {})",
+            Msg::CompileClean.text(lang),
+            compiled.steps.total,
+            Msg::StepsUnit.text(lang)
+        )
+    } else {
+        format!(
+            "{} {}, {} {}",
+            compiled.errors(),
+            Msg::Errors.text(lang),
+            compiled.warnings(),
+            Msg::Warnings.text(lang)
+        )
+    };
+    lines.push(OutputLine {
+        text: summary,
+        error: compiled.errors() > 0,
+        target: None,
+    });
+    cx.output.list(lines);
+}
+
+/// F12 / Shift+F12: the cursor to the next or previous cell the last compile found wrong
+/// (compiling first when nothing was compiled yet).
+pub fn step_error(cx: &mut Context, forward: bool) {
+    if cx.doc().is_some_and(|d| d.compiled().is_none()) {
+        compile(cx);
+    }
+    let Some(doc) = cx.doc() else { return };
+    let marks: Vec<CellRef> = doc.marks().into_iter().map(|(c, _)| c).collect();
+    match step(&marks, *cx.cursor, forward) {
+        Some(at) => cx.pending.push(Command::ShowCell(at)),
+        None => {
+            let text = Msg::NoMarks.text(cx.settings.lang).to_string();
+            cx.output.say(text, false);
         }
     }
+}
 
-    /// The status bar's part: how many errors and warnings the diagram carries (their list
-    /// on hover), and the message of the one under the cursor.
-    pub(crate) fn marks_status_ui(&self, ui: &mut egui::Ui) {
-        let Some(doc) = self.doc.as_ref() else { return };
-        let marks = doc.marks();
-        if marks.is_empty() {
-            return;
+/// The status bar's part: how many errors and warnings the diagram carries (their list on
+/// hover), and the message of the one under the `cursor`.
+pub fn status_ui(ui: &mut egui::Ui, doc: &Document, cursor: CellRef, lang: Lang) {
+    let marks = doc.marks();
+    if marks.is_empty() {
+        return;
+    }
+    let name = doc.name().unwrap_or_default();
+    let render = |d: &ladder_engine::compiler::Diagnostic| match lang {
+        Lang::Zh => d.render_zh(&name),
+        Lang::En => d.render(&name),
+    };
+    let errors = marks
+        .iter()
+        .filter(|(_, d)| d.severity() == Severity::Error)
+        .count();
+    let warnings = marks.len() - errors;
+    ui.separator();
+    let color = if errors > 0 {
+        theme::ERROR
+    } else {
+        theme::CAUTION
+    };
+    let text = format!(
+        "⚠ {errors} {}, {warnings} {} (F12)",
+        Msg::ErrorsInDiagram.text(lang),
+        Msg::WarningsInDiagram.text(lang)
+    );
+    ui.colored_label(color, text).on_hover_ui(|ui| {
+        for (_, d) in marks.iter().take(20) {
+            ui.label(render(d));
         }
-        let lang = self.settings.lang;
-        let name = doc.name().unwrap_or_default();
-        let render = |d: &ladder_engine::compiler::Diagnostic| match lang {
-            super::i18n::Lang::Zh => d.render_zh(&name),
-            super::i18n::Lang::En => d.render(&name),
-        };
-        let errors = marks
-            .iter()
-            .filter(|(_, d)| d.severity() == Severity::Error)
-            .count();
-        let warnings = marks.len() - errors;
-        ui.separator();
-        let color = if errors > 0 {
-            theme::ERROR
-        } else {
-            theme::CAUTION
-        };
-        let text = format!(
-            "⚠ {errors} {}, {warnings} {} (F12)",
-            Msg::ErrorsInDiagram.text(lang),
-            Msg::WarningsInDiagram.text(lang)
-        );
-        ui.colored_label(color, text).on_hover_ui(|ui| {
-            for (_, d) in marks.iter().take(20) {
-                ui.label(render(d));
-            }
-        });
-        if let Some((_, d)) = marks.iter().find(|(c, _)| *c == self.edit.cursor) {
-            ui.colored_label(color, render(d));
-        }
+    });
+    if let Some((_, d)) = marks.iter().find(|(c, _)| *c == cursor) {
+        ui.colored_label(color, render(d));
     }
 }
 

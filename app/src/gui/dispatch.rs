@@ -5,6 +5,7 @@
 
 use super::LadderApp;
 use super::command::Command;
+use super::diagnostics;
 use super::editing::{PlaceKind, Prompt};
 use super::files::{Action, DialogKind};
 use super::place::{BlockKey, View};
@@ -29,6 +30,14 @@ impl LadderApp {
         for c in pending {
             if self.enabled(c) {
                 // One command, one undo step, however many edits it makes.
+                self.grouped(|app| app.execute(c));
+            }
+        }
+        // What the commands asked for in turn (a feature's jump to a cell) runs now too,
+        // not a frame later; a command that keeps asking again waits for the next frame.
+        let follow = std::mem::take(&mut self.pending);
+        for c in follow {
+            if self.enabled(c) {
                 self.grouped(|app| app.execute(c));
             }
         }
@@ -310,9 +319,9 @@ impl LadderApp {
             Command::ZoomOut => self.zoom_step(false, None),
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
-            Command::NextError => self.step_error(true),
+            Command::NextError => self.with_context(|cx| diagnostics::step_error(cx, true)),
             Command::Properties => self.element_properties(|p, cx| p.open(cx, None)),
-            Command::PreviousError => self.step_error(false),
+            Command::PreviousError => self.with_context(|cx| diagnostics::step_error(cx, false)),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::DetachOnline => {
                 self.settings.online_window = !self.settings.online_window;

@@ -37,7 +37,7 @@ pub mod xref_view;
 pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
-use ladder_engine::compiler::{Origin, Severity};
+use ladder_engine::compiler::Severity;
 use ladder_engine::model;
 use settings::Settings;
 use std::path::{Path, PathBuf};
@@ -98,19 +98,25 @@ pub struct LadderApp {
 /// every feature goes through. A change it applied marks the tables' draft clock, so undo
 /// takes back the later of a change and a draft.
 macro_rules! with_feature {
-    ($app:expr, $field:ident, $f:expr) => {{
-        let app = $app;
-        let mut cx = context::Context::new(
-            app.doc.as_mut(),
-            &mut app.settings,
-            &mut app.output,
-            &mut app.pending,
-            &mut app.edit.cursor,
-            app.edit.selection,
+    ($app:expr, $field:ident, $f:expr) => {
+        with_feature!(@door $app, app, cx, ($f)(&mut app.$field, &mut cx))
+    };
+    ($app:expr, $f:expr) => {
+        with_feature!(@door $app, app, cx, ($f)(&mut cx))
+    };
+    (@door $app:expr, $a:ident, $cx:ident, $call:expr) => {{
+        let $a = $app;
+        let mut $cx = context::Context::new(
+            $a.doc.as_mut(),
+            &mut $a.settings,
+            &mut $a.output,
+            &mut $a.pending,
+            &mut $a.edit.cursor,
+            $a.edit.selection,
         );
-        let r = ($f)(&mut app.$field, &mut cx);
-        if cx.changed() {
-            app.last_change = app.tables.mark();
+        let r = $call;
+        if $cx.changed() {
+            $a.last_change = $a.tables.mark();
         }
         r
     }};
@@ -218,56 +224,12 @@ impl LadderApp {
 
     /// F9: compiles into the output window.
     pub fn compile(&mut self) {
-        let Some(doc) = self.doc.as_mut() else { return };
-        let name = doc
-            .name()
-            .unwrap_or_else(|| Msg::Untitled.text(self.settings.lang).to_string());
-        let compiled = doc.compile();
-        let lang = self.settings.lang;
-        let mut lines: Vec<OutputLine> = compiled
-            .diagnostics
-            .iter()
-            .map(|d| OutputLine {
-                // The Chinese rendering keeps the English message for its specifics
-                // (docs/diagnostics.md lists each code's meaning, which the title gives).
-                text: match lang {
-                    i18n::Lang::Zh => d.render_zh(&name),
-                    i18n::Lang::En => d.render(&name),
-                },
-                error: d.severity() == Severity::Error,
-                target: match d.location.origin {
-                    Origin::Cell { row, col } => Some(model::CellRef {
-                        block: d.location.block,
-                        network: d.location.network,
-                        row: row as usize,
-                        col: col as usize,
-                    }),
-                    _ => None,
-                },
-            })
-            .collect();
-        let summary = if compiled.errors() + compiled.warnings() == 0 {
-            format!(
-                "{} ({} {})",
-                Msg::CompileClean.text(lang),
-                compiled.steps.total,
-                Msg::StepsUnit.text(lang)
-            )
-        } else {
-            format!(
-                "{} {}, {} {}",
-                compiled.errors(),
-                Msg::Errors.text(lang),
-                compiled.warnings(),
-                Msg::Warnings.text(lang)
-            )
-        };
-        lines.push(OutputLine {
-            text: summary,
-            error: compiled.errors() > 0,
-            target: None,
-        });
-        self.output.list(lines);
+        self.with_context(diagnostics::compile);
+    }
+
+    /// Runs `f` with the part of the editor a feature without state of its own may use.
+    pub fn with_context<R>(&mut self, f: impl FnOnce(&mut context::Context) -> R) -> R {
+        with_feature!(self, f)
     }
 
     /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
@@ -585,7 +547,9 @@ impl LadderApp {
                 ui.separator();
                 ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
-            self.marks_status_ui(ui);
+            if let Some(doc) = &self.doc {
+                diagnostics::status_ui(ui, doc, self.edit.cursor, self.settings.lang);
+            }
             self.online_status_ui(ui);
             ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
