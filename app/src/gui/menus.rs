@@ -1,11 +1,11 @@
-//! The menu bar, the toolbars, the ladder's right-click menu and the Help windows, all built
+//! The menu bar, the toolbars and the ladder's right-click menu, all built
 //! from [`Command`]: an entry shows the command's text and key, is greyed out when the
 //! command cannot run, and only queues the command when clicked.
 
 use super::LadderApp;
 use super::command::{
-    BASIC_TOOLBAR, Command, DISPLAY_MODES, EDIT_GROUPS, FILE_MENU, HELP_PAGES, HelpPage,
-    LADDER_TOOLBAR, REFERENCE_VIEWS, VIEW_TOGGLES,
+    BASIC_TOOLBAR, Command, DISPLAY_MODES, EDIT_GROUPS, FILE_MENU, HELP_PAGES, LADDER_TOOLBAR,
+    REFERENCE_VIEWS, VIEW_TOGGLES,
 };
 use super::i18n::{Lang, Msg};
 use super::place::View;
@@ -294,55 +294,6 @@ impl LadderApp {
         });
         if self.online.session.is_some() {
             ui.horizontal_wrapped(|ui| self.online_toolbar_ui(ui));
-        }
-    }
-
-    /// The Help windows.
-    pub fn help_ui(&mut self, ctx: &egui::Context) {
-        let Some(page) = self.help else { return };
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang);
-        let mut open = true;
-        egui::Window::new(t(Command::Help(page).text()))
-            .open(&mut open)
-            .default_size([520.0, 480.0])
-            .vscroll(true)
-            .show(ctx, |ui| match page {
-                HelpPage::About => {
-                    ui.heading(format!("Ladder Studio {}", env!("CARGO_PKG_VERSION")));
-                    ui.label(t(Msg::AboutText));
-                    ui.label(env!("CARGO_PKG_LICENSE"));
-                }
-                HelpPage::Shortcuts => {
-                    egui::Grid::new("shortcuts").striped(true).show(ui, |ui| {
-                        for (keys, what) in super::dispatch::shortcut_rows() {
-                            ui.monospace(keys);
-                            ui.label(t(what));
-                            ui.end_row();
-                        }
-                    });
-                }
-                HelpPage::Instructions => {
-                    for spec in ladder_engine::catalog::CATALOG.iter() {
-                        let (help, cat) = match lang {
-                            Lang::Zh => (spec.help_zh, spec.category.name_zh()),
-                            Lang::En => (spec.help_en, spec.category.name_en()),
-                        };
-                        ui.collapsing(format!("{}  ({cat})", spec.name), |ui| {
-                            ui.label(help);
-                            for o in spec.operands {
-                                let h = match lang {
-                                    Lang::Zh => o.help_zh,
-                                    Lang::En => o.help_en,
-                                };
-                                ui.label(format!("{}: {h}", o.name));
-                            }
-                        });
-                    }
-                }
-            });
-        if !open {
-            self.help = None;
         }
     }
 }

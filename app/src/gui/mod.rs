@@ -13,6 +13,7 @@ pub mod file_dialog;
 pub mod files;
 pub mod fonts;
 pub mod function_dialog;
+pub mod help;
 pub mod i18n;
 pub mod ladder_view;
 pub mod menus;
@@ -659,7 +660,7 @@ impl eframe::App for LadderApp {
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }
-        self.help_ui(&ctx);
+        help::ui(&mut self.help, &ctx, self.settings.lang);
         self.printing(|p, cx| p.ui(&ctx, cx));
         self.value_window_ui(&ctx);
         self.publish_shown();
