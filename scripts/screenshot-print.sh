@@ -10,7 +10,7 @@ Xvfb :97 -screen 0 1400x900x24 &
 xvfb=$!
 trap 'kill $app $xvfb 2>/dev/null || true' EXIT
 sleep 2
-DISPLAY=:97 LANG=zh_CN.UTF-8 ./target/release/ladder-studio projects/lathe-988ta.ldp &
+DISPLAY=:97 ./target/release/ladder-studio --lang zh projects/lathe-988ta.ldp &
 app=$!
 sleep 8
 wid=$(DISPLAY=:97 xdotool search --name "Ladder Studio" | head -1)
@@ -18,8 +18,8 @@ DISPLAY=:97 xdotool windowfocus --sync "$wid" mousemove 20 12 click 1
 sleep 1
 DISPLAY=:97 xdotool mousemove 60 "${MENU_Y:-264}" click 1
 sleep 2
-# Two pages on (▶) to the first page of level 2, then zoom to 100 % (+).
-for x in "${NEXT_X:-140}" "${NEXT_X:-140}" "${ZOOM_X:-253}"; do
+# Two pages on (▶) to the first page of level 2; the preview opens at fit width.
+for x in "${NEXT_X:-140}" "${NEXT_X:-140}"; do
   DISPLAY=:97 xdotool mousemove "$x" 67 click 1
   sleep 0.7
 done

@@ -72,34 +72,45 @@ impl Metrics {
         for para in text.lines() {
             let mut line = String::new();
             let mut used = 0.0;
-            let mut last_space: Option<usize> = None;
+            // Where the line may break: after a space, or before a CJK character (Chinese
+            // is broken between any two characters, so `X 轴正向…` does not leave `X` alone).
+            let mut last_break: Option<usize> = None;
             for c in para.chars() {
                 let a = self.advance(c) * size;
+                let cjk = is_cjk(c);
                 if used + a > width && !line.is_empty() {
-                    match last_space.filter(|_| c != ' ') {
+                    match last_break.filter(|_| c != ' ' && !cjk) {
                         Some(at) => {
-                            let rest = line.split_off(at + 1);
+                            let rest = line.split_off(at);
                             lines.push(line.trim_end().to_string());
-                            line = rest;
+                            line = rest.trim_start().to_string();
                         }
-                        None => lines.push(std::mem::take(&mut line)),
+                        None => lines.push(std::mem::take(&mut line).trim_end().to_string()),
                     }
                     used = self.width(&line, size);
-                    last_space = None;
+                    last_break = None;
                     if c == ' ' && line.is_empty() {
                         continue;
                     }
                 }
-                if c == ' ' {
-                    last_space = Some(line.len());
+                if cjk {
+                    last_break = Some(line.len());
                 }
                 line.push(c);
                 used += a;
+                if c == ' ' {
+                    last_break = Some(line.len());
+                }
             }
             lines.push(line);
         }
         lines
     }
+}
+
+/// Whether `c` is a CJK ideograph or punctuation: a line may break before it.
+fn is_cjk(c: char) -> bool {
+    matches!(c as u32, 0x3000..=0x303F | 0x3400..=0x4DBF | 0x4E00..=0x9FFF | 0xF900..=0xFAFF | 0xFF00..=0xFFEF)
 }
 
 impl Default for Metrics {
@@ -119,6 +130,16 @@ mod tests {
         let cut = m.fit("Spindle forward rotation", 10.0, 40.0);
         assert!(cut.ends_with('…') && m.width(&cut, 10.0) <= 40.0, "{cut}");
         assert_eq!(m.fit("X0002.1", 10.0, 100.0), "X0002.1");
+    }
+
+    #[test]
+    fn chinese_breaks_between_characters_so_a_latin_word_before_it_stays_on_its_line() {
+        let mut m = Metrics::new();
+        let text = "X 轴正向硬限位开关（常闭）";
+        let width = m.width("X 轴正向硬", 10.0) + 0.5;
+        let lines = m.wrap(text, 10.0, width);
+        assert_eq!(lines[0], "X 轴正向硬", "{lines:?}");
+        assert_eq!(lines.concat(), text.replace(' ', "").replacen("X", "X ", 1));
     }
 
     #[test]

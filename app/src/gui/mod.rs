@@ -661,7 +661,7 @@ impl eframe::App for LadderApp {
             self.function_dialog_ui(&ctx);
         }
         help::ui(&mut self.help, &ctx, self.settings.lang);
-        self.printing(|p, cx| p.ui(&ctx, cx));
+        self.printing(|p, cx| p.ui(&ctx, cx, area));
         self.value_window_ui(&ctx);
         self.publish_shown();
         self.run_pending();

@@ -12,12 +12,13 @@ use ladder_print::{Anchor, Ink, Item, Paper, Seg};
 
 impl PrintState {
     /// The page setup and preview windows, when open.
-    pub fn ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+    /// They stay inside `area` (below the menu bar).
+    pub fn ui(&mut self, ctx: &egui::Context, cx: &mut Context, area: Rect) {
         if self.setup_open {
-            self.page_setup_ui(ctx, cx);
+            self.page_setup_ui(ctx, cx, area);
         }
         if self.preview.is_some() {
-            self.preview_ui(ctx, cx);
+            self.preview_ui(ctx, cx, area);
         }
     }
 
@@ -57,7 +58,7 @@ impl PrintState {
         }
     }
 
-    fn page_setup_ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+    fn page_setup_ui(&mut self, ctx: &egui::Context, cx: &mut Context, area: Rect) {
         let lang = cx.settings.lang;
         let mut open = true;
         let mut preview = false;
@@ -68,6 +69,7 @@ impl PrintState {
                 .flatten()
         });
         egui::Window::new(Msg::PageSetup.text(lang))
+            .constrain_to(area)
             .open(&mut open)
             .collapsible(false)
             .resizable(false)
@@ -122,11 +124,13 @@ impl PrintState {
         }
     }
 
-    fn preview_ui(&mut self, ctx: &egui::Context, cx: &mut Context) {
+    fn preview_ui(&mut self, ctx: &egui::Context, cx: &mut Context, area: Rect) {
         let lang = cx.settings.lang;
         let mut open = true;
         let (mut print, mut export) = (false, false);
         egui::Window::new(Msg::PrintPreview.text(lang))
+            .constrain_to(area)
+            .default_pos(area.min + vec2(16.0, 16.0))
             .open(&mut open)
             .default_size(vec2(760.0, 780.0))
             .show(ctx, |ui| {
