@@ -77,9 +77,18 @@ impl Metrics {
             let mut last_break: Option<usize> = None;
             for c in para.chars() {
                 let a = self.advance(c) * size;
-                let cjk = is_cjk(c);
+                // A closing mark (`）`, `，`, `。`) never starts a line: it goes down with the
+                // character before it.
+                let cjk = is_cjk(c) && !closes(c);
                 if used + a > width && !line.is_empty() {
-                    match last_break.filter(|_| c != ' ' && !cjk) {
+                    let at = if c == ' ' {
+                        None
+                    } else if cjk {
+                        Some(line.len())
+                    } else {
+                        last_break
+                    };
+                    match at {
                         Some(at) => {
                             let rest = line.split_off(at);
                             lines.push(line.trim_end().to_string());
@@ -106,6 +115,14 @@ impl Metrics {
         }
         lines
     }
+}
+
+/// Whether `c` closes a phrase (a bracket, a comma, a full stop): no line starts with it.
+fn closes(c: char) -> bool {
+    matches!(
+        c,
+        '）' | '」' | '』' | '】' | '》' | '〉' | '，' | '。' | '、' | '：' | '；' | '！' | '？' | ')'
+    )
 }
 
 /// Whether `c` is a CJK ideograph or punctuation: a line may break before it.
@@ -140,6 +157,16 @@ mod tests {
         let lines = m.wrap(text, 10.0, width);
         assert_eq!(lines[0], "X 轴正向硬", "{lines:?}");
         assert_eq!(lines.concat(), text.replace(' ', "").replacen("X", "X ", 1));
+    }
+
+    #[test]
+    fn a_closing_bracket_never_starts_a_line() {
+        let mut m = Metrics::new();
+        let text = "主轴驱动器准备好（无报警）";
+        let width = m.width("主轴驱动器准备好（无报警", 10.0) + 0.5;
+        let lines = m.wrap(text, 10.0, width);
+        assert!(lines.iter().all(|l| !l.starts_with('）')), "{lines:?}");
+        assert_eq!(lines.concat(), text);
     }
 
     #[test]
