@@ -650,6 +650,9 @@ impl Drawn<'_> {
             && cn == i
         {
             let width = self.project.ladder.width;
+            if cr == b.networks[i].rows.len() {
+                self.new_row_ui(&b.networks[i], origin, cr);
+            }
             cursor_ui(
                 self.painter,
                 &b.networks[i],
@@ -664,5 +667,25 @@ impl Drawn<'_> {
             [pos2(self.rect.left(), sep), pos2(self.rect.right(), sep)],
             Stroke::new(0.5, theme::NETWORK_RULE),
         );
+    }
+
+    /// The new row offered below a network's last row (the cursor on it): the rails and the
+    /// wire it would have, dashed and faint, so it reads as a place to draw, not yet a row.
+    fn new_row_ui(&self, net: &Network, origin: Pos2, row: usize) {
+        let m = &self.style.m;
+        let width = self.project.ladder.width;
+        let cell = cell_rect(net, origin, (row, 0), width, self.style);
+        let rail = origin.x + m.margin;
+        let right = rail + width as f32 * m.cell + m.output;
+        let faint = Stroke::new(1.0, theme::NETWORK_RULE);
+        let mid = cell.top() + m.mid;
+        for line in [
+            [pos2(rail, cell.top()), pos2(rail, cell.bottom())],
+            [pos2(right, cell.top()), pos2(right, cell.bottom())],
+            [pos2(rail, mid), pos2(right, mid)],
+        ] {
+            self.painter
+                .extend(egui::Shape::dashed_line(&line, faint, 4.0, 4.0));
+        }
     }
 }
