@@ -8,7 +8,7 @@ use super::context::Context;
 use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::theme;
-use ladder_engine::compiler::{Origin, Severity};
+use ladder_engine::compiler::Severity;
 use ladder_engine::model::CellRef;
 
 /// The marked cell after (`forward`) or before `from` in ladder order, wrapping around.
@@ -43,15 +43,7 @@ pub fn compile(cx: &mut Context) {
                 Lang::En => d.render(&name),
             },
             error: d.severity() == Severity::Error,
-            target: match d.location.origin {
-                Origin::Cell { row, col } => Some(CellRef {
-                    block: d.location.block,
-                    network: d.location.network,
-                    row: row as usize,
-                    col: col as usize,
-                }),
-                _ => None,
-            },
+            target: d.location.cell(),
         })
         .collect();
     let summary = if compiled.errors() + compiled.warnings() == 0 {

@@ -6,7 +6,6 @@
 //! [`Document::begin_group`] … [`Document::end_group`] become one undo step) and counts the
 //! change, so views that cache what they derive from the project know to refresh.
 
-use ladder_engine::compiler::Origin;
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::file;
 use ladder_engine::model::{CellRef, Change, EditError, History, Project};
@@ -272,18 +271,7 @@ impl Document {
         let mut marks: Vec<_> = c
             .diagnostics
             .iter()
-            .filter_map(|d| match d.location.origin {
-                Origin::Cell { row, col } => Some((
-                    CellRef {
-                        block: d.location.block,
-                        network: d.location.network,
-                        row: row as usize,
-                        col: col as usize,
-                    },
-                    d,
-                )),
-                _ => None,
-            })
+            .filter_map(|d| Some((d.location.cell()?, d)))
             .collect();
         marks.sort_by_key(|m| m.0);
         marks

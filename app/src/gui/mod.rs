@@ -655,8 +655,12 @@ impl eframe::App for LadderApp {
             self.main_ui(ui)
         });
         self.prompt_window(&ctx);
-        let geometry = self.edit.geometry.clone();
-        self.element_properties(|p, cx| p.ui(&ctx, cx, &geometry));
+        if self.properties.form.is_some() {
+            // The form sits under its element as drawn; the geometry is read while the
+            // feature holds the cursor, hence the copy (only while the form is open).
+            let geometry = self.edit.geometry.clone();
+            self.element_properties(|p, cx| p.ui(&ctx, cx, &geometry));
+        }
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }

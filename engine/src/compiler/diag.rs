@@ -489,6 +489,20 @@ impl Diagnostic {
 }
 
 impl Location {
+    /// The ladder cell it points at, when it points at one (a click on the diagnostic goes
+    /// there; the diagram marks it).
+    pub fn cell(&self) -> Option<crate::model::CellRef> {
+        match self.origin {
+            Origin::Cell { row, col } => Some(crate::model::CellRef {
+                block: self.block,
+                network: self.network,
+                row: row as usize,
+                col: col as usize,
+            }),
+            _ => None,
+        }
+    }
+
     /// Where, in Chinese: `二级程序 网络 3 行 1 列 2`, `符号表 1 行 2 列 1`, `第 5 行` for an IL
     /// line. Rows and columns count from 1, as `render` prints them (docs/diagnostics.md).
     pub fn describe_zh(&self) -> String {
