@@ -69,7 +69,7 @@ fn main() {
     h.step();
     std::thread::sleep(std::time::Duration::from_millis(200));
     h.step();
-    assert!(h.state().online(), "the stress project runs");
+    assert!(h.state().online.is_online(), "the stress project runs");
     let online = frames(&mut h, networks);
     print("monitored, running at real time", networks, &online);
     let ticks = h
@@ -109,7 +109,8 @@ fn idle_paints() {
             });
         h.run();
         let cutting = program.is_some();
-        h.state_mut().start_running(program);
+        h.state_mut()
+            .with_online(|o, cx| o.start_running(cx, program));
         if cutting {
             h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
         }
@@ -135,6 +136,6 @@ fn idle_paints() {
             (v1 - v0) as f64 / secs,
             (i1 - i0) as f64 / secs
         );
-        h.state_mut().go_offline();
+        h.state_mut().with_online(|o, cx| o.go_offline(cx));
     }
 }

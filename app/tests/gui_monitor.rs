@@ -37,7 +37,7 @@ fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
     two_presses(&mut h, egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
     assert!(
-        h.state().forced_addresses().is_empty(),
+        h.state().online.forced_addresses().is_empty(),
         "forced, then released"
     );
     assert_eq!(
@@ -50,7 +50,7 @@ fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
     settle(&mut h);
     ticks(&mut h, 1);
     assert_eq!(value(&h, "X0010.0"), 0);
-    assert_eq!(h.state().forced_addresses().len(), 1);
+    assert_eq!(h.state().online.forced_addresses().len(), 1);
 }
 
 #[test]
@@ -112,7 +112,7 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
         .unwrap()
         .scrub_to(Some(past));
     h.step();
-    assert!(h.state().scrubbing());
+    assert!(h.state().online.scrubbing());
     assert!(!h.state().enabled(Command::Undo), "Undo is greyed out");
     // Ctrl+Z, an edit and a write all leave the project and the machine as they were.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
@@ -130,8 +130,9 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
         "X0010.2",
     )
     .unwrap();
-    h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Write(x, 1));
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(cx, ladder_engine::machine::MachineCommand::Write(x, 1))
+    });
     assert!(output(&h).contains("nothing can change until Back to live"));
     command(&mut h, Command::LiveView);
     settle(&mut h);
@@ -150,8 +151,9 @@ fn write(h: &mut Harness<'static, LadderApp>, a: &str, v: i64) {
     let t =
         ladder_studio::gui::online::watch::resolve(h.state().doc.as_ref().unwrap().project(), a)
             .unwrap();
-    h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Write(t, v));
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
+    });
 }
 
 fn now(h: &Harness<'static, LadderApp>) -> u64 {
@@ -171,9 +173,13 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     command(&mut h, Command::StepTick);
-    h.state_mut().add_watch("X0010.0").unwrap();
-    h.state_mut().add_watch("Y0010.0").unwrap();
-    let key = h.state().watch_key();
+    h.state_mut()
+        .with_online(|o, cx| o.add_watch(cx, "X0010.0"))
+        .unwrap();
+    h.state_mut()
+        .with_online(|o, cx| o.add_watch(cx, "Y0010.0"))
+        .unwrap();
+    let key = h.state_mut().with_online(|o, cx| o.watch_key(cx));
     h.state_mut().settings.triggers.insert(
         key,
         TriggerSetup {
@@ -213,11 +219,19 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     h.run();
     h.get_by_label("Pause").click();
     h.run();
-    let paused = h.state().shown_trace();
+    let paused = h.state_mut().with_online(|o, cx| o.shown_trace(cx));
     write(&mut h, "X0010.0", 0);
     ticks(&mut h, 50);
-    assert_ne!(h.state().trace_data(), paused, "the record moved on");
-    assert_eq!(h.state().shown_trace(), paused, "the paused chart did not");
+    assert_ne!(
+        h.state_mut().with_online(|o, cx| o.trace_data(cx)),
+        paused,
+        "the record moved on"
+    );
+    assert_eq!(
+        h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+        paused,
+        "the paused chart did not"
+    );
     // Two minutes later the ring has long dropped the edge; the capture has not.
     ticks(&mut h, 15_000);
     let oldest = h
@@ -232,9 +246,14 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     assert!(oldest > edge + 20, "the ring moved past the capture");
     assert_eq!(h.state().online.trace.capture.as_ref(), Some(&capture));
     h.state_mut().online.trace.show_capture = true;
-    assert_eq!(h.state().shown_trace(), capture.data);
+    assert_eq!(
+        h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+        capture.data
+    );
     // The export writes what is shown.
-    let csv = ladder_studio::gui::online::trace_view::trace_csv(&h.state().shown_trace());
+    let csv = ladder_studio::gui::online::trace_view::trace_csv(
+        &h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+    );
     assert!(csv.starts_with("tick,ms,X0010.0,Y0010.0\n"), "{csv}");
     assert_eq!(csv.lines().count(), 1 + 31);
 }
@@ -345,7 +364,7 @@ fn the_first_force_asks_first_and_the_status_bar_counts_forces_in_amber() {
     h.run();
     settle(&mut h);
     assert!(
-        h.state().forced_addresses().is_empty(),
+        h.state().online.forced_addresses().is_empty(),
         "cancelled: nothing forced"
     );
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
@@ -353,12 +372,12 @@ fn the_first_force_asks_first_and_the_status_bar_counts_forces_in_amber() {
     h.get_by_label("Force").click();
     h.run();
     settle(&mut h);
-    assert_eq!(h.state().forced_addresses().len(), 1);
+    assert_eq!(h.state().online.forced_addresses().len(), 1);
     h.get_by_label_contains("Forces active (1)");
     // Asked once: the next press releases at once.
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
-    assert!(h.state().forced_addresses().is_empty());
+    assert!(h.state().online.forced_addresses().is_empty());
     assert!(h.query_by_label("Force a signal").is_none());
 }
 
@@ -389,16 +408,18 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
     h.run();
     command(&mut h, Command::StepTick);
     let mdi = h
-        .state()
-        .panel_key("MDI")
+        .state_mut()
+        .with_online(|o, cx| o.panel_key(cx, "MDI"))
         .expect("the preset has an MDI key");
     let key = Target {
         address: mdi,
         bytes: 1,
         explicit: false,
     };
-    h.state_mut().send_request(Request::Press(key));
-    h.state_mut().send_request(Request::Release(key));
+    h.state_mut()
+        .with_online(|o, cx| o.send_request(cx, Request::Press(key)));
+    h.state_mut()
+        .with_online(|o, cx| o.send_request(cx, Request::Release(key)));
     ticks(&mut h, 20);
     h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
     h.state_mut().online.cnc.mdi = "M08".into();
@@ -442,8 +463,8 @@ fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
         h.run();
         h.run();
         let labels: Vec<String> = h
-            .state()
-            .panel()
+            .state_mut()
+            .with_online(|o, cx| o.panel(cx))
             .items
             .iter()
             .map(|i| i.label_en.clone())
@@ -491,7 +512,7 @@ fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
     h.run();
     settle(&mut h);
     assert_eq!(value(&h, "X0010.2"), 1);
-    assert!(h.state().forced_addresses().is_empty());
+    assert!(h.state().online.forced_addresses().is_empty());
     // With "a click forces" a click forces X0010.0 to the opposite of its value.
     h.get_by_label("A click forces or releases").click();
     h.run();
@@ -501,6 +522,7 @@ fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
     ticks(&mut h, 1);
     let forced: Vec<String> = h
         .state()
+        .online
         .forced_addresses()
         .iter()
         .map(|a| a.to_string())
@@ -526,7 +548,9 @@ fn prepared_values_are_written_in_one_tick_and_rows_show_symbols_units_and_prese
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     for a in ["X0010.0", "X0010.1", "T0000"] {
-        h.state_mut().add_watch(a).unwrap();
+        h.state_mut()
+            .with_online(|o, cx| o.add_watch(cx, a))
+            .unwrap();
     }
     command(&mut h, Command::StepTick);
     h.state_mut().online.tab = OnlineTab::Watch;
@@ -636,11 +660,15 @@ fn a_refusal_from_the_machine_is_in_the_ui_language() {
     let mut h = harness(Some(il_project(RUNG)), Lang::Zh);
     h.run();
     command(&mut h, Command::StepTick);
-    h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Device(
-            0,
-            ladder_engine::machine::DeviceAction::Reset,
-        ));
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(
+            cx,
+            ladder_engine::machine::MachineCommand::Device(
+                0,
+                ladder_engine::machine::DeviceAction::Reset,
+            ),
+        )
+    });
     settle(&mut h);
     let out = output(&h);
     assert!(out.contains("没有运行机床模型"), "{out}");

@@ -17,14 +17,14 @@ fn the_cursor_keys_force_an_input_and_release_it() {
     h.state_mut().online.forces_confirmed = true;
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
-    assert!(h.state().online(), "a step goes online");
+    assert!(h.state().online.is_online(), "a step goes online");
     // Cursor on X0000.0 (network 1, row 1, column 1): Shift+F7 forces it to 1.
     click_cell(&mut h, 0, 0, 0);
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
     ticks(&mut h, 1);
     assert_eq!(value(&h, "X0010.0"), 1);
-    let forced = h.state().forced_addresses();
+    let forced = h.state().online.forced_addresses();
     assert_eq!(forced.len(), 1, "{forced:?}");
     assert_eq!(forced[0].to_string(), "X0010.0");
     // The force list shows it with a release button.
@@ -34,7 +34,7 @@ fn the_cursor_keys_force_an_input_and_release_it() {
     h.get_by_label("Release all").click();
     h.step();
     settle(&mut h);
-    assert!(h.state().forced_addresses().is_empty(), "released");
+    assert!(h.state().online.forced_addresses().is_empty(), "released");
     assert_eq!(
         value(&h, "X0010.0"),
         1,
@@ -52,14 +52,19 @@ fn the_watch_table_shows_a_timer_counting() {
     h.run();
     // Asked once per run of the editor (gui_monitor.rs tests the question).
     h.state_mut().online.forces_confirmed = true;
-    h.state_mut().add_watch("T0000").unwrap();
-    h.state_mut().add_watch("X0010.2").unwrap();
-    command(&mut h, Command::StepTick);
     h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Force(
-            "X0010.2".parse().unwrap(),
-            1,
-        ));
+        .with_online(|o, cx| o.add_watch(cx, "T0000"))
+        .unwrap();
+    h.state_mut()
+        .with_online(|o, cx| o.add_watch(cx, "X0010.2"))
+        .unwrap();
+    command(&mut h, Command::StepTick);
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(
+            cx,
+            ladder_engine::machine::MachineCommand::Force("X0010.2".parse().unwrap(), 1),
+        )
+    });
     h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Watch;
     ticks(&mut h, 10);
     let first = value(&h, "T0000");
@@ -93,17 +98,19 @@ fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     // Asked once per run of the editor (gui_monitor.rs tests the question).
     h.state_mut().online.forces_confirmed = true;
     command(&mut h, Command::StepTick);
-    h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Force(
-            "X0002.0".parse().unwrap(),
-            0,
-        ));
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(
+            cx,
+            ladder_engine::machine::MachineCommand::Force("X0002.0".parse().unwrap(), 0),
+        )
+    });
     // Start the timer: X0000.2 on.
-    h.state_mut()
-        .send_command(ladder_engine::machine::MachineCommand::Force(
-            "X0010.2".parse().unwrap(),
-            1,
-        ));
+    h.state_mut().with_online(|o, cx| {
+        o.send_command(
+            cx,
+            ladder_engine::machine::MachineCommand::Force("X0010.2".parse().unwrap(), 1),
+        )
+    });
     ticks(&mut h, 11);
     let before = value(&h, "T0000");
     assert_eq!(before, 80);
@@ -163,7 +170,7 @@ fn an_edit_that_does_not_compile_is_refused_and_the_status_says_so() {
     );
     // The machine runs on with the old program.
     ticks(&mut h, 2);
-    assert!(h.state().online());
+    assert!(h.state().online.is_online());
 }
 
 #[test]
@@ -177,8 +184,9 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
             a,
         )
         .unwrap();
-        h.state_mut()
-            .send_command(ladder_engine::machine::MachineCommand::Write(t, v));
+        h.state_mut().with_online(|o, cx| {
+            o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
+        });
     };
     write(&mut h, "X0010.0", 1);
     write(&mut h, "X0010.1", 1);
@@ -245,9 +253,12 @@ fn closing_the_project_or_the_window_while_running_stops_the_machine() {
         h.step();
         std::thread::sleep(std::time::Duration::from_millis(5));
     }
-    assert!(h.state().online());
+    assert!(h.state().online.is_online());
     command(&mut h, Command::Close);
-    assert!(!h.state().online(), "the machine went with the project");
+    assert!(
+        !h.state().online.is_online(),
+        "the machine went with the project"
+    );
     // Run again on a new project, then drop the whole app while running.
     command(&mut h, Command::New);
     drop(h);
@@ -267,7 +278,7 @@ fn a_project_with_compile_errors_does_not_run_and_says_why() {
         },
     );
     command(&mut h, Command::Run);
-    assert!(!h.state().online());
+    assert!(!h.state().online.is_online());
     assert!(
         output(&h).contains("compile errors and cannot run"),
         "{}",
@@ -349,7 +360,10 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
     h.step();
     settle(&mut h);
     ticks(&mut h, 1);
-    let view = h.state().live_network_view(b, n).expect("on screen");
+    let view = h
+        .state_mut()
+        .with_online(|o, cx| o.live_network_view(cx, b, n))
+        .expect("on screen");
     let width = h.state().doc.as_ref().unwrap().project().ladder.width;
     assert!(view.cells[r][width].power_in, "the coil is energised");
     // FIN comes back within the M code time (200 ms), and the CNC goes on to M30.
@@ -562,7 +576,10 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     h.step();
     settle(&mut h);
     ticks(&mut h, 1);
-    let view = h.state().live_network_view(level2, 1).expect("on screen");
+    let view = h
+        .state_mut()
+        .with_online(|o, cx| o.live_network_view(cx, level2, 1))
+        .expect("on screen");
     assert!(view.cells[0][0].power_out, "the X0011.0 contact is lit");
     assert!(h.state().online.alarms.on.is_empty());
     // A stuck clamp switch: the ladder's timer raises its alarm 1 s later.

@@ -70,6 +70,8 @@ macro_rules! commands {
             Display(DisplayMode),
             /// Show a view.
             ShowView(View),
+            /// Ask where to write the trace page's CSV (its data waits in the online state).
+            ExportTraceCsv,
             /// Show a cell: its block, scrolled to it, the cursor on it (a feature's jump).
             ShowCell(ladder_engine::model::CellRef),
             /// Open a Help window.
@@ -425,6 +427,7 @@ impl Command {
             Command::ShowView(View::RefBytes) => Msg::RefBytes,
             Command::ShowView(_) => Msg::RefIndex,
             Command::ShowCell(_) => Msg::GoTo,
+            Command::ExportTraceCsv => Msg::TraceExport,
             Command::Help(HelpPage::Shortcuts) => Msg::Shortcuts,
             Command::Help(HelpPage::Instructions) => Msg::InstructionHelp,
             Command::Help(HelpPage::About) => Msg::About,

@@ -25,7 +25,7 @@ pub struct Context<'a> {
     /// The ladder cursor.
     pub cursor: &'a mut CellRef,
     /// The ladder selection: its block and region.
-    pub selection: Option<(usize, Selection)>,
+    pub selection: &'a mut Option<(usize, Selection)>,
     /// A change was applied through [`Context::apply`].
     changed: bool,
 }
@@ -38,7 +38,7 @@ impl<'a> Context<'a> {
         output: &'a mut Output,
         pending: &'a mut Vec<Command>,
         cursor: &'a mut CellRef,
-        selection: Option<(usize, Selection)>,
+        selection: &'a mut Option<(usize, Selection)>,
     ) -> Context<'a> {
         Context {
             doc,
@@ -54,6 +54,11 @@ impl<'a> Context<'a> {
     /// The open project's document, to read.
     pub fn doc(&self) -> Option<&Document> {
         self.doc.as_deref()
+    }
+
+    /// The document to read beside the settings and the output to change, at once.
+    pub fn parts(&mut self) -> (Option<&Document>, &mut Settings, &mut Output) {
+        (self.doc.as_deref(), self.settings, self.output)
     }
 
     /// Hands a change to the document's one apply (read-only check, undo record, change
@@ -77,6 +82,14 @@ impl<'a> Context<'a> {
             .name()
             .unwrap_or_else(|| Msg::Untitled.text(lang).to_string());
         Some((doc.compile(), name))
+    }
+
+    /// Keeps the document read-only while a recorded tick is shown (the online feature's
+    /// replay).
+    pub fn set_replaying(&mut self, on: bool) {
+        if let Some(d) = self.doc.as_deref_mut() {
+            d.set_replaying(on);
+        }
     }
 
     /// Whether a change was applied.

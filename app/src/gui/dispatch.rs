@@ -19,7 +19,7 @@ impl LadderApp {
 
     /// Runs the commands queued during the frame, in order.
     pub fn run_pending(&mut self) {
-        self.lock_while_replaying();
+        self.with_online(|o, cx| o.lock_while_replaying(cx));
         let pending = std::mem::take(&mut self.pending);
         if !pending.is_empty()
             && let Some(ctx) = &self.ctx
@@ -52,8 +52,12 @@ impl LadderApp {
         let doc = self.doc.as_ref();
         match c {
             // A replayed past is read-only: one rule for the project and the machine.
-            Command::Undo => doc.is_some_and(|d| d.history().undo_len() > 0) && !self.scrubbing(),
-            Command::Redo => doc.is_some_and(|d| d.history().redo_len() > 0) && !self.scrubbing(),
+            Command::Undo => {
+                doc.is_some_and(|d| d.history().undo_len() > 0) && !self.online.scrubbing()
+            }
+            Command::Redo => {
+                doc.is_some_and(|d| d.history().redo_len() > 0) && !self.online.scrubbing()
+            }
             Command::Paste => self.in_ladder() && self.edit.clipboard.is_some(),
             Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
@@ -76,17 +80,19 @@ impl LadderApp {
             Command::StepTick | Command::StepN => {
                 doc.is_some() && !self.online.session.as_ref().is_some_and(|s| s.is_running())
             }
-            Command::PowerCycle | Command::GoOffline | Command::UnforceAll => self.online(),
-            Command::ToggleBit | Command::ForceBit | Command::Unforce => {
-                self.online() && self.in_ladder() && !self.scrubbing()
+            Command::PowerCycle | Command::GoOffline | Command::UnforceAll => {
+                self.online.is_online()
             }
-            Command::Why => self.online() && self.in_ladder(),
-            Command::LiveView => self.scrubbing(),
+            Command::ToggleBit | Command::ForceBit | Command::Unforce => {
+                self.online.is_online() && self.in_ladder() && !self.online.scrubbing()
+            }
+            Command::Why => self.online.is_online() && self.in_ladder(),
+            Command::LiveView => self.online.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline | Command::DetachOnline => true,
             Command::MachineModel => doc.is_some(),
             c if c.navigates() => self.in_ladder(),
             // A recorded past is read-only: no edits while the view shows one.
-            c if c.edits_ladder() => self.in_ladder() && !self.scrubbing(),
+            c if c.edits_ladder() => self.in_ladder() && !self.online.scrubbing(),
             _ => doc.is_some(),
         }
     }
@@ -343,7 +349,7 @@ impl LadderApp {
             | Command::UnforceAll
             | Command::Why
             | Command::LiveView
-            | Command::Speed(_) => self.execute_online(c),
+            | Command::Speed(_) => self.with_online(|o, cx| o.execute_online(cx, c)),
             Command::NewSub => self.open_prompt(PlaceKind::NewSub, String::new()),
             Command::ViewCalls(n) => self.view_calls(n),
             Command::RenameSub(n) => {
@@ -378,6 +384,7 @@ impl LadderApp {
             Command::Display(m) => self.settings.display = m,
             Command::ShowView(v) => self.show_view(v),
             Command::ShowCell(at) => self.jump(at),
+            Command::ExportTraceCsv => self.start_dialog(DialogKind::ExportTrace),
             Command::Help(p) => self.help = Some(p),
             Command::Move(d) => {
                 let (dr, dc) = d.delta();

@@ -118,7 +118,7 @@ impl LadderApp {
     /// pending from the old project.
     pub fn reset_view(&mut self) {
         // Another project (or none): the old one's machine stops with it.
-        self.go_offline();
+        self.with_online(|o, cx| o.go_offline(cx));
         self.view = View::Block(0);
         self.prompt = None;
         self.function_dialog = None;
@@ -550,8 +550,8 @@ impl LadderApp {
             }
             (Question::Restore(copy), 0) => self.restore(&copy),
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
-            (Question::FirstForce, 0) => self.confirm_forces(true),
-            (Question::FirstForce, _) => self.confirm_forces(false),
+            (Question::FirstForce, 0) => self.with_online(|o, cx| o.confirm_forces(cx, true)),
+            (Question::FirstForce, _) => self.with_online(|o, cx| o.confirm_forces(cx, false)),
             _ => {}
         }
     }

@@ -236,7 +236,7 @@ impl LadderApp {
             for c in super::command::ONLINE_TOOLBAR {
                 button(self, ui, *c);
             }
-            self.online_toolbar_ui(ui);
+            self.with_online(|o, cx| o.online_toolbar_ui(cx, ui));
         });
     }
 
@@ -293,7 +293,7 @@ impl LadderApp {
             .on_hover_text(Msg::MoreTools.text(lang));
         });
         if self.online.session.is_some() {
-            ui.horizontal_wrapped(|ui| self.online_toolbar_ui(ui));
+            ui.horizontal_wrapped(|ui| self.with_online(|o, cx| o.online_toolbar_ui(cx, ui)));
         }
     }
 }

@@ -113,7 +113,7 @@ macro_rules! with_feature {
             &mut $a.output,
             &mut $a.pending,
             &mut $a.edit.cursor,
-            $a.edit.selection,
+            &mut $a.edit.selection,
         );
         let r = $call;
         if $cx.changed() {
@@ -141,6 +141,14 @@ impl LadderApp {
         f: impl FnOnce(&mut replace::Replace, &mut context::Context) -> R,
     ) -> R {
         with_feature!(self, replace, f)
+    }
+
+    /// Runs `f` on the online feature with the part of the editor it may use.
+    pub fn with_online<R>(
+        &mut self,
+        f: impl FnOnce(&mut online::OnlineState, &mut context::Context) -> R,
+    ) -> R {
+        with_feature!(self, online, f)
     }
 
     /// Runs `f` on the element-properties feature with the part of the editor it may use.
@@ -196,6 +204,7 @@ impl LadderApp {
             .unwrap_or_default();
         let mut app = LadderApp::new(settings, path.as_deref());
         app.ctx = Some(cc.egui_ctx.clone());
+        app.online.egui = Some(cc.egui_ctx.clone());
         // Only a real run (with eframe's storage) autosaves into the user's data folder.
         if cc.storage.is_some() {
             app.files.recovery_dir = eframe::storage_dir(APP_ID).map(|d| d.join("recovery"));
@@ -466,7 +475,15 @@ impl LadderApp {
                         .then_some(self.settings.lang.code()),
                     errors: &errors,
                 };
-                let events = self.live_block_ui(ui, b, &opts);
+                // The view's scroll target and geometry are the editor's; the online feature
+                // draws with them while it holds the cursor.
+                let mut jump_to = self.edit.jump_to.take();
+                let mut geometry = std::mem::take(&mut self.edit.geometry);
+                let events = self.with_online(|o, cx| {
+                    o.live_block_ui(cx, ui, b, &opts, &mut jump_to, &mut geometry)
+                });
+                self.edit.jump_to = jump_to;
+                self.edit.geometry = geometry;
                 if let Some((up, at)) = events.zoom {
                     self.zoom_step(up, Some(at));
                 }
@@ -548,10 +565,8 @@ impl LadderApp {
                 ui.separator();
                 ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
-            if let Some(doc) = &self.doc {
-                diagnostics::status_ui(ui, doc, self.edit.cursor, self.settings.lang);
-            }
-            self.online_status_ui(ui);
+            diagnostics::status_ui(ui, doc, self.edit.cursor, self.settings.lang);
+            self.online.online_status_ui(doc, self.settings.lang, ui);
             ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
         });
@@ -562,6 +577,7 @@ impl eframe::App for LadderApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
+        self.online.egui = Some(ctx.clone());
         self.clamp_ui_state();
         if let Some(doc) = self.doc.as_mut() {
             doc.recheck();
@@ -571,7 +587,7 @@ impl eframe::App for LadderApp {
         self.dropped_files(&ctx);
         self.close_requested(&ctx);
         self.autosave_tick();
-        self.online_frame();
+        self.with_online(|o, cx| o.online_frame(cx));
         let title = self.window_title();
         if title != self.title {
             ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
@@ -595,8 +611,9 @@ impl eframe::App for LadderApp {
         if self.settings.show_status {
             egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         }
-        if self.online() {
-            egui::Panel::bottom("timeline").show(ui, |ui| self.timeline_ui(ui));
+        if self.online.is_online() {
+            egui::Panel::bottom("timeline")
+                .show(ui, |ui| self.with_online(|o, cx| o.timeline_ui(cx, ui)));
         }
         if self.settings.show_output {
             // Resizable by its top edge; the height is kept in the settings for next time.
@@ -637,9 +654,9 @@ impl eframe::App for LadderApp {
         // ladder keep the whole width.
         // The Machine page is also where the machine model is edited offline.
         let online_shown = self.settings.show_online
-            && (self.online() || self.online.tab == online::OnlineTab::Machine);
+            && (self.online.is_online() || self.online.tab == online::OnlineTab::Machine);
         if online_shown && self.settings.online_window {
-            self.online_viewport(&ctx);
+            self.with_online(|o, cx| o.online_viewport(cx, &ctx));
         } else if online_shown {
             // At most half the window: the ladder stays the main view; a wide page scrolls.
             let max = (ui.available_width() * 0.5).max(260.0);
@@ -648,7 +665,7 @@ impl eframe::App for LadderApp {
                 .default_size(600.0_f32.min(max))
                 .min_size(240.0)
                 .max_size(max)
-                .show(ui, |ui| self.online_panel_ui(ui));
+                .show(ui, |ui| self.with_online(|o, cx| o.online_panel_ui(cx, ui)));
         }
         egui::CentralPanel::default().show(ui, |ui| {
             self.tabs_ui(ui);
@@ -666,9 +683,14 @@ impl eframe::App for LadderApp {
         }
         help::ui(&mut self.help, &ctx, self.settings.lang);
         self.printing(|p, cx| p.ui(&ctx, cx, area));
-        self.value_window_ui(&ctx);
-        self.publish_shown();
+        self.with_online(|o, cx| o.value_window_ui(cx, &ctx));
+        self.with_online(|o, cx| o.publish_shown(cx));
         self.run_pending();
+        // The first force waits for the user's yes: the question is the editor's one modal.
+        if std::mem::take(&mut self.online.ask_first_force) {
+            self.files.question = Some(dialogs::Question::FirstForce);
+            ctx.request_repaint();
+        }
     }
 
     fn save(&mut self, storage: &mut dyn eframe::Storage) {
@@ -677,7 +699,7 @@ impl eframe::App for LadderApp {
 
     fn on_exit(&mut self) {
         // The machine thread ends with the window.
-        self.go_offline();
+        self.with_online(|o, cx| o.go_offline(cx));
     }
 }
 
@@ -711,7 +733,7 @@ pub fn run(start: Start) -> anyhow::Result<()> {
                 app.settings.lang = lang;
             }
             if start.run {
-                app.start_running(start.nc.clone());
+                app.with_online(|o, cx| o.start_running(cx, start.nc.clone()));
             }
             Ok(Box::new(app))
         }),

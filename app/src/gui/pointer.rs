@@ -122,8 +122,8 @@ impl LadderApp {
         if let Some(hit) = ev.double_click {
             match hit {
                 // Online, a double-click operates the element instead of editing it.
-                Hit::Cell { network, row, col } if self.online() => {
-                    self.operate_element(cell(network, row, col))
+                Hit::Cell { network, row, col } if self.online.is_online() => {
+                    self.with_online(|o, cx| o.operate_element(cx, cell(network, row, col)))
                 }
                 // On the element's label (its address, symbol or comment): its properties.
                 Hit::Cell { network, row, col }

@@ -2,10 +2,11 @@
 //! running PLC holds now (a program's writes, a value typed in while running), each editable
 //! on the machine, and "save running values into the project" as one undoable change.
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::tables::DataTab;
 use super::super::theme;
+use super::OnlineState;
+use crate::gui::context::Context;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::model::{DataTables, TableEdit};
 use ladder_engine::{Address, Area};
@@ -18,17 +19,17 @@ struct Line {
     differs: bool,
 }
 
-impl LadderApp {
+impl OnlineState {
     /// A 4-byte value or a K byte as the running machine holds it (the shown tick while
     /// replaying).
     fn running_value(&self, a: Address) -> Option<i64> {
-        let s = self.online.session.as_ref()?;
+        let s = self.session.as_ref()?;
         Some(s.source().value(a, u32::from(a.area.element_bytes())))
     }
 
     /// A D address read as a real.
     fn running_real(&self, a: Address) -> Option<f32> {
-        let s = self.online.session.as_ref()?;
+        let s = self.session.as_ref()?;
         let loc = s.running.layout.loc(a, false);
         let b = s.memory().get(loc.off as usize..loc.off as usize + 4)?;
         Some(f32::from_le_bytes([b[0], b[1], b[2], b[3]]))
@@ -36,8 +37,8 @@ impl LadderApp {
 
     /// The project's data tables with every value as the machine holds it now (the K page
     /// as long as the file's, the rows the file lists).
-    pub fn running_tables(&self) -> Option<DataTables> {
-        let doc = self.doc.as_ref()?;
+    pub fn running_tables(&self, cx: &Context<'_>) -> Option<DataTables> {
+        let doc = cx.doc()?;
         let mut data = doc.project().data.clone();
         for (i, byte) in data.k.iter_mut().enumerate() {
             *byte = self.running_value(Address::byte(Area::K, i as u16))? as u8;
@@ -51,8 +52,8 @@ impl LadderApp {
         Some(data)
     }
 
-    fn data_lines(&self, tab: DataTab) -> Vec<Line> {
-        let Some(doc) = self.doc.as_ref() else {
+    fn data_lines(&self, cx: &Context<'_>, tab: DataTab) -> Vec<Line> {
+        let Some(doc) = cx.doc() else {
             return Vec::new();
         };
         let data = &doc.project().data;
@@ -102,14 +103,14 @@ impl LadderApp {
 
     /// Above a data table while online: its rows' running values, a field to write each on
     /// the machine, and the button that saves them all into the project.
-    pub(crate) fn data_online_ui(&mut self, ui: &mut egui::Ui) {
-        if !self.online() {
+    pub(crate) fn data_online_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui, tab: DataTab) {
+        if !self.is_online() {
             return;
         }
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let tab = self.tables.data_tab;
-        let lines = self.data_lines(tab);
+
+        let lines = self.data_lines(cx, tab);
         let differing = lines.iter().filter(|l| l.differs).count();
         let mut writes = Vec::new();
         let mut save = false;
@@ -142,8 +143,7 @@ impl LadderApp {
                                     } else {
                                         ui.monospace(&l.running);
                                     }
-                                    let typed =
-                                        self.online.data_typed.entry(l.address).or_default();
+                                    let typed = self.data_typed.entry(l.address).or_default();
                                     let r = ui
                                         .add(egui::TextEdit::singleline(typed).desired_width(80.0))
                                         .labelled_by(name);
@@ -177,15 +177,18 @@ impl LadderApp {
                 _ => None,
             };
             match command {
-                Some(c) => self.send_command(c),
+                Some(c) => self.send_command(cx, c),
                 None => {
                     let m = format!("{a}: `{text}` {}", t(Msg::DataBadValue));
-                    self.output.say(m, true);
+                    cx.output.say(m, true);
                 }
             }
         }
-        if save && let Some(data) = self.running_tables() {
-            self.edit_table(TableEdit::Data(Box::new(data)));
+        if save
+            && let Some(data) = self.running_tables(cx)
+            && let Err(e) = cx.apply(TableEdit::Data(Box::new(data)))
+        {
+            cx.output.say(e, true);
         }
     }
 }

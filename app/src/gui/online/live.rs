@@ -1,27 +1,31 @@
 //! The ladder view online: each visible network's power flow from the published state (or a
 //! recorded tick), tooltips with live values, and "why?".
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::ladder_view::{Hit, Live, address_of};
+use super::OnlineState;
 use super::Why;
+use crate::gui::context::Context;
 use ladder_engine::model::{Cell, Operand, Project};
 use ladder_engine::vm::monitor::{NetworkView, network_view};
 use ladder_engine::vm::why::deciding_contacts;
 
-impl LadderApp {
+impl OnlineState {
     /// Draws block `b` with the monitor on it, when online. Returns what `block_ui` returns.
     pub(crate) fn live_block_ui(
         &mut self,
+        cx: &mut Context<'_>,
         ui: &mut egui::Ui,
         b: usize,
         opts: &super::super::ladder_view::ViewOptions<'_>,
+        jump_to: &mut Option<usize>,
+        geometry: &mut super::super::ladder_view::Geometry,
     ) -> super::super::ladder_view::ViewEvents {
-        let Some(doc) = self.doc.as_ref() else {
+        let Some(doc) = cx.doc() else {
             return Default::default();
         };
         let project = doc.project();
-        let session = self.online.session.as_ref();
+        let session = self.session.as_ref();
         let drawing_runs = session.is_some_and(|s| s.drawing_runs(project));
         let view_of = |i: usize| -> Option<NetworkView> {
             let s = session?;
@@ -48,7 +52,6 @@ impl LadderApp {
         };
         let forced = |a: ladder_engine::Address| session.is_some_and(|s| super::forced_in(s, a));
         let marked: Vec<(usize, usize, usize)> = self
-            .online
             .why
             .iter()
             .filter(|w| w.block == b)
@@ -56,34 +59,30 @@ impl LadderApp {
             .collect();
         let live = Live {
             network: &view_of,
-            format: self.settings.live_format,
+            format: cx.settings.live_format,
             forced: &forced,
             marked: &marked,
             past: session.is_some_and(|s| s.scrub.is_some()),
         };
-        let mut jump_to = self.edit.jump_to.take();
-        let mut geometry = std::mem::take(&mut self.edit.geometry);
         let events = super::super::ladder_view::block_ui(
             ui,
             project,
             b,
             opts,
-            &mut jump_to,
-            &mut geometry,
+            jump_to,
+            geometry,
             session.map(|_| &live),
         );
-        self.edit.jump_to = jump_to;
-        self.edit.geometry = geometry;
         // Offline too: the whole address, symbol and comment of what the drawing shortens.
         if let (Some(hit), Some(r)) = (events.hover, events.response.as_ref())
-            && let Some(text) = self.tooltip(b, hit)
+            && let Some(text) = self.tooltip(cx, b, hit)
         {
             r.clone().on_hover_text_at_pointer(text);
         }
         let visible = events.visible.clone();
         // What the repaint gate watches: every operand of the networks on screen.
         if let Some(block) = project.ladder.blocks.get(b) {
-            let shown = &mut self.online.ladder_shown;
+            let shown = &mut self.ladder_shown;
             for n in block.networks.get(visible.clone()).unwrap_or_default() {
                 for row in &n.rows {
                     for cell in &row.cells {
@@ -101,16 +100,16 @@ impl LadderApp {
                 }
             }
         }
-        if let Some(s) = self.online.session.as_mut() {
+        if let Some(s) = self.session.as_mut() {
             s.watch_visible(b, visible);
         }
         events
     }
 
     /// The monitor's view of a network of the running program, as the ladder view draws it.
-    pub fn live_network_view(&self, b: usize, n: usize) -> Option<NetworkView> {
-        let s = self.online.session.as_ref()?;
-        let p = self.doc.as_ref()?.project();
+    pub fn live_network_view(&self, cx: &Context<'_>, b: usize, n: usize) -> Option<NetworkView> {
+        let s = self.session.as_ref()?;
+        let p = cx.doc()?.project();
         let grid = p.ladder.blocks.get(b)?.networks.get(n)?;
         Some(network_view(
             &s.source(),
@@ -123,11 +122,11 @@ impl LadderApp {
     }
 
     /// The tooltip of a cell: address, symbol, comment and, online, value and force.
-    pub fn tooltip(&self, b: usize, hit: Hit) -> Option<String> {
+    pub fn tooltip(&self, cx: &Context<'_>, b: usize, hit: Hit) -> Option<String> {
         let Hit::Cell { network, row, col } = hit else {
             return None;
         };
-        let doc = self.doc.as_ref()?;
+        let doc = cx.doc()?;
         let p = doc.project();
         let cell = p
             .ladder
@@ -146,38 +145,38 @@ impl LadderApp {
         };
         let lines: Vec<String> = operands
             .iter()
-            .filter_map(|o| self.operand_line(p, o))
+            .filter_map(|o| self.operand_line(cx, p, o))
             .collect();
         (!lines.is_empty()).then(|| lines.join("\n"))
     }
 
     /// An address named as the tooltips, the watch table and the signal page name it:
     /// `ADDRESS  SYMBOL  — comment` (the comment in the UI language), what the project has.
-    pub(crate) fn address_note(&self, a: ladder_engine::Address) -> String {
+    pub(crate) fn address_note(&self, cx: &Context<'_>, a: ladder_engine::Address) -> String {
         let mut line = a.to_string();
-        let Some(p) = self.doc.as_ref().map(|d| d.project()) else {
+        let Some(p) = cx.doc().map(|d| d.project()) else {
             return line;
         };
         if let Some(sym) = p.symbol_of(a) {
             line.push_str(&format!("  {sym}"));
         }
-        if let Some(c) = p.comment_of(a, self.settings.lang.code()) {
+        if let Some(c) = p.comment_of(a, cx.settings.lang.code()) {
             line.push_str(&format!("  — {c}"));
         }
         line
     }
 
-    fn operand_line(&self, p: &Project, o: &Operand) -> Option<String> {
-        let lang = self.settings.lang;
+    fn operand_line(&self, cx: &Context<'_>, p: &Project, o: &Operand) -> Option<String> {
+        let lang = cx.settings.lang;
         let a = address_of(p, o)?;
-        let mut line = self.address_note(a);
-        if let Some(s) = self.online.session.as_ref() {
+        let mut line = self.address_note(cx, a);
+        if let Some(s) = self.session.as_ref() {
             let bytes = u32::from(a.area.element_bytes()).max(1);
             let v = s.source().value(a, bytes);
             let shown = if a.bit.is_some() {
                 v.to_string()
             } else {
-                self.settings.live_format.show(v, bytes)
+                cx.settings.live_format.show(v, bytes)
             };
             line.push_str(&format!("  = {shown}"));
             if self.is_forced(a) {
@@ -189,12 +188,12 @@ impl LadderApp {
 
     /// "Why?" on the output at the cursor's row: marks the deciding contacts, names the
     /// first in the output window and jumps the timeline to the tick it last changed.
-    pub(crate) fn why_at_cursor(&mut self) {
-        let lang = self.settings.lang;
-        let c = self.edit.cursor;
-        let Some(doc) = self.doc.as_ref() else { return };
+    pub(crate) fn why_at_cursor(&mut self, cx: &mut Context<'_>) {
+        let lang = cx.settings.lang;
+        let c = *cx.cursor;
+        let Some(doc) = cx.doc() else { return };
         let p = doc.project();
-        let Some(s) = self.online.session.as_ref() else {
+        let Some(s) = self.session.as_ref() else {
             return;
         };
         let Some(grid) = p
@@ -214,7 +213,7 @@ impl LadderApp {
         });
         if !is_output || !s.drawing_runs(p) {
             let text = Msg::WhyNeedsOutput.text(lang).to_string();
-            self.output.say(text, true);
+            cx.output.say(text, true);
             return;
         }
         let view = network_view(
@@ -263,14 +262,14 @@ impl LadderApp {
         } else if cells.is_empty() {
             text = format!("{text} {}", Msg::NoDecidingContact.text(lang));
         }
-        self.online.why = Some(Why {
+        self.why = Some(Why {
             block: c.block,
             network: c.network,
             cells,
             text: text.clone(),
         });
-        self.output.say(text, false);
-        if let (Some(t), Some(s)) = (jump, self.online.session.as_mut()) {
+        cx.output.say(text, false);
+        if let (Some(t), Some(s)) = (jump, self.session.as_mut()) {
             s.scrub_to(Some(t));
         }
     }

@@ -1,10 +1,11 @@
 //! The machine side of the online panel: the operator panel (keys → X, lamps ← Y), the CNC
 //! screen, and the signal trace drawn from the scan recorder.
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
+use super::OnlineState;
 use super::cnc_view::{CncEvent, cnc_ui};
 use super::panel_view::{PanelEvent, panel_ui};
+use crate::gui::context::Context;
 use ladder_engine::Address;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::machine::{MachineCommand, Target};
@@ -19,11 +20,10 @@ fn target(a: Address) -> Target {
     }
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The panel in use: the project's own, else the profile's preset.
-    pub fn panel(&self) -> Panel {
-        self.doc
-            .as_ref()
+    pub fn panel(&self, cx: &Context<'_>) -> Panel {
+        cx.doc()
             .map(|d| d.project().operator_panel().into_owned())
             .unwrap_or_default()
     }
@@ -31,26 +31,26 @@ impl LadderApp {
     /// At power-on the panel's switches and knobs are where the panel says (a released
     /// E-stop, closed limit switches, the override knobs at their first-listed value), so
     /// the machine starts as one ready to run.
-    pub(super) fn apply_panel_defaults(&mut self) {
-        self.online.panel_bytes.clear();
-        let driven = self.device_inputs();
-        for item in self.panel().items {
+    pub(super) fn apply_panel_defaults(&mut self, cx: &mut Context<'_>) {
+        self.panel_bytes.clear();
+        let driven = self.device_inputs(cx);
+        for item in self.panel(cx).items {
             // An input a device drives is the device's: its switch on the panel is only a lamp.
             if item.kind.input().is_some_and(|a| driven.contains(&a)) {
                 continue;
             }
             match item.kind {
-                PanelKind::Switch { input } => self.send_command(MachineCommand::Write(
-                    target(input),
-                    i64::from(item.initial != 0),
-                )),
+                PanelKind::Switch { input } => self.send_command(
+                    cx,
+                    MachineCommand::Write(target(input), i64::from(item.initial != 0)),
+                ),
                 PanelKind::Knob { input, .. } => {
                     // Knobs sharing a byte each set their own bits (feed and rapid on X5).
                     let mask = i64::from(item.kind.knob_mask());
                     let byte = self.panel_byte(input);
                     let v = (byte & !mask) | (item.initial & mask);
-                    self.online.panel_bytes.push((input, v));
-                    self.send_command(MachineCommand::Write(target(input), v));
+                    self.panel_bytes.push((input, v));
+                    self.send_command(cx, MachineCommand::Write(target(input), v));
                 }
                 _ => {}
             }
@@ -58,16 +58,16 @@ impl LadderApp {
     }
 
     /// The input of the panel key with this English name ("Cycle start", "AUTO").
-    pub fn panel_key(&self, en: &str) -> Option<Address> {
-        self.panel()
+    pub fn panel_key(&self, cx: &Context<'_>, en: &str) -> Option<Address> {
+        self.panel(cx)
             .items
             .into_iter()
             .find_map(|i| (i.label_en == en).then(|| i.kind.input()).flatten())
     }
 
     /// The inputs the project's machine model drives.
-    fn device_inputs(&self) -> Vec<Address> {
-        self.doc.as_ref().map_or_else(Vec::new, |d| {
+    fn device_inputs(&self, cx: &Context<'_>) -> Vec<Address> {
+        cx.doc().map_or_else(Vec::new, |d| {
             d.project()
                 .machine
                 .devices
@@ -80,23 +80,22 @@ impl LadderApp {
 
     /// A byte as the defaults being applied left it (the machine has not answered yet).
     fn panel_byte(&self, a: Address) -> i64 {
-        self.online
-            .panel_bytes
+        self.panel_bytes
             .iter()
             .rev()
             .find(|(b, _)| *b == a)
             .map_or(0, |(_, v)| *v)
     }
 
-    pub(super) fn machine_panel_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(doc) = self.doc.as_ref() else { return };
+    pub(super) fn machine_panel_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let Some(doc) = cx.doc() else { return };
         let profile = doc.project().profile();
         // Borrowed, not rebuilt: the preset is made only for a project without a panel.
         let mut panel = doc.project().operator_panel();
         // Outside the edit mode, a key or switch on an input a device drives shows the
         // device's answer as a lamp: clicking it would change nothing.
-        let driven = self.device_inputs();
-        if !self.online.panel.editing
+        let driven = self.device_inputs(cx);
+        if !self.panel.editing
             && panel
                 .items
                 .iter()
@@ -108,26 +107,28 @@ impl LadderApp {
                 }
             }
         }
-        let lang = self.settings.lang;
-        let session = self.online.session.as_ref();
+        let lang = cx.settings.lang;
+        let session = self.session.as_ref();
         let memory = |a: Address| -> i64 {
             session.map_or(0, |s| {
                 let v = s.source().value(a, 1);
                 if a.bit.is_some() { v } else { v & 0xFF }
             })
         };
-        let events = panel_ui(ui, &panel, &memory, profile, lang, &mut self.online.panel);
-        let live = self.online() && !self.scrubbing();
+        let events = panel_ui(ui, &panel, &memory, profile, lang, &mut self.panel);
+        let live = self.is_online() && !self.scrubbing();
         for e in events {
             match e {
-                PanelEvent::Press(a) if live => self.send_request(Request::Press(target(a))),
-                PanelEvent::Release(a) if live => self.send_request(Request::Release(target(a))),
+                PanelEvent::Press(a) if live => self.send_request(cx, Request::Press(target(a))),
+                PanelEvent::Release(a) if live => {
+                    self.send_request(cx, Request::Release(target(a)))
+                }
                 PanelEvent::Set(a, v) if live => {
-                    self.send_command(MachineCommand::Write(target(a), v))
+                    self.send_command(cx, MachineCommand::Write(target(a), v))
                 }
                 PanelEvent::Edited(p) => {
-                    if let Err(e) = self.try_edit(TableEdit::Panel(Box::new(p))) {
-                        self.output.say(e, true);
+                    if let Err(e) = cx.apply(TableEdit::Panel(Box::new(p))) {
+                        cx.output.say(e, true);
                     }
                 }
                 _ => {}
@@ -135,10 +136,9 @@ impl LadderApp {
         }
     }
 
-    pub(super) fn cnc_page_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub(super) fn cnc_page_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let status = self
-            .online
             .session
             .as_ref()
             .and_then(|s| s.published.snapshot.cnc.clone());
@@ -152,7 +152,7 @@ impl LadderApp {
                 _ => text.into_owned(),
             }
         };
-        let online = &mut self.online;
+        let online = &mut *self;
         let events = cnc_ui(
             ui,
             status.as_ref(),
@@ -166,7 +166,7 @@ impl LadderApp {
                 CncEvent::Program(text) => CncCommand::Program(text),
                 CncEvent::Mdi(text) => {
                     let blocks = text.lines().filter(|l| !l.trim().is_empty()).count();
-                    self.online.cnc.mdi_sent = self.online().then(|| {
+                    self.cnc.mdi_sent = self.is_online().then(|| {
                         format!(
                             "{} {blocks}. {}",
                             Msg::CncMdiSent.text(lang),
@@ -185,31 +185,30 @@ impl LadderApp {
                     } else {
                         "Feed hold"
                     };
-                    match self.panel_key(name) {
+                    match self.panel_key(cx, name) {
                         Some(a) => {
-                            self.send_request(Request::Press(target(a)));
-                            self.send_request(Request::Release(target(a)));
+                            self.send_request(cx, Request::Press(target(a)));
+                            self.send_request(cx, Request::Release(target(a)));
                         }
                         None => {
                             let m = format!("{name}: {}", Msg::NoPanelKey.text(lang));
-                            self.output.say(m, true);
+                            cx.output.say(m, true);
                         }
                     }
                     continue;
                 }
             };
-            self.send_command(MachineCommand::Cnc(c));
+            self.send_command(cx, MachineCommand::Cnc(c));
         }
     }
 
     /// The CNC alarm's text in the UI language.
-    pub(super) fn cnc_alarm_text(&self, n: u16) -> String {
+    pub(super) fn cnc_alarm_text(&self, cx: &Context<'_>, n: u16) -> String {
         let text = ladder_engine::cnc::alarm_text::alarm_text(
             n,
-            self.settings.lang == super::super::i18n::Lang::Zh,
+            cx.settings.lang == super::super::i18n::Lang::Zh,
         );
         let message = self
-            .online
             .session
             .as_ref()
             .and_then(|s| s.published.snapshot.cnc.as_ref())

@@ -3,9 +3,10 @@
 //! change one undo step), every field checked as it is typed; online, each device's live
 //! state, the ones moving or waiting in amber, the faulted ones in red, and the fault menu.
 
-use super::super::LadderApp;
 use super::super::i18n::{Lang, Msg};
 use super::super::theme;
+use super::OnlineState;
+use crate::gui::context::Context;
 use ladder_engine::devices::fields::{self, Field, FieldError, FieldKind};
 use ladder_engine::devices::model::Encoding;
 use ladder_engine::devices::{
@@ -276,22 +277,21 @@ fn free_name(model: &MachineModel, base: &str) -> String {
         .unwrap_or_default()
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The Machine page.
-    pub(super) fn machine_page_ui(&mut self, ui: &mut egui::Ui) {
-        let Some(doc) = self.doc.as_ref() else { return };
-        let lang = self.settings.lang;
+    pub(super) fn machine_page_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let Some(doc) = cx.doc() else { return };
+        let lang = cx.settings.lang;
         let model = doc.project().machine.clone();
         let profile = doc.project().profile();
         let statuses: Vec<DeviceStatus> = self
-            .online
             .session
             .as_ref()
             .map(|s| s.published.snapshot.devices.clone())
             .unwrap_or_default();
-        let online = self.online() && !self.scrubbing();
+        let online = self.is_online() && !self.scrubbing();
         let mut events = Vec::new();
-        let state = &mut self.online.machine;
+        let state = &mut self.machine;
         header_ui(ui, lang, &model, state);
         ui.separator();
         if model.devices.is_empty() {
@@ -323,18 +323,14 @@ impl LadderApp {
         for e in events {
             match e {
                 Event::Edit(m) => {
-                    if let Err(e) = self.try_edit(TableEdit::Machine(Box::new(m))) {
-                        self.output.say(e, true);
+                    if let Err(e) = cx.apply(TableEdit::Machine(Box::new(m))) {
+                        cx.output.say(e, true);
                     }
                 }
                 Event::Device(name, action) => {
-                    let index = self
-                        .online
-                        .session
-                        .as_ref()
-                        .and_then(|s| s.model.position(&name));
+                    let index = self.session.as_ref().and_then(|s| s.model.position(&name));
                     if let Some(i) = index {
-                        self.send_command(MachineCommand::Device(i, action));
+                        self.send_command(cx, MachineCommand::Device(i, action));
                     }
                 }
             }

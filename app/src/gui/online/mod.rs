@@ -1,8 +1,9 @@
 //! Online: the ladder and the simulated CNC running behind the editor.
 //!
-//! [`session`] holds the machine thread and what it published; the LadderApp methods here
-//! carry out the online commands; `ui.rs` draws the online panel (operator panel, CNC, watch
-//! table, forces, trace, alarms), the toolbar's clock and the timeline; `live.rs` turns the
+//! [`session`] holds the machine thread and what it published; [`OnlineState`], the feature,
+//! carries out the online commands through the editor's narrow `Context`; `ui.rs` draws the
+//! online panel (operator panel, CNC, watch table, forces, trace, alarms), the toolbar's
+//! clock and the timeline; `live.rs` turns the
 //! published state into what the ladder view paints and answers "why?".
 
 pub mod alarms;
@@ -24,9 +25,9 @@ mod ui;
 pub mod values;
 pub mod watch;
 
-use super::LadderApp;
 use super::command::Command;
 use super::i18n::{self, Msg};
+use crate::gui::context::Context;
 use ladder_engine::Address;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::runner::{Request, Speed};
@@ -123,6 +124,10 @@ pub struct OnlineState {
     pub gate: std::sync::Arc<repaint::Gate>,
     /// The addresses the ladder view drew this frame (kept to reuse its allocation).
     pub ladder_shown: Vec<Address>,
+    /// The first force waits for the user's answer: the editor asks its question.
+    pub ask_first_force: bool,
+    /// The window's egui context, which the machine thread wakes when the screen changes.
+    pub egui: Option<egui::Context>,
 }
 
 /// The signal trace page's state.
@@ -143,32 +148,29 @@ pub struct TraceUi {
     pub show_capture: bool,
 }
 
-impl LadderApp {
+impl OnlineState {
     /// Whether a machine is online.
-    pub fn online(&self) -> bool {
-        self.online.session.is_some()
+    pub fn is_online(&self) -> bool {
+        self.session.is_some()
     }
 
     /// Whether the view shows a recorded tick (read-only).
     pub fn scrubbing(&self) -> bool {
-        self.online
-            .session
-            .as_ref()
-            .is_some_and(|s| s.scrub.is_some())
+        self.session.as_ref().is_some_and(|s| s.scrub.is_some())
     }
 
     /// Goes online: compiles (errors go to the output window and nothing starts) and starts
     /// the machine, stopped.
-    pub fn go_online(&mut self) -> bool {
-        if self.online() {
+    pub fn go_online(&mut self, cx: &mut Context<'_>) -> bool {
+        if self.is_online() {
             return true;
         }
-        self.compile();
-        let Some(doc) = self.doc.as_ref() else {
+        crate::gui::diagnostics::compile(cx);
+        let Some(doc) = cx.doc() else {
             return false;
         };
-        let ctx = self.ctx.clone();
-        let gate = std::sync::Arc::clone(&self.online.gate);
+        let ctx = self.egui.clone();
+        let gate = std::sync::Arc::clone(&self.gate);
         // A frame within 33 ms for a change on screen, within 500 ms for anything else.
         let wake = Box::new(move |snapshot: &ladder_engine::machine::Snapshot| {
             let soon = gate.judge(snapshot);
@@ -178,25 +180,25 @@ impl LadderApp {
         });
         match Session::start(doc.project(), doc.generation(), wake) {
             Ok(mut s) => {
-                s.set_speed(self.online.speed);
+                s.set_speed(self.speed);
                 // The online window narrows the ladder: keep its coils and boxes in sight.
-                self.settings.fit_width = true;
-                self.online.session = Some(s);
-                self.online.alarms = Default::default();
-                self.online.why = None;
-                self.apply_panel_defaults();
-                let t = self.t(Msg::OnlineStarted).to_string();
-                self.output.say(t, false);
+                cx.settings.fit_width = true;
+                self.session = Some(s);
+                self.alarms = Default::default();
+                self.why = None;
+                self.apply_panel_defaults(cx);
+                let t = Msg::OnlineStarted.text(cx.settings.lang).to_string();
+                cx.output.say(t, false);
                 true
             }
             Err(StartError::Compile(..)) => {
-                let t = self.t(Msg::RunNeedsCompile).to_string();
-                self.output.say(t, true);
+                let t = Msg::RunNeedsCompile.text(cx.settings.lang).to_string();
+                cx.output.say(t, true);
                 false
             }
             Err(StartError::Other(m)) => {
-                let t = format!("{}: {m}", self.t(Msg::RunFailed));
-                self.output.say(t, true);
+                let t = format!("{}: {m}", Msg::RunFailed.text(cx.settings.lang));
+                cx.output.say(t, true);
                 false
             }
         }
@@ -204,21 +206,25 @@ impl LadderApp {
 
     /// `--run`: goes online and runs at real time; with an NC program, loads it and starts it
     /// as an operator would: the panel's AUTO key, then Cycle start.
-    pub fn start_running(&mut self, nc: Option<String>) {
-        self.execute_online(Command::Run);
+    pub fn start_running(&mut self, cx: &mut Context<'_>, nc: Option<String>) {
+        self.execute_online(cx, Command::Run);
         let Some(text) = nc else { return };
         // The CNC page's editor shows what was loaded.
-        self.online.cnc.program = text.clone();
-        self.send_command(MachineCommand::Cnc(
-            ladder_engine::cnc::command::CncCommand::Program(text),
-        ));
+        self.cnc.program = text.clone();
+        self.send_command(
+            cx,
+            MachineCommand::Cnc(ladder_engine::cnc::command::CncCommand::Program(text)),
+        );
         let target = |a: Address| Target {
             address: a,
             bytes: 1,
             explicit: false,
         };
-        if let (Some(auto), Some(start)) = (self.panel_key("AUTO"), self.panel_key("Cycle start")) {
-            self.online.startup = vec![
+        if let (Some(auto), Some(start)) = (
+            self.panel_key(cx, "AUTO"),
+            self.panel_key(cx, "Cycle start"),
+        ) {
+            self.startup = vec![
                 (2, Request::Press(target(auto))),
                 (3, Request::Release(target(auto))),
                 (30, Request::Press(target(start))),
@@ -229,17 +235,17 @@ impl LadderApp {
 
     /// Leaves online mode and stops the machine thread (closing a project or the window
     /// does this too).
-    pub fn go_offline(&mut self) {
-        if let Some(s) = self.online.session.take() {
+    pub fn go_offline(&mut self, cx: &mut Context<'_>) {
+        if let Some(s) = self.session.take() {
             s.stop();
         }
-        self.lock_while_replaying();
-        self.online.why = None;
+        self.lock_while_replaying(cx);
+        self.why = None;
     }
 
     /// Sends a machine command (what a script line would do); offline it does nothing.
-    pub fn send_command(&mut self, c: MachineCommand) {
-        self.send_request(Request::Command(c));
+    pub fn send_command(&mut self, cx: &mut Context<'_>, c: MachineCommand) {
+        self.send_request(cx, Request::Command(c));
     }
 
     /// The one door of every online action (the ladder's keys, the watch table, the signal
@@ -247,9 +253,9 @@ impl LadderApp {
     /// sent and the output window says how to go online; while a recording is replayed the
     /// machine is not touched and the output window says why; the first force of the run
     /// asks first.
-    pub fn send_request(&mut self, r: Request) {
-        if self.online.session.is_none() {
-            self.say_once(Msg::OfflineHint);
+    pub fn send_request(&mut self, cx: &mut Context<'_>, r: Request) {
+        if self.session.is_none() {
+            self.say_once(cx, Msg::OfflineHint);
             return;
         }
         let is_force = |c: &MachineCommand| {
@@ -263,78 +269,76 @@ impl LadderApp {
             Request::Batch(cs) => cs.iter().any(is_force),
             _ => false,
         };
-        if forcing && !self.online.forces_confirmed && self.online.session.is_some() {
-            self.online.force_pending.push(r);
-            self.files.question = Some(super::dialogs::Question::FirstForce);
+        if forcing && !self.forces_confirmed && self.session.is_some() {
+            self.force_pending.push(r);
+            self.ask_first_force = true;
             return;
         }
-        if let Some(s) = self.online.session.as_mut()
+        if let Some(s) = self.session.as_mut()
             && !s.send(r)
         {
-            self.say_once(Msg::Replaying);
+            self.say_once(cx, Msg::Replaying);
         }
     }
 
     /// Says a refusal, unless it is already the output window's last line.
-    fn say_once(&mut self, m: Msg) {
-        let t = self.t(m).to_string();
-        if self.output.last().is_none_or(|l| l.text != t) {
-            self.output.say(t, true);
+    fn say_once(&mut self, cx: &mut Context<'_>, m: Msg) {
+        let t = m.text(cx.settings.lang).to_string();
+        if cx.output.last().is_none_or(|l| l.text != t) {
+            cx.output.say(t, true);
         }
     }
 
     /// The answer to the first force's question: the forces asked for are sent, or dropped.
-    pub fn confirm_forces(&mut self, yes: bool) {
-        let pending = std::mem::take(&mut self.online.force_pending);
-        self.online.forces_confirmed = yes;
+    pub fn confirm_forces(&mut self, cx: &mut Context<'_>, yes: bool) {
+        let pending = std::mem::take(&mut self.force_pending);
+        self.forces_confirmed = yes;
         if yes {
             for r in pending {
-                self.send_request(r);
+                self.send_request(cx, r);
             }
         }
     }
 
     /// Keeps the document read-only exactly while a recorded tick is shown.
-    pub(crate) fn lock_while_replaying(&mut self) {
+    pub(crate) fn lock_while_replaying(&mut self, cx: &mut Context<'_>) {
         let replaying = self.scrubbing();
-        if let Some(d) = self.doc.as_mut() {
-            d.set_replaying(replaying);
-        }
+        cx.set_replaying(replaying);
     }
 
     /// Carries out an online command.
-    pub(crate) fn execute_online(&mut self, c: Command) {
+    pub(crate) fn execute_online(&mut self, cx: &mut Context<'_>, c: Command) {
         match c {
-            Command::Run if self.go_online() => {
-                self.leave_scrub();
-                self.send_command(MachineCommand::Run);
+            Command::Run if self.go_online(cx) => {
+                self.leave_scrub(cx);
+                self.send_command(cx, MachineCommand::Run);
             }
-            Command::Stop => self.send_command(MachineCommand::Stop),
-            Command::StepTick | Command::StepN if self.go_online() => {
-                self.leave_scrub();
+            Command::Stop => self.send_command(cx, MachineCommand::Stop),
+            Command::StepTick | Command::StepN if self.go_online(cx) => {
+                self.leave_scrub(cx);
                 let n = if c == Command::StepTick {
                     1
                 } else {
-                    self.settings.step_ticks.clamp(1, 1_000_000)
+                    cx.settings.step_ticks.clamp(1, 1_000_000)
                 };
-                self.send_command(MachineCommand::Tick(n));
+                self.send_command(cx, MachineCommand::Tick(n));
             }
             Command::PowerCycle => {
-                self.send_command(MachineCommand::PowerCycle);
-                self.apply_panel_defaults();
+                self.send_command(cx, MachineCommand::PowerCycle);
+                self.apply_panel_defaults(cx);
             }
-            Command::GoOffline => self.go_offline(),
-            Command::ToggleBit | Command::ForceBit | Command::Unforce => self.at_cursor(c),
+            Command::GoOffline => self.go_offline(cx),
+            Command::ToggleBit | Command::ForceBit | Command::Unforce => self.at_cursor(cx, c),
             Command::UnforceAll => {
                 for a in self.forced_addresses() {
-                    self.send_command(MachineCommand::Unforce(a));
+                    self.send_command(cx, MachineCommand::Unforce(a));
                 }
             }
-            Command::Why => self.why_at_cursor(),
-            Command::LiveView => self.leave_scrub(),
+            Command::Why => self.why_at_cursor(cx),
+            Command::LiveView => self.leave_scrub(cx),
             Command::Speed(s) => {
-                self.online.speed = s;
-                if let Some(session) = self.online.session.as_mut() {
+                self.speed = s;
+                if let Some(session) = self.session.as_mut() {
                     session.set_speed(s);
                 }
             }
@@ -343,18 +347,18 @@ impl LadderApp {
     }
 
     /// Back from a recorded tick to the present.
-    pub fn leave_scrub(&mut self) {
-        if let Some(s) = self.online.session.as_mut() {
+    pub fn leave_scrub(&mut self, cx: &mut Context<'_>) {
+        if let Some(s) = self.session.as_mut() {
             s.scrub_to(None);
         }
-        self.lock_while_replaying();
+        self.lock_while_replaying(cx);
     }
 
     /// The bit address of the element at the cursor (a contact or coil).
-    fn cursor_bit(&self) -> Option<Address> {
-        let doc = self.doc.as_ref()?;
+    fn cursor_bit(&self, cx: &Context<'_>) -> Option<Address> {
+        let doc = cx.doc()?;
         let p = doc.project();
-        let cell = p.ladder.cell_at(self.edit.cursor)?;
+        let cell = p.ladder.cell_at(*cx.cursor)?;
         let operand = match cell {
             ladder_engine::model::Cell::Contact { operand, .. }
             | ladder_engine::model::Cell::Coil { operand, .. } => operand,
@@ -365,50 +369,46 @@ impl LadderApp {
 
     /// Reads a bit of the shown state.
     pub fn live_bit(&self, a: Address) -> Option<bool> {
-        let s = self.online.session.as_ref()?;
+        let s = self.session.as_ref()?;
         Some(s.source().bit(a))
     }
 
     /// Whether an address (or any bit of it) is forced.
     pub fn is_forced(&self, a: Address) -> bool {
-        self.online
-            .session
-            .as_ref()
-            .is_some_and(|s| forced_in(s, a))
+        self.session.as_ref().is_some_and(|s| forced_in(s, a))
     }
 
     /// Every forced address, as the machine published them: bits of byte areas one by one,
     /// 4-byte values whole.
     pub fn forced_addresses(&self) -> Vec<Address> {
-        self.online
-            .session
+        self.session
             .as_ref()
             .map_or_else(Vec::new, |s| s.published.snapshot.forced.clone())
     }
 
-    fn at_cursor(&mut self, c: Command) {
-        let Some(a) = self.cursor_bit() else {
-            let t = self.t(Msg::NoBitAtCursor).to_string();
-            self.output.say(t, true);
+    fn at_cursor(&mut self, cx: &mut Context<'_>, c: Command) {
+        let Some(a) = self.cursor_bit(cx) else {
+            let t = Msg::NoBitAtCursor.text(cx.settings.lang).to_string();
+            cx.output.say(t, true);
             return;
         };
         // The machine decides which way from its state when the command runs: a second
         // press before the next snapshot must not act on the first one's old state.
         match c {
-            Command::ToggleBit => self.send_command(MachineCommand::Invert(a)),
-            Command::ForceBit => self.send_command(MachineCommand::ToggleForce(a)),
-            _ => self.send_command(MachineCommand::Unforce(a)),
+            Command::ToggleBit => self.send_command(cx, MachineCommand::Invert(a)),
+            Command::ForceBit => self.send_command(cx, MachineCommand::ToggleForce(a)),
+            _ => self.send_command(cx, MachineCommand::Unforce(a)),
         }
     }
 
     /// Every frame: takes the machine's news, follows edits, keeps the alarm list.
-    pub fn online_frame(&mut self) {
-        let Some(s) = self.online.session.as_mut() else {
+    pub fn online_frame(&mut self, cx: &mut Context<'_>) {
+        let Some(s) = self.session.as_mut() else {
             return;
         };
         let (changed, notices) = s.poll();
         let mut lines = Vec::new();
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         for n in notices {
             lines.push(match n {
                 Notice::Refused(m) => (
@@ -441,18 +441,13 @@ impl LadderApp {
         }
         let failed = s.published.stopped;
         let now = s.published.snapshot.ticks;
-        while self
-            .online
-            .startup
-            .first()
-            .is_some_and(|(at, _)| *at <= now)
-        {
-            let (_, r) = self.online.startup.remove(0);
+        while self.startup.first().is_some_and(|(at, _)| *at <= now) {
+            let (_, r) = self.startup.remove(0);
             s.send(r);
         }
         let was_refused = matches!(s.sync, session::Sync::Refused(..));
         let mut recompile = false;
-        if let Some(doc) = self.doc.as_ref()
+        if let Some(doc) = cx.doc()
             && s.scrub.is_none()
         {
             if s.follow_edit(doc.project(), doc.generation()).is_some() {
@@ -469,19 +464,19 @@ impl LadderApp {
             }
         }
         if recompile {
-            self.compile();
+            crate::gui::diagnostics::compile(cx);
         }
-        if changed && let Some(doc) = self.doc.as_ref() {
-            let s = self.online.session.as_ref().expect("checked above");
-            self.online.alarms.update(doc.project(), s);
+        if changed && let Some(doc) = cx.doc() {
+            let s = self.session.as_ref().expect("checked above");
+            self.alarms.update(doc.project(), s);
         }
         for (t, e) in lines {
-            self.output.say(t, e);
+            cx.output.say(t, e);
         }
         if failed {
-            self.go_offline();
+            self.go_offline(cx);
         }
-        self.poll_trigger();
-        self.lock_while_replaying();
+        self.poll_trigger(cx);
+        self.lock_while_replaying(cx);
     }
 }

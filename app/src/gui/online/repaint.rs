@@ -129,20 +129,19 @@ impl Gate {
     }
 }
 
-impl super::super::LadderApp {
+impl super::OnlineState {
     /// Tells the gate what this frame showed of the machine.
-    pub(crate) fn publish_shown(&mut self) {
-        let Some(s) = self.online.session.as_ref() else {
+    pub(crate) fn publish_shown(&mut self, cx: &crate::gui::context::Context<'_>) {
+        let Some(s) = self.session.as_ref() else {
             return;
         };
         let layout = &s.running.layout;
-        let mut addresses: Vec<ladder_engine::Address> =
-            std::mem::take(&mut self.online.ladder_shown);
+        let mut addresses: Vec<ladder_engine::Address> = std::mem::take(&mut self.ladder_shown);
         let mut shown = Shown::default();
-        if self.settings.show_online {
-            match self.online.tab {
+        if cx.settings.show_online {
+            match self.tab {
                 super::OnlineTab::Panel => {
-                    for item in self.panel().items {
+                    for item in self.panel(cx).items {
                         addresses.extend(item.kind.input());
                         addresses.extend(item.kind.lamp());
                     }
@@ -159,11 +158,10 @@ impl super::super::LadderApp {
                     shown.cnc = true;
                 }
                 super::OnlineTab::Signals => {
-                    let p = &self.online.signals;
+                    let p = &self.signals;
                     let bytes = u32::from(p.area.element_bytes());
-                    let (lo, hi) = self
-                        .doc
-                        .as_ref()
+                    let (lo, hi) = cx
+                        .doc()
                         .map_or((0, 0), |d| d.project().profile().range(p.area));
                     let from = p.from.clamp(lo, hi);
                     let to = p.to.clamp(lo, hi).max(from);
@@ -175,8 +173,8 @@ impl super::super::LadderApp {
                         .extend((start..start + n * bytes).map(|o| (o, 0xFF)));
                 }
                 super::OnlineTab::Watch | super::OnlineTab::Forces => {
-                    if let Some(doc) = self.doc.as_ref() {
-                        for r in self.watch_rows() {
+                    if let Some(doc) = cx.doc() {
+                        for r in self.watch_rows(cx) {
                             if let Ok(t) = super::watch::resolve(doc.project(), &r.text) {
                                 // A bit row watches its bit only.
                                 let loc = layout.loc(t.address, false);
@@ -194,7 +192,7 @@ impl super::super::LadderApp {
                 }
             }
         }
-        shown.everything |= self.online.values.at.is_some();
+        shown.everything |= self.values.at.is_some();
         for a in addresses.drain(..) {
             let loc = layout.loc(a, false);
             match a.bit {
@@ -207,10 +205,10 @@ impl super::super::LadderApp {
                 }
             }
         }
-        self.online.ladder_shown = addresses;
+        self.ladder_shown = addresses;
         shown.bytes.sort_unstable();
         shown.bytes.dedup();
-        self.online.gate.show(shown);
+        self.gate.show(shown);
     }
 }
 

@@ -2,11 +2,12 @@
 //! K, T, C, D, DT, DC) address by address within a range — bit areas a byte a row with its
 //! eight bits, value areas a value a row — every bit and byte writable or forceable, and the
 //! symbol and comment on hover. Every action goes to the machine through the one door
-//! ([`LadderApp::send_command`]).
+//! ([`OnlineState::send_command`](super::OnlineState::send_command)).
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::theme;
+use super::OnlineState;
+use crate::gui::context::Context;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::{Address, Area};
 
@@ -45,14 +46,14 @@ enum Act {
     Force(Address, i64),
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The signal page.
-    pub(super) fn signals_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub(super) fn signals_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let Some(doc) = self.doc.as_ref() else { return };
+        let Some(doc) = cx.doc() else { return };
         let profile = doc.project().profile();
-        let page = &mut self.online.signals;
+        let page = &mut self.signals;
         ui.horizontal_wrapped(|ui| {
             let name = ui.label(t(Msg::SignalArea)).id;
             egui::ComboBox::from_id_salt("signal-area")
@@ -99,33 +100,43 @@ impl LadderApp {
                     .min_row_height(row_height - 4.0)
                     .show(ui, |ui| {
                         for &n in &numbers[rows] {
-                            self.signal_row(ui, area, n, &mut acts);
+                            self.signal_row(cx, ui, area, n, &mut acts);
                             ui.end_row();
                         }
                     });
             });
         for act in acts {
-            self.send_command(match act {
-                Act::Invert(a) => MachineCommand::Invert(a),
-                Act::ToggleForce(a) => MachineCommand::ToggleForce(a),
-                Act::Write(a, v) => MachineCommand::Write(Target::whole(a), v),
-                Act::Force(a, v) => MachineCommand::Force(a, v),
-            });
+            self.send_command(
+                cx,
+                match act {
+                    Act::Invert(a) => MachineCommand::Invert(a),
+                    Act::ToggleForce(a) => MachineCommand::ToggleForce(a),
+                    Act::Write(a, v) => MachineCommand::Write(Target::whole(a), v),
+                    Act::Force(a, v) => MachineCommand::Force(a, v),
+                },
+            );
         }
     }
 
     /// One address: its name, value and bits (bit areas) or value field (value areas).
-    fn signal_row(&mut self, ui: &mut egui::Ui, area: Area, n: u16, acts: &mut Vec<Act>) {
-        let lang = self.settings.lang;
+    fn signal_row(
+        &mut self,
+        cx: &mut Context<'_>,
+        ui: &mut egui::Ui,
+        area: Area,
+        n: u16,
+        acts: &mut Vec<Act>,
+    ) {
+        let lang = cx.settings.lang;
         let whole = Address {
             area,
             number: n,
             bit: None,
         };
-        let value = self.online.session.as_ref().map_or(0, |s| {
+        let value = self.session.as_ref().map_or(0, |s| {
             s.source().value(whole, u32::from(area.element_bytes()))
         });
-        let tip = self.describe(whole);
+        let tip = self.describe(cx, whole);
         let name = ui.monospace(whole.to_string()).on_hover_text(tip).id;
         if area.has_bits() {
             ui.monospace(format!("{:02X}", value as u8));
@@ -144,13 +155,13 @@ impl LadderApp {
                     let cell = egui::Button::new(text)
                         .selected(on)
                         .min_size(egui::vec2(22.0, 0.0));
-                    let r = ui.add(cell).on_hover_text(self.describe(a));
+                    let r = ui.add(cell).on_hover_text(self.describe(cx, a));
                     let label = a.to_string();
                     r.widget_info(|| {
                         egui::WidgetInfo::selected(egui::accesskit::Role::Button, true, on, &label)
                     });
                     if r.clicked() {
-                        acts.push(if self.online.signals.click_forces {
+                        acts.push(if self.signals.click_forces {
                             Act::ToggleForce(a)
                         } else {
                             Act::Invert(a)
@@ -178,7 +189,7 @@ impl LadderApp {
         }
         // A value typed for the whole byte or value: Enter (or Write) writes it once, Force
         // holds it.
-        let typed = self.online.signals.typed.entry(whole).or_default();
+        let typed = self.signals.typed.entry(whole).or_default();
         let r = ui
             .add(egui::TextEdit::singleline(typed).desired_width(70.0))
             .labelled_by(name);
@@ -200,9 +211,9 @@ impl LadderApp {
     }
 
     /// An address with its symbol and comment, for a hover.
-    fn describe(&self, a: Address) -> String {
-        let lang = self.settings.lang;
-        let mut s = self.address_note(a);
+    fn describe(&self, cx: &Context<'_>, a: Address) -> String {
+        let lang = cx.settings.lang;
+        let mut s = self.address_note(cx, a);
         if self.is_forced(a) {
             s.push_str(&format!("  ({})", Msg::Forced.text(lang)));
         }

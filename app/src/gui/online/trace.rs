@@ -2,12 +2,13 @@
 //! stays put while the machine runs on, and the triggered capture: a window of ticks around
 //! a bit edge or a value condition, kept outside the recorder's ring until cleared.
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::settings::{TriggerSetup, TriggerWhen};
+use super::OnlineState;
 use super::session::{RECORD_TICKS, Session};
 use super::trace_view::{TraceData, TraceEvent, TraceSignal, trace_csv, trace_ui};
 use super::watch::resolve;
+use crate::gui::context::Context;
 use ladder_engine::machine::Target;
 use ladder_engine::recorder::Recorder;
 
@@ -85,13 +86,13 @@ fn signal_points(
     points
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The traced watch rows, resolved (rows that no longer resolve are left out).
-    fn traced(&self) -> Vec<(String, Target)> {
-        let Some(doc) = self.doc.as_ref() else {
+    fn traced(&self, cx: &Context<'_>) -> Vec<(String, Target)> {
+        let Some(doc) = cx.doc() else {
             return Vec::new();
         };
-        self.watch_rows()
+        self.watch_rows(cx)
             .iter()
             .filter(|r| r.traced)
             .filter_map(|r| resolve(doc.project(), &r.text).ok())
@@ -103,7 +104,7 @@ impl LadderApp {
     /// tick at any speed.
     fn trace_window(&self, signals: &[(String, Target)], first: u64, last: u64) -> TraceData {
         let mut data = TraceData::default();
-        let Some(s) = self.online.session.as_ref() else {
+        let Some(s) = self.session.as_ref() else {
             return data;
         };
         let rec = s.recorder();
@@ -128,63 +129,57 @@ impl LadderApp {
     }
 
     /// The traced watch rows over the whole recorded window.
-    pub fn trace_data(&self) -> TraceData {
-        self.trace_window(&self.traced(), 0, u64::MAX)
+    pub fn trace_data(&self, cx: &Context<'_>) -> TraceData {
+        self.trace_window(&self.traced(cx), 0, u64::MAX)
     }
 
     /// What the chart shows: the capture when chosen, the paused copy, else the record.
-    pub fn shown_trace(&self) -> TraceData {
-        let t = &self.online.trace;
+    pub fn shown_trace(&self, cx: &Context<'_>) -> TraceData {
+        let t = &self.trace;
         match (&t.capture, &t.frozen) {
             (Some(c), _) if t.show_capture => c.data.clone(),
             (_, Some(f)) => f.clone(),
-            _ => self.trace_data(),
+            _ => self.trace_data(cx),
         }
     }
 
     /// This project's trigger setup.
-    pub fn trigger_setup(&self) -> TriggerSetup {
-        self.settings
+    pub fn trigger_setup(&self, cx: &Context<'_>) -> TriggerSetup {
+        cx.settings
             .triggers
-            .get(&self.watch_key())
+            .get(&self.watch_key(cx))
             .cloned()
             .unwrap_or_default()
     }
 
     /// Arms the trigger from the newest recorded tick on; says why when its signal is wrong.
-    pub fn arm_trigger(&mut self) -> Result<(), String> {
-        let setup = self.trigger_setup();
-        let doc = self.doc.as_ref().ok_or_else(String::new)?;
-        resolve(doc.project(), &setup.signal).map_err(|e| e.text(self.settings.lang))?;
+    pub fn arm_trigger(&mut self, cx: &mut Context<'_>) -> Result<(), String> {
+        let setup = self.trigger_setup(cx);
+        let doc = cx.doc().ok_or_else(String::new)?;
+        resolve(doc.project(), &setup.signal).map_err(|e| e.text(cx.settings.lang))?;
         let next = self
-            .online
             .session
             .as_ref()
             .and_then(|s| s.recorder().newest())
             .map_or(0, |t| t + 1);
-        self.online.trace.trigger = TriggerState::Armed { next };
+        self.trace.trigger = TriggerState::Armed { next };
         Ok(())
     }
 
     /// Every frame while online: looks for the trigger in the ticks recorded since the last
     /// look, and once the ticks after it are recorded, keeps the capture.
-    pub(super) fn poll_trigger(&mut self) {
-        let state = self.online.trace.trigger;
+    pub(super) fn poll_trigger(&mut self, cx: &mut Context<'_>) {
+        let state = self.trace.trigger;
         if state == TriggerState::Idle {
             return;
         }
-        let setup = self.trigger_setup();
-        let Some(newest) = self
-            .online
-            .session
-            .as_ref()
-            .and_then(|s| s.recorder().newest())
-        else {
+        let setup = self.trigger_setup(cx);
+        let Some(newest) = self.session.as_ref().and_then(|s| s.recorder().newest()) else {
             return;
         };
-        let Some(doc) = self.doc.as_ref() else { return };
+        let Some(doc) = cx.doc() else { return };
         let Ok(target) = resolve(doc.project(), &setup.signal) else {
-            self.online.trace.trigger = TriggerState::Idle;
+            self.trace.trigger = TriggerState::Idle;
             return;
         };
         if let TriggerState::Armed { next } = state {
@@ -200,15 +195,15 @@ impl LadderApp {
                     .find(|w| setup.when.fires(w[0].1, w[1].1, setup.value))
                     .map(|w| w[1].0)
             });
-            self.online.trace.trigger = match fired {
+            self.trace.trigger = match fired {
                 Some(at) => TriggerState::Fired { at },
                 None => TriggerState::Armed { next: newest + 1 },
             };
         }
-        if let TriggerState::Fired { at } = self.online.trace.trigger
+        if let TriggerState::Fired { at } = self.trace.trigger
             && newest >= at.saturating_add(setup.post)
         {
-            let mut signals = self.traced();
+            let mut signals = self.traced(cx);
             if !signals.iter().any(|(_, t)| *t == target) {
                 signals.insert(0, (target.text(), target));
             }
@@ -217,37 +212,37 @@ impl LadderApp {
                 at.saturating_sub(setup.pre),
                 at.saturating_add(setup.post),
             );
-            self.online.trace.capture = Some(Capture { at, data });
-            self.online.trace.show_capture = true;
-            self.online.trace.trigger = TriggerState::Idle;
+            self.trace.capture = Some(Capture { at, data });
+            self.trace.show_capture = true;
+            self.trace.trigger = TriggerState::Idle;
         }
     }
 
     /// The trace page: the trigger's row, then the chart of what is shown (the capture, the
     /// paused copy or the record).
-    pub(super) fn trace_page_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
-        if !self.watch_rows().iter().any(|r| r.traced) {
+    pub(super) fn trace_page_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
+        if !self.watch_rows(cx).iter().any(|r| r.traced) {
             ui.label(Msg::TraceHint.text(lang));
         }
-        self.trigger_ui(ui);
-        let data = self.shown_trace();
-        let events = trace_ui(ui, &data, &mut self.online.trace.view, lang);
+        self.trigger_ui(cx, ui);
+        let data = self.shown_trace(cx);
+        let events = trace_ui(ui, &data, &mut self.trace.view, lang);
         for e in events {
             match e {
                 TraceEvent::Pause(on) => {
-                    self.online.trace.frozen = on.then(|| self.trace_data());
+                    self.trace.frozen = on.then(|| self.trace_data(cx));
                 }
                 TraceEvent::Remove(i) => {
                     // A lane is named by its address; its row may be typed as a symbol or in
                     // lower case: rows are matched by what they name.
-                    let key = self.watch_key();
+                    let key = self.watch_key(cx);
                     let name = data.signals.get(i).map(|s| s.name.clone());
-                    let Some(doc) = self.doc.as_ref() else {
+                    let (Some(doc), settings, _) = cx.parts() else {
                         continue;
                     };
                     let names = |text: &str| resolve(doc.project(), text).ok().map(|t| t.text());
-                    if let (Some(list), Some(name)) = (self.settings.watches.get_mut(&key), name) {
+                    if let (Some(list), Some(name)) = (settings.watches.get_mut(&key), name) {
                         for r in list.iter_mut() {
                             if r.traced && names(&r.text).as_deref() == Some(name.as_str()) {
                                 r.traced = false;
@@ -256,11 +251,12 @@ impl LadderApp {
                     }
                 }
                 TraceEvent::ExportCsv => {
-                    self.online.trace.csv = Some(trace_csv(&data));
-                    self.start_dialog(super::super::files::DialogKind::ExportTrace);
+                    self.trace.csv = Some(trace_csv(&data));
+                    cx.pending
+                        .push(super::super::command::Command::ExportTraceCsv);
                 }
                 TraceEvent::Clear => {
-                    if let Some(s) = self.online.session.as_mut() {
+                    if let Some(s) = self.session.as_mut() {
                         s.clear_record();
                     }
                 }
@@ -270,12 +266,12 @@ impl LadderApp {
 
     /// The trigger's row: signal, condition, value, ticks before and after, arm; the capture's
     /// switch and its clear button.
-    fn trigger_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    fn trigger_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let key = self.watch_key();
-        let mut setup = self.trigger_setup();
-        let state = self.online.trace.trigger;
+        let key = self.watch_key(cx);
+        let mut setup = self.trigger_setup(cx);
+        let state = self.trace.trigger;
         let mut arm = None;
         ui.horizontal_wrapped(|ui| {
             let name = ui.label(t(Msg::Trigger)).id;
@@ -318,8 +314,8 @@ impl LadderApp {
                 ui.colored_label(super::super::theme::FORCED, status);
             }
         });
-        if let Some(c) = &self.online.trace.capture {
-            let mut show = self.online.trace.show_capture;
+        if let Some(c) = &self.trace.capture {
+            let mut show = self.trace.show_capture;
             let mut clear = false;
             ui.horizontal_wrapped(|ui| {
                 ui.checkbox(&mut show, t(Msg::TriggerShowCapture));
@@ -331,22 +327,22 @@ impl LadderApp {
                 ));
                 clear = ui.button(t(Msg::TriggerClearCapture)).clicked();
             });
-            self.online.trace.show_capture = show;
+            self.trace.show_capture = show;
             if clear {
-                self.online.trace.capture = None;
+                self.trace.capture = None;
             }
         }
-        if self.settings.triggers.get(&key) != Some(&setup) {
-            self.settings.triggers.insert(key, setup);
+        if cx.settings.triggers.get(&key) != Some(&setup) {
+            cx.settings.triggers.insert(key, setup);
         }
         match arm {
             Some(true) => {
-                if let Err(e) = self.arm_trigger() {
+                if let Err(e) = self.arm_trigger(cx) {
                     let msg = format!("{}: {e}", t(Msg::TriggerBadSignal));
-                    self.output.say(msg, true);
+                    cx.output.say(msg, true);
                 }
             }
-            Some(false) => self.online.trace.trigger = TriggerState::Idle,
+            Some(false) => self.trace.trigger = TriggerState::Idle,
             None => {}
         }
     }

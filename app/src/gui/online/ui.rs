@@ -1,13 +1,14 @@
 //! The online panel and the online parts of the toolbar and status bar: the clock, the pace,
 //! "step N", whether the drawing runs, and the scan recorder's timeline.
 
-use super::super::LadderApp;
 use super::super::command::Command;
 use super::super::i18n::Msg;
 use super::super::theme;
+use super::OnlineState;
 use super::OnlineTab;
 use super::alarms::AlarmList;
 use super::session::Sync;
+use crate::gui::context::Context;
 use ladder_engine::machine::MachineCommand;
 use ladder_engine::runner::Speed;
 use ladder_engine::vm::TICK_MS;
@@ -24,40 +25,40 @@ pub fn clock_text(ticks: u64) -> String {
     )
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The toolbar's online part after the run buttons: pace, N, clock and ticks.
-    pub fn online_toolbar_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub fn online_toolbar_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         egui::ComboBox::new("speed", t(Msg::SpeedLabel))
             .width(84.0)
-            .selected_text(Command::Speed(self.online.speed).text().text(lang))
+            .selected_text(Command::Speed(self.speed).text().text(lang))
             .show_ui(ui, |ui| {
                 for s in Speed::ALL {
                     let c = Command::Speed(s);
                     if ui
-                        .selectable_label(self.online.speed == s, c.text().text(lang))
+                        .selectable_label(self.speed == s, c.text().text(lang))
                         .clicked()
                     {
-                        self.ask(c);
+                        cx.pending.push(c);
                     }
                 }
             });
         egui::ComboBox::new("live-format", t(Msg::LiveFormat))
             .width(56.0)
-            .selected_text(self.settings.live_format.name())
+            .selected_text(cx.settings.live_format.name())
             .show_ui(ui, |ui| {
                 for f in super::super::settings::NumFormat::ALL {
-                    ui.selectable_value(&mut self.settings.live_format, f, f.name());
+                    ui.selectable_value(&mut cx.settings.live_format, f, f.name());
                 }
             });
         ui.add(
-            egui::DragValue::new(&mut self.settings.step_ticks)
+            egui::DragValue::new(&mut cx.settings.step_ticks)
                 .range(1..=1_000_000)
                 .prefix("N = "),
         )
         .on_hover_text(t(Msg::StepNHint));
-        if let Some(s) = &self.online.session {
+        if let Some(s) = &self.session {
             let snap = &s.published.snapshot;
             ui.separator();
             // The virtual clock and the tick count (#), named on hover.
@@ -85,10 +86,14 @@ impl LadderApp {
     }
 
     /// The status bar's online part: whether the drawing is what runs.
-    pub fn online_status_ui(&self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub fn online_status_ui(
+        &self,
+        doc: &crate::gui::document::Document,
+        lang: super::super::i18n::Lang,
+        ui: &mut egui::Ui,
+    ) {
         let t = |m: Msg| m.text(lang);
-        let (Some(s), Some(doc)) = (&self.online.session, &self.doc) else {
+        let Some(s) = &self.session else {
             return;
         };
         ui.separator();
@@ -131,10 +136,10 @@ impl LadderApp {
 
     /// The scan recorder's timeline: a slider over the recorded ticks; moving it shows that
     /// tick (read-only), "live" goes back to the present.
-    pub fn timeline_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub fn timeline_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let Some(s) = self.online.session.as_mut() else {
+        let Some(s) = self.session.as_mut() else {
             return;
         };
         let (oldest, newest) = {
@@ -171,10 +176,10 @@ impl LadderApp {
 
     /// The online panel in a native window of its own (in a window inside the main one where
     /// the platform has no second window); closing it puts the panel back beside the ladder.
-    pub(crate) fn online_viewport(&mut self, ctx: &egui::Context) {
+    pub(crate) fn online_viewport(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
         let title = format!(
             "Ladder Studio — {}",
-            Msg::OnlineWindow.text(self.settings.lang)
+            Msg::OnlineWindow.text(cx.settings.lang)
         );
         let builder = egui::ViewportBuilder::default()
             .with_title(title)
@@ -182,22 +187,22 @@ impl LadderApp {
         let id = egui::ViewportId::from_hash_of("online-window");
         ctx.show_viewport_immediate(id, builder, |ui, class| {
             if class == egui::ViewportClass::EmbeddedWindow {
-                self.online_panel_ui(ui);
+                self.online_panel_ui(cx, ui);
             } else {
                 egui::Frame::central_panel(ui.style()).show(ui, |ui| {
                     ui.set_min_size(ui.available_size());
-                    self.online_panel_ui(ui);
+                    self.online_panel_ui(cx, ui);
                 });
             }
             if ui.input(|i| i.viewport().close_requested()) {
-                self.settings.online_window = false;
+                cx.settings.online_window = false;
             }
         });
     }
 
     /// The online panel: its pages.
-    pub fn online_panel_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub fn online_panel_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         ui.horizontal_wrapped(|ui| {
             for (tab, m) in [
@@ -210,33 +215,31 @@ impl LadderApp {
                 (OnlineTab::Trace, Msg::TabTrace),
                 (OnlineTab::Alarms, Msg::TabAlarms),
             ] {
-                ui.selectable_value(&mut self.online.tab, tab, t(m));
+                ui.selectable_value(&mut self.tab, tab, t(m));
             }
         });
         ui.separator();
-        if self.online.session.is_none()
-            && !matches!(self.online.tab, OnlineTab::Watch | OnlineTab::Machine)
-        {
+        if self.session.is_none() && !matches!(self.tab, OnlineTab::Watch | OnlineTab::Machine) {
             ui.label(t(Msg::OfflineHint));
         }
         // Each page keeps its own scroll position across tab switches.
         egui::ScrollArea::both()
-            .id_salt(("online-page", self.online.tab))
+            .id_salt(("online-page", self.tab))
             .auto_shrink([false, false])
-            .show(ui, |ui| match self.online.tab {
-                OnlineTab::Panel => self.machine_panel_ui(ui),
-                OnlineTab::Cnc => self.cnc_page_ui(ui),
-                OnlineTab::Watch => self.watch_ui(ui),
-                OnlineTab::Forces => self.forces_ui(ui),
-                OnlineTab::Signals => self.signals_ui(ui),
-                OnlineTab::Trace => self.trace_page_ui(ui),
-                OnlineTab::Alarms => self.alarms_ui(ui),
-                OnlineTab::Machine => self.machine_page_ui(ui),
+            .show(ui, |ui| match self.tab {
+                OnlineTab::Panel => self.machine_panel_ui(cx, ui),
+                OnlineTab::Cnc => self.cnc_page_ui(cx, ui),
+                OnlineTab::Watch => self.watch_ui(cx, ui),
+                OnlineTab::Forces => self.forces_ui(cx, ui),
+                OnlineTab::Signals => self.signals_ui(cx, ui),
+                OnlineTab::Trace => self.trace_page_ui(cx, ui),
+                OnlineTab::Alarms => self.alarms_ui(cx, ui),
+                OnlineTab::Machine => self.machine_page_ui(cx, ui),
             });
     }
 
-    fn forces_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    fn forces_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         let forced = self.forced_addresses();
         if forced.is_empty() {
@@ -248,14 +251,12 @@ impl LadderApp {
             for a in &forced {
                 let bytes = u32::from(a.area.element_bytes()).max(1);
                 let value = self
-                    .online
                     .session
                     .as_ref()
                     .map_or(0, |s| s.source().value(*a, bytes));
                 ui.colored_label(theme::FORCED, a.to_string());
-                let sym = self
-                    .doc
-                    .as_ref()
+                let sym = cx
+                    .doc()
                     .and_then(|d| d.project().symbol_of(*a).map(str::to_string))
                     .unwrap_or_default();
                 ui.label(sym);
@@ -267,23 +268,23 @@ impl LadderApp {
             }
         });
         if ui.button(t(Msg::ReleaseAll)).clicked() {
-            self.ask(Command::UnforceAll);
+            cx.pending.push(Command::UnforceAll);
         }
         for a in release {
-            self.send_command(MachineCommand::Unforce(a));
+            self.send_command(cx, MachineCommand::Unforce(a));
         }
     }
 
-    fn alarms_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    fn alarms_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let Some(doc) = self.doc.as_ref() else { return };
+        let Some(doc) = cx.doc() else { return };
         ui.strong(t(Msg::PlcAlarms));
-        if self.online.alarms.on.is_empty() {
+        if self.alarms.on.is_empty() {
             ui.label(t(Msg::NoAlarms));
         }
         egui::Grid::new("plc-alarms").striped(true).show(ui, |ui| {
-            for a in &self.online.alarms.on {
+            for a in &self.alarms.on {
                 ui.colored_label(theme::ERROR, format!("{:04}", a.number));
                 ui.label(AlarmList::text(doc.project(), a, lang.code()));
                 ui.monospace(a.bit.to_string());
@@ -294,7 +295,6 @@ impl LadderApp {
         ui.separator();
         ui.strong(t(Msg::CncAlarms));
         let cnc = self
-            .online
             .session
             .as_ref()
             .and_then(|s| s.published.snapshot.cnc.as_ref())
@@ -305,7 +305,10 @@ impl LadderApp {
             ui.label(t(Msg::NoAlarms));
         }
         for n in cnc {
-            ui.colored_label(theme::ERROR, format!("{n:04}  {}", self.cnc_alarm_text(n)));
+            ui.colored_label(
+                theme::ERROR,
+                format!("{n:04}  {}", self.cnc_alarm_text(cx, n)),
+            );
         }
     }
 }

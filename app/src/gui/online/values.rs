@@ -2,12 +2,13 @@
 //! function box it opens the box's value window, where each address operand shows its value
 //! and takes a new one, written once or forced.
 
-use super::super::LadderApp;
 use super::super::i18n::Msg;
 use super::super::ladder_view::address_of;
 use super::super::place::Cursor;
 use super::super::theme;
+use super::OnlineState;
 use super::watch::{force_command, parse_value, write_command};
+use crate::gui::context::Context;
 use ladder_engine::machine::{MachineCommand, Target};
 use ladder_engine::model::Cell;
 
@@ -20,21 +21,20 @@ pub struct ValueWindow {
     pub texts: Vec<String>,
 }
 
-impl LadderApp {
+impl OnlineState {
     /// Online double-click: toggles a bit (once), or opens a box's value window.
-    pub fn operate_element(&mut self, at: Cursor) {
-        self.edit.selection = None;
-        self.edit.cursor = at;
-        let cell = self
-            .doc
-            .as_ref()
+    pub fn operate_element(&mut self, cx: &mut Context<'_>, at: Cursor) {
+        *cx.selection = None;
+        *cx.cursor = at;
+        let cell = cx
+            .doc()
             .and_then(|d| d.project().ladder.cell_at(at).cloned());
         match cell {
             Some(Cell::Contact { .. } | Cell::Coil { .. }) if !self.scrubbing() => {
-                self.execute_online(super::super::command::Command::ToggleBit)
+                self.execute_online(cx, super::super::command::Command::ToggleBit)
             }
             Some(Cell::Box { operands, .. }) => {
-                self.online.values = ValueWindow {
+                self.values = ValueWindow {
                     at: Some(at),
                     texts: vec![String::new(); operands.len()],
                 };
@@ -44,22 +44,22 @@ impl LadderApp {
     }
 
     /// The value window, when open.
-    pub fn value_window_ui(&mut self, ctx: &egui::Context) {
-        let Some(at) = self.online.values.at else {
+    pub fn value_window_ui(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
+        let Some(at) = self.values.at else {
             return;
         };
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
-        let (Some(doc), true) = (self.doc.as_ref(), self.online()) else {
-            self.online.values = ValueWindow::default();
+        let (Some(doc), true) = (cx.doc(), self.is_online()) else {
+            self.values = ValueWindow::default();
             return;
         };
         let p = doc.project();
         let Some(Cell::Box { op, operands }) = p.ladder.cell_at(at).cloned() else {
-            self.online.values = ValueWindow::default();
+            self.values = ValueWindow::default();
             return;
         };
-        let format = self.settings.live_format;
+        let format = cx.settings.live_format;
         let scrubbing = self.scrubbing();
         let mut open = true;
         let mut commands = Vec::new();
@@ -75,8 +75,7 @@ impl LadderApp {
                     explicit: false,
                 });
                 let value = target.map_or(0, |t| {
-                    self.online
-                        .session
+                    self.session
                         .as_ref()
                         .map_or(0, |s| s.source().value(t.address, t.bytes))
                 });
@@ -84,7 +83,7 @@ impl LadderApp {
                 (format!("{name} {o}"), target, value, forced)
             })
             .collect();
-        self.online.values.texts.resize(rows.len(), String::new());
+        self.values.texts.resize(rows.len(), String::new());
         egui::Window::new(format!("{} — {}", op.name(), t(Msg::ValuesTitle)))
             .open(&mut open)
             .collapsible(false)
@@ -103,7 +102,7 @@ impl LadderApp {
                         } else {
                             ui.monospace(shown);
                         }
-                        let field = &mut self.online.values.texts[i];
+                        let field = &mut self.values.texts[i];
                         ui.add_enabled(
                             !scrubbing,
                             egui::TextEdit::singleline(field)
@@ -137,10 +136,10 @@ impl LadderApp {
                 });
             });
         for c in commands {
-            self.send_command(c);
+            self.send_command(cx, c);
         }
         if !open {
-            self.online.values = ValueWindow::default();
+            self.values = ValueWindow::default();
         }
     }
 }

@@ -2,11 +2,12 @@
 //! written once or forced from the table, and the switch that puts a row on the signal trace.
 //! The rows are the user's (settings, by project file), not the project's.
 
-use super::super::LadderApp;
 use super::super::i18n::Lang;
 use super::super::i18n::Msg;
 use super::super::settings::{NumFormat, WatchRow};
 use super::super::theme;
+use super::OnlineState;
+use crate::gui::context::Context;
 use ladder_engine::Address;
 use ladder_engine::address::AddressError;
 use ladder_engine::machine::{MachineCommand, Target};
@@ -139,55 +140,50 @@ pub fn force_command(t: Target, format: NumFormat, v: f64) -> MachineCommand {
     MachineCommand::Force(t.address, raw)
 }
 
-impl LadderApp {
+impl OnlineState {
     /// The key of this project's watch list in the settings.
-    pub fn watch_key(&self) -> PathBuf {
-        self.doc
-            .as_ref()
+    pub fn watch_key(&self, cx: &Context<'_>) -> PathBuf {
+        cx.doc()
             .and_then(|d| d.path().map(|p| p.to_path_buf()))
             .unwrap_or_default()
     }
 
     /// This project's watch rows.
-    pub fn watch_rows(&self) -> &[WatchRow] {
-        self.settings
+    pub fn watch_rows<'c>(&self, cx: &'c Context<'_>) -> &'c [WatchRow] {
+        cx.settings
             .watches
-            .get(&self.watch_key())
+            .get(&self.watch_key(cx))
             .map_or(&[], Vec::as_slice)
     }
 
     /// Adds a row (refused with a message when the text is no address or symbol).
-    pub fn add_watch(&mut self, text: &str) -> Result<(), String> {
-        let Some(doc) = self.doc.as_ref() else {
+    pub fn add_watch(&mut self, cx: &mut Context<'_>, text: &str) -> Result<(), String> {
+        let Some(doc) = cx.doc() else {
             return Err(String::new());
         };
-        let t = resolve(doc.project(), text).map_err(|e| e.text(self.settings.lang))?;
+        let t = resolve(doc.project(), text).map_err(|e| e.text(cx.settings.lang))?;
         let format = if t.address.bit.is_some() {
             NumFormat::Bit
         } else {
             NumFormat::Dec
         };
-        let key = self.watch_key();
-        self.settings
-            .watches
-            .entry(key)
-            .or_default()
-            .push(WatchRow {
-                text: text.trim().to_string(),
-                format,
-                traced: t.address.bit.is_some(),
-            });
+        let key = self.watch_key(cx);
+        cx.settings.watches.entry(key).or_default().push(WatchRow {
+            text: text.trim().to_string(),
+            format,
+            traced: t.address.bit.is_some(),
+        });
         Ok(())
     }
 
     /// Every row whose "New value" holds a value in its format: its target, format, value.
-    pub fn prepared_values(&self) -> Vec<(Target, NumFormat, f64)> {
-        let Some(doc) = self.doc.as_ref() else {
+    pub fn prepared_values(&self, cx: &Context<'_>) -> Vec<(Target, NumFormat, f64)> {
+        let Some(doc) = cx.doc() else {
             return Vec::new();
         };
-        self.watch_rows()
+        self.watch_rows(cx)
             .iter()
-            .zip(&self.online.watch.values)
+            .zip(&self.watch.values)
             .filter_map(|(row, text)| {
                 let t = resolve(doc.project(), &row.text).ok()?;
                 let v = parse_value(text, row.format)?;
@@ -197,10 +193,10 @@ impl LadderApp {
     }
 
     /// A row's symbol and comment (in the UI language), from the project.
-    fn row_note(&self, target: Option<Target>) -> String {
+    fn row_note(&self, cx: &Context<'_>, target: Option<Target>) -> String {
         // The address is in the row's first column: what follows it here.
         target.map_or_else(String::new, |t| {
-            let note = self.address_note(t.address);
+            let note = self.address_note(cx, t.address);
             note[t.address.to_string().len()..].trim_start().to_string()
         })
     }
@@ -209,7 +205,7 @@ impl LadderApp {
     /// instruction that runs it in the program that runs; a preset in memory is read live.
     fn unit_and_preset(&self, a: Address) -> Option<String> {
         use ladder_engine::catalog::Role;
-        let s = self.online.session.as_ref()?;
+        let s = self.session.as_ref()?;
         if !matches!(a.area, ladder_engine::Area::T | ladder_engine::Area::C) {
             return None;
         }
@@ -251,9 +247,9 @@ impl LadderApp {
     }
 
     /// A row's value now, as shown.
-    pub fn watch_value(&self, row: &WatchRow) -> Option<(i64, String)> {
-        let doc = self.doc.as_ref()?;
-        let s = self.online.session.as_ref()?;
+    pub fn watch_value(&self, cx: &Context<'_>, row: &WatchRow) -> Option<(i64, String)> {
+        let doc = cx.doc()?;
+        let s = self.session.as_ref()?;
         let t = resolve(doc.project(), &row.text).ok()?;
         let v = s.source().value(t.address, t.bytes);
         Some((v, row.format.show(v, t.bytes)))
@@ -261,34 +257,34 @@ impl LadderApp {
 
     /// Above the table: the field that adds a row (and why a text was refused), and the
     /// buttons that write or force every prepared value in one tick.
-    fn watch_bars_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    fn watch_bars_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         let scrubbing = self.scrubbing();
         ui.horizontal(|ui| {
             let r = ui.add(
-                egui::TextEdit::singleline(&mut self.online.watch.new_text)
+                egui::TextEdit::singleline(&mut self.watch.new_text)
                     .hint_text(t(Msg::WatchHint))
                     .desired_width(160.0),
             );
             let enter = r.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
             if ui.button(t(Msg::WatchAdd)).clicked() || enter {
-                let text = std::mem::take(&mut self.online.watch.new_text);
-                match self.add_watch(&text) {
-                    Ok(()) => self.online.watch.error = None,
+                let text = std::mem::take(&mut self.watch.new_text);
+                match self.add_watch(cx, &text) {
+                    Ok(()) => self.watch.error = None,
                     Err(e) => {
-                        self.online.watch.error = Some(e);
-                        self.online.watch.new_text = text;
+                        self.watch.error = Some(e);
+                        self.watch.new_text = text;
                     }
                 }
             }
         });
-        if let Some(e) = &self.online.watch.error {
+        if let Some(e) = &self.watch.error {
             ui.colored_label(theme::ERROR, e);
         }
         // Prepared values (the "New value" column) all at once, in one tick.
-        let prepared = self.prepared_values();
-        let can = !scrubbing && self.online.session.is_some() && !prepared.is_empty();
+        let prepared = self.prepared_values(cx);
+        let can = !scrubbing && self.session.is_some() && !prepared.is_empty();
         ui.horizontal(|ui| {
             if ui
                 .add_enabled(can, egui::Button::new(t(Msg::WatchWriteAll)))
@@ -298,7 +294,7 @@ impl LadderApp {
                     .iter()
                     .map(|(t, f, v)| write_command(*t, *f, *v))
                     .collect();
-                self.send_request(Request::Batch(batch));
+                self.send_request(cx, Request::Batch(batch));
             }
             if ui
                 .add_enabled(can, egui::Button::new(t(Msg::WatchForceAll)))
@@ -308,7 +304,7 @@ impl LadderApp {
                     .iter()
                     .map(|(t, f, v)| force_command(*t, *f, *v))
                     .collect();
-                self.send_request(Request::Batch(batch));
+                self.send_request(cx, Request::Batch(batch));
             }
             ui.weak(format!("{} {}", prepared.len(), t(Msg::WatchPrepared)));
         });
@@ -316,14 +312,14 @@ impl LadderApp {
 
     /// The watch table: the bar that adds a row, the prepared values' buttons, then a row per
     /// watched address (format, value, new value with Write, Force and Release, Trace).
-    pub(super) fn watch_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub(super) fn watch_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         let scrubbing = self.scrubbing();
-        self.watch_bars_ui(ui);
-        let key = self.watch_key();
-        let rows: Vec<WatchRow> = self.watch_rows().to_vec();
-        self.online.watch.values.resize(rows.len(), String::new());
+        self.watch_bars_ui(cx, ui);
+        let key = self.watch_key(cx);
+        let rows: Vec<WatchRow> = self.watch_rows(cx).to_vec();
+        self.watch.values.resize(rows.len(), String::new());
         let mut remove = None;
         let mut changed: Vec<(usize, WatchRow)> = Vec::new();
         let mut commands = Vec::new();
@@ -340,12 +336,9 @@ impl LadderApp {
             ui.strong(t(Msg::WatchTraced));
             ui.end_row();
             for (i, row) in rows.iter().enumerate() {
-                let target = self
-                    .doc
-                    .as_ref()
-                    .and_then(|d| resolve(d.project(), &row.text).ok());
+                let target = cx.doc().and_then(|d| resolve(d.project(), &row.text).ok());
                 let name = ui.label(&row.text).id;
-                ui.label(self.row_note(target));
+                ui.label(self.row_note(cx, target));
                 let mut format = row.format;
                 egui::ComboBox::from_id_salt(("watch-format", i))
                     .selected_text(format.name())
@@ -357,7 +350,7 @@ impl LadderApp {
                     })
                     .response
                     .labelled_by(name);
-                let value = self.watch_value(row);
+                let value = self.watch_value(cx, row);
                 let forced = target.is_some_and(|t| self.is_forced(t.address));
                 let mut shown = value.map_or("—".to_string(), |v| v.1);
                 if let Some(unit) = target.and_then(|t| self.unit_and_preset(t.address)) {
@@ -369,14 +362,14 @@ impl LadderApp {
                     ui.monospace(shown);
                 }
                 ui.horizontal(|ui| {
-                    let field = &mut self.online.watch.values[i];
+                    let field = &mut self.watch.values[i];
                     ui.add_enabled(
                         !scrubbing,
                         egui::TextEdit::singleline(field).desired_width(70.0),
                     )
                     .labelled_by(name);
                     let parsed = parse_value(field, format);
-                    let can = !scrubbing && target.is_some() && self.online.session.is_some();
+                    let can = !scrubbing && target.is_some() && self.session.is_some();
                     if ui
                         .add_enabled(
                             can && parsed.is_some(),
@@ -427,17 +420,17 @@ impl LadderApp {
                 ui.end_row();
             }
         });
-        if let Some(list) = self.settings.watches.get_mut(&key) {
+        if let Some(list) = cx.settings.watches.get_mut(&key) {
             for (i, r) in changed {
                 list[i] = r;
             }
             if let Some(i) = remove {
                 list.remove(i);
-                self.online.watch.values.remove(i);
+                self.watch.values.remove(i);
             }
         }
         for c in commands {
-            self.send_command(c);
+            self.send_command(cx, c);
         }
     }
 }

@@ -63,7 +63,7 @@ impl PrintState {
     fn options(cx: &Context) -> Options {
         let s = &cx.settings.page_setup;
         let only = if s.selection_only {
-            let networks: Vec<(usize, usize)> = match &cx.selection {
+            let networks: Vec<(usize, usize)> = match &*cx.selection {
                 Some((block, region)) => {
                     let count = cx
                         .doc()

@@ -358,7 +358,8 @@ impl LadderApp {
     /// Draws the table the project tree selected and applies the edits made in it.
     pub fn tables_ui(&mut self, ui: &mut egui::Ui) {
         if self.view == View::Data {
-            self.data_online_ui(ui);
+            let tab = self.tables.data_tab;
+            self.with_online(|o, cx| o.data_online_ui(cx, ui, tab));
         }
         let Some(doc) = self.doc.as_ref() else {
             return;
