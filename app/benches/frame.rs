@@ -9,6 +9,7 @@
 use egui_kittest::Harness;
 use ladder_studio::gui::LadderApp;
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::online::OnlineState;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -110,7 +111,7 @@ fn idle_paints() {
         h.run();
         let cutting = program.is_some();
         h.state_mut()
-            .with_online(|o, cx| o.start_running(cx, program));
+            .with(|o: &mut OnlineState, cx| o.start_running(cx, program));
         if cutting {
             h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
         }
@@ -136,6 +137,7 @@ fn idle_paints() {
             (v1 - v0) as f64 / secs,
             (i1 - i0) as f64 / secs
         );
-        h.state_mut().with_online(|o, cx| o.go_offline(cx));
+        h.state_mut()
+            .with(|o: &mut OnlineState, cx| o.go_offline(cx));
     }
 }

@@ -5,6 +5,7 @@ mod common;
 use common::online::*;
 use common::*;
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::online::OnlineState;
 
 /// Two presses queued before one frame: both act (a fast typist, a slow frame).
 fn two_presses(h: &mut Harness<'static, LadderApp>, m: egui::Modifiers, key: egui::Key) {
@@ -130,7 +131,7 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
         "X0010.2",
     )
     .unwrap();
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(cx, ladder_engine::machine::MachineCommand::Write(x, 1))
     });
     assert!(output(&h).contains("nothing can change until Back to live"));
@@ -151,7 +152,7 @@ fn write(h: &mut Harness<'static, LadderApp>, a: &str, v: i64) {
     let t =
         ladder_studio::gui::online::watch::resolve(h.state().doc.as_ref().unwrap().project(), a)
             .unwrap();
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
     });
 }
@@ -174,12 +175,14 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     h.run();
     command(&mut h, Command::StepTick);
     h.state_mut()
-        .with_online(|o, cx| o.add_watch(cx, "X0010.0"))
+        .with(|o: &mut OnlineState, cx| o.add_watch(cx, "X0010.0"))
         .unwrap();
     h.state_mut()
-        .with_online(|o, cx| o.add_watch(cx, "Y0010.0"))
+        .with(|o: &mut OnlineState, cx| o.add_watch(cx, "Y0010.0"))
         .unwrap();
-    let key = h.state_mut().with_online(|o, cx| o.watch_key(cx));
+    let key = h
+        .state_mut()
+        .with(|o: &mut OnlineState, cx| o.watch_key(cx));
     h.state_mut().settings.triggers.insert(
         key,
         TriggerSetup {
@@ -219,16 +222,20 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     h.run();
     h.get_by_label("Pause").click();
     h.run();
-    let paused = h.state_mut().with_online(|o, cx| o.shown_trace(cx));
+    let paused = h
+        .state_mut()
+        .with(|o: &mut OnlineState, cx| o.shown_trace(cx));
     write(&mut h, "X0010.0", 0);
     ticks(&mut h, 50);
     assert_ne!(
-        h.state_mut().with_online(|o, cx| o.trace_data(cx)),
+        h.state_mut()
+            .with(|o: &mut OnlineState, cx| o.trace_data(cx)),
         paused,
         "the record moved on"
     );
     assert_eq!(
-        h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+        h.state_mut()
+            .with(|o: &mut OnlineState, cx| o.shown_trace(cx)),
         paused,
         "the paused chart did not"
     );
@@ -247,12 +254,14 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     assert_eq!(h.state().online.trace.capture.as_ref(), Some(&capture));
     h.state_mut().online.trace.show_capture = true;
     assert_eq!(
-        h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+        h.state_mut()
+            .with(|o: &mut OnlineState, cx| o.shown_trace(cx)),
         capture.data
     );
     // The export writes what is shown.
     let csv = ladder_studio::gui::online::trace_view::trace_csv(
-        &h.state_mut().with_online(|o, cx| o.shown_trace(cx)),
+        &h.state_mut()
+            .with(|o: &mut OnlineState, cx| o.shown_trace(cx)),
     );
     assert!(csv.starts_with("tick,ms,X0010.0,Y0010.0\n"), "{csv}");
     assert_eq!(csv.lines().count(), 1 + 31);
@@ -409,7 +418,7 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
     command(&mut h, Command::StepTick);
     let mdi = h
         .state_mut()
-        .with_online(|o, cx| o.panel_key(cx, "MDI"))
+        .with(|o: &mut OnlineState, cx| o.panel_key(cx, "MDI"))
         .expect("the preset has an MDI key");
     let key = Target {
         address: mdi,
@@ -417,9 +426,9 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
         explicit: false,
     };
     h.state_mut()
-        .with_online(|o, cx| o.send_request(cx, Request::Press(key)));
+        .with(|o: &mut OnlineState, cx| o.send_request(cx, Request::Press(key)));
     h.state_mut()
-        .with_online(|o, cx| o.send_request(cx, Request::Release(key)));
+        .with(|o: &mut OnlineState, cx| o.send_request(cx, Request::Release(key)));
     ticks(&mut h, 20);
     h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
     h.state_mut().online.cnc.mdi = "M08".into();
@@ -464,7 +473,7 @@ fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
         h.run();
         let labels: Vec<String> = h
             .state_mut()
-            .with_online(|o, cx| o.panel(cx))
+            .with(|o: &mut OnlineState, cx| o.panel(cx))
             .items
             .iter()
             .map(|i| i.label_en.clone())
@@ -549,7 +558,7 @@ fn prepared_values_are_written_in_one_tick_and_rows_show_symbols_units_and_prese
     h.run();
     for a in ["X0010.0", "X0010.1", "T0000"] {
         h.state_mut()
-            .with_online(|o, cx| o.add_watch(cx, a))
+            .with(|o: &mut OnlineState, cx| o.add_watch(cx, a))
             .unwrap();
     }
     command(&mut h, Command::StepTick);
@@ -660,7 +669,7 @@ fn a_refusal_from_the_machine_is_in_the_ui_language() {
     let mut h = harness(Some(il_project(RUNG)), Lang::Zh);
     h.run();
     command(&mut h, Command::StepTick);
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(
             cx,
             ladder_engine::machine::MachineCommand::Device(

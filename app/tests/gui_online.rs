@@ -8,6 +8,7 @@ use common::online::*;
 use common::*;
 use ladder_engine::model::{Cell, CellRef, Edit, Operand};
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::online::OnlineState;
 
 #[test]
 fn the_cursor_keys_force_an_input_and_release_it() {
@@ -53,13 +54,13 @@ fn the_watch_table_shows_a_timer_counting() {
     // Asked once per run of the editor (gui_monitor.rs tests the question).
     h.state_mut().online.forces_confirmed = true;
     h.state_mut()
-        .with_online(|o, cx| o.add_watch(cx, "T0000"))
+        .with(|o: &mut OnlineState, cx| o.add_watch(cx, "T0000"))
         .unwrap();
     h.state_mut()
-        .with_online(|o, cx| o.add_watch(cx, "X0010.2"))
+        .with(|o: &mut OnlineState, cx| o.add_watch(cx, "X0010.2"))
         .unwrap();
     command(&mut h, Command::StepTick);
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(
             cx,
             ladder_engine::machine::MachineCommand::Force("X0010.2".parse().unwrap(), 1),
@@ -98,14 +99,14 @@ fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     // Asked once per run of the editor (gui_monitor.rs tests the question).
     h.state_mut().online.forces_confirmed = true;
     command(&mut h, Command::StepTick);
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(
             cx,
             ladder_engine::machine::MachineCommand::Force("X0002.0".parse().unwrap(), 0),
         )
     });
     // Start the timer: X0000.2 on.
-    h.state_mut().with_online(|o, cx| {
+    h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(
             cx,
             ladder_engine::machine::MachineCommand::Force("X0010.2".parse().unwrap(), 1),
@@ -184,7 +185,7 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
             a,
         )
         .unwrap();
-        h.state_mut().with_online(|o, cx| {
+        h.state_mut().with(|o: &mut OnlineState, cx| {
             o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
         });
     };
@@ -362,7 +363,7 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
     ticks(&mut h, 1);
     let view = h
         .state_mut()
-        .with_online(|o, cx| o.live_network_view(cx, b, n))
+        .with(|o: &mut OnlineState, cx| o.live_network_view(cx, b, n))
         .expect("on screen");
     let width = h.state().doc.as_ref().unwrap().project().ladder.width;
     assert!(view.cells[r][width].power_in, "the coil is energised");
@@ -578,7 +579,7 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     ticks(&mut h, 1);
     let view = h
         .state_mut()
-        .with_online(|o, cx| o.live_network_view(cx, level2, 1))
+        .with(|o: &mut OnlineState, cx| o.live_network_view(cx, level2, 1))
         .expect("on screen");
     assert!(view.cells[0][0].power_out, "the X0011.0 contact is lit");
     assert!(h.state().online.alarms.on.is_empty());

@@ -133,7 +133,7 @@ fn a_network_range_in_the_page_setup_prints_those_networks() {
     h.state_mut().settings.page_setup.networks = "LEVEL2:3-5".into();
     let doc = h
         .state_mut()
-        .printing(|_, cx| PrintState::document(cx))
+        .with_context(|cx| PrintState::document(cx))
         .unwrap();
     let titles: Vec<String> = doc
         .pages
@@ -204,7 +204,7 @@ fn the_selected_networks_alone_print_when_asked() {
     let mut h = on_sample();
     let all = h
         .state_mut()
-        .printing(|_, cx| PrintState::document(cx))
+        .with_context(|cx| PrintState::document(cx))
         .unwrap()
         .pages
         .len();
@@ -215,7 +215,7 @@ fn the_selected_networks_alone_print_when_asked() {
     }
     let one = h
         .state_mut()
-        .printing(|_, cx| PrintState::document(cx))
+        .with_context(|cx| PrintState::document(cx))
         .unwrap();
     assert!(one.pages.len() < all, "{} against {all}", one.pages.len());
     let titles: Vec<&str> = one

@@ -10,6 +10,9 @@ use super::editing::{PlaceKind, Prompt};
 use super::files::{Action, DialogKind};
 use super::place::{BlockKey, View};
 use super::selection::Selection;
+use crate::gui::online::OnlineState;
+use crate::gui::printing::PrintState;
+use crate::gui::properties::ElementProperties;
 
 impl LadderApp {
     /// Queues a command; it runs after the frame.
@@ -19,7 +22,7 @@ impl LadderApp {
 
     /// Runs the commands queued during the frame, in order.
     pub fn run_pending(&mut self) {
-        self.with_online(|o, cx| o.lock_while_replaying(cx));
+        self.with(|o: &mut OnlineState, cx| o.lock_while_replaying(cx));
         let pending = std::mem::take(&mut self.pending);
         if !pending.is_empty()
             && let Some(ctx) = &self.ctx
@@ -221,8 +224,8 @@ impl LadderApp {
                 self.print.setup_open = true;
                 self.print.refresh_printers();
             }
-            Command::PrintPreview => self.printing(|p, cx| p.open_preview(cx)),
-            Command::Print => self.printing(|p, cx| p.print_now(cx)),
+            Command::PrintPreview => self.with(|p: &mut PrintState, cx| p.open_preview(cx)),
+            Command::Print => self.with(|p: &mut PrintState, cx| p.print_now(cx)),
             Command::ExportDocument => self.start_dialog(DialogKind::ExportDocument),
             Command::Exit => self.request(Action::Exit),
             Command::Undo => self.undo(),
@@ -326,7 +329,7 @@ impl LadderApp {
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
             Command::NextError => self.with_context(|cx| diagnostics::step_error(cx, true)),
-            Command::Properties => self.element_properties(|p, cx| p.open(cx, None)),
+            Command::Properties => self.with(|p: &mut ElementProperties, cx| p.open(cx, None)),
             Command::PreviousError => self.with_context(|cx| diagnostics::step_error(cx, false)),
             Command::ToggleOnline => self.settings.show_online = !self.settings.show_online,
             Command::DetachOnline => {
@@ -349,7 +352,7 @@ impl LadderApp {
             | Command::UnforceAll
             | Command::Why
             | Command::LiveView
-            | Command::Speed(_) => self.with_online(|o, cx| o.execute_online(cx, c)),
+            | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
             Command::NewSub => self.open_prompt(PlaceKind::NewSub, String::new()),
             Command::ViewCalls(n) => self.view_calls(n),
             Command::RenameSub(n) => {

@@ -11,6 +11,7 @@ use super::document::Document;
 use super::i18n::Msg;
 use super::place::View;
 pub use super::settings::canonical;
+use crate::gui::online::OnlineState;
 use ladder_engine::file::{self, FileError};
 use ladder_engine::model::{Change, Project};
 use std::path::{Path, PathBuf};
@@ -118,7 +119,7 @@ impl LadderApp {
     /// pending from the old project.
     pub fn reset_view(&mut self) {
         // Another project (or none): the old one's machine stops with it.
-        self.with_online(|o, cx| o.go_offline(cx));
+        self.with(|o: &mut OnlineState, cx| o.go_offline(cx));
         self.view = View::Block(0);
         self.prompt = None;
         self.function_dialog = None;
@@ -182,7 +183,7 @@ impl LadderApp {
             DialogKind::ImportComments => self.import_comments(&path),
             DialogKind::ExportTrace => self.export_trace(&path),
             DialogKind::ExportDocument => {
-                self.printing(|_, cx| super::printing::PrintState::export(cx, &path))
+                self.with_context(|cx| super::printing::PrintState::export(cx, &path))
             }
         }
     }
@@ -550,8 +551,12 @@ impl LadderApp {
             }
             (Question::Restore(copy), 0) => self.restore(&copy),
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
-            (Question::FirstForce, 0) => self.with_online(|o, cx| o.confirm_forces(cx, true)),
-            (Question::FirstForce, _) => self.with_online(|o, cx| o.confirm_forces(cx, false)),
+            (Question::FirstForce, 0) => {
+                self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, true))
+            }
+            (Question::FirstForce, _) => {
+                self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, false))
+            }
             _ => {}
         }
     }

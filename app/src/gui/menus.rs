@@ -9,6 +9,7 @@ use super::command::{
 };
 use super::i18n::{Lang, Msg};
 use super::place::View;
+use crate::gui::online::OnlineState;
 
 /// The narrowest window whose toolbars show every tool in full rows; narrower, the toolbar
 /// is one row with an overflow menu.
@@ -236,7 +237,7 @@ impl LadderApp {
             for c in super::command::ONLINE_TOOLBAR {
                 button(self, ui, *c);
             }
-            self.with_online(|o, cx| o.online_toolbar_ui(cx, ui));
+            self.with(|o: &mut OnlineState, cx| o.online_toolbar_ui(cx, ui));
         });
     }
 
@@ -293,7 +294,9 @@ impl LadderApp {
             .on_hover_text(Msg::MoreTools.text(lang));
         });
         if self.online.session.is_some() {
-            ui.horizontal_wrapped(|ui| self.with_online(|o, cx| o.online_toolbar_ui(cx, ui)));
+            ui.horizontal_wrapped(|ui| {
+                self.with(|o: &mut OnlineState, cx| o.online_toolbar_ui(cx, ui))
+            });
         }
     }
 }

@@ -35,6 +35,10 @@ pub mod theme;
 pub mod tree;
 pub mod xref_view;
 
+use crate::gui::online::OnlineState;
+use crate::gui::printing::PrintState;
+use crate::gui::properties::ElementProperties;
+use crate::gui::replace::Replace;
 pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
@@ -95,68 +99,70 @@ pub struct LadderApp {
     pub title: String,
 }
 
-/// Runs `$f` on feature `$field` of the app with the context it may use: the one door
-/// every feature goes through. A change it applied marks the tables' draft clock, so undo
-/// takes back the later of a change and a draft.
-macro_rules! with_feature {
-    ($app:expr, $field:ident, $f:expr) => {
-        with_feature!(@door $app, app, cx, ($f)(&mut app.$field, &mut cx))
-    };
-    ($app:expr, $f:expr) => {
-        with_feature!(@door $app, app, cx, ($f)(&mut cx))
-    };
-    (@door $app:expr, $a:ident, $cx:ident, $call:expr) => {{
-        let $a = $app;
-        let mut $cx = context::Context::new(
+/// A part of the editor with its own state in the app, reached through the one door
+/// [`LadderApp::with`] with the narrow [`context::Context`] beside it: a new feature adds its
+/// state, this line and its commands, nothing else.
+pub trait Feature {
+    /// The feature's state and the context over the rest of the editor, borrowed apart.
+    fn split(app: &mut LadderApp) -> (&mut Self, context::Context<'_>);
+    /// The feature's state, to read.
+    fn of(app: &LadderApp) -> &Self;
+}
+
+/// The context over an app's parts other than its features.
+macro_rules! context_of {
+    ($a:expr) => {
+        context::Context::new(
             $a.doc.as_mut(),
             &mut $a.settings,
             &mut $a.output,
             &mut $a.pending,
             &mut $a.edit.cursor,
             &mut $a.edit.selection,
-        );
-        let r = $call;
-        if $cx.changed() {
-            $a.last_change = $a.tables.mark();
+        )
+    };
+}
+
+macro_rules! features {
+    ($($ty:ty => $field:ident),* $(,)?) => {$(
+        impl Feature for $ty {
+            fn split(app: &mut LadderApp) -> (&mut Self, context::Context<'_>) {
+                (&mut app.$field, context_of!(app))
+            }
+            fn of(app: &LadderApp) -> &Self {
+                &app.$field
+            }
         }
-        r
-    }};
+    )*};
+}
+
+features! {
+    printing::PrintState => print,
+    replace::Replace => replace,
+    properties::ElementProperties => properties,
+    online::OnlineState => online,
 }
 
 /// Most view tabs kept open; the oldest closes first.
 const MAX_TABS: usize = 10;
 
 impl LadderApp {
-    /// Runs `f` on the print feature with the part of the editor it may use.
-    pub fn printing<R>(
-        &mut self,
-        f: impl FnOnce(&mut printing::PrintState, &mut context::Context) -> R,
-    ) -> R {
-        with_feature!(self, print, f)
+    /// The one door of the features: runs `f` on feature `F` with the part of the editor it
+    /// may use. A change it applied marks the tables' draft clock, so undo takes back the
+    /// later of a change and a draft.
+    pub fn with<F: Feature, R>(&mut self, f: impl FnOnce(&mut F, &mut context::Context) -> R) -> R {
+        let (feature, mut cx) = F::split(self);
+        let r = f(feature, &mut cx);
+        let changed = cx.changed();
+        if changed {
+            self.last_change = self.tables.mark();
+        }
+        r
     }
 
-    /// Runs `f` on the find-and-replace feature with the part of the editor it may use.
-    pub fn replacing<R>(
-        &mut self,
-        f: impl FnOnce(&mut replace::Replace, &mut context::Context) -> R,
-    ) -> R {
-        with_feature!(self, replace, f)
-    }
-
-    /// Runs `f` on the online feature with the part of the editor it may use.
-    pub fn with_online<R>(
-        &mut self,
-        f: impl FnOnce(&mut online::OnlineState, &mut context::Context) -> R,
-    ) -> R {
-        with_feature!(self, online, f)
-    }
-
-    /// Runs `f` on the element-properties feature with the part of the editor it may use.
-    pub fn element_properties<R>(
-        &mut self,
-        f: impl FnOnce(&mut properties::ElementProperties, &mut context::Context) -> R,
-    ) -> R {
-        with_feature!(self, properties, f)
+    /// A feature's state, to read.
+    pub fn feature<F: Feature>(&self) -> &F {
+        F::of(self)
     }
 
     /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").
@@ -239,7 +245,13 @@ impl LadderApp {
 
     /// Runs `f` with the part of the editor a feature without state of its own may use.
     pub fn with_context<R>(&mut self, f: impl FnOnce(&mut context::Context) -> R) -> R {
-        with_feature!(self, f)
+        let mut cx = context_of!(self);
+        let r = f(&mut cx);
+        let changed = cx.changed();
+        if changed {
+            self.last_change = self.tables.mark();
+        }
+        r
     }
 
     /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
@@ -479,7 +491,7 @@ impl LadderApp {
                 // draws with them while it holds the cursor.
                 let mut jump_to = self.edit.jump_to.take();
                 let mut geometry = std::mem::take(&mut self.edit.geometry);
-                let events = self.with_online(|o, cx| {
+                let events = self.with(|o: &mut OnlineState, cx| {
                     o.live_block_ui(cx, ui, b, &opts, &mut jump_to, &mut geometry)
                 });
                 self.edit.jump_to = jump_to;
@@ -587,7 +599,7 @@ impl eframe::App for LadderApp {
         self.dropped_files(&ctx);
         self.close_requested(&ctx);
         self.autosave_tick();
-        self.with_online(|o, cx| o.online_frame(cx));
+        self.with(|o: &mut OnlineState, cx| o.online_frame(cx));
         let title = self.window_title();
         if title != self.title {
             ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
@@ -600,7 +612,7 @@ impl eframe::App for LadderApp {
         // Below the menu bar: the replace window never covers it. It reads its keys
         // (Enter, Escape) before the editor's.
         let area = ui.available_rect_before_wrap();
-        self.replacing(|r, cx| r.ui(&ctx, cx, area));
+        self.with(|r: &mut Replace, cx| r.ui(&ctx, cx, area));
         self.keys(&ctx);
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
@@ -612,8 +624,9 @@ impl eframe::App for LadderApp {
             egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
         }
         if self.online.is_online() {
-            egui::Panel::bottom("timeline")
-                .show(ui, |ui| self.with_online(|o, cx| o.timeline_ui(cx, ui)));
+            egui::Panel::bottom("timeline").show(ui, |ui| {
+                self.with(|o: &mut OnlineState, cx| o.timeline_ui(cx, ui))
+            });
         }
         if self.settings.show_output {
             // Resizable by its top edge; the height is kept in the settings for next time.
@@ -656,7 +669,7 @@ impl eframe::App for LadderApp {
         let online_shown = self.settings.show_online
             && (self.online.is_online() || self.online.tab == online::OnlineTab::Machine);
         if online_shown && self.settings.online_window {
-            self.with_online(|o, cx| o.online_viewport(cx, &ctx));
+            self.with(|o: &mut OnlineState, cx| o.online_viewport(cx, &ctx));
         } else if online_shown {
             // At most half the window: the ladder stays the main view; a wide page scrolls.
             let max = (ui.available_width() * 0.5).max(260.0);
@@ -665,7 +678,9 @@ impl eframe::App for LadderApp {
                 .default_size(600.0_f32.min(max))
                 .min_size(240.0)
                 .max_size(max)
-                .show(ui, |ui| self.with_online(|o, cx| o.online_panel_ui(cx, ui)));
+                .show(ui, |ui| {
+                    self.with(|o: &mut OnlineState, cx| o.online_panel_ui(cx, ui))
+                });
         }
         egui::CentralPanel::default().show(ui, |ui| {
             self.tabs_ui(ui);
@@ -676,15 +691,15 @@ impl eframe::App for LadderApp {
             // The form sits under its element as drawn; the geometry is read while the
             // feature holds the cursor, hence the copy (only while the form is open).
             let geometry = self.edit.geometry.clone();
-            self.element_properties(|p, cx| p.ui(&ctx, cx, &geometry));
+            self.with(|p: &mut ElementProperties, cx| p.ui(&ctx, cx, &geometry));
         }
         if self.function_dialog.is_some() {
             self.function_dialog_ui(&ctx);
         }
         help::ui(&mut self.help, &ctx, self.settings.lang);
-        self.printing(|p, cx| p.ui(&ctx, cx, area));
-        self.with_online(|o, cx| o.value_window_ui(cx, &ctx));
-        self.with_online(|o, cx| o.publish_shown(cx));
+        self.with(|p: &mut PrintState, cx| p.ui(&ctx, cx, area));
+        self.with(|o: &mut OnlineState, cx| o.value_window_ui(cx, &ctx));
+        self.with(|o: &mut OnlineState, cx| o.publish_shown(cx));
         self.run_pending();
         // The first force waits for the user's yes: the question is the editor's one modal.
         if std::mem::take(&mut self.online.ask_first_force) {
@@ -699,7 +714,7 @@ impl eframe::App for LadderApp {
 
     fn on_exit(&mut self) {
         // The machine thread ends with the window.
-        self.with_online(|o, cx| o.go_offline(cx));
+        self.with(|o: &mut OnlineState, cx| o.go_offline(cx));
     }
 }
 
@@ -733,7 +748,7 @@ pub fn run(start: Start) -> anyhow::Result<()> {
                 app.settings.lang = lang;
             }
             if start.run {
-                app.with_online(|o, cx| o.start_running(cx, start.nc.clone()));
+                app.with(|o: &mut OnlineState, cx| o.start_running(cx, start.nc.clone()));
             }
             Ok(Box::new(app))
         }),

@@ -10,6 +10,8 @@ pub use super::place::BlockKey;
 use super::place::View;
 use super::selection::Selection;
 use super::{LadderApp, OutputLine};
+use crate::gui::online::OnlineState;
+use crate::gui::properties::ElementProperties;
 use ladder_engine::model::{Cell, Edit, parse_sub};
 
 impl LadderApp {
@@ -122,9 +124,8 @@ impl LadderApp {
         if let Some(hit) = ev.double_click {
             match hit {
                 // Online, a double-click operates the element instead of editing it.
-                Hit::Cell { network, row, col } if self.online.is_online() => {
-                    self.with_online(|o, cx| o.operate_element(cx, cell(network, row, col)))
-                }
+                Hit::Cell { network, row, col } if self.online.is_online() => self
+                    .with(|o: &mut OnlineState, cx| o.operate_element(cx, cell(network, row, col))),
                 // On the element's label (its address, symbol or comment): its properties.
                 Hit::Cell { network, row, col }
                     if ev.double_click_at.is_some_and(|p| {
@@ -132,7 +133,7 @@ impl LadderApp {
                     }) =>
                 {
                     let at = Some(cell(network, row, col));
-                    self.element_properties(|p, cx| p.open(cx, at))
+                    self.with(|p: &mut ElementProperties, cx| p.open(cx, at))
                 }
                 Hit::Cell { network, row, col } => self.edit_element(cell(network, row, col)),
                 Hit::Header { network } => {

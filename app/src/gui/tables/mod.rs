@@ -27,6 +27,7 @@ use super::LadderApp;
 use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::tree::View;
+use crate::gui::online::OnlineState;
 use ladder_engine::model::sheets::{TableError, changed_row};
 use ladder_engine::model::{Project, TableEdit};
 use std::collections::HashMap;
@@ -359,7 +360,7 @@ impl LadderApp {
     pub fn tables_ui(&mut self, ui: &mut egui::Ui) {
         if self.view == View::Data {
             let tab = self.tables.data_tab;
-            self.with_online(|o, cx| o.data_online_ui(cx, ui, tab));
+            self.with(|o: &mut OnlineState, cx| o.data_online_ui(cx, ui, tab));
         }
         let Some(doc) = self.doc.as_ref() else {
             return;
