@@ -71,14 +71,14 @@ fn find_and_replace_an_address() {
     let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
     assert_eq!(out.last().unwrap(), "3 found", "{out:?}");
     let at = |h: &Harness<'static, LadderApp>| {
-        let c = h.state().edit.cursor;
+        let c = h.state().cursor;
         (c.network, c.row, c.col)
     };
     assert_eq!(at(&h), (0, 0, 10), "the cursor went to the first match");
     // Ctrl+F, Enter again: the next match ("find next").
     h.key_press_modifiers(Modifiers::COMMAND, Key::F);
     h.run();
-    assert_eq!(h.state().prompt.as_ref().unwrap().text, "y3.7");
+    assert_eq!(h.state().edit.prompt.as_ref().unwrap().text, "y3.7");
     h.key_press(Key::Enter);
     h.run();
     assert_eq!(at(&h), (0, 1, 0));
@@ -170,19 +170,24 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
     on_level2(&mut h);
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "30 2");
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!((c.block, c.network, c.row, c.col), (1, 29, 1, 0));
-    assert!(h.state().prompt.is_none());
+    assert!(h.state().edit.prompt.is_none());
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "9999");
-    let prompt = h.state().prompt.clone().expect("the prompt stays open");
+    let prompt = h
+        .state()
+        .edit
+        .prompt
+        .clone()
+        .expect("the prompt stays open");
     assert!(
         prompt.error.unwrap().starts_with("No such network: 1–"),
         "an error names the range"
     );
     h.key_press(Key::Escape);
     h.run();
-    assert!(h.state().prompt.is_none());
+    assert!(h.state().edit.prompt.is_none());
 }
 
 #[test]
@@ -201,14 +206,14 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     pointer(&mut h, header, egui::PointerButton::Primary);
     assert!(
         matches!(
-            h.state().edit.selection,
+            h.state().selection,
             Some((
                 1,
                 ladder_studio::gui::selection::Selection::Networks { networks: (0, 0) }
             ))
         ),
         "{:?}",
-        h.state().edit.selection
+        h.state().selection
     );
     h.get_by_label_contains("selected 1 Network");
     h.key_press_modifiers(Modifiers::COMMAND, Key::C);
@@ -273,7 +278,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.key_press_modifiers(Modifiers::SHIFT, Key::ArrowRight);
     h.run();
     assert!(matches!(
-        h.state().edit.selection,
+        h.state().selection,
         Some((
             1,
             ladder_studio::gui::selection::Selection::Cells {
@@ -351,7 +356,7 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
     let p = cell_pos(&h, 1, 0, 0);
     pointer(&mut h, p, egui::PointerButton::Secondary);
     assert_eq!(
-        h.state().edit.cursor.network,
+        h.state().cursor.network,
         1,
         "the right click moved the cursor"
     );
@@ -400,9 +405,14 @@ fn double_clicking_a_contact_edits_its_address() {
         h.step();
     }
     h.run();
-    let prompt = h.state().prompt.clone().expect("the operand prompt opened");
+    let prompt = h
+        .state()
+        .edit
+        .prompt
+        .clone()
+        .expect("the operand prompt opened");
     assert_eq!(prompt.text, "X0002.1", "with the contact's address");
-    h.state_mut().prompt.as_mut().unwrap().text.clear();
+    h.state_mut().edit.prompt.as_mut().unwrap().text.clear();
     enter_operand(&mut h, "X2.3");
     assert_eq!(il_now(&h)[3], "LD X0002.3");
     assert_eq!(
@@ -456,6 +466,7 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
     assert!(
         h.state()
+            .edit
             .prompt
             .as_ref()
             .and_then(|p| p.error.clone())
@@ -476,11 +487,11 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
         .ask(ladder_studio::gui::command::Command::RenameSub(5));
     h.run();
     assert_eq!(
-        h.state().prompt.as_ref().unwrap().text,
+        h.state().edit.prompt.as_ref().unwrap().text,
         "5 SPINDLE",
         "the prompt shows the current number and name"
     );
-    h.state_mut().prompt.as_mut().unwrap().text = "5 SPINDLE_MAIN".into();
+    h.state_mut().edit.prompt.as_mut().unwrap().text = "5 SPINDLE_MAIN".into();
     h.run();
     h.key_press(egui::Key::Enter);
     h.run();
@@ -510,10 +521,10 @@ fn typing_after_f1_completes_from_the_symbol_table() {
     h.get_by_label_contains("TOOL_T1  X0000.0  Tool station 1 sensor");
     h.key_press(egui::Key::Tab);
     h.run();
-    assert_eq!(h.state().prompt.as_ref().unwrap().text, "TOOL_T1");
+    assert_eq!(h.state().edit.prompt.as_ref().unwrap().text, "TOOL_T1");
     h.key_press(egui::Key::Enter);
     h.run();
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     let cell = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[c.network].rows
         [0]
     .cells[0]
@@ -553,7 +564,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     );
     h.key_press(Key::Enter);
     h.run();
-    let err = h.state().prompt.as_ref().and_then(|p| p.error.clone());
+    let err = h.state().edit.prompt.as_ref().and_then(|p| p.error.clone());
     assert!(err.is_some_and(|e| e.contains("no longer exists")));
     h.key_press(Key::Escape);
     h.run();
@@ -576,7 +587,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.run();
     h.key_press(Key::F1);
     enter_operand(&mut h, "X99999.9");
-    assert!(h.state().prompt.as_ref().unwrap().error.is_some());
+    assert!(h.state().edit.prompt.as_ref().unwrap().error.is_some());
     h.key_press(Key::Escape);
     h.run();
     h.key_press(Key::F3);

@@ -21,7 +21,7 @@ fn wheel(h: &mut Harness<'static, LadderApp>, mouse: egui::Pos2, up: bool) {
 
 /// Zooms in and out about the cursor cell's centre and checks it stays under the mouse.
 fn zoom_keeps_the_cell_under_the_mouse(h: &mut Harness<'static, LadderApp>) {
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     let cell = |h: &Harness<'static, LadderApp>| {
         h.state()
             .edit
@@ -57,7 +57,7 @@ fn zoom_keeps_the_element_under_the_pointer_on_the_last_network() {
     let last = h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
         .networks
         .len();
-    assert_eq!(h.state().edit.cursor.network, last - 1);
+    assert_eq!(h.state().cursor.network, last - 1);
     zoom_keeps_the_cell_under_the_mouse(&mut h);
 }
 
@@ -142,7 +142,7 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     // A new network with a lone contact: it leads to no coil, an error.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
-    let wrong = h.state().edit.cursor;
+    let wrong = h.state().cursor;
     h.key_press(egui::Key::F1);
     enter_operand(&mut h, "X0.0");
     h.run();
@@ -155,7 +155,7 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     h.key_press(egui::Key::F12);
     h.run();
     h.run();
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!(
         (c.network, c.row, c.col),
         (wrong.network, 0, 0),
@@ -178,7 +178,7 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     h.run();
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F12);
     h.run();
-    assert_eq!(h.state().edit.cursor.network, wrong.network);
+    assert_eq!(h.state().cursor.network, wrong.network);
     // Fixed (the contact taken back), the mark goes without compiling again.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
     h.run();
@@ -205,7 +205,7 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     // F6 on the first row: refused at once, no prompt to type into.
     h.key_press(egui::Key::F6);
     h.run();
-    assert!(h.state().prompt.is_none(), "no operand is asked for");
+    assert!(h.state().edit.prompt.is_none(), "no operand is asked for");
     assert!(
         h.state().output.last().is_some_and(|l| l.error),
         "the refusal is said: {:?}",
@@ -215,7 +215,7 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
         h.key_press(egui::Key::ArrowDown);
         h.run();
     }
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!(
         (c.network, c.row),
         (1, before),
@@ -242,7 +242,7 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     h.run();
     h.key_press(egui::Key::ArrowDown);
     h.run();
-    assert_eq!(h.state().edit.cursor.network, 2);
+    assert_eq!(h.state().cursor.network, 2);
 }
 
 #[test]
@@ -311,7 +311,7 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
     enter_operand(&mut h, "3 1");
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     let before = h.state().edit.geometry.clone();
     let cell = before.cell_rect(c.network, c.row, c.col).unwrap();
     h.key_press(egui::Key::F1);
@@ -344,7 +344,7 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
     assert!(first.rect().top() >= at.bottom(), "under the field");
     h.key_press(egui::Key::Escape);
     h.run();
-    assert!(h.state().prompt.is_none());
+    assert!(h.state().edit.prompt.is_none());
     // A title is typed at the network's header.
     h.state_mut()
         .ask(ladder_studio::gui::command::Command::NetworkTitle);
@@ -366,7 +366,7 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     let mut h = lathe();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
     enter_operand(&mut h, "3 1");
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     let project = h.state().doc.as_ref().unwrap().project();
     let Some(ladder_engine::model::Cell::Contact { operand, .. }) =
         project.ladder.blocks[1].networks[c.network].cell(c.row, c.col)

@@ -3,6 +3,7 @@
 mod common;
 
 use common::*;
+use ladder_studio::gui::state::EditState;
 
 #[test]
 fn new_asks_about_unsaved_changes_and_cancel_keeps_them() {
@@ -263,7 +264,8 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     scripted(&mut h, vec![Some(path.clone())]);
     h.state_mut()
         .request(ladder_studio::gui::files::Action::OpenDialog);
-    h.state_mut().insert_network(true);
+    h.state_mut()
+        .with(|o: &mut EditState, cx| o.insert_network(cx, true));
     h.run();
     assert!(
         matches!(

@@ -22,7 +22,7 @@ fn two_key_presses_in_one_frame_move_the_cursor_twice() {
     click_cell(&mut h, 0, 0, 0);
     two_presses(&mut h, egui::Modifiers::NONE, egui::Key::ArrowRight);
     h.run();
-    assert_eq!(h.state().edit.cursor.col, 2, "Right Right moved twice");
+    assert_eq!(h.state().cursor.col, 2, "Right Right moved twice");
 }
 
 #[test]
@@ -88,9 +88,11 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
         operand: Operand::parse(a).unwrap(),
     };
     h.state_mut()
-        .try_edit(Edit::SetCell {
-            at,
-            cell: contact("X0010.3"),
+        .with_context(|cx| {
+            cx.apply(Edit::SetCell {
+                at,
+                cell: contact("X0010.3"),
+            })
         })
         .unwrap();
     h.step();
@@ -120,10 +122,10 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
     h.step();
     assert!(
         h.state_mut()
-            .try_edit(Edit::SetCell {
+            .with_context(|cx| cx.apply(Edit::SetCell {
                 at,
                 cell: contact("X0010.4"),
-            })
+            }))
             .is_err()
     );
     let x = ladder_studio::gui::online::watch::resolve(
@@ -271,7 +273,7 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
 fn output_on_screen(h: &Harness<'static, LadderApp>) -> bool {
     let app = h.state();
     let g = &app.edit.geometry;
-    let c = app.edit.cursor;
+    let c = app.cursor;
     let width = app.doc.as_ref().unwrap().project().ladder.width;
     let cell = g.cell_rect(c.network, c.row, width).expect("drawn");
     g.visible.expect("drawn").contains_rect(cell.shrink(2.0))
@@ -318,7 +320,7 @@ fn fit_width_shows_the_output_column_at_1280_by_800_with_the_online_window_open(
         h.key_press(egui::Key::ArrowRight);
         h.run();
     }
-    assert_eq!(h.state().edit.cursor.col, width);
+    assert_eq!(h.state().cursor.col, width);
     assert!(output_on_screen(&h), "Right arrows: the view followed");
 }
 
@@ -330,17 +332,19 @@ fn a_refused_edit_is_shown_at_the_bottom_of_the_output_and_its_errors_go_with_un
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
     h.state_mut()
-        .try_edit(Edit::SetCell {
-            at: CellRef {
-                block: 1,
-                network: 0,
-                row: 0,
-                col: 1,
-            },
-            cell: Cell::Contact {
-                negated: false,
-                operand: Operand::parse("NO_SUCH_SYMBOL").unwrap(),
-            },
+        .with_context(|cx| {
+            cx.apply(Edit::SetCell {
+                at: CellRef {
+                    block: 1,
+                    network: 0,
+                    row: 0,
+                    col: 1,
+                },
+                cell: Cell::Contact {
+                    negated: false,
+                    operand: Operand::parse("NO_SUCH_SYMBOL").unwrap(),
+                },
+            })
         })
         .unwrap();
     h.step();

@@ -86,7 +86,7 @@ fn set_cell(h: &mut Harness<'static, LadderApp>, network: usize, col: usize, cel
         col,
     };
     h.state_mut()
-        .try_edit(Edit::SetCell { at, cell })
+        .with_context(|cx| cx.apply(Edit::SetCell { at, cell }))
         .expect("the edit applies");
     h.step();
     settle(h);
@@ -223,7 +223,7 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
     assert_eq!(value(&h, "Y0010.0"), 0);
     // Why is the coil off? X0000.1 broke the rung, and changed at the tick after `on_tick`.
     let width = h.state().doc.as_ref().unwrap().project().ladder.width;
-    h.state_mut().edit.cursor = CellRef {
+    h.state_mut().cursor = CellRef {
         block: 1,
         network: 0,
         row: 0,
@@ -419,17 +419,19 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
             } else {
                 "NO_SUCH"
             };
-            let _ = h.state_mut().try_edit(Edit::SetCell {
-                at: CellRef {
-                    block: 1,
-                    network: 0,
-                    row: 0,
-                    col: 1,
-                },
-                cell: Cell::Contact {
-                    negated: false,
-                    operand: Operand::parse(operand).unwrap(),
-                },
+            let _ = h.state_mut().with_context(|cx| {
+                cx.apply(Edit::SetCell {
+                    at: CellRef {
+                        block: 1,
+                        network: 0,
+                        row: 0,
+                        col: 1,
+                    },
+                    cell: Cell::Contact {
+                        negated: false,
+                        operand: Operand::parse(operand).unwrap(),
+                    },
+                })
             });
         } else if i % 11 == 5 {
             let scrub = h.state().online.session.as_ref().and_then(|s| {
@@ -488,7 +490,7 @@ fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
     double_click_cell(&mut h, 0, 0, 0);
     assert_eq!(value(&h, "X0010.0"), 1, "the contact's bit was toggled");
     assert!(
-        h.state().function_dialog.is_none(),
+        h.state().edit.function_dialog.is_none(),
         "online, no edit dialog"
     );
     let width = h.state().doc.as_ref().unwrap().project().ladder.width;

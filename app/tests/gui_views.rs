@@ -3,6 +3,7 @@
 mod common;
 
 use common::*;
+use ladder_studio::gui::state::EditState;
 
 #[test]
 fn starts_on_the_bundled_sample_with_the_project_tree() {
@@ -87,7 +88,7 @@ fn a_compile_error_jumps_to_its_network() {
         .click();
     h.run();
     assert_eq!(h.state().view, View::Block(1), "the error's block is shown");
-    assert_eq!(h.state().edit.cursor, at, "the cursor is on the cell");
+    assert_eq!(h.state().cursor, at, "the cursor is on the cell");
     assert_eq!(
         h.state().edit.jump_to,
         None,
@@ -163,7 +164,7 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
     let place = h.get_by_label("N0002 1:11").rect().center();
     double_click(&mut h, place);
     assert_eq!(h.state().view, View::Block(1));
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
 }
 
@@ -193,7 +194,7 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "25");
-    assert!(h.state().prompt.is_none());
+    assert!(h.state().edit.prompt.is_none());
     let sheet = ladder_studio::gui::tables::Sheet::Symbols(0);
     assert_eq!(h.state().tables.selected.get(&sheet), Some(&24));
     assert!(
@@ -202,7 +203,7 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
     );
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "9999");
-    let err = h.state().prompt.clone().unwrap().error.unwrap();
+    let err = h.state().edit.prompt.clone().unwrap().error.unwrap();
     assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
 }
 
@@ -224,8 +225,9 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
         address: ladder_engine::Address::parse("X0002.1").unwrap(),
         comments: Default::default(),
     });
-    h.state_mut()
-        .edit_table(ladder_engine::model::TableEdit::Symbols(tables));
+    h.state_mut().with(|o: &mut EditState, cx| {
+        o.edit_table(cx, ladder_engine::model::TableEdit::Symbols(tables))
+    });
     h.state_mut().view = View::Messages;
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
@@ -241,18 +243,18 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
             .is_empty()
     );
     h.state_mut().view = View::Block(1);
-    h.state_mut().edit.cursor.network = 1;
+    h.state_mut().cursor.network = 1;
     h.run();
     h.key_press(Key::Delete);
     h.run();
-    h.state_mut().edit.cursor.network = 0;
+    h.state_mut().cursor.network = 0;
     h.state_mut().view = View::Data;
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
     assert_eq!(h.state().view, View::Block(1));
     assert_eq!(
-        h.state().edit.cursor.network,
+        h.state().cursor.network,
         1,
         "the cursor is on the contact brought back"
     );
@@ -284,23 +286,17 @@ fn each_block_keeps_its_own_cursor_and_the_status_bar_speaks_of_the_block_shown(
     h.run();
     h.key_press(Key::Enter);
     h.run();
-    assert_eq!(h.state().edit.cursor.network, 42);
+    assert_eq!(h.state().cursor.network, 42);
     h.get_by_label_contains("P0001").click();
     h.run();
     assert_eq!(h.state().view, View::Block(2));
-    assert_eq!(
-        (h.state().edit.cursor.block, h.state().edit.cursor.network),
-        (2, 0)
-    );
+    assert_eq!((h.state().cursor.block, h.state().cursor.network), (2, 0));
     h.get_by_label_contains("Cursor: P0001 Network 1 ");
     assert!(h.query_by_label_contains("Network 43").is_none());
     // Back in level 2 the cursor is where it was left.
     h.get_by_label("Level 2").click();
     h.run();
-    assert_eq!(
-        (h.state().edit.cursor.block, h.state().edit.cursor.network),
-        (1, 42)
-    );
+    assert_eq!((h.state().cursor.block, h.state().cursor.network), (1, 42));
 }
 
 #[test]
@@ -335,7 +331,7 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::End);
     h.run();
     h.run();
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!(c.network, networks - 1, "Ctrl+End: the last network");
     let p = h
         .state()
@@ -346,23 +342,19 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
     assert!((0.0..800.0).contains(&p.y), "the view followed: {p:?}");
     h.key_press(egui::Key::End);
     h.run();
-    assert_eq!(h.state().edit.cursor.col, width, "End: the output column");
+    assert_eq!(h.state().cursor.col, width, "End: the output column");
     h.key_press(egui::Key::Home);
     h.run();
-    assert_eq!(h.state().edit.cursor.col, 0, "Home: the first column");
+    assert_eq!(h.state().cursor.col, 0, "Home: the first column");
     h.key_press(egui::Key::PageUp);
     h.run();
-    assert_eq!(
-        h.state().edit.cursor.network,
-        networks - 9,
-        "PgUp: a page up"
-    );
+    assert_eq!(h.state().cursor.network, networks - 9, "PgUp: a page up");
     h.key_press(egui::Key::PageDown);
     h.run();
-    assert_eq!(h.state().edit.cursor.network, networks - 1);
+    assert_eq!(h.state().cursor.network, networks - 1);
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
     h.run();
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!(
         (c.network, c.row, c.col),
         (0, 0, 0),
@@ -373,7 +365,7 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
 #[test]
 fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
     let (mut h, _) = stress_at(40);
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     // Ctrl+plus zooms in about the cursor cell: it stays where it was.
     let g = h.state().edit.geometry.clone();
     let before = g.cell_rect(c.network, c.row, c.col).unwrap().center();
@@ -416,7 +408,7 @@ fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
 fn the_view_follows_the_cursor_after_an_insert_and_a_paste() {
     let (mut h, _) = stress_at(60);
     let visible = |h: &Harness<'static, LadderApp>| {
-        let c = h.state().edit.cursor;
+        let c = h.state().cursor;
         let g = &h.state().edit.geometry;
         let r = g.cell_rect(c.network, c.row, c.col).unwrap();
         let screen = h.ctx.content_rect();
@@ -446,7 +438,7 @@ fn each_block_opens_again_where_it_was_left_cursor_included() {
     // The cursor one column along, as a user leaves it.
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    let cursor = h.state().edit.cursor;
+    let cursor = h.state().cursor;
     assert_eq!((cursor.network, cursor.col), (119, 1));
     let top = h.state().settings.tops[&path]["LEVEL2"];
     assert!(
@@ -474,7 +466,7 @@ fn each_block_opens_again_where_it_was_left_cursor_included() {
         "network {top} is at the top again: {shown:?}"
     );
     assert_eq!(
-        h.state().edit.cursor,
+        h.state().cursor,
         cursor,
         "the cursor came back with the view"
     );

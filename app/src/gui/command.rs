@@ -70,6 +70,8 @@ macro_rules! commands {
             Display(DisplayMode),
             /// Show a view.
             ShowView(View),
+            /// Go to row `0` (0-based) of the table shown (Ctrl+G in a table view).
+            GoToRow(usize),
             /// Ask where to write the trace page's CSV (its data waits in the online state).
             ExportTraceCsv,
             /// Show a cell: its block, scrolled to it, the cursor on it (a feature's jump).
@@ -428,6 +430,7 @@ impl Command {
             Command::ShowView(_) => Msg::RefIndex,
             Command::ShowCell(_) => Msg::GoTo,
             Command::ExportTraceCsv => Msg::TraceExport,
+            Command::GoToRow(_) => Msg::GoTo,
             Command::Help(HelpPage::Shortcuts) => Msg::Shortcuts,
             Command::Help(HelpPage::Instructions) => Msg::InstructionHelp,
             Command::Help(HelpPage::About) => Msg::About,

@@ -8,6 +8,7 @@ use super::command::Command;
 use super::document::Document;
 use super::i18n::Msg;
 use super::output::Output;
+use super::place::View;
 use super::selection::Selection;
 use super::settings::Settings;
 use ladder_engine::model::{CellRef, Change};
@@ -26,6 +27,10 @@ pub struct Context<'a> {
     pub cursor: &'a mut CellRef,
     /// The ladder selection: its block and region.
     pub selection: &'a mut Option<(usize, Selection)>,
+    /// The view the main area shows.
+    pub view: &'a mut View,
+    /// The view tabs, in the order they were opened.
+    pub tabs: &'a mut Vec<View>,
     /// A change was applied through [`Context::apply`].
     changed: bool,
 }
@@ -39,6 +44,7 @@ impl<'a> Context<'a> {
         pending: &'a mut Vec<Command>,
         cursor: &'a mut CellRef,
         selection: &'a mut Option<(usize, Selection)>,
+        (view, tabs): (&'a mut View, &'a mut Vec<View>),
     ) -> Context<'a> {
         Context {
             doc,
@@ -47,6 +53,8 @@ impl<'a> Context<'a> {
             pending,
             cursor,
             selection,
+            view,
+            tabs,
             changed: false,
         }
     }
@@ -89,6 +97,21 @@ impl<'a> Context<'a> {
     pub fn set_replaying(&mut self, on: bool) {
         if let Some(d) = self.doc.as_deref_mut() {
             d.set_replaying(on);
+        }
+    }
+
+    /// Starts one undo step: the changes applied until [`Context::end_group`] are undone
+    /// together.
+    pub fn begin_group(&mut self) {
+        if let Some(d) = self.doc.as_deref_mut() {
+            d.begin_group();
+        }
+    }
+
+    /// Ends the undo step [`Context::begin_group`] started.
+    pub fn end_group(&mut self) {
+        if let Some(d) = self.doc.as_deref_mut() {
+            d.end_group();
         }
     }
 

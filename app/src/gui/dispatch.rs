@@ -6,13 +6,14 @@
 use super::LadderApp;
 use super::command::Command;
 use super::diagnostics;
-use super::editing::{PlaceKind, Prompt};
+use super::editing::PlaceKind;
 use super::files::{Action, DialogKind};
 use super::place::{BlockKey, View};
 use super::selection::Selection;
 use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
+use crate::gui::state::EditState;
 
 impl LadderApp {
     /// Queues a command; it runs after the frame.
@@ -33,7 +34,9 @@ impl LadderApp {
         for c in pending {
             if self.enabled(c) {
                 // One command, one undo step, however many edits it makes.
-                self.grouped(|app| app.execute(c));
+                self.with_context(|cx| cx.begin_group());
+                self.execute(c);
+                self.with_context(|cx| cx.end_group());
             }
         }
         // What the commands asked for in turn (a feature's jump to a cell) runs now too,
@@ -41,7 +44,9 @@ impl LadderApp {
         let follow = std::mem::take(&mut self.pending);
         for c in follow {
             if self.enabled(c) {
-                self.grouped(|app| app.execute(c));
+                self.with_context(|cx| cx.begin_group());
+                self.execute(c);
+                self.with_context(|cx| cx.end_group());
             }
         }
     }
@@ -125,8 +130,8 @@ impl LadderApp {
     /// The keys of this frame, turned into commands. While a text field, a prompt or a dialog
     /// has the keyboard only the global keys act (F9), so typing never edits the ladder.
     pub fn keys(&mut self, ctx: &egui::Context) {
-        let typing = self.prompt.is_some()
-            || self.function_dialog.is_some()
+        let typing = self.edit.prompt.is_some()
+            || self.edit.function_dialog.is_some()
             || self.files.question.is_some()
             || ctx.egui_wants_keyboard_input();
         // Whether each command is enabled is decided when it runs (after the frame, in
@@ -183,27 +188,11 @@ impl LadderApp {
         }
     }
 
-    pub(super) fn open_prompt(&mut self, kind: PlaceKind, text: String) {
-        self.prompt = Some(Prompt {
-            kind,
-            text,
-            error: None,
-        });
-    }
-
-    /// Selects `what` in the cursor's block and deletes it (Delete row, Delete network).
-    fn delete_at_cursor(&mut self, what: impl FnOnce(super::place::Cursor) -> Selection) {
-        if let Some(at) = self.existing_cursor() {
-            self.edit.selection = Some((at.block, what(at)));
-            self.delete_selection();
-        }
-    }
-
     /// Runs a command now. Only [`LadderApp::run_pending`] calls this.
     fn execute(&mut self, c: Command) {
         let copy_to_system = |app: &mut LadderApp| {
             if let Some(ctx) = app.ctx.clone() {
-                app.copy_to_system(&ctx);
+                app.edit.copy_to_system(&ctx);
             }
         };
         match c {
@@ -230,73 +219,114 @@ impl LadderApp {
             Command::Exit => self.request(Action::Exit),
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
-            Command::Find => self.open_prompt(PlaceKind::Find, self.edit.last_find.clone()),
+            Command::Find => self
+                .edit
+                .open_prompt(PlaceKind::Find, self.edit.last_find.clone()),
             Command::Replace => {
                 let last = self.edit.last_find.clone();
                 self.replace.open(&last);
             }
-            Command::GoTo => self.open_prompt(PlaceKind::GoTo, String::new()),
-            Command::Contact => self.open_prompt(PlaceKind::Contact { negated: false }, "".into()),
-            Command::ContactNc => self.open_prompt(PlaceKind::Contact { negated: true }, "".into()),
-            Command::Coil => self.open_prompt(PlaceKind::Coil { negated: false }, "".into()),
-            Command::CoilN => self.open_prompt(PlaceKind::Coil { negated: true }, "".into()),
-            Command::Function => self.open_function_dialog(),
-            Command::Wire => self.wire(),
-            Command::Link => self.link(),
+            Command::GoTo => {
+                // In a table view Ctrl+G goes to a row of the table.
+                let rows = self.tables.sheet_of(self.view).and_then(|sheet| {
+                    let doc = self.doc.as_ref()?;
+                    Some(self.tables.rows_in(sheet, doc.project()))
+                });
+                let kind = rows.map_or(PlaceKind::GoTo, PlaceKind::GoToRow);
+                self.edit.open_prompt(kind, String::new());
+            }
+            Command::GoToRow(row) => {
+                if let (Some(sheet), Some(doc)) = (self.tables.sheet_of(self.view), &self.doc) {
+                    self.tables.go_to_row(sheet, row, doc.project());
+                }
+            }
+            Command::Contact => self
+                .edit
+                .open_prompt(PlaceKind::Contact { negated: false }, "".into()),
+            Command::ContactNc => self
+                .edit
+                .open_prompt(PlaceKind::Contact { negated: true }, "".into()),
+            Command::Coil => self
+                .edit
+                .open_prompt(PlaceKind::Coil { negated: false }, "".into()),
+            Command::CoilN => self
+                .edit
+                .open_prompt(PlaceKind::Coil { negated: true }, "".into()),
+            Command::Function => self.with(|o: &mut EditState, cx| o.open_function_dialog(cx)),
+            Command::Wire => self.with(|o: &mut EditState, cx| o.wire(cx)),
+            Command::Link => self.with(|o: &mut EditState, cx| o.link(cx)),
             Command::Parallel | Command::ParallelNc => {
                 // Refused before any typing when there is nothing above to be parallel with.
-                let at = self.edit.cursor;
+                let at = self.cursor;
                 match ladder_engine::model::Ladder::can_parallel(at) {
-                    Err(e) if self.view == View::Block(at.block) => self.report_edit_error(&e),
+                    Err(e) if self.view == View::Block(at.block) => {
+                        self.with(|o: &mut EditState, cx| o.report_edit_error(cx, &e))
+                    }
                     _ => {
                         let negated = c == Command::ParallelNc;
-                        self.open_prompt(PlaceKind::Parallel { negated }, "".into())
+                        self.edit
+                            .open_prompt(PlaceKind::Parallel { negated }, "".into())
                     }
                 }
             }
             Command::Cut => {
-                self.cut();
+                self.with(|o: &mut EditState, cx| o.cut(cx));
                 copy_to_system(self);
             }
             Command::Copy => {
-                self.copy();
+                self.with(|o: &mut EditState, cx| o.copy(cx));
                 copy_to_system(self);
             }
-            Command::Paste => self.paste(),
+            Command::Paste => self.with(|o: &mut EditState, cx| o.paste(cx)),
             Command::CopyRow => {
-                self.copy_row();
+                self.with(|o: &mut EditState, cx| o.copy_row(cx));
                 copy_to_system(self);
             }
             Command::Delete => {
                 // The selection when there is one, else the element at the cursor; never a
                 // network added to an empty block only to delete nothing in it.
-                if self.edit.selection.is_some() {
-                    self.delete_selection();
-                } else if let Some(at) = self.existing_cursor() {
-                    self.edit(ladder_engine::model::Edit::SetCell {
-                        at,
-                        cell: ladder_engine::model::Cell::Empty,
+                if self.selection.is_some() {
+                    self.with(|o: &mut EditState, cx| o.delete_selection(cx));
+                } else if let Some(at) = self.with(|o: &mut EditState, cx| o.existing_cursor(cx)) {
+                    self.with(|o: &mut EditState, cx| {
+                        o.edit(
+                            cx,
+                            ladder_engine::model::Edit::SetCell {
+                                at,
+                                cell: ladder_engine::model::Cell::Empty,
+                            },
+                        )
                     });
                 }
             }
             Command::DeleteLink => {
-                if let Some(at) = self.existing_cursor() {
-                    self.edit(ladder_engine::model::Edit::SetLink { at, on: false });
+                if let Some(at) = self.with(|o: &mut EditState, cx| o.existing_cursor(cx)) {
+                    self.with(|o: &mut EditState, cx| {
+                        o.edit(cx, ladder_engine::model::Edit::SetLink { at, on: false })
+                    });
                 }
             }
-            Command::InsertRowAbove => self.insert_row(false),
-            Command::InsertRowBelow => self.insert_row(true),
-            Command::DeleteRow => self.delete_at_cursor(|at| Selection::Rows {
-                network: at.network,
-                rows: (at.row, at.row),
+            Command::InsertRowAbove => self.with(|o: &mut EditState, cx| o.insert_row(cx, false)),
+            Command::InsertRowBelow => self.with(|o: &mut EditState, cx| o.insert_row(cx, true)),
+            Command::DeleteRow => self.with(|o: &mut EditState, cx| {
+                o.delete_at_cursor(cx, |at| Selection::Rows {
+                    network: at.network,
+                    rows: (at.row, at.row),
+                })
             }),
-            Command::InsertNetworkAbove => self.insert_network(false),
-            Command::InsertNetworkBelow => self.insert_network(true),
-            Command::DeleteNetwork => self.delete_at_cursor(|at| Selection::Networks {
-                networks: (at.network, at.network),
+            Command::InsertNetworkAbove => {
+                self.with(|o: &mut EditState, cx| o.insert_network(cx, false))
+            }
+            Command::InsertNetworkBelow => {
+                self.with(|o: &mut EditState, cx| o.insert_network(cx, true))
+            }
+            Command::DeleteNetwork => self.with(|o: &mut EditState, cx| {
+                o.delete_at_cursor(cx, |at| Selection::Networks {
+                    networks: (at.network, at.network),
+                })
             }),
             Command::NetworkTitle | Command::NetworkComment => {
-                if let Some(at) = self.ensure_network()
+                if let Some(at) = self.with(|o: &mut EditState, cx| o.ensure_network(cx))
                     && let Some(n) = self
                         .doc
                         .as_ref()
@@ -308,12 +338,12 @@ impl LadderApp {
                     } else {
                         (PlaceKind::NetworkComment, n.comment.clone())
                     };
-                    self.open_prompt(kind, text);
+                    self.edit.open_prompt(kind, text);
                 }
             }
             Command::ClearSelection => {
                 // Escape abandons what was typed in a table and not taken.
-                self.edit.selection = None;
+                self.selection = None;
                 self.tables.forget_drafts();
             }
             Command::Pen => self.edit.pen = !self.edit.pen,
@@ -324,8 +354,8 @@ impl LadderApp {
             Command::ToggleOutput => self.settings.show_output ^= true,
             Command::ToggleToolbar => self.settings.show_toolbar ^= true,
             Command::ToggleStatus => self.settings.show_status ^= true,
-            Command::ZoomIn => self.zoom_step(true, None),
-            Command::ZoomOut => self.zoom_step(false, None),
+            Command::ZoomIn => self.with(|o: &mut EditState, cx| o.zoom_step(cx, true, None)),
+            Command::ZoomOut => self.with(|o: &mut EditState, cx| o.zoom_step(cx, false, None)),
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.compile(),
             Command::NextError => self.with_context(|cx| diagnostics::step_error(cx, true)),
@@ -353,8 +383,8 @@ impl LadderApp {
             | Command::Why
             | Command::LiveView
             | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
-            Command::NewSub => self.open_prompt(PlaceKind::NewSub, String::new()),
-            Command::ViewCalls(n) => self.view_calls(n),
+            Command::NewSub => self.edit.open_prompt(PlaceKind::NewSub, String::new()),
+            Command::ViewCalls(n) => self.with(|o: &mut EditState, cx| o.view_calls(cx, n)),
             Command::RenameSub(n) => {
                 let name = self.doc.as_ref().and_then(|d| {
                     let l = &d.project().ladder;
@@ -362,7 +392,7 @@ impl LadderApp {
                 });
                 if let Some(ladder_engine::model::BlockKind::Sub { number, name }) = name {
                     let text = format!("{number} {name}").trim().to_string();
-                    self.open_prompt(PlaceKind::RenameSub(number), text);
+                    self.edit.open_prompt(PlaceKind::RenameSub(number), text);
                 }
             }
             Command::DeleteSub(n) => {
@@ -371,7 +401,7 @@ impl LadderApp {
                     .as_ref()
                     .and_then(|d| d.project().ladder.sub_index(n))
                 {
-                    self.delete_subprogram(i);
+                    self.with(|o: &mut EditState, cx| o.delete_subprogram(cx, i));
                 }
             }
             Command::BlockInfo(key) => {
@@ -380,7 +410,7 @@ impl LadderApp {
                     key.index(l).map(|i| l.blocks[i].info.clone())
                 });
                 if let Some(info) = info {
-                    self.open_prompt(PlaceKind::BlockInfo(key), info);
+                    self.edit.open_prompt(PlaceKind::BlockInfo(key), info);
                 }
             }
             Command::Language(l) => self.settings.lang = l,
@@ -391,17 +421,17 @@ impl LadderApp {
             Command::Help(p) => self.help = Some(p),
             Command::Move(d) => {
                 let (dr, dc) = d.delta();
-                self.move_cursor(dr, dc);
+                self.with(|o: &mut EditState, cx| o.move_cursor(cx, dr, dc));
             }
             Command::RowStart
             | Command::RowEnd
             | Command::PageUp
             | Command::PageDown
             | Command::BlockStart
-            | Command::BlockEnd => self.navigate(c),
+            | Command::BlockEnd => self.with(|o: &mut EditState, cx| o.navigate(cx, c)),
             Command::Extend(d) => {
                 let (dr, dc) = d.delta();
-                self.extend_by(dr, dc);
+                self.with(|o: &mut EditState, cx| o.extend_by(cx, dr, dc));
             }
         }
     }
@@ -411,16 +441,16 @@ impl LadderApp {
     /// time), so the status bar and Ctrl+G speak of the block on screen.
     pub fn show_view(&mut self, v: View) {
         if let View::Block(b) = v
-            && b != self.edit.cursor.block
-            && let Some(ladder) = self.ladder()
+            && b != self.cursor.block
+            && let Some(ladder) = self.doc.as_ref().map(|d| &d.project().ladder)
         {
             let key = |i: usize| ladder.blocks.get(i).map(|bl| BlockKey::of(&bl.kind));
-            let (from, to) = (key(self.edit.cursor.block), key(b));
+            let (from, to) = (key(self.cursor.block), key(b));
             if let Some(from) = from {
-                self.edit.block_cursors.insert(from, self.edit.cursor);
+                self.edit.block_cursors.insert(from, self.cursor);
             }
             let back = to.and_then(|k| self.edit.block_cursors.get(&k)).copied();
-            self.edit.cursor = match back {
+            self.cursor = match back {
                 Some(c) => super::place::Cursor { block: b, ..c },
                 None => super::place::block_start(b),
             };

@@ -1,9 +1,11 @@
 //! Editing with the keyboard and the mouse (manual §3.2.2 keys): every change goes through
 //! the engine's edit operations and the document's history, so undo is exact.
 
+use super::OutputLine;
+use super::context::Context;
 use super::i18n::Msg;
 use super::place::View;
-use super::{LadderApp, OutputLine};
+use super::state::EditState;
 use ladder_engine::Op;
 use ladder_engine::find::{self, Query};
 use ladder_engine::model::{Cell, Change, Edit, EditError, Ladder, Operand, TableEdit};
@@ -32,6 +34,8 @@ pub enum PlaceKind {
     Find,
     /// Ctrl+G: `NETWORK [ROW]` of the current block (1-based).
     GoTo,
+    /// Ctrl+G in a table view: a row of the table of so many rows (1-based).
+    GoToRow(usize),
     /// The cursor's network title.
     NetworkTitle,
     /// The cursor's network comment.
@@ -57,35 +61,41 @@ pub struct Prompt {
 
 pub use super::place::Cursor;
 
-impl LadderApp {
-    fn block(&self) -> Option<usize> {
-        match self.view {
+impl EditState {
+    pub(super) fn open_prompt(&mut self, kind: PlaceKind, text: String) {
+        self.prompt = Some(Prompt {
+            kind,
+            text,
+            error: None,
+        });
+    }
+
+    /// Selects `what` in the cursor's block and deletes it (Delete row, Delete network).
+    pub(crate) fn delete_at_cursor(
+        &mut self,
+        cx: &mut Context<'_>,
+        what: impl FnOnce(super::place::Cursor) -> super::selection::Selection,
+    ) {
+        if let Some(at) = self.existing_cursor(cx) {
+            *cx.selection = Some((at.block, what(at)));
+            self.delete_selection(cx);
+        }
+    }
+
+    pub(crate) fn block(&self, cx: &Context<'_>) -> Option<usize> {
+        match *cx.view {
             View::Block(b) => Some(b),
             _ => None,
         }
     }
 
-    /// Applies a change through the document's door; a refusal is returned, in the UI's
-    /// language, for the caller to show once (the prompt shows it, a command reports it).
-    pub fn try_edit(&mut self, change: impl Into<Change>) -> Result<bool, String> {
-        let lang = self.settings.lang;
-        let doc = self.doc.as_mut().ok_or(Msg::NoProject.text(lang))?;
-        let changed = doc
-            .apply(change)
-            .map_err(|e| super::errors::refused(&e, lang))?;
-        if changed {
-            self.last_change = self.tables.mark();
-        }
-        Ok(changed)
-    }
-
     /// Applies a change from a command; a refusal goes to the output window. True when the
     /// change was applied (or changed nothing).
-    pub fn edit(&mut self, change: impl Into<Change>) -> bool {
-        match self.try_edit(change) {
+    pub fn edit(&mut self, cx: &mut Context<'_>, change: impl Into<Change>) -> bool {
+        match cx.apply(change) {
             Ok(_) => true,
             Err(text) => {
-                self.output.push(OutputLine {
+                cx.output.push(OutputLine {
                     text,
                     error: true,
                     target: None,
@@ -96,93 +106,81 @@ impl LadderApp {
     }
 
     /// The ladder, to read.
-    pub fn ladder(&self) -> Option<&Ladder> {
-        self.doc.as_ref().map(|d| &d.project().ladder)
+    pub fn ladder<'c>(&self, cx: &'c Context<'_>) -> Option<&'c Ladder> {
+        cx.doc().map(|d| &d.project().ladder)
     }
 
-    /// Runs `f` as one undo step: everything it changes is undone together.
-    pub fn grouped<R>(&mut self, f: impl FnOnce(&mut LadderApp) -> R) -> R {
-        if let Some(d) = self.doc.as_mut() {
-            d.begin_group();
-        }
-        let r = f(self);
-        if let Some(d) = self.doc.as_mut() {
-            d.end_group();
-        }
-        r
+    pub(crate) fn width(&self, cx: &Context<'_>) -> usize {
+        cx.doc().map_or(0, |d| d.project().ladder.width)
     }
 
-    fn width(&self) -> usize {
-        self.doc.as_ref().map_or(0, |d| d.project().ladder.width)
-    }
-
-    fn rows_of(&self, block: usize, network: usize) -> usize {
-        self.doc
-            .as_ref()
+    pub(crate) fn rows_of(&self, cx: &Context<'_>, block: usize, network: usize) -> usize {
+        cx.doc()
             .and_then(|d| d.project().ladder.blocks.get(block))
             .and_then(|b| b.networks.get(network))
             .map_or(0, |n| n.rows.len())
     }
 
-    fn networks_of(&self, block: usize) -> usize {
-        self.doc
-            .as_ref()
+    pub(crate) fn networks_of(&self, cx: &Context<'_>, block: usize) -> usize {
+        cx.doc()
             .and_then(|d| d.project().ladder.blocks.get(block))
             .map_or(0, |b| b.networks.len())
     }
 
     /// Whether the cursor is on the new row offered below its network's last row (Down
     /// there): a place to draw that is not in the project until something is drawn in it.
-    pub fn on_new_row(&self) -> bool {
-        let c = self.edit.cursor;
-        self.block() == Some(c.block) && {
-            let rows = self.rows_of(c.block, c.network);
+    pub fn on_new_row(&self, cx: &Context<'_>) -> bool {
+        let c = *cx.cursor;
+        self.block(cx) == Some(c.block) && {
+            let rows = self.rows_of(cx, c.block, c.network);
             rows > 0 && c.row == rows
         }
     }
 
     /// As [`LadderApp::ensure_network`], and the new row below a network opened for real
     /// when the cursor is on it: drawing there adds the row, in the gesture's undo step.
-    pub fn ensure_row(&mut self) -> Option<Cursor> {
-        if self.on_new_row() {
-            let c = self.edit.cursor;
-            let insert = self.ladder()?.plan_insert_row(c.block, c.network, c.row);
-            self.edit(insert);
+    pub fn ensure_row(&mut self, cx: &mut Context<'_>) -> Option<Cursor> {
+        if self.on_new_row(cx) {
+            let c = *cx.cursor;
+            let insert = self.ladder(cx)?.plan_insert_row(c.block, c.network, c.row);
+            self.edit(cx, insert);
         }
-        self.ensure_network()
+        self.ensure_network(cx)
     }
 
     /// Makes sure the cursor's block has a network to edit in, and the cursor is inside it.
     /// An empty block gets a network first; the gesture that needed it runs in an undo group
     /// (every command does), so one undo takes back both. `None` when there is no cell to edit (no project, not a
     /// ladder view, a read-only project with an empty block).
-    pub fn ensure_network(&mut self) -> Option<Cursor> {
-        let block = self.block()?;
-        if self.networks_of(block) == 0 {
-            let insert = self.ladder()?.plan_insert_network(block, 0);
-            self.edit(insert);
+    pub fn ensure_network(&mut self, cx: &mut Context<'_>) -> Option<Cursor> {
+        let block = self.block(cx)?;
+        if self.networks_of(cx, block) == 0 {
+            let insert = self.ladder(cx)?.plan_insert_network(block, 0);
+            self.edit(cx, insert);
         }
-        let networks = self.networks_of(block);
+        let networks = self.networks_of(cx, block);
         if networks == 0 {
             return None;
         }
-        let mut c = self.edit.cursor;
+        let mut c = *cx.cursor;
         c.block = block;
         c.network = c.network.min(networks - 1);
-        c.row = c.row.min(self.rows_of(block, c.network).saturating_sub(1));
-        c.col = c.col.min(self.width());
-        self.edit.cursor = c;
+        c.row = c
+            .row
+            .min(self.rows_of(cx, block, c.network).saturating_sub(1));
+        c.col = c.col.min(self.width(cx));
+        *cx.cursor = c;
         Some(c)
     }
 
     /// Ctrl+F: every match goes to the output window (a click shows it) and the cursor goes
     /// to the next match; Ctrl+F, Enter again (the prompt keeps the text) goes on to the one
     /// after, as GSKLadder's "find next".
-    pub fn find(&mut self, text: &str) -> Result<(), String> {
-        let lang = self.settings.lang;
+    pub fn find(&mut self, cx: &mut Context<'_>, text: &str) -> Result<(), String> {
+        let lang = cx.settings.lang;
         let query = Query::parse(text)
             .ok_or_else(|| format!("`{text}`: {}", Msg::NothingToFind.text(lang)))?;
-        let Some(doc) = self.doc.as_ref() else {
+        let Some(doc) = cx.doc() else {
             return Ok(());
         };
         let project = doc.project();
@@ -218,42 +216,27 @@ impl LadderApp {
             error: false,
             target: None,
         });
-        self.output.list(lines);
+        cx.output.list(lines);
         // The same search again steps past the cursor; a new one may start on it.
-        let again = self.edit.last_find == text;
-        let c = self.edit.cursor;
+        let again = self.last_find == text;
+        let c = *cx.cursor;
         let next = hits
             .iter()
             .find(|h| if again { **h > c } else { **h >= c })
             .or(hits.first())
             .copied();
-        self.edit.last_find = text.to_string();
+        self.last_find = text.to_string();
         if let Some(at) = next {
-            self.jump(at);
+            cx.pending.push(crate::gui::command::Command::ShowCell(at));
         }
         Ok(())
     }
 
     /// Ctrl+G: moves the cursor to `NETWORK [ROW]` of the shown block and scrolls to it.
-    pub fn go_to(&mut self, text: &str) -> Result<(), String> {
-        let lang = self.settings.lang;
-        if let Some(sheet) = self.tables.sheet_of(self.view) {
-            // In a table view, Ctrl+G goes to a row of the table.
-            let Some(doc) = self.doc.as_ref() else {
-                return Ok(());
-            };
-            let rows = self.tables.rows_in(sheet, doc.project());
-            let row = text
-                .trim()
-                .parse::<usize>()
-                .map_err(|_| Msg::GoToRowUsage.text(lang).to_string())?;
-            if row == 0 || !self.tables.go_to_row(sheet, row - 1, doc.project()) {
-                return Err(format!("{}: 1–{rows}", Msg::NoSuchTableRow.text(lang)));
-            }
-            return Ok(());
-        }
+    pub fn go_to(&mut self, cx: &mut Context<'_>, text: &str) -> Result<(), String> {
+        let lang = cx.settings.lang;
         let block = self
-            .block()
+            .block(cx)
             .ok_or_else(|| Msg::GoToUsage.text(lang).to_string())?;
         let numbers: Vec<usize> = text
             .split(|c: char| c.is_whitespace() || c == ':' || c == ',')
@@ -266,43 +249,69 @@ impl LadderApp {
             [n, r] => (n, r),
             _ => return Err(Msg::GoToUsage.text(lang).into()),
         };
-        let networks = self.networks_of(block);
+        let networks = self.networks_of(cx, block);
         if network == 0 || network > networks {
             return Err(format!("{}: 1–{networks}", Msg::NoSuchNetwork.text(lang)));
         }
-        let rows = self.rows_of(block, network - 1);
+        let rows = self.rows_of(cx, block, network - 1);
         if row == 0 || row > rows {
             return Err(format!("{}: 1–{rows}", Msg::NoSuchRow.text(lang)));
         }
-        self.edit.cursor = Cursor {
+        *cx.cursor = Cursor {
             block,
             network: network - 1,
             row: row - 1,
             col: 0,
         };
-        self.edit.jump_to = Some(network - 1);
+        self.jump_to = Some(network - 1);
+        Ok(())
+    }
+
+    /// Ctrl+G in a table view: row `text` (1-based) of a table of `rows` rows; the tables
+    /// move to it after the frame.
+    pub fn go_to_row(
+        &mut self,
+        cx: &mut Context<'_>,
+        text: &str,
+        rows: usize,
+    ) -> Result<(), String> {
+        let lang = cx.settings.lang;
+        let row = text
+            .trim()
+            .parse::<usize>()
+            .map_err(|_| Msg::GoToRowUsage.text(lang).to_string())?;
+        if row == 0 || row > rows {
+            return Err(format!("{}: 1–{rows}", Msg::NoSuchTableRow.text(lang)));
+        }
+        cx.pending.push(super::command::Command::GoToRow(row - 1));
         Ok(())
     }
 
     /// Places what the prompt describes at the cursor.
-    pub fn place(&mut self, kind: PlaceKind, text: &str) -> Result<(), String> {
+    pub fn place(
+        &mut self,
+        cx: &mut Context<'_>,
+        kind: PlaceKind,
+        text: &str,
+    ) -> Result<(), String> {
         match kind {
-            PlaceKind::Find => return self.find(text),
-            PlaceKind::GoTo => return self.go_to(text),
+            PlaceKind::Find => return self.find(cx, text),
+            PlaceKind::GoTo => return self.go_to(cx, text),
+            PlaceKind::GoToRow(rows) => return self.go_to_row(cx, text, rows),
             PlaceKind::NetworkTitle => {
-                self.set_network_text(Some(text), None);
+                self.set_network_text(cx, Some(text), None);
                 return Ok(());
             }
             PlaceKind::NetworkComment => {
-                self.set_network_text(None, Some(text));
+                self.set_network_text(cx, None, Some(text));
                 return Ok(());
             }
-            PlaceKind::NewSub => return self.new_subprogram(text),
-            PlaceKind::RenameSub(i) => return self.rename_subprogram(i, text),
-            PlaceKind::BlockInfo(key) => return self.set_block_info(key, text),
+            PlaceKind::NewSub => return self.new_subprogram(cx, text),
+            PlaceKind::RenameSub(i) => return self.rename_subprogram(cx, i, text),
+            PlaceKind::BlockInfo(key) => return self.set_block_info(cx, key, text),
             _ => {}
         }
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let operand =
             |t: &str| Operand::parse(t).map_err(|e| super::errors::operand_error(&e, lang));
         // A typing error refuses before anything changes (no network added for nothing).
@@ -312,10 +321,10 @@ impl LadderApp {
         ) {
             operand(text)?;
         }
-        let Some(at) = self.ensure_row() else {
-            return Err(Msg::NoProject.text(self.settings.lang).into());
+        let Some(at) = self.ensure_row(cx) else {
+            return Err(Msg::NoProject.text(cx.settings.lang).into());
         };
-        let width = self.width();
+        let width = self.width(cx);
         match kind {
             PlaceKind::Contact { negated } | PlaceKind::Parallel { negated } => {
                 let cell = Cell::Contact {
@@ -328,12 +337,12 @@ impl LadderApp {
                 };
                 let edit = if matches!(kind, PlaceKind::Parallel { .. }) {
                     Ladder::plan_parallel_contact(at, cell)
-                        .map_err(|e| super::errors::edit_error(&e, self.settings.lang))?
+                        .map_err(|e| super::errors::edit_error(&e, cx.settings.lang))?
                 } else {
                     Edit::SetCell { at, cell }
                 };
-                if self.try_edit(edit)? {
-                    self.edit.cursor = Cursor {
+                if cx.apply(edit)? {
+                    *cx.cursor = Cursor {
                         col: at.col + 1,
                         ..at
                     };
@@ -341,6 +350,7 @@ impl LadderApp {
             }
             PlaceKind::Find
             | PlaceKind::GoTo
+            | PlaceKind::GoToRow(_)
             | PlaceKind::NetworkTitle
             | PlaceKind::NetworkComment
             | PlaceKind::NewSub
@@ -366,14 +376,14 @@ impl LadderApp {
                 };
                 let at = Cursor { col: width, ..at };
                 let edit = self
-                    .ladder()
+                    .ladder(cx)
                     .map(|l| l.plan_output(at, cell))
                     .transpose()
-                    .map_err(|e| super::errors::edit_error(&e, self.settings.lang))?;
+                    .map_err(|e| super::errors::edit_error(&e, cx.settings.lang))?;
                 if let Some(edit) = edit
-                    && self.try_edit(edit)?
+                    && cx.apply(edit)?
                 {
-                    self.edit.cursor = at;
+                    *cx.cursor = at;
                 }
             }
         }
@@ -381,31 +391,31 @@ impl LadderApp {
     }
 
     /// Shift+arrow: the selection grows from where it started to the moved cursor.
-    pub(super) fn extend_by(&mut self, dr: i32, dc: i32) {
-        let selection = self.edit.selection;
-        let from = self.edit.cursor;
-        self.move_cursor(dr, dc);
-        let to = self.edit.cursor;
-        self.edit.selection = selection;
+    pub(super) fn extend_by(&mut self, cx: &mut Context<'_>, dr: i32, dc: i32) {
+        let selection = *cx.selection;
+        let from = *cx.cursor;
+        self.move_cursor(cx, dr, dc);
+        let to = *cx.cursor;
+        *cx.selection = selection;
         if selection.is_none() {
-            self.edit.cursor = from;
+            *cx.cursor = from;
         }
-        self.edit.extend_selection(to);
+        super::state::extend_selection(&mut *cx.cursor, &mut *cx.selection, to);
     }
 
-    pub(super) fn move_cursor(&mut self, dr: i32, dc: i32) {
-        let Some(block) = self.block() else { return };
-        let mut c = self.edit.cursor;
+    pub(super) fn move_cursor(&mut self, cx: &mut Context<'_>, dr: i32, dc: i32) {
+        let Some(block) = self.block(cx) else { return };
+        let mut c = *cx.cursor;
         c.block = block;
-        let width = self.width() as i32;
-        self.edit.selection = None;
+        let width = self.width(cx) as i32;
+        *cx.selection = None;
         c.col = (c.col as i32 + dc).clamp(0, width) as usize;
-        let rows = self.rows_of(block, c.network) as i32;
+        let rows = self.rows_of(cx, block, c.network) as i32;
         let row = c.row as i32 + dr;
         if row < 0 && c.network > 0 {
             c.network -= 1;
-            c.row = self.rows_of(block, c.network).saturating_sub(1);
-        } else if row > rows && c.network + 1 < self.networks_of(block) {
+            c.row = self.rows_of(cx, block, c.network).saturating_sub(1);
+        } else if row > rows && c.network + 1 < self.networks_of(cx, block) {
             c.network += 1;
             c.row = 0;
         } else {
@@ -414,18 +424,18 @@ impl LadderApp {
         }
         // The view follows with the least scrolling (ladder_view's `follow`), so an arrow
         // key never throws the network to the top of the screen.
-        self.edit.cursor = c;
+        *cx.cursor = c;
     }
 
     /// Home, End, PgUp, PgDn, Ctrl+Home, Ctrl+End: the cursor jumps, and the view follows.
-    pub(super) fn navigate(&mut self, c: super::command::Command) {
+    pub(super) fn navigate(&mut self, cx: &mut Context<'_>, c: super::command::Command) {
         use super::command::Command;
         /// Networks a page moves: about what a screen shows at 100 %.
         const PAGE: usize = 8;
-        let Some(block) = self.block() else { return };
-        let networks = self.networks_of(block);
-        let width = self.width();
-        let mut at = self.edit.cursor;
+        let Some(block) = self.block(cx) else { return };
+        let networks = self.networks_of(cx, block);
+        let width = self.width(cx);
+        let mut at = *cx.cursor;
         at.block = block;
         match c {
             Command::RowStart => at.col = 0,
@@ -445,28 +455,31 @@ impl LadderApp {
             }
             Command::BlockEnd => {
                 at.network = networks.saturating_sub(1);
-                at.row = self.rows_of(block, at.network).saturating_sub(1);
+                at.row = self.rows_of(cx, block, at.network).saturating_sub(1);
                 at.col = 0;
             }
             _ => return,
         }
-        self.edit.selection = None;
-        self.edit.cursor = at;
-        self.edit.jump_to = Some(at.network);
+        *cx.selection = None;
+        *cx.cursor = at;
+        self.jump_to = Some(at.network);
     }
 
     /// F4: a wire at the cursor.
-    pub fn wire(&mut self) {
-        if let Some(at) = self.ensure_row() {
+    pub fn wire(&mut self, cx: &mut Context<'_>) {
+        if let Some(at) = self.ensure_row(cx) {
             let at = Cursor {
-                col: at.col.min(self.width() - 1),
+                col: at.col.min(self.width(cx) - 1),
                 ..at
             };
-            if self.edit(Edit::SetCell {
-                at,
-                cell: Cell::Wire,
-            }) {
-                self.edit.cursor = Cursor {
+            if self.edit(
+                cx,
+                Edit::SetCell {
+                    at,
+                    cell: Cell::Wire,
+                },
+            ) {
+                *cx.cursor = Cursor {
                     col: at.col + 1,
                     ..at
                 };
@@ -476,50 +489,50 @@ impl LadderApp {
 
     /// F5: the vertical link at the left of the cursor, added or removed (a row is added below
     /// when there is none).
-    pub fn link(&mut self) {
-        let Some(at) = self.ensure_network() else {
+    pub fn link(&mut self, cx: &mut Context<'_>) {
+        let Some(at) = self.ensure_network(cx) else {
             return;
         };
-        let planned = self.ladder().map(|l| l.plan_toggle_link(at));
+        let planned = self.ladder(cx).map(|l| l.plan_toggle_link(at));
         match planned {
             Some(Ok(edit)) => {
-                self.edit(edit);
+                self.edit(cx, edit);
             }
-            Some(Err(e)) => self.report_edit_error(&e),
+            Some(Err(e)) => self.report_edit_error(cx, &e),
             None => {}
         }
     }
 
     /// Ctrl+T (above) and Ctrl+R (below the cursor): a new empty row; the cursor goes to it.
-    pub fn insert_row(&mut self, below: bool) {
-        if let Some(at) = self.ensure_network() {
+    pub fn insert_row(&mut self, cx: &mut Context<'_>, below: bool) {
+        if let Some(at) = self.ensure_network(cx) {
             let row = at.row + usize::from(below);
             let Some(insert) = self
-                .ladder()
+                .ladder(cx)
                 .map(|l| l.plan_insert_row(at.block, at.network, row))
             else {
                 return;
             };
-            if self.edit(insert) {
-                self.edit.cursor = Cursor { row, ..at };
+            if self.edit(cx, insert) {
+                *cx.cursor = Cursor { row, ..at };
             }
         }
     }
 
     /// Ctrl+U (above) and Ctrl+I (below the cursor's network): a new empty network.
-    pub fn insert_network(&mut self, below: bool) {
-        let Some(block) = self.block() else { return };
-        let n = self.networks_of(block);
+    pub fn insert_network(&mut self, cx: &mut Context<'_>, below: bool) {
+        let Some(block) = self.block(cx) else { return };
+        let n = self.networks_of(cx, block);
         let index = if n == 0 {
             0
         } else {
-            (self.edit.cursor.network + usize::from(below)).min(n)
+            (cx.cursor.network + usize::from(below)).min(n)
         };
-        let Some(insert) = self.ladder().map(|l| l.plan_insert_network(block, index)) else {
+        let Some(insert) = self.ladder(cx).map(|l| l.plan_insert_network(block, index)) else {
             return;
         };
-        if self.edit(insert) {
-            self.edit.cursor = Cursor {
+        if self.edit(cx, insert) {
+            *cx.cursor = Cursor {
                 block,
                 network: index,
                 row: 0,
@@ -530,59 +543,17 @@ impl LadderApp {
 
     /// Replaces a table through the document's door (table editors call this for every
     /// change).
-    pub fn edit_table(&mut self, edit: TableEdit) {
-        self.edit(edit);
+    pub fn edit_table(&mut self, cx: &mut Context<'_>, edit: TableEdit) {
+        self.edit(cx, edit);
     }
 
     /// Reports an edit the engine refused, in the output window.
-    pub fn report_edit_error(&mut self, e: &EditError) {
-        let text = super::errors::edit_error(e, self.settings.lang);
-        self.output.push(OutputLine {
+    pub fn report_edit_error(&mut self, cx: &mut Context<'_>, e: &EditError) {
+        let text = super::errors::edit_error(e, cx.settings.lang);
+        cx.output.push(OutputLine {
             text,
             error: true,
             target: None,
         });
-    }
-
-    /// Ctrl+Z: a draft being typed in a table goes first, as a text field would; else the last
-    /// step of the project is taken back and shown where it changed.
-    pub fn undo(&mut self) {
-        // A draft typed after the last change goes first, as a text field undoes its typing.
-        if self.tables.latest_draft() > Some(self.last_change) && self.tables.undo_draft() {
-            return;
-        }
-        let Some(doc) = self.doc.as_mut() else { return };
-        let step = doc.undo().cloned();
-        self.after_history(step);
-    }
-
-    /// Ctrl+Y: the last undone step again, shown where it changed.
-    pub fn redo(&mut self) {
-        let Some(doc) = self.doc.as_mut() else { return };
-        let step = doc.redo().cloned();
-        self.after_history(step);
-    }
-
-    /// After an undo or redo: the view and the place of the step (a table's row, a ladder
-    /// cell, a block), so a change never comes back unseen.
-    fn after_history(&mut self, step: Option<Change>) {
-        self.clamp_ui_state();
-        let (Some(step), Some(doc)) = (step, self.doc.as_ref()) else {
-            return;
-        };
-        if let Change::Table(t) = &step {
-            if let Some(view) = self.tables.show_change(doc.project(), t) {
-                self.view = view;
-            }
-            return;
-        }
-        match super::place::place_of(&step, doc.project()) {
-            Some(super::place::Place::Cell(at)) => self.jump(at),
-            Some(super::place::Place::Block(b)) => {
-                self.view = View::Block(b);
-                self.clamp_ui_state();
-            }
-            None => {}
-        }
     }
 }

@@ -121,8 +121,6 @@ impl LadderApp {
         // Another project (or none): the old one's machine stops with it.
         self.with(|o: &mut OnlineState, cx| o.go_offline(cx));
         self.view = View::Block(0);
-        self.prompt = None;
-        self.function_dialog = None;
         self.replace.dialog = None;
         self.tables = Default::default();
         self.online.machine = Default::default();
@@ -131,6 +129,8 @@ impl LadderApp {
         // stays: copying between projects is how networks move from one machine's ladder to
         // another's.
         self.edit.start_over();
+        self.cursor = super::place::block_start(0);
+        self.selection = None;
         self.tabs.clear();
         self.output.clear();
     }

@@ -10,6 +10,7 @@ use super::command::{
 use super::i18n::{Lang, Msg};
 use super::place::View;
 use crate::gui::online::OnlineState;
+use crate::gui::state::EditState;
 
 /// The narrowest window whose toolbars show every tool in full rows; narrower, the toolbar
 /// is one row with an overflow menu.
@@ -215,7 +216,7 @@ impl LadderApp {
                     for z in super::settings::ZOOMS {
                         let on = self.settings.zoom == z && !fit;
                         if ui.selectable_label(on, format!("{z}%")).clicked() && !on {
-                            self.zoom_to(z, None);
+                            self.with(|o: &mut EditState, cx| o.zoom_to(cx, z, None));
                         }
                     }
                 });

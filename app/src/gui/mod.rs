@@ -14,8 +14,10 @@ pub mod files;
 pub mod fonts;
 pub mod function_dialog;
 pub mod help;
+pub mod history;
 pub mod i18n;
 pub mod ladder_view;
+pub mod main_view;
 pub mod menus;
 pub mod online;
 pub mod output;
@@ -39,6 +41,7 @@ use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
 use crate::gui::replace::Replace;
+use crate::gui::state::EditState;
 pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
@@ -68,14 +71,14 @@ pub struct LadderApp {
     pub output: output::Output,
     /// Find and replace: its window, while open.
     pub replace: replace::Replace,
-    /// The ladder editor: cursor, selection, clipboard, gestures.
+    /// The ladder cursor: the cell the editor's commands act on.
+    pub cursor: model::CellRef,
+    /// The ladder selection: its block and region, if any.
+    pub selection: Option<(usize, selection::Selection)>,
+    /// The ladder editor: clipboard, gestures, the view's geometry.
     pub edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
     pub files: state::FileState,
-    /// The open operand prompt (F1, F2, F3, F6).
-    pub prompt: Option<editing::Prompt>,
-    /// The open function-instruction dialog (F3, or a double-click on a box).
-    pub function_dialog: Option<function_dialog::FunctionDialog>,
     /// The open Help window.
     pub help: Option<HelpPage>,
     /// Element properties: the form, while open.
@@ -117,8 +120,9 @@ macro_rules! context_of {
             &mut $a.settings,
             &mut $a.output,
             &mut $a.pending,
-            &mut $a.edit.cursor,
-            &mut $a.edit.selection,
+            &mut $a.cursor,
+            &mut $a.selection,
+            (&mut $a.view, &mut $a.tabs),
         )
     };
 }
@@ -141,6 +145,7 @@ features! {
     replace::Replace => replace,
     properties::ElementProperties => properties,
     online::OnlineState => online,
+    state::EditState => edit,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -174,10 +179,10 @@ impl LadderApp {
             tabs: Vec::new(),
             output: Default::default(),
             replace: Default::default(),
+            cursor: place::block_start(0),
+            selection: None,
             edit: Default::default(),
             files: Default::default(),
-            prompt: None,
-            function_dialog: None,
             help: None,
             properties: Default::default(),
             tables: tables::TableState::default(),
@@ -259,8 +264,8 @@ impl LadderApp {
     pub fn jump(&mut self, at: model::CellRef) {
         self.view = View::Block(at.block);
         self.edit.jump_to = Some(at.network);
-        self.edit.selection = None;
-        self.edit.cursor = at;
+        self.selection = None;
+        self.cursor = at;
         self.clamp_ui_state();
     }
 
@@ -269,7 +274,7 @@ impl LadderApp {
     /// selection, the drag and the tabs never point past the end.
     pub fn clamp_ui_state(&mut self) {
         let Some(doc) = self.doc.as_ref() else {
-            self.edit.selection = None;
+            self.selection = None;
             self.edit.drag_from = None;
             return;
         };
@@ -286,7 +291,7 @@ impl LadderApp {
             self.edit.drag_from = None;
         }
         self.tabs.retain(valid);
-        let c = &mut self.edit.cursor;
+        let c = &mut self.cursor;
         if c.block >= blocks.len() {
             *c = model::CellRef {
                 block: 1,
@@ -301,7 +306,7 @@ impl LadderApp {
         let rows = networks.get(c.network).map_or(0, |n| n.rows.len());
         c.row = c.row.min(rows);
         c.col = c.col.min(p.ladder.width);
-        if let Some((b, sel)) = self.edit.selection {
+        if let Some((b, sel)) = self.selection {
             let fits = |n: usize, r: usize| {
                 blocks
                     .get(b)
@@ -318,7 +323,7 @@ impl LadderApp {
                 selection::Selection::Networks { networks } => fits(networks.0.max(networks.1), 0),
             };
             if !ok {
-                self.edit.selection = None;
+                self.selection = None;
             }
         }
     }
@@ -417,15 +422,12 @@ impl LadderApp {
         };
         match self.view {
             View::Block(b) => {
-                let cursor = (self.edit.cursor.block == b).then_some((
-                    self.edit.cursor.network,
-                    self.edit.cursor.row,
-                    self.edit.cursor.col,
+                let cursor = (self.cursor.block == b).then_some((
+                    self.cursor.network,
+                    self.cursor.row,
+                    self.cursor.col,
                 ));
-                let selection = self
-                    .edit
-                    .selection
-                    .and_then(|(sb, s)| (sb == b).then_some(s));
+                let selection = self.selection.and_then(|(sb, s)| (sb == b).then_some(s));
                 let Some(block) = doc.project().ladder.blocks.get(b) else {
                     return;
                 };
@@ -445,7 +447,7 @@ impl LadderApp {
                         self.settings.cursors.get(path).and_then(|c| c.get(&label))
                         && let Some(net) = block.networks.get(network)
                     {
-                        self.edit.cursor = model::CellRef {
+                        self.cursor = model::CellRef {
                             block: b,
                             network,
                             row: row.min(net.rows.len().saturating_sub(1)),
@@ -468,7 +470,7 @@ impl LadderApp {
                         error: d.severity() == Severity::Error,
                     })
                     .collect();
-                let seen = (self.edit.cursor, doc.serial(), doc.generation());
+                let seen = (self.cursor, doc.serial(), doc.generation());
                 let follow = self.edit.followed != Some(seen);
                 self.edit.followed = Some(seen);
                 let opts = ladder_view::ViewOptions {
@@ -497,10 +499,10 @@ impl LadderApp {
                 self.edit.jump_to = jump_to;
                 self.edit.geometry = geometry;
                 if let Some((up, at)) = events.zoom {
-                    self.zoom_step(up, Some(at));
+                    self.with(|o: &mut EditState, cx| o.zoom_step(cx, up, Some(at)));
                 }
-                self.remember_top(&label, events.visible.start);
-                self.remember_cursor(&label, b);
+                self.with(|o: &mut EditState, cx| o.remember_top(cx, &label, events.visible.start));
+                self.with(|o: &mut EditState, cx| o.remember_cursor(cx, &label, b));
                 self.pointer_events(b, events);
             }
             View::RefIndex | View::RefBits | View::RefBytes => {
@@ -532,9 +534,9 @@ impl LadderApp {
                 t(Msg::ModeEdit)
             });
             if let View::Block(b) = self.view
-                && self.edit.cursor.block == b
+                && self.cursor.block == b
             {
-                let c = self.edit.cursor;
+                let c = self.cursor;
                 let label = doc
                     .project()
                     .ladder
@@ -552,7 +554,7 @@ impl LadderApp {
                     t(Msg::Column),
                     c.col + 1
                 ));
-                if let Some((sb, sel)) = self.edit.selection
+                if let Some((sb, sel)) = self.selection
                     && sb == b
                 {
                     let what = match sel {
@@ -577,7 +579,7 @@ impl LadderApp {
                 ui.separator();
                 ui.label(format!("{}: {s}", t(Msg::Steps)));
             }
-            diagnostics::status_ui(ui, doc, self.edit.cursor, self.settings.lang);
+            diagnostics::status_ui(ui, doc, self.cursor, self.settings.lang);
             self.online.online_status_ui(doc, self.settings.lang, ui);
             ui.separator();
             ui.label(format!("{}%", self.settings.zoom));
@@ -617,8 +619,14 @@ impl eframe::App for LadderApp {
         if self.settings.show_toolbar {
             egui::Panel::top("toolbar").show(ui, |ui| self.toolbar_ui(ui));
         }
-        if self.prompt.is_some() && self.prompt_place().is_none() {
-            egui::Panel::top("prompt").show(ui, |ui| self.prompt_ui(ui));
+        if self.edit.prompt.is_some()
+            && self
+                .with(|o: &mut EditState, cx| o.prompt_place(cx))
+                .is_none()
+        {
+            egui::Panel::top("prompt").show(ui, |ui| {
+                self.with(|o: &mut EditState, cx| o.prompt_ui(cx, ui))
+            });
         }
         if self.settings.show_status {
             egui::Panel::bottom("status").show(ui, |ui| self.status_ui(ui));
@@ -686,15 +694,15 @@ impl eframe::App for LadderApp {
             self.tabs_ui(ui);
             self.main_ui(ui)
         });
-        self.prompt_window(&ctx);
+        self.with(|o: &mut EditState, cx| o.prompt_window(cx, &ctx));
         if self.properties.form.is_some() {
             // The form sits under its element as drawn; the geometry is read while the
             // feature holds the cursor, hence the copy (only while the form is open).
             let geometry = self.edit.geometry.clone();
             self.with(|p: &mut ElementProperties, cx| p.ui(&ctx, cx, &geometry));
         }
-        if self.function_dialog.is_some() {
-            self.function_dialog_ui(&ctx);
+        if self.edit.function_dialog.is_some() {
+            self.with(|o: &mut EditState, cx| o.function_dialog_ui(cx, &ctx));
         }
         help::ui(&mut self.help, &ctx, self.settings.lang);
         self.with(|p: &mut PrintState, cx| p.ui(&ctx, cx, area));

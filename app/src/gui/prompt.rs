@@ -4,10 +4,11 @@
 //! under it: the eye stays on the rung and nothing moves. The rest is typed in a bar under
 //! the toolbar.
 
-use super::LadderApp;
 use super::editing::PlaceKind;
 use super::i18n::Msg;
 use super::place::View;
+use crate::gui::context::Context;
+use crate::gui::state::EditState;
 use egui::{Key, Modifiers};
 use ladder_engine::model::Operand;
 
@@ -24,16 +25,16 @@ fn in_place(kind: PlaceKind) -> bool {
     )
 }
 
-impl LadderApp {
+impl EditState {
     /// Where the open prompt is typed in place on screen (the rectangle it covers), when it
     /// belongs to a cell or network that was drawn last frame.
-    pub fn prompt_place(&self) -> Option<egui::Rect> {
+    pub fn prompt_place(&self, cx: &Context<'_>) -> Option<egui::Rect> {
         let prompt = self.prompt.as_ref().filter(|p| in_place(p.kind))?;
-        let c = self.edit.cursor;
-        if self.view != View::Block(c.block) {
+        let c = *cx.cursor;
+        if *cx.view != View::Block(c.block) {
             return None;
         }
-        let g = &self.edit.geometry;
+        let g = &self.geometry;
         let rect = match prompt.kind {
             PlaceKind::NetworkTitle | PlaceKind::NetworkComment => {
                 let top = g.origin.y + g.tops.get(c.network)?;
@@ -52,8 +53,8 @@ impl LadderApp {
 
     /// The prompt in place over its cell or network, when it has one on screen (else the bar
     /// under the toolbar shows it).
-    pub fn prompt_window(&mut self, ctx: &egui::Context) {
-        let Some(rect) = self.prompt_place() else {
+    pub fn prompt_window(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
+        let Some(rect) = self.prompt_place(cx) else {
             return;
         };
         egui::Area::new(egui::Id::unique("prompt-in-place"))
@@ -62,21 +63,21 @@ impl LadderApp {
             .show(ctx, |ui| {
                 egui::Frame::popup(ui.style()).show(ui, |ui| {
                     ui.set_max_width(rect.width().max(220.0));
-                    self.prompt_ui(ui);
+                    self.prompt_ui(cx, ui);
                 });
             });
     }
 
     /// The operand prompt: a text field; Enter places, Escape cancels.
-    pub fn prompt_ui(&mut self, ui: &mut egui::Ui) {
+    pub fn prompt_ui(&mut self, cx: &mut Context<'_>, ui: &mut egui::Ui) {
         let Some(mut prompt) = self.prompt.take() else {
             return;
         };
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let mut close = false;
         let label = match prompt.kind {
             PlaceKind::Find => Msg::FindPrompt,
-            PlaceKind::GoTo if self.tables.sheet_of(self.view).is_some() => Msg::GoToRowPrompt,
+            PlaceKind::GoToRow(_) => Msg::GoToRowPrompt,
             PlaceKind::GoTo => Msg::GoToPrompt,
             PlaceKind::NetworkTitle => Msg::TitlePrompt,
             PlaceKind::NetworkComment => Msg::CommentPrompt,
@@ -89,7 +90,7 @@ impl LadderApp {
             PlaceKind::Contact { .. } | PlaceKind::Coil { .. } | PlaceKind::Parallel { .. }
         );
         let suggestions = if completes {
-            self.suggestions(&prompt.text)
+            self.suggestions(cx, &prompt.text)
         } else {
             Vec::new()
         };
@@ -112,7 +113,7 @@ impl LadderApp {
                         .hint_text(match prompt.kind {
                             _ if completes => "X0002.1",
                             PlaceKind::Find => "X0002.1 · X2.1 · START · MOVN · 100",
-                            PlaceKind::GoTo if self.tables.sheet_of(self.view).is_some() => "25",
+                            PlaceKind::GoToRow(_) => "25",
                             PlaceKind::GoTo => "12 3",
                             _ => "",
                         })
@@ -127,7 +128,10 @@ impl LadderApp {
                 close = true;
             } else if ui.input(|i| i.key_pressed(Key::Enter)) {
                 let text = prompt.text.trim().to_string();
-                match self.grouped(|app| app.place(prompt.kind, &text)) {
+                cx.begin_group();
+                let placed = self.place(cx, prompt.kind, &text);
+                cx.end_group();
+                match placed {
                     Ok(()) => close = true,
                     Err(e) => prompt.error = Some(e),
                 }
@@ -159,13 +163,13 @@ impl LadderApp {
     /// Symbols for what has been typed: names starting with it first, then names or comments
     /// containing it; an address typed in full shows its symbol. Up to eight, as (text to
     /// enter, text shown).
-    pub fn suggestions(&self, typed: &str) -> Vec<(String, String)> {
+    pub fn suggestions(&self, cx: &Context<'_>, typed: &str) -> Vec<(String, String)> {
         let typed = typed.trim();
-        let Some(doc) = self.doc.as_ref().filter(|_| !typed.is_empty()) else {
+        let Some(doc) = cx.doc().filter(|_| !typed.is_empty()) else {
             return Vec::new();
         };
         let project = doc.project();
-        let lang = self.settings.lang.code();
+        let lang = cx.settings.lang.code();
         let lower = typed.to_lowercase();
         let shown = |s: &ladder_engine::model::Symbol| {
             let comment = s.comments.get(lang).map_or("", String::as_str);

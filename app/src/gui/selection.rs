@@ -2,14 +2,16 @@
 //! rows or whole networks of one block. Selection and clipboard are UI state: never saved,
 //! and every change they make goes through the engine's edits as one undo step.
 
+use super::OutputLine;
+use super::context::Context;
 use super::i18n::Msg;
-use super::{LadderApp, OutputLine};
+use super::state::EditState;
 use ladder_engine::model::Cell;
 pub use ladder_engine::model::region::{Clip, Region as Selection};
 
-impl LadderApp {
-    fn note(&mut self, text: String, error: bool) {
-        self.output.push(OutputLine {
+impl EditState {
+    pub(crate) fn note(&mut self, cx: &mut Context<'_>, text: String, error: bool) {
+        cx.output.push(OutputLine {
             text,
             error,
             target: None,
@@ -17,15 +19,15 @@ impl LadderApp {
     }
 
     /// The selection in the shown block, or the cursor's cell when nothing is selected.
-    pub fn effective_selection(&self) -> Option<(usize, Selection)> {
-        let block = match self.view {
+    pub fn effective_selection(&self, cx: &Context<'_>) -> Option<(usize, Selection)> {
+        let block = match *cx.view {
             super::place::View::Block(b) => b,
             _ => return None,
         };
-        match self.edit.selection {
+        match *cx.selection {
             Some((b, s)) if b == block => Some((b, s)),
             _ => {
-                let c = self.edit.cursor;
+                let c = *cx.cursor;
                 (c.block == block).then_some((
                     block,
                     Selection::Cells {
@@ -39,13 +41,13 @@ impl LadderApp {
     }
 
     /// Ctrl+C: the selection (or the cursor's cell) to the clipboard.
-    pub fn copy(&mut self) -> bool {
-        let Some((block, sel)) = self.effective_selection() else {
+    pub fn copy(&mut self, cx: &mut Context<'_>) -> bool {
+        let Some((block, sel)) = self.effective_selection(cx) else {
             return false;
         };
-        match self.ladder().and_then(|l| l.copy_region(block, sel)) {
+        match self.ladder(cx).and_then(|l| l.copy_region(block, sel)) {
             Some(clip) => {
-                self.edit.clipboard = Some(clip);
+                self.clipboard = Some(clip);
                 true
             }
             None => false,
@@ -56,44 +58,46 @@ impl LadderApp {
     /// text, and the window system then sends Ctrl+V back to the editor (it only does so
     /// when the system clipboard holds text).
     pub fn copy_to_system(&self, ctx: &egui::Context) {
-        if let Some(clip) = &self.edit.clipboard {
+        if let Some(clip) = &self.clipboard {
             ctx.copy_text(clip_text(clip));
         }
     }
 
     /// Ctrl+E: the cursor's row to the clipboard.
-    pub fn copy_row(&mut self) {
-        let c = self.edit.cursor;
+    pub fn copy_row(&mut self, cx: &mut Context<'_>) {
+        let c = *cx.cursor;
         let row = Selection::Rows {
             network: c.network,
             rows: (c.row, c.row),
         };
-        if let Some(clip) = self.ladder().and_then(|l| l.copy_region(c.block, row)) {
-            self.edit.clipboard = Some(clip);
+        if let Some(clip) = self.ladder(cx).and_then(|l| l.copy_region(c.block, row)) {
+            self.clipboard = Some(clip);
         }
     }
 
     /// Ctrl+X: copy, then delete the selection.
-    pub fn cut(&mut self) {
-        if self.copy() {
-            self.delete_selection();
+    pub fn cut(&mut self, cx: &mut Context<'_>) {
+        if self.copy(cx) {
+            self.delete_selection(cx);
         }
     }
 
     /// Delete with a selection: cells emptied, rows or networks removed, as one undo step. A
     /// network keeps at least one (empty) row, a block at least one network (manual §3.2.2).
-    pub fn delete_selection(&mut self) {
-        let Some((block, sel)) = self.effective_selection() else {
+    pub fn delete_selection(&mut self, cx: &mut Context<'_>) {
+        let Some((block, sel)) = self.effective_selection(cx) else {
             return;
         };
-        let Some(edit) = self.ladder().map(|l| l.plan_delete_region(block, sel)) else {
+        let Some(edit) = self.ladder(cx).map(|l| l.plan_delete_region(block, sel)) else {
             return;
         };
-        self.edit(edit);
-        self.edit.selection = None;
+        self.edit(cx, edit);
+        *cx.selection = None;
         // The cursor goes to where the deleted part began, so Ctrl+V puts it back.
-        let networks = self.ladder().map_or(0, |l| l.blocks[block].networks.len());
-        let c = &mut self.edit.cursor;
+        let networks = self
+            .ladder(cx)
+            .map_or(0, |l| l.blocks[block].networks.len());
+        let c = &mut *cx.cursor;
         match sel {
             Selection::Cells {
                 network,
@@ -118,25 +122,25 @@ impl LadderApp {
 
     /// Ctrl+V: cells over the cursor's rectangle, rows below the cursor's row, networks below
     /// the cursor's network.
-    pub fn paste(&mut self) {
-        let lang = self.settings.lang;
-        let Some(clip) = self.edit.clipboard.clone() else {
-            self.note(Msg::ClipboardEmpty.text(lang).into(), false);
+    pub fn paste(&mut self, cx: &mut Context<'_>) {
+        let lang = cx.settings.lang;
+        let Some(clip) = self.clipboard.clone() else {
+            self.note(cx, Msg::ClipboardEmpty.text(lang).into(), false);
             return;
         };
-        let Some(at) = self.ensure_row() else {
+        let Some(at) = self.ensure_row(cx) else {
             return;
         };
-        let ok = match self.ladder().map(|l| l.plan_paste(at, clip)) {
-            Some(Ok(edit)) => self.edit(edit),
+        let ok = match self.ladder(cx).map(|l| l.plan_paste(at, clip)) {
+            Some(Ok(edit)) => self.edit(cx, edit),
             Some(Err(e)) => {
-                self.report_edit_error(&e);
+                self.report_edit_error(cx, &e);
                 false
             }
             None => false,
         };
         if ok {
-            self.edit.selection = None;
+            *cx.selection = None;
         }
     }
 }

@@ -5,7 +5,7 @@
 use super::dialogs::{Action, FileDialogs, Question};
 use super::file_dialog::SystemDialogs;
 use super::ladder_view::{Geometry, Hit};
-use super::place::{BlockKey, Cursor, block_start};
+use super::place::{BlockKey, Cursor};
 use ladder_engine::model::CellRef;
 use ladder_engine::model::region::{Clip, Region as Selection};
 use std::collections::HashMap;
@@ -14,14 +14,10 @@ use std::time::Instant;
 
 /// The ladder editor's state: where the user is and what their gestures hold. UI state only,
 /// never saved in the project.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct EditState {
-    /// The cell cursor.
-    pub cursor: Cursor,
     /// Where the cursor was left in each block not shown now: the cursor goes with its block.
     pub block_cursors: HashMap<BlockKey, Cursor>,
-    /// The selection (block, what), if any.
-    pub selection: Option<(usize, Selection)>,
     /// What Ctrl+C, Ctrl+X or Ctrl+E put aside (kept across projects: copying between
     /// projects is how networks move from one machine's ladder to another's).
     pub clipboard: Option<Clip>,
@@ -42,28 +38,13 @@ pub struct EditState {
     /// The cursor and the document's change count the view last followed: when either
     /// differs, the view brings the cursor into sight.
     pub followed: Option<(Cursor, u64, u64)>,
+    /// The open operand prompt (F1, F2, F3, F6, Ctrl+G, titles).
+    pub prompt: Option<super::editing::Prompt>,
+    /// The open function-instruction dialog (F3, or a double-click on a box).
+    pub function_dialog: Option<super::function_dialog::FunctionDialog>,
     /// The (document, block) pairs shown since they were opened: the first showing scrolls
     /// to where the block was left in an earlier session.
     pub shown: std::collections::HashSet<(u64, usize)>,
-}
-
-impl Default for EditState {
-    fn default() -> EditState {
-        EditState {
-            cursor: block_start(0),
-            block_cursors: HashMap::new(),
-            selection: None,
-            clipboard: None,
-            pen: false,
-            drag_from: None,
-            jump_to: None,
-            geometry: Geometry::default(),
-            last_find: String::new(),
-            anchor: None,
-            followed: None,
-            shown: Default::default(),
-        }
-    }
 }
 
 impl EditState {
@@ -119,11 +100,15 @@ impl Default for FileState {
     }
 }
 
-impl EditState {
-    /// Extends the selection from the cursor to `to` (Shift+click, Shift+arrows): cells within
-    /// one network, whole networks across networks.
-    pub fn extend_selection(&mut self, to: CellRef) {
-        let from = match self.selection {
+/// Extends the selection from the cursor to `to` (Shift+click, Shift+arrows): cells within
+/// one network, whole networks across networks.
+pub fn extend_selection(
+    cursor: &mut CellRef,
+    selection: &mut Option<(usize, Selection)>,
+    to: CellRef,
+) {
+    {
+        let from = match *selection {
             Some((b, s)) if b == to.block => match s {
                 Selection::Cells {
                     network,
@@ -148,13 +133,13 @@ impl EditState {
                     col: 0,
                 },
             },
-            _ => self.cursor,
+            _ => *cursor,
         };
         let sel = if from.network != to.network {
             Selection::Networks {
                 networks: (from.network, to.network),
             }
-        } else if matches!(self.selection, Some((_, Selection::Rows { .. }))) {
+        } else if matches!(selection, Some((_, Selection::Rows { .. }))) {
             Selection::Rows {
                 network: to.network,
                 rows: (from.row, to.row),
@@ -166,7 +151,7 @@ impl EditState {
                 cols: (from.col, to.col),
             }
         };
-        self.selection = Some((to.block, sel));
-        self.cursor = to;
+        *selection = Some((to.block, sel));
+        *cursor = to;
     }
 }

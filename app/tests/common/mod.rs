@@ -91,7 +91,7 @@ pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usiz
         .cell_center(network, row, col)
         .expect("the cell is on screen");
     click_at(h, p);
-    let c = h.state().edit.cursor;
+    let c = h.state().cursor;
     assert_eq!(
         (c.network, c.row, c.col),
         (network, row, col),

@@ -1,21 +1,22 @@
 //! The dialog's entry points in the application: opening it for a new or an existing box,
 //! drawing it, and placing the box it describes through the document's door.
 
-use super::super::LadderApp;
 use super::super::i18n::{Lang, Msg};
 use super::{Action, FunctionDialog};
+use crate::gui::context::Context;
+use crate::gui::state::EditState;
 use egui::{Key, Modifiers};
 use ladder_engine::model::{Cell, CellRef, Edit, EditError};
 
-impl LadderApp {
+impl EditState {
     /// F3: opens the dialog for a new box in the output column of the cursor's row.
-    pub fn open_function_dialog(&mut self) {
+    pub fn open_function_dialog(&mut self, cx: &mut Context<'_>) {
         // No network is added yet: an empty block gets one only when OK places the box, in
         // the same undo step.
-        if let crate::gui::place::View::Block(block) = self.view {
+        if let crate::gui::place::View::Block(block) = *cx.view {
             let at = CellRef {
                 block,
-                ..self.edit.cursor
+                ..*cx.cursor
             };
             self.function_dialog = Some(FunctionDialog::new(at));
         }
@@ -23,10 +24,9 @@ impl LadderApp {
 
     /// Opens the dialog on the box at `at` to change its operands (or its instruction); any
     /// other cell opens it for a new box in that row.
-    pub fn edit_function_box(&mut self, at: CellRef) {
-        let cell = self
-            .doc
-            .as_ref()
+    pub fn edit_function_box(&mut self, cx: &Context<'_>, at: CellRef) {
+        let cell = cx
+            .doc()
             .and_then(|d| d.project().ladder.blocks.get(at.block))
             .and_then(|b| b.networks.get(at.network))
             .and_then(|n| n.cell(at.row, at.col))
@@ -39,17 +39,17 @@ impl LadderApp {
 
     /// Draws the dialog while it is open: Enter or OK places (or replaces) the box as one undo
     /// step, Escape or Cancel closes it without a change.
-    pub fn function_dialog_ui(&mut self, ctx: &egui::Context) {
+    pub fn function_dialog_ui(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
         let Some(mut dialog) = self.function_dialog.take() else {
             return;
         };
-        let Some(doc) = self.doc.as_ref() else {
+        let Some(doc) = cx.doc() else {
             return;
         };
         if ctx.input_mut(|i| i.consume_key(Modifiers::NONE, Key::Escape)) {
             return;
         }
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let project = doc.project();
         let action = egui::Modal::new(egui::Id::unique("function_dialog"))
             .show(ctx, |ui| dialog.ui(ui, project, lang))
@@ -58,7 +58,7 @@ impl LadderApp {
             Action::Cancel => {}
             Action::None => self.function_dialog = Some(dialog),
             Action::Ok => {
-                if let Err(e) = self.place_function_box(&dialog, lang) {
+                if let Err(e) = self.place_function_box(cx, &dialog, lang) {
                     dialog.error = Some(e);
                     self.function_dialog = Some(dialog);
                 }
@@ -68,24 +68,28 @@ impl LadderApp {
 
     /// Puts the dialog's box into the ladder as one undo step: over the box it was opened on,
     /// or in the output column of its row, wired to the last element left of it.
-    fn place_function_box(&mut self, dialog: &FunctionDialog, lang: Lang) -> Result<(), String> {
+    pub(crate) fn place_function_box(
+        &mut self,
+        cx: &mut Context<'_>,
+        dialog: &FunctionDialog,
+        lang: Lang,
+    ) -> Result<(), String> {
         let cell = dialog
             .cell()
             .ok_or_else(|| Msg::FnChoose.text(lang).to_string())?;
         let mut dialog = dialog.clone();
         if !dialog.editing {
             // The cursor's row; in an empty block, a new network (folded into this step).
-            self.edit.cursor = CellRef {
+            *cx.cursor = CellRef {
                 block: dialog.at.block,
-                ..self.edit.cursor
+                ..*cx.cursor
             };
             dialog.at = self
-                .ensure_row()
+                .ensure_row(cx)
                 .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
         }
-        let ladder = self
-            .doc
-            .as_ref()
+        let ladder = cx
+            .doc()
             .map(|d| &d.project().ladder)
             .ok_or_else(|| Msg::NoProject.text(lang).to_string())?;
         let row_exists = ladder
@@ -112,8 +116,8 @@ impl LadderApp {
                 .map_err(|e| crate::gui::errors::edit_error(&e, lang))?
         };
         // The refusal is shown in the dialog, once.
-        self.try_edit(edit)?;
-        self.edit.cursor = at;
+        cx.apply(edit)?;
+        *cx.cursor = at;
         Ok(())
     }
 }

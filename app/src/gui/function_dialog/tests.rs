@@ -83,11 +83,14 @@ fn f3_search_pick_fill_and_ok_places_the_tmrb_box() {
     h.get_by_label("TMRB T0000 DT0004 R0300.0");
     h.key_press(Key::Enter);
     h.run();
-    assert!(h.state().function_dialog.is_none(), "OK closes the dialog");
+    assert!(
+        h.state().edit.function_dialog.is_none(),
+        "OK closes the dialog"
+    );
     assert_eq!(il(&h), ["LD X0002.1", "TMRB T0000 DT0004 R0300.0"]);
     let width = ladder(&h).width;
     assert_eq!(
-        h.state().edit.cursor.col,
+        h.state().cursor.col,
         width,
         "the box is in the output column"
     );
@@ -108,7 +111,7 @@ fn an_operand_in_a_wrong_area_is_red_and_ok_does_nothing() {
         &h,
         "T: not allowed here: allowed areas: T; no constants"
     ));
-    let dialog = h.state().function_dialog.clone().unwrap();
+    let dialog = h.state().edit.function_dialog.clone().unwrap();
     let project = h.state().doc.as_ref().unwrap().project();
     assert!(matches!(dialog.checks(project, Lang::En)[0], Check::Bad(_)));
     let before = ladder(&h);
@@ -116,12 +119,15 @@ fn an_operand_in_a_wrong_area_is_red_and_ok_does_nothing() {
     h.run();
     h.key_press(Key::Enter);
     h.run();
-    assert!(h.state().function_dialog.is_some(), "the dialog stays open");
+    assert!(
+        h.state().edit.function_dialog.is_some(),
+        "the dialog stays open"
+    );
     assert_eq!(ladder(&h), before, "nothing was placed");
     fill(&mut h, "T", "T0");
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
-    assert!(h.state().function_dialog.is_none());
+    assert!(h.state().edit.function_dialog.is_none());
     assert_eq!(il(&h)[1], "TMRB T0000 DT0004 R0300.0");
 }
 
@@ -135,19 +141,19 @@ fn escape_cancels_without_a_change() {
         .type_text("SET R10.0");
     h.run();
     assert_eq!(
-        h.state().function_dialog.as_ref().unwrap().selected(),
+        h.state().edit.function_dialog.as_ref().unwrap().selected(),
         Some(Op::Set)
     );
     h.key_press(Key::Escape);
     h.run();
-    assert!(h.state().function_dialog.is_none());
+    assert!(h.state().edit.function_dialog.is_none());
     assert_eq!(ladder(&h), before);
     // Cancel does the same.
     h.key_press(Key::F3);
     h.run();
     h.get_by_role_and_label(Role::Button, "Cancel").click();
     h.run();
-    assert!(h.state().function_dialog.is_none());
+    assert!(h.state().edit.function_dialog.is_none());
     assert_eq!(ladder(&h), before);
 }
 
@@ -171,7 +177,8 @@ fn editing_a_box_changes_its_operand_and_one_undo_restores_it() {
         row: 0,
         col,
     };
-    h.state_mut().edit_function_box(at);
+    h.state_mut()
+        .with(|e: &mut crate::gui::state::EditState, cx| e.edit_function_box(cx, at));
     h.run();
     h.get_by_label("Change function instruction");
     let t = h.get_by_role_and_label(Role::TextInput, "T").value();
@@ -183,7 +190,7 @@ fn editing_a_box_changes_its_operand_and_one_undo_restores_it() {
     fill(&mut h, "T", "T0001");
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
-    assert!(h.state().function_dialog.is_none());
+    assert!(h.state().edit.function_dialog.is_none());
     assert_eq!(il(&h), ["LD X0002.1", "TMRB T0001 DT0004 R0300.0"]);
     h.state_mut().undo();
     h.run();
@@ -228,7 +235,7 @@ fn the_instruction_line_fills_the_choice_and_the_operands() {
     assert!(shown_containing(&h, "`FOO` is not a function instruction"));
     fill(&mut h, "Instruction line", "tmrb t0 dt4 r300.0");
     assert_eq!(
-        h.state().function_dialog.as_ref().unwrap().selected(),
+        h.state().edit.function_dialog.as_ref().unwrap().selected(),
         Some(Op::Tmrb)
     );
     let pt = h.get_by_role_and_label(Role::TextInput, "PT").value();

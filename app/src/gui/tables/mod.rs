@@ -28,6 +28,7 @@ use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::tree::View;
 use crate::gui::online::OnlineState;
+use crate::gui::state::EditState;
 use ladder_engine::model::sheets::{TableError, changed_row};
 use ladder_engine::model::{Project, TableEdit};
 use std::collections::HashMap;
@@ -368,7 +369,9 @@ impl LadderApp {
         let events = tables_ui(ui, doc, self.view, &mut self.tables, self.settings.lang);
         for event in events {
             match event {
-                TableEvent::Apply(edit) => self.edit_table(edit),
+                TableEvent::Apply(edit) => {
+                    self.with(|o: &mut EditState, cx| o.edit_table(cx, edit))
+                }
             }
         }
         if let Some(doc) = &self.doc {
