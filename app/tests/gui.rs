@@ -3,6 +3,7 @@
 mod common;
 
 use common::*;
+use ladder_studio::gui::state::FileState;
 
 #[test]
 fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
@@ -637,7 +638,7 @@ fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block()
     assert_eq!(h.state().doc.as_ref().unwrap().history().undo_len(), 1);
     // On a new project's empty level 2 the button deletes nothing and adds no network.
     h.state_mut()
-        .perform(ladder_studio::gui::files::Action::New);
+        .with(|o: &mut FileState, cx| o.perform(cx, ladder_studio::gui::files::Action::New));
     h.run();
     h.get_by_label("Delete").click();
     h.run();

@@ -4,6 +4,7 @@ mod common;
 
 use common::*;
 use ladder_studio::gui::state::EditState;
+use ladder_studio::gui::state::FileState;
 
 #[test]
 fn new_asks_about_unsaved_changes_and_cancel_keeps_them() {
@@ -125,8 +126,9 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     let mut h = harness(None, Lang::En);
     h.run();
     scripted(&mut h, vec![Some(path.clone()), Some(dir.join("copy.ldp"))]);
-    h.state_mut()
-        .request(ladder_studio::gui::files::Action::Open(path.clone()));
+    h.state_mut().with(|o: &mut FileState, cx| {
+        o.request(cx, ladder_studio::gui::files::Action::Open(path.clone()))
+    });
     h.run();
     h.get_by_label_contains("Open what can be read of it");
     h.get_by_label("Open read-only").click();
@@ -177,7 +179,8 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
-        h.state_mut().autosave_now();
+        h.state_mut()
+            .with(|o: &mut FileState, cx| o.autosave_now(cx));
         // The session ends here without closing: a crash.
     }
     let copies = ladder_studio::gui::files::recovery_copies(&rec);
@@ -185,7 +188,7 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     assert_eq!(copies[0].original.as_ref(), Some(&path));
     let mut h = harness(None, Lang::En);
     h.state_mut().files.recovery_dir = Some(rec.clone());
-    h.state_mut().offer_restore();
+    h.state_mut().with(|f: &mut FileState, _| f.offer_restore());
     h.run();
     h.get_by_label_contains("did not end normally");
     h.get_by_label("Restore").click();
@@ -246,11 +249,12 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
-        h.state_mut().autosave_now();
+        h.state_mut()
+            .with(|o: &mut FileState, cx| o.autosave_now(cx));
     }
     let mut h = harness(None, Lang::En);
     h.state_mut().files.recovery_dir = Some(rec.clone());
-    h.state_mut().offer_restore();
+    h.state_mut().with(|f: &mut FileState, _| f.offer_restore());
     h.run();
     h.key_press(Key::Escape);
     h.run();
@@ -263,7 +267,7 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     // Ctrl+O on an unchanged project, an edit while the dialog is open, then the answer.
     scripted(&mut h, vec![Some(path.clone())]);
     h.state_mut()
-        .request(ladder_studio::gui::files::Action::OpenDialog);
+        .with(|o: &mut FileState, cx| o.request(cx, ladder_studio::gui::files::Action::OpenDialog));
     h.state_mut()
         .with(|o: &mut EditState, cx| o.insert_network(cx, true));
     h.run();
@@ -372,7 +376,8 @@ fn each_project_starts_with_its_own_output() {
         h.state().output.iter().any(|l| l.error),
         "the errors are listed"
     );
-    h.state_mut().perform(Action::Open(good_path));
+    h.state_mut()
+        .with(|o: &mut FileState, cx| o.perform(cx, Action::Open(good_path)));
     h.run();
     assert!(
         h.state()

@@ -16,7 +16,7 @@ use ladder_engine::model::{CellRef, Change};
 /// The editor as a feature sees it.
 pub struct Context<'a> {
     /// The open project.
-    doc: Option<&'a mut Document>,
+    doc: &'a mut Option<Document>,
     /// The settings (a feature's own persisted choices live there).
     pub settings: &'a mut Settings,
     /// The output window.
@@ -31,20 +31,24 @@ pub struct Context<'a> {
     pub view: &'a mut View,
     /// The view tabs, in the order they were opened.
     pub tabs: &'a mut Vec<View>,
+    /// The window's egui context (file dialogs, the machine thread's wake-ups, closing).
+    pub egui: Option<&'a egui::Context>,
     /// A change was applied through [`Context::apply`].
     changed: bool,
+    /// Another document (or none) took the open one's place.
+    replaced: bool,
 }
 
 impl<'a> Context<'a> {
     /// The context over these parts of the editor.
     pub fn new(
-        doc: Option<&'a mut Document>,
+        doc: &'a mut Option<Document>,
         settings: &'a mut Settings,
         output: &'a mut Output,
         pending: &'a mut Vec<Command>,
-        cursor: &'a mut CellRef,
-        selection: &'a mut Option<(usize, Selection)>,
+        (cursor, selection): (&'a mut CellRef, &'a mut Option<(usize, Selection)>),
         (view, tabs): (&'a mut View, &'a mut Vec<View>),
+        egui: Option<&'a egui::Context>,
     ) -> Context<'a> {
         Context {
             doc,
@@ -55,25 +59,27 @@ impl<'a> Context<'a> {
             selection,
             view,
             tabs,
+            egui,
             changed: false,
+            replaced: false,
         }
     }
 
     /// The open project's document, to read.
     pub fn doc(&self) -> Option<&Document> {
-        self.doc.as_deref()
+        self.doc.as_ref()
     }
 
     /// The document to read beside the settings and the output to change, at once.
     pub fn parts(&mut self) -> (Option<&Document>, &mut Settings, &mut Output) {
-        (self.doc.as_deref(), self.settings, self.output)
+        (self.doc.as_ref(), self.settings, self.output)
     }
 
     /// Hands a change to the document's one apply (read-only check, undo record, change
     /// count); a refusal comes back in the UI's language.
     pub fn apply(&mut self, change: impl Into<Change>) -> Result<bool, String> {
         let lang = self.settings.lang;
-        let doc = self.doc.as_deref_mut().ok_or(Msg::NoProject.text(lang))?;
+        let doc = self.doc.as_mut().ok_or(Msg::NoProject.text(lang))?;
         let changed = doc
             .apply(change)
             .map_err(|e| super::errors::refused(&e, lang))?;
@@ -85,7 +91,7 @@ impl<'a> Context<'a> {
     /// the project's name as diagnostics cite it.
     pub fn compile(&mut self) -> Option<(&ladder_engine::compiler::Compiled, String)> {
         let lang = self.settings.lang;
-        let doc = self.doc.as_deref_mut()?;
+        let doc = self.doc.as_mut()?;
         let name = doc
             .name()
             .unwrap_or_else(|| Msg::Untitled.text(lang).to_string());
@@ -95,7 +101,7 @@ impl<'a> Context<'a> {
     /// Keeps the document read-only while a recorded tick is shown (the online feature's
     /// replay).
     pub fn set_replaying(&mut self, on: bool) {
-        if let Some(d) = self.doc.as_deref_mut() {
+        if let Some(d) = self.doc.as_mut() {
             d.set_replaying(on);
         }
     }
@@ -103,16 +109,35 @@ impl<'a> Context<'a> {
     /// Starts one undo step: the changes applied until [`Context::end_group`] are undone
     /// together.
     pub fn begin_group(&mut self) {
-        if let Some(d) = self.doc.as_deref_mut() {
+        if let Some(d) = self.doc.as_mut() {
             d.begin_group();
         }
     }
 
     /// Ends the undo step [`Context::begin_group`] started.
     pub fn end_group(&mut self) {
-        if let Some(d) = self.doc.as_deref_mut() {
+        if let Some(d) = self.doc.as_mut() {
             d.end_group();
         }
+    }
+
+    /// The open document, for what the document does besides changing the project (saving
+    /// it, under its name or another): its metadata changes only through its own methods,
+    /// the project only through [`Context::apply`].
+    pub fn doc_mut(&mut self) -> Option<&mut Document> {
+        self.doc.as_mut()
+    }
+
+    /// Puts another document (or none) in the open one's place; the editor starts over on it
+    /// after the feature returns (the view, the cursor, the features' state of the old one).
+    pub fn replace_document(&mut self, doc: Option<Document>) {
+        *self.doc = doc;
+        self.replaced = true;
+    }
+
+    /// Whether another document took the open one's place.
+    pub fn replaced(&self) -> bool {
+        self.replaced
     }
 
     /// Whether a change was applied.

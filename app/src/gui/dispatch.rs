@@ -14,6 +14,7 @@ use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
 use crate::gui::state::EditState;
+use crate::gui::state::FileState;
 
 impl LadderApp {
     /// Queues a command; it runs after the frame.
@@ -196,27 +197,37 @@ impl LadderApp {
             }
         };
         match c {
-            Command::New => self.request(Action::New),
-            Command::Open => self.request(Action::OpenDialog),
+            Command::New => self.with(|o: &mut FileState, cx| o.request(cx, Action::New)),
+            Command::Open => self.with(|o: &mut FileState, cx| o.request(cx, Action::OpenDialog)),
             Command::OpenRecent(i) => {
                 if let Some(p) = self.settings.recent.get(i).cloned() {
-                    self.request(Action::Open(p));
+                    self.with(|o: &mut FileState, cx| o.request(cx, Action::Open(p)));
                 }
             }
-            Command::Save => self.save(),
-            Command::SaveAs => self.start_dialog(DialogKind::SaveProjectAs),
-            Command::Close => self.request(Action::Close),
-            Command::ExportIl => self.start_dialog(DialogKind::ExportIl),
-            Command::ExportComments => self.start_dialog(DialogKind::ExportComments),
-            Command::ImportComments => self.start_dialog(DialogKind::ImportComments),
+            Command::Save => self.with(|o: &mut FileState, cx| o.save(cx)),
+            Command::SaveAs => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::SaveProjectAs))
+            }
+            Command::Close => self.with(|o: &mut FileState, cx| o.request(cx, Action::Close)),
+            Command::ExportIl => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportIl))
+            }
+            Command::ExportComments => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportComments))
+            }
+            Command::ImportComments => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ImportComments))
+            }
             Command::PageSetup => {
                 self.print.setup_open = true;
                 self.print.refresh_printers();
             }
             Command::PrintPreview => self.with(|p: &mut PrintState, cx| p.open_preview(cx)),
             Command::Print => self.with(|p: &mut PrintState, cx| p.print_now(cx)),
-            Command::ExportDocument => self.start_dialog(DialogKind::ExportDocument),
-            Command::Exit => self.request(Action::Exit),
+            Command::ExportDocument => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportDocument))
+            }
+            Command::Exit => self.with(|o: &mut FileState, cx| o.request(cx, Action::Exit)),
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
             Command::Find => self
@@ -383,6 +394,9 @@ impl LadderApp {
             | Command::Why
             | Command::LiveView
             | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
+            Command::ConfirmForces(yes) => {
+                self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, yes))
+            }
             Command::NewSub => self.edit.open_prompt(PlaceKind::NewSub, String::new()),
             Command::ViewCalls(n) => self.with(|o: &mut EditState, cx| o.view_calls(cx, n)),
             Command::RenameSub(n) => {
@@ -417,7 +431,9 @@ impl LadderApp {
             Command::Display(m) => self.settings.display = m,
             Command::ShowView(v) => self.show_view(v),
             Command::ShowCell(at) => self.jump(at),
-            Command::ExportTraceCsv => self.start_dialog(DialogKind::ExportTrace),
+            Command::ExportTraceCsv => {
+                self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportTrace))
+            }
             Command::Help(p) => self.help = Some(p),
             Command::Move(d) => {
                 let (dr, dc) = d.delta();

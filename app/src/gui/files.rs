@@ -3,15 +3,14 @@
 //! instruction list, export and import of comments; the read-only recovery open of a damaged
 //! file; and the autosaved recovery copy offered back after a crash.
 
-use super::LadderApp;
 pub use super::dialogs::{
     Action, DialogKind, FileDialogs, NativeDialogs, Question, RecoveryCopy, ScriptedDialogs,
 };
 use super::document::Document;
 use super::i18n::Msg;
-use super::place::View;
 pub use super::settings::canonical;
-use crate::gui::online::OnlineState;
+use crate::gui::context::Context;
+use crate::gui::state::FileState;
 use ladder_engine::file::{self, FileError};
 use ladder_engine::model::{Change, Project};
 use std::path::{Path, PathBuf};
@@ -74,69 +73,50 @@ fn remove_copy(copy: &Path) {
 
 /// Writes `text` to `path` through a temporary file in the same folder and a rename, so a
 /// crash leaves the old file or the new one.
-pub(super) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
+pub(crate) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
     crate::atomic::write_atomic(path, text.as_bytes())
 }
 
-impl LadderApp {
+impl FileState {
     /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
     /// question.
-    pub fn request(&mut self, action: Action) {
-        if self.doc.as_ref().is_some_and(|d| d.is_dirty()) {
-            self.files.question = Some(Question::Unsaved { then: action });
+    pub fn request(&mut self, cx: &mut Context<'_>, action: Action) {
+        if cx.doc().is_some_and(|d| d.is_dirty()) {
+            self.question = Some(Question::Unsaved { then: action });
         } else {
-            self.perform(action);
+            self.perform(cx, action);
         }
     }
 
     /// Does `action` now, whatever is unsaved.
-    pub fn perform(&mut self, action: Action) {
+    pub fn perform(&mut self, cx: &mut Context<'_>, action: Action) {
         match action {
             Action::OpenDialog => {
-                self.start_dialog(DialogKind::OpenProject);
+                self.start_dialog(cx, DialogKind::OpenProject);
                 return;
             }
             Action::Open(path) => {
-                self.open(&path);
+                self.open(cx, &path);
                 return;
             }
             Action::Exit => {
-                self.files.exit_confirmed = true;
-                self.drop_recovery_copy();
-                if let Some(ctx) = &self.ctx {
+                self.exit_confirmed = true;
+                self.drop_recovery_copy(cx);
+                if let Some(ctx) = &cx.egui {
                     ctx.send_viewport_cmd(egui::ViewportCommand::Close);
                 }
                 return;
             }
             Action::New | Action::Close => {}
         }
-        self.drop_recovery_copy();
-        self.doc = (action == Action::New).then(|| Document::new(Project::default(), None));
-        self.reset_view();
+        self.drop_recovery_copy(cx);
+        cx.replace_document(
+            (action == Action::New).then(|| Document::new(Project::default(), None)),
+        );
     }
 
-    /// Back to level 1 at its first cell (where the manual's editor opens), with nothing
-    /// pending from the old project.
-    pub fn reset_view(&mut self) {
-        // Another project (or none): the old one's machine stops with it.
-        self.with(|o: &mut OnlineState, cx| o.go_offline(cx));
-        self.view = View::Block(0);
-        self.replace.dialog = None;
-        self.tables = Default::default();
-        self.online.machine = Default::default();
-        // Nothing of the old project stays: cursor, selection, drag, tabs, and its output —
-        // each document starts with its own (what opening it says comes after). The clipboard
-        // stays: copying between projects is how networks move from one machine's ladder to
-        // another's.
-        self.edit.start_over();
-        self.cursor = super::place::block_start(0);
-        self.selection = None;
-        self.tabs.clear();
-        self.output.clear();
-    }
-
-    pub(super) fn start_dialog(&mut self, kind: DialogKind) {
-        let doc = self.doc.as_ref();
+    pub(super) fn start_dialog(&mut self, cx: &mut Context<'_>, kind: DialogKind) {
+        let doc = cx.doc();
         let stem = doc
             .and_then(|d| d.path().or(d.recovered_from()))
             .and_then(|p| p.file_stem())
@@ -153,55 +133,52 @@ impl LadderApp {
             let name = format!("{stem}.{e}");
             dir.map_or(PathBuf::from(&name), |d| d.join(&name))
         });
-        if self.files.dialogs.busy() {
+        if self.dialogs.busy() {
             // One dialog at a time; what was waiting for this one is dropped with it.
-            self.files.after_save = None;
+            self.after_save = None;
             return;
         }
-        if let Some(ctx) = self.ctx.clone() {
-            self.files.dialogs.start(&ctx, kind, suggested);
+        if let Some(ctx) = cx.egui.cloned() {
+            self.dialogs.start(&ctx, kind, suggested);
         }
     }
 
     /// Handles a dialog's answer.
-    pub fn poll_dialogs(&mut self) {
-        let Some((kind, answer)) = self.files.dialogs.poll() else {
-            return;
-        };
+    /// What another feature writes (the trace's CSV, the printed document) comes back with
+    /// its file name for that feature.
+    pub fn poll_dialogs(&mut self, cx: &mut Context<'_>) -> Option<(DialogKind, PathBuf)> {
+        let (kind, answer) = self.dialogs.poll()?;
         let Some(path) = answer else {
             // Cancelled: a Save As asked for by the unsaved-changes question cancels its action.
-            self.files.after_save = None;
-            return;
+            self.after_save = None;
+            return None;
         };
         match kind {
             // The editor kept working while the dialog was open: ask again about what
             // changed meanwhile.
-            DialogKind::OpenProject => self.request(Action::Open(path)),
-            DialogKind::SaveProjectAs => self.save_as(&path),
-            DialogKind::ExportIl => self.export_il(&path),
-            DialogKind::ExportComments => self.export_comments(&path),
-            DialogKind::ImportComments => self.import_comments(&path),
-            DialogKind::ExportTrace => self.export_trace(&path),
-            DialogKind::ExportDocument => {
-                self.with_context(|cx| super::printing::PrintState::export(cx, &path))
-            }
+            DialogKind::OpenProject => self.request(cx, Action::Open(path)),
+            DialogKind::SaveProjectAs => self.save_as(cx, &path),
+            DialogKind::ExportIl => self.export_il(cx, &path),
+            DialogKind::ExportComments => self.export_comments(cx, &path),
+            DialogKind::ImportComments => self.import_comments(cx, &path),
+            DialogKind::ExportTrace | DialogKind::ExportDocument => return Some((kind, path)),
         }
+        None
     }
 
     /// Opens a project file. A damaged one (bad checksum, header or body) is offered read-only.
-    pub fn open(&mut self, path: &Path) -> bool {
+    pub fn open(&mut self, cx: &mut Context<'_>, path: &Path) -> bool {
         let path = &canonical(path);
         match Document::open(path) {
             Ok(doc) => {
-                self.drop_recovery_copy();
-                self.doc = Some(doc);
-                self.settings.remember(path.to_path_buf());
-                self.reset_view();
+                self.drop_recovery_copy(cx);
+                cx.replace_document(Some(doc));
+                cx.settings.remember(path.to_path_buf());
                 true
             }
             Err(e) => {
-                let lang = self.settings.lang;
-                self.output.say(
+                let lang = cx.settings.lang;
+                cx.output.say(
                     format!(
                         "{} {}: {}",
                         Msg::OpenFailed.text(lang),
@@ -211,7 +188,7 @@ impl LadderApp {
                     true,
                 );
                 if !matches!(e, FileError::Io { .. }) {
-                    self.files.question = Some(Question::Damaged {
+                    self.question = Some(Question::Damaged {
                         path: path.to_path_buf(),
                         error: super::errors::file_error(&e, lang),
                     });
@@ -223,26 +200,25 @@ impl LadderApp {
 
     /// Opens what can be read of a damaged file, read-only: it can be looked at, compiled and
     /// saved under another name, never over the original.
-    pub fn open_recovered(&mut self, path: &Path) -> bool {
+    pub fn open_recovered(&mut self, cx: &mut Context<'_>, path: &Path) -> bool {
         let path = &canonical(path);
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let result = std::fs::read(path)
             .map_err(|e| e.to_string())
             .and_then(|b| file::recover(&b).map_err(|e| super::errors::file_error(&e, lang)));
         match result {
             Ok(project) => {
                 let doc = Document::recovered(project, path.to_path_buf());
-                self.drop_recovery_copy();
-                self.doc = Some(doc);
-                self.reset_view();
-                self.output.say(
+                self.drop_recovery_copy(cx);
+                cx.replace_document(Some(doc));
+                cx.output.say(
                     format!("{}: {}", Msg::OpenedReadOnly.text(lang), path.display()),
                     false,
                 );
                 true
             }
             Err(e) => {
-                self.output.say(
+                cx.output.say(
                     format!("{} {}: {e}", Msg::CannotRecover.text(lang), path.display()),
                     true,
                 );
@@ -252,43 +228,41 @@ impl LadderApp {
     }
 
     /// Ctrl+S: saves to the project's file; an untitled project asks where (Save As).
-    pub fn save(&mut self) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_mut() else { return };
+    pub fn save(&mut self, cx: &mut Context<'_>) {
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc_mut() else { return };
         if doc.is_read_only() || doc.path().is_none() {
             if doc.is_read_only() {
-                self.output
-                    .say(Msg::ReadOnlySaveAs.text(lang).into(), false);
+                cx.output.say(Msg::ReadOnlySaveAs.text(lang).into(), false);
             }
-            self.start_dialog(DialogKind::SaveProjectAs);
+            self.start_dialog(cx, DialogKind::SaveProjectAs);
             return;
         }
         match doc.save() {
             Ok(()) => {
-                self.drop_recovery_copy();
-                if let Some(then) = self.files.after_save.take() {
-                    self.perform(then);
+                self.drop_recovery_copy(cx);
+                if let Some(then) = self.after_save.take() {
+                    self.perform(cx, then);
                 }
             }
             Err(e) => {
-                self.files.after_save = None;
-                self.output.say(super::errors::file_error(&e, lang), true);
+                self.after_save = None;
+                cx.output.say(super::errors::file_error(&e, lang), true);
             }
         }
     }
 
     /// Saves under a new name; the project then lives there.
-    pub fn save_as(&mut self, path: &Path) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_mut() else { return };
+    pub fn save_as(&mut self, cx: &mut Context<'_>, path: &Path) {
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc_mut() else { return };
         let path = &canonical(path);
         if doc.recovered_from() == Some(path.as_path()) {
-            self.files.after_save = None;
-            self.output.say(Msg::NotOverDamaged.text(lang).into(), true);
+            self.after_save = None;
+            cx.output.say(Msg::NotOverDamaged.text(lang).into(), true);
             return;
         }
         let old_copy = self
-            .files
             .recovery_dir
             .as_ref()
             .map(|d| recovery_path(d, doc.path()));
@@ -297,101 +271,88 @@ impl LadderApp {
                 if let Some(c) = old_copy {
                     remove_copy(&c);
                 }
-                self.settings.remember(path.to_path_buf());
-                if let Some(then) = self.files.after_save.take() {
-                    self.perform(then);
+                cx.settings.remember(path.to_path_buf());
+                if let Some(then) = self.after_save.take() {
+                    self.perform(cx, then);
                 }
             }
             Err(e) => {
-                self.files.after_save = None;
-                self.output.say(super::errors::file_error(&e, lang), true);
+                self.after_save = None;
+                cx.output.say(super::errors::file_error(&e, lang), true);
             }
-        }
-    }
-
-    /// Writes the signal trace taken when Export CSV was pressed.
-    pub fn export_trace(&mut self, path: &Path) {
-        let lang = self.settings.lang;
-        let Some(text) = self.online.trace.csv.take() else {
-            return;
-        };
-        match write_atomic(path, &text) {
-            Ok(()) => self.output.say(
-                format!("{} {}", Msg::Written.text(lang), path.display()),
-                false,
-            ),
-            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
     /// Writes the compiled instruction list (as `export-il` does: refused while a network has
     /// no valid list, other errors are reported and the list written).
-    pub fn export_il(&mut self, path: &Path) {
-        self.compile();
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_ref() else { return };
+    pub fn export_il(&mut self, cx: &mut Context<'_>, path: &Path) {
+        crate::gui::diagnostics::compile(cx);
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc() else { return };
         let Some(compiled) = doc.compiled() else {
             return;
         };
         if compiled.diagnostics.iter().any(|d| d.code.is_structural()) {
-            self.output.say(Msg::IlNotWritten.text(lang).into(), true);
+            cx.output.say(Msg::IlNotWritten.text(lang).into(), true);
             return;
         }
         let text = ladder_engine::il::print(&compiled.program);
         match write_atomic(path, &text) {
-            Ok(()) => self.output.say(
+            Ok(()) => cx.output.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
                 false,
             ),
-            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
+            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
     /// Writes every comment, all languages, as CSV.
-    pub fn export_comments(&mut self, path: &Path) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_ref() else { return };
+    pub fn export_comments(&mut self, cx: &mut Context<'_>, path: &Path) {
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc() else { return };
         let text = ladder_engine::comments::export(doc.project(), None);
         match write_atomic(path, &text) {
-            Ok(()) => self.output.say(
+            Ok(()) => cx.output.say(
                 format!("{} {}", Msg::Written.text(lang), path.display()),
                 false,
             ),
-            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
+            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
     /// Applies a comments CSV: all rows or none, one undo step.
-    pub fn import_comments(&mut self, path: &Path) {
-        let lang = self.settings.lang;
-        let Some(doc) = self.doc.as_mut() else { return };
+    pub fn import_comments(&mut self, cx: &mut Context<'_>, path: &Path) {
+        let lang = cx.settings.lang;
+        let Some(doc) = cx.doc() else { return };
         if doc.is_read_only() {
-            self.output.say(Msg::ReadOnly.text(lang).into(), true);
+            cx.output.say(Msg::ReadOnly.text(lang).into(), true);
             return;
         }
         let text = match std::fs::read_to_string(path) {
             Ok(t) => t,
             Err(e) => {
-                self.output.say(format!("{}: {e}", path.display()), true);
+                cx.output.say(format!("{}: {e}", path.display()), true);
                 return;
             }
         };
-        let mut project = doc.project().clone();
+        let Some(mut project) = cx.doc().map(|d| d.project().clone()) else {
+            return;
+        };
         match ladder_engine::comments::import(&mut project, &text, None) {
-            Ok(n) => match doc.apply(Change::Whole(Box::new(project))) {
-                Ok(_) => self
+            Ok(n) => match cx.apply(Change::Whole(Box::new(project))) {
+                Ok(_) => cx
                     .output
                     .say(format!("{n} {}", Msg::RowsApplied.text(lang)), false),
-                Err(e) => self.output.say(super::errors::refused(&e, lang), true),
+                Err(e) => cx.output.say(e, true),
             },
-            Err(e) => self.output.say(format!("{}: {e}", path.display()), true),
+            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
         }
     }
 
     /// Writes the recovery copy of an unsaved project now.
-    pub fn autosave_now(&mut self) {
-        self.files.last_autosave = Some(Instant::now());
-        let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) else {
+    pub fn autosave_now(&mut self, cx: &mut Context<'_>) {
+        self.last_autosave = Some(Instant::now());
+        let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), cx.doc()) else {
             return;
         };
         if !doc.is_dirty() || doc.is_read_only() {
@@ -402,7 +363,7 @@ impl LadderApp {
             .map_err(|e| e.to_string())
             .and_then(|()| {
                 file::save(doc.project(), &copy)
-                    .map_err(|e| super::errors::file_error(&e, self.settings.lang))
+                    .map_err(|e| super::errors::file_error(&e, cx.settings.lang))
             })
             .and_then(|()| {
                 let origin = doc
@@ -412,76 +373,73 @@ impl LadderApp {
                 write_atomic(&copy.with_extension("origin"), &origin).map_err(|e| e.to_string())
             });
         if let Err(e) = written {
-            let lang = self.settings.lang;
-            self.output
+            let lang = cx.settings.lang;
+            cx.output
                 .say(format!("{}: {e}", Msg::AutosaveFailed.text(lang)), true);
         }
     }
 
     /// Autosaves when the interval has passed.
-    pub fn autosave_tick(&mut self) {
+    pub fn autosave_tick(&mut self, cx: &mut Context<'_>) {
         let due = self
-            .files
             .last_autosave
             .is_none_or(|t| t.elapsed() >= Duration::from_secs(AUTOSAVE_MINUTES * 60));
-        if self.files.last_autosave.is_none() {
+        if self.last_autosave.is_none() {
             // The clock starts with the session: the first copy a full interval later.
-            self.files.last_autosave = Some(Instant::now());
+            self.last_autosave = Some(Instant::now());
         } else if due {
-            self.autosave_now();
+            self.autosave_now(cx);
         }
     }
 
     /// The current project's recovery copy is no longer needed (saved, closed, replaced).
-    pub fn drop_recovery_copy(&mut self) {
-        if let (Some(dir), Some(doc)) = (self.files.recovery_dir.as_ref(), self.doc.as_ref()) {
+    pub fn drop_recovery_copy(&mut self, cx: &mut Context<'_>) {
+        if let (Some(dir), Some(doc)) = (self.recovery_dir.as_ref(), cx.doc()) {
             remove_copy(&recovery_path(dir, doc.path()));
         }
     }
 
     /// At start: a recovery copy left by a session that did not end is offered back.
     pub fn offer_restore(&mut self) {
-        let Some(dir) = self.files.recovery_dir.as_ref() else {
+        let Some(dir) = self.recovery_dir.as_ref() else {
             return;
         };
         if let Some(copy) = recovery_copies(dir).into_iter().next()
-            && self.files.question.is_none()
+            && self.question.is_none()
         {
-            self.files.question = Some(Question::Restore(copy));
+            self.question = Some(Question::Restore(copy));
         }
     }
 
     /// Restores a recovery copy: the project as it was, unsaved, under its own file name.
-    pub fn restore(&mut self, copy: &RecoveryCopy) {
-        let lang = self.settings.lang;
+    pub fn restore(&mut self, cx: &mut Context<'_>, copy: &RecoveryCopy) {
+        let lang = cx.settings.lang;
         match file::load(&copy.copy) {
             Ok(project) => {
-                self.doc = Some(Document::restored(project, copy.original.clone()));
-                self.reset_view();
-                self.output.say(Msg::Restored.text(lang).into(), false);
+                cx.replace_document(Some(Document::restored(project, copy.original.clone())));
+                cx.output.say(Msg::Restored.text(lang).into(), false);
             }
             Err(e) => {
                 remove_copy(&copy.copy);
                 let e = super::errors::file_error(&e, lang);
-                self.output
+                cx.output
                     .say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
             }
         }
     }
 
     /// The open question, as a modal window.
-    pub fn question_ui(&mut self, ctx: &egui::Context) {
-        let Some(q) = self.files.question.clone() else {
+    pub fn question_ui(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
+        let Some(q) = self.question.clone() else {
             return;
         };
-        let lang = self.settings.lang;
+        let lang = cx.settings.lang;
         let t = |m: Msg| m.text(lang);
         let mut answer: Option<usize> = None;
         let (title, text, buttons): (&str, String, Vec<Msg>) = match &q {
             Question::Unsaved { .. } => {
-                let name = self
-                    .doc
-                    .as_ref()
+                let name = cx
+                    .doc()
                     .and_then(Document::name)
                     .unwrap_or_else(|| t(Msg::Untitled).into());
                 (
@@ -539,30 +497,30 @@ impl LadderApp {
             }
         });
         let Some(answer) = answer else { return };
-        self.files.question = None;
+        self.question = None;
         match (q, answer) {
             (Question::Unsaved { then }, 0) => {
-                self.files.after_save = Some(then);
-                self.save();
+                self.after_save = Some(then);
+                self.save(cx);
             }
-            (Question::Unsaved { then }, 1) => self.perform(then),
+            (Question::Unsaved { then }, 1) => self.perform(cx, then),
             (Question::Damaged { path, .. }, 0) => {
-                self.open_recovered(&path);
+                self.open_recovered(cx, &path);
             }
-            (Question::Restore(copy), 0) => self.restore(&copy),
+            (Question::Restore(copy), 0) => self.restore(cx, &copy),
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
-            (Question::FirstForce, 0) => {
-                self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, true))
-            }
-            (Question::FirstForce, _) => {
-                self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, false))
-            }
+            (Question::FirstForce, 0) => cx
+                .pending
+                .push(super::command::Command::ConfirmForces(true)),
+            (Question::FirstForce, _) => cx
+                .pending
+                .push(super::command::Command::ConfirmForces(false)),
             _ => {}
         }
     }
 
     /// Files dropped on the window are opened (the first project among them).
-    pub fn dropped_files(&mut self, ctx: &egui::Context) {
+    pub fn dropped_files(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
         let dropped: Vec<PathBuf> = ctx.input(|i| {
             i.raw
                 .dropped_files
@@ -572,18 +530,18 @@ impl LadderApp {
                 .collect()
         });
         if let Some(p) = dropped.into_iter().next() {
-            self.request(Action::Open(p));
+            self.request(cx, Action::Open(p));
         }
     }
 
     /// The window's close button: asks about unsaved changes first.
-    pub fn close_requested(&mut self, ctx: &egui::Context) {
-        if !self.files.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
-            if self.doc.as_ref().is_some_and(|d| d.is_dirty()) {
+    pub fn close_requested(&mut self, cx: &mut Context<'_>, ctx: &egui::Context) {
+        if !self.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
+            if cx.doc().is_some_and(|d| d.is_dirty()) {
                 ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
-                self.files.question = Some(Question::Unsaved { then: Action::Exit });
+                self.question = Some(Question::Unsaved { then: Action::Exit });
             } else {
-                self.drop_recovery_copy();
+                self.drop_recovery_copy(cx);
             }
         }
     }

@@ -5,6 +5,7 @@ use super::LadderApp;
 use super::command::Command;
 use super::editing::Cursor;
 use super::ladder_view::{Hit, ViewEvents};
+use super::place::View;
 use super::selection::Selection;
 use crate::gui::online::OnlineState;
 use crate::gui::properties::ElementProperties;
@@ -122,5 +123,37 @@ impl LadderApp {
         if let Some(response) = ev.response {
             response.context_menu(|ui| self.commands_ui(ui));
         }
+    }
+
+    /// After a feature ran: a change it applied marks the tables' draft clock (undo takes
+    /// back the later of a change and a draft); another document in place starts the editor
+    /// over on it.
+    pub(crate) fn after_feature(&mut self, changed: bool, replaced: bool) {
+        if changed {
+            self.last_change = self.tables.mark();
+        }
+        if replaced {
+            self.reset_view();
+        }
+    }
+
+    /// Back to level 1 at its first cell (where the manual's editor opens), with nothing
+    /// pending from the old project.
+    pub fn reset_view(&mut self) {
+        // Another project (or none): the old one's machine stops with it.
+        self.with(|o: &mut OnlineState, cx| o.go_offline(cx));
+        self.view = View::Block(0);
+        self.replace.dialog = None;
+        self.tables = Default::default();
+        self.online.machine = Default::default();
+        // Nothing of the old project stays: cursor, selection, drag, tabs, and its output —
+        // each document starts with its own (what opening it says comes after). The clipboard
+        // stays: copying between projects is how networks move from one machine's ladder to
+        // another's.
+        self.edit.start_over();
+        self.cursor = super::place::block_start(0);
+        self.selection = None;
+        self.tabs.clear();
+        self.output.clear();
     }
 }

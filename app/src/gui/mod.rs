@@ -42,6 +42,7 @@ use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
 use crate::gui::replace::Replace;
 use crate::gui::state::EditState;
+use crate::gui::state::FileState;
 pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
@@ -116,13 +117,13 @@ pub trait Feature {
 macro_rules! context_of {
     ($a:expr) => {
         context::Context::new(
-            $a.doc.as_mut(),
+            &mut $a.doc,
             &mut $a.settings,
             &mut $a.output,
             &mut $a.pending,
-            &mut $a.cursor,
-            &mut $a.selection,
+            (&mut $a.cursor, &mut $a.selection),
             (&mut $a.view, &mut $a.tabs),
+            $a.ctx.as_ref(),
         )
     };
 }
@@ -146,6 +147,7 @@ features! {
     properties::ElementProperties => properties,
     online::OnlineState => online,
     state::EditState => edit,
+    state::FileState => files,
 }
 
 /// Most view tabs kept open; the oldest closes first.
@@ -158,10 +160,8 @@ impl LadderApp {
     pub fn with<F: Feature, R>(&mut self, f: impl FnOnce(&mut F, &mut context::Context) -> R) -> R {
         let (feature, mut cx) = F::split(self);
         let r = f(feature, &mut cx);
-        let changed = cx.changed();
-        if changed {
-            self.last_change = self.tables.mark();
-        }
+        let (changed, replaced) = (cx.changed(), cx.replaced());
+        self.after_feature(changed, replaced);
         r
     }
 
@@ -198,7 +198,7 @@ impl LadderApp {
             .map(Path::to_path_buf)
             .or_else(|| app.settings.recent.first().cloned());
         match start {
-            Some(p) if app.open(&p) => {}
+            Some(p) if app.with(|o: &mut FileState, cx| o.open(cx, &p)) => {}
             _ => app.doc = Some(Document::sample()),
         }
         app
@@ -215,11 +215,11 @@ impl LadderApp {
             .unwrap_or_default();
         let mut app = LadderApp::new(settings, path.as_deref());
         app.ctx = Some(cc.egui_ctx.clone());
-        app.online.egui = Some(cc.egui_ctx.clone());
+
         // Only a real run (with eframe's storage) autosaves into the user's data folder.
         if cc.storage.is_some() {
             app.files.recovery_dir = eframe::storage_dir(APP_ID).map(|d| d.join("recovery"));
-            app.offer_restore();
+            app.files.offer_restore();
         }
         app
     }
@@ -252,10 +252,8 @@ impl LadderApp {
     pub fn with_context<R>(&mut self, f: impl FnOnce(&mut context::Context) -> R) -> R {
         let mut cx = context_of!(self);
         let r = f(&mut cx);
-        let changed = cx.changed();
-        if changed {
-            self.last_change = self.tables.mark();
-        }
+        let (changed, replaced) = (cx.changed(), cx.replaced());
+        self.after_feature(changed, replaced);
         r
     }
 
@@ -591,16 +589,21 @@ impl eframe::App for LadderApp {
     fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
         let ctx = ui.ctx().clone();
         self.ctx = Some(ctx.clone());
-        self.online.egui = Some(ctx.clone());
         self.clamp_ui_state();
         if let Some(doc) = self.doc.as_mut() {
             doc.recheck();
         }
         self.files.dialogs.show(&ctx, self.settings.lang);
-        self.poll_dialogs();
-        self.dropped_files(&ctx);
-        self.close_requested(&ctx);
-        self.autosave_tick();
+        match self.with(|f: &mut FileState, cx| f.poll_dialogs(cx)) {
+            Some((files::DialogKind::ExportTrace, path)) => {
+                self.with(|o: &mut OnlineState, cx| o.export_trace(cx, &path))
+            }
+            Some((_, path)) => self.with_context(|cx| PrintState::export(cx, &path)),
+            None => {}
+        }
+        self.with(|o: &mut FileState, cx| o.dropped_files(cx, &ctx));
+        self.with(|o: &mut FileState, cx| o.close_requested(cx, &ctx));
+        self.with(|o: &mut FileState, cx| o.autosave_tick(cx));
         self.with(|o: &mut OnlineState, cx| o.online_frame(cx));
         let title = self.window_title();
         if title != self.title {
@@ -608,7 +611,7 @@ impl eframe::App for LadderApp {
             self.title = title;
         }
         if self.files.question.is_some() {
-            self.question_ui(&ctx);
+            self.with(|o: &mut FileState, cx| o.question_ui(cx, &ctx));
         }
         egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
         // Below the menu bar: the replace window never covers it. It reads its keys

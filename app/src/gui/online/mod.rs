@@ -126,8 +126,6 @@ pub struct OnlineState {
     pub ladder_shown: Vec<Address>,
     /// The first force waits for the user's answer: the editor asks its question.
     pub ask_first_force: bool,
-    /// The window's egui context, which the machine thread wakes when the screen changes.
-    pub egui: Option<egui::Context>,
 }
 
 /// The signal trace page's state.
@@ -169,7 +167,7 @@ impl OnlineState {
         let Some(doc) = cx.doc() else {
             return false;
         };
-        let ctx = self.egui.clone();
+        let ctx = cx.egui.cloned();
         let gate = std::sync::Arc::clone(&self.gate);
         // A frame within 33 ms for a change on screen, within 500 ms for anything else.
         let wake = Box::new(move |snapshot: &ladder_engine::machine::Snapshot| {

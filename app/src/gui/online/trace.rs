@@ -87,6 +87,21 @@ fn signal_points(
 }
 
 impl OnlineState {
+    /// Writes the signal trace taken when Export CSV was pressed.
+    pub fn export_trace(&mut self, cx: &mut Context<'_>, path: &std::path::Path) {
+        let lang = cx.settings.lang;
+        let Some(text) = self.trace.csv.take() else {
+            return;
+        };
+        match crate::gui::files::write_atomic(path, &text) {
+            Ok(()) => cx.output.say(
+                format!("{} {}", Msg::Written.text(lang), path.display()),
+                false,
+            ),
+            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
+        }
+    }
+
     /// The traced watch rows, resolved (rows that no longer resolve are left out).
     fn traced(&self, cx: &Context<'_>) -> Vec<(String, Target)> {
         let Some(doc) = cx.doc() else {
