@@ -72,6 +72,8 @@ macro_rules! commands {
             ShowView(View),
             /// The answer to the first force's question: force (true) or not.
             ConfirmForces(bool),
+            /// Zoom to `0` percent.
+            ZoomTo(u16),
             /// Go to row `0` (0-based) of the table shown (Ctrl+G in a table view).
             GoToRow(usize),
             /// Ask where to write the trace page's CSV (its data waits in the online state).
@@ -433,6 +435,7 @@ impl Command {
             Command::ShowCell(_) => Msg::GoTo,
             Command::ExportTraceCsv => Msg::TraceExport,
             Command::GoToRow(_) => Msg::GoTo,
+            Command::ZoomTo(_) => Msg::ZoomLabel,
             Command::ConfirmForces(_) => Msg::ForceValue,
             Command::Help(HelpPage::Shortcuts) => Msg::Shortcuts,
             Command::Help(HelpPage::Instructions) => Msg::InstructionHelp,

@@ -52,13 +52,10 @@ impl LadderApp {
         }
     }
 
-    fn in_ladder(&self) -> bool {
-        matches!(self.view, View::Block(_)) && self.doc.is_some()
-    }
-
     /// Whether a command can run now (menus grey out the others, keys pass them by).
     pub fn enabled(&self, c: Command) -> bool {
         let doc = self.doc.as_ref();
+        let in_ladder = matches!(self.view, View::Block(_)) && doc.is_some();
         match c {
             // A replayed past is read-only: one rule for the project and the machine.
             Command::Undo => {
@@ -67,7 +64,7 @@ impl LadderApp {
             Command::Redo => {
                 doc.is_some_and(|d| d.history().redo_len() > 0) && !self.online.scrubbing()
             }
-            Command::Paste => self.in_ladder() && self.edit.clipboard.is_some(),
+            Command::Paste => in_ladder && self.edit.clipboard.is_some(),
             Command::New | Command::Open | Command::Exit | Command::OpenRecent(_) => true,
             Command::Language(_) | Command::Display(_) | Command::Help(_) => true,
             Command::ZoomIn
@@ -93,15 +90,15 @@ impl LadderApp {
                 self.online.is_online()
             }
             Command::ToggleBit | Command::ForceBit | Command::Unforce => {
-                self.online.is_online() && self.in_ladder() && !self.online.scrubbing()
+                self.online.is_online() && in_ladder && !self.online.scrubbing()
             }
-            Command::Why => self.online.is_online() && self.in_ladder(),
+            Command::Why => self.online.is_online() && in_ladder,
             Command::LiveView => self.online.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline | Command::DetachOnline => true,
             Command::MachineModel => doc.is_some(),
-            c if c.navigates() => self.in_ladder(),
+            c if c.navigates() => in_ladder,
             // A recorded past is read-only: no edits while the view shows one.
-            c if c.edits_ladder() => self.in_ladder() && !self.online.scrubbing(),
+            c if c.edits_ladder() => in_ladder && !self.online.scrubbing(),
             _ => doc.is_some(),
         }
     }
@@ -368,7 +365,7 @@ impl LadderApp {
             Command::ZoomIn => self.with(|o: &mut EditState, cx| o.zoom_step(cx, true, None)),
             Command::ZoomOut => self.with(|o: &mut EditState, cx| o.zoom_step(cx, false, None)),
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
-            Command::Compile => self.compile(),
+            Command::Compile => self.with_context(diagnostics::compile),
             Command::NextError => self.with_context(|cx| diagnostics::step_error(cx, true)),
             Command::Properties => self.with(|p: &mut ElementProperties, cx| p.open(cx, None)),
             Command::PreviousError => self.with_context(|cx| diagnostics::step_error(cx, false)),
@@ -394,6 +391,7 @@ impl LadderApp {
             | Command::Why
             | Command::LiveView
             | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
+            Command::ZoomTo(z) => self.with(|e: &mut EditState, cx| e.zoom_to(cx, z, None)),
             Command::ConfirmForces(yes) => {
                 self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, yes))
             }

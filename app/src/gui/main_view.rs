@@ -121,7 +121,13 @@ impl LadderApp {
             }
         }
         if let Some(response) = ev.response {
-            response.context_menu(|ui| self.commands_ui(ui));
+            let mut asked = Vec::new();
+            response.context_menu(|ui| {
+                let mut menus = super::menus::Menus::new(self);
+                menus.commands_ui(ui);
+                asked = menus.asked;
+            });
+            self.pending.append(&mut asked);
         }
     }
 

@@ -5,21 +5,49 @@
 use super::LadderApp;
 use super::command::{
     BASIC_TOOLBAR, Command, DISPLAY_MODES, EDIT_GROUPS, FILE_MENU, HELP_PAGES, LADDER_TOOLBAR,
-    REFERENCE_VIEWS, VIEW_TOGGLES,
+    ONLINE_TOOLBAR, REFERENCE_VIEWS, VIEW_TOGGLES,
 };
 use super::i18n::{Lang, Msg};
 use super::place::View;
 use crate::gui::online::OnlineState;
-use crate::gui::state::EditState;
 
 /// The narrowest window whose toolbars show every tool in full rows; narrower, the toolbar
 /// is one row with an overflow menu.
 const WIDE_TOOLBAR: f32 = 1250.0;
 
-impl LadderApp {
+/// The menus and tools as drawn this frame: they read the editor (what is enabled, checked,
+/// which view is shown) and only collect the commands clicked, which the editor queues.
+pub struct Menus<'a> {
+    /// The editor, to read.
+    app: &'a LadderApp,
+    /// The commands clicked, in order.
+    pub asked: Vec<Command>,
+}
+
+impl<'a> Menus<'a> {
+    /// The menus over the editor as it is now.
+    pub fn new(app: &'a LadderApp) -> Menus<'a> {
+        Menus {
+            app,
+            asked: Vec::new(),
+        }
+    }
+
+    fn ask(&mut self, c: Command) {
+        self.asked.push(c);
+    }
+
+    fn enabled(&self, c: Command) -> bool {
+        self.app.enabled(c)
+    }
+
+    fn checked(&self, c: Command) -> Option<bool> {
+        self.app.checked(c)
+    }
+
     /// One menu entry: a switch shows a check mark, any other command a button with its key.
     fn entry(&mut self, ui: &mut egui::Ui, c: Command) {
-        self.entry_text(ui, c, c.text().text(self.settings.lang).to_string());
+        self.entry_text(ui, c, c.text().text(self.app.settings.lang).to_string());
     }
 
     fn entry_text(&mut self, ui: &mut egui::Ui, c: Command, text: String) {
@@ -51,7 +79,7 @@ impl LadderApp {
 
     /// The menu bar.
     pub fn menu_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+        let lang = self.app.settings.lang;
         egui::MenuBar::new().ui(ui, |ui| {
             ui.menu_button(Msg::File.text(lang), |ui| self.file_menu_ui(ui));
             ui.menu_button(Msg::Edit.text(lang), |ui| self.edit_menu_ui(ui));
@@ -97,6 +125,7 @@ impl LadderApp {
             }
         }
         let recent: Vec<String> = self
+            .app
             .settings
             .recent
             .iter()
@@ -120,8 +149,9 @@ impl LadderApp {
         for c in [Command::Find, Command::Replace, Command::GoTo] {
             self.entry(ui, c);
         }
-        if let View::Block(b) = self.view {
+        if let View::Block(b) = self.app.view {
             if let Some(number) = self
+                .app
                 .doc
                 .as_ref()
                 .and_then(|d| d.project().ladder.blocks.get(b))
@@ -135,7 +165,7 @@ impl LadderApp {
     }
 
     fn view_menu_ui(&mut self, ui: &mut egui::Ui) {
-        ui.label(Msg::Language.text(self.settings.lang));
+        ui.label(Msg::Language.text(self.app.settings.lang));
         for l in [Lang::Zh, Lang::En] {
             self.entry(ui, Command::Language(l));
         }
@@ -167,28 +197,15 @@ impl LadderApp {
         }
     }
 
-    /// The basic toolbar and the ladder toolbar: each button runs what its key runs.
+    /// The basic toolbar and the ladder toolbar of a wide window.
+    /// Its first two rows: the online row is the editor's, which draws the online feature's
+    /// tools beside [`Menus::tools`] of [`ONLINE_TOOLBAR`].
     pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
-        if ui.available_width() < WIDE_TOOLBAR {
-            return self.compact_toolbar_ui(ui);
-        }
-        let lang = self.settings.lang;
-        let button = |app: &mut LadderApp, ui: &mut egui::Ui, c: Command| {
-            let r = ui.add_enabled(app.enabled(c), egui::Button::new(c.tool_text().text(lang)));
-            let r = match c.shortcut_text() {
-                Some(keys) => r.on_hover_text(keys),
-                None => r,
-            };
-            if r.clicked() {
-                app.ask(c);
-            }
-        };
+        let lang = self.app.settings.lang;
         ui.horizontal_wrapped(|ui| {
-            for c in BASIC_TOOLBAR {
-                button(self, ui, *c);
-            }
+            self.tools(ui, BASIC_TOOLBAR);
             ui.separator();
-            let mode = self.settings.display;
+            let mode = self.app.settings.display;
             egui::ComboBox::new("display", Msg::DisplayModeLabel.text(lang))
                 .selected_text(Command::Display(mode).text().text(lang))
                 .show_ui(ui, |ui| {
@@ -203,26 +220,26 @@ impl LadderApp {
                     }
                 });
             egui::ComboBox::new("zoom", Msg::ZoomLabel.text(lang))
-                .selected_text(if self.settings.fit_width {
-                    format!("{} {}%", Msg::ZoomFit.text(lang), self.settings.zoom)
+                .selected_text(if self.app.settings.fit_width {
+                    format!("{} {}%", Msg::ZoomFit.text(lang), self.app.settings.zoom)
                 } else {
-                    format!("{}%", self.settings.zoom)
+                    format!("{}%", self.app.settings.zoom)
                 })
                 .show_ui(ui, |ui| {
-                    let fit = self.settings.fit_width;
+                    let fit = self.app.settings.fit_width;
                     if ui.selectable_label(fit, Msg::ZoomFit.text(lang)).clicked() && !fit {
                         self.ask(Command::ZoomFit);
                     }
                     for z in super::settings::ZOOMS {
-                        let on = self.settings.zoom == z && !fit;
+                        let on = self.app.settings.zoom == z && !fit;
                         if ui.selectable_label(on, format!("{z}%")).clicked() && !on {
-                            self.with(|o: &mut EditState, cx| o.zoom_to(cx, z, None));
+                            self.ask(Command::ZoomTo(z));
                         }
                     }
                 });
         });
         ui.horizontal_wrapped(|ui| {
-            let mut pen = self.edit.pen;
+            let mut pen = self.app.edit.pen;
             if ui
                 .toggle_value(&mut pen, Command::Pen.text().text(lang))
                 .on_hover_text(Msg::Pen.text(lang))
@@ -230,27 +247,34 @@ impl LadderApp {
             {
                 self.ask(Command::Pen);
             }
-            for c in LADDER_TOOLBAR {
-                button(self, ui, *c);
-            }
+            self.tools(ui, LADDER_TOOLBAR);
         });
-        ui.horizontal_wrapped(|ui| {
-            for c in super::command::ONLINE_TOOLBAR {
-                button(self, ui, *c);
+    }
+
+    /// A row's tools: each button runs what its key runs.
+    pub fn tools(&mut self, ui: &mut egui::Ui, tools: &[Command]) {
+        let lang = self.app.settings.lang;
+        for &c in tools {
+            let r = ui.add_enabled(self.enabled(c), egui::Button::new(c.tool_text().text(lang)));
+            let r = match c.shortcut_text() {
+                Some(keys) => r.on_hover_text(keys),
+                None => r,
+            };
+            if r.clicked() {
+                self.ask(c);
             }
-            self.with(|o: &mut OnlineState, cx| o.online_toolbar_ui(cx, ui));
-        });
+        }
     }
 
     /// The toolbar of a narrow window: one row of as many tools as fit, the rest in the
     /// overflow menu (»), so the ladder keeps the height; the display mode and the zoom are in
     /// the View menu, and the online settings get their row only while online.
-    fn compact_toolbar_ui(&mut self, ui: &mut egui::Ui) {
-        let lang = self.settings.lang;
+    pub fn compact_toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let lang = self.app.settings.lang;
         let tools = BASIC_TOOLBAR
             .iter()
             .chain(LADDER_TOOLBAR)
-            .chain(super::command::ONLINE_TOOLBAR)
+            .chain(ONLINE_TOOLBAR)
             .chain([&Command::Pen]);
         ui.horizontal(|ui| {
             let gap = ui.spacing().item_spacing.x + 2.0 * ui.spacing().button_padding.x;
@@ -294,10 +318,31 @@ impl LadderApp {
             .response
             .on_hover_text(Msg::MoreTools.text(lang));
         });
-        if self.online.session.is_some() {
+    }
+}
+
+impl LadderApp {
+    /// The toolbars: two rows of tools and the online row in a wide window; a narrow one has
+    /// one compact row, and the online row only while online.
+    pub fn toolbar_ui(&mut self, ui: &mut egui::Ui) {
+        let wide = ui.available_width() >= WIDE_TOOLBAR;
+        let mut menus = Menus::new(self);
+        if wide {
+            menus.toolbar_ui(ui);
+        } else {
+            menus.compact_toolbar_ui(ui);
+        }
+        let mut asked = menus.asked;
+        if wide || self.online.is_online() {
             ui.horizontal_wrapped(|ui| {
-                self.with(|o: &mut OnlineState, cx| o.online_toolbar_ui(cx, ui))
+                if wide {
+                    let mut menus = Menus::new(self);
+                    menus.tools(ui, ONLINE_TOOLBAR);
+                    asked.append(&mut menus.asked);
+                }
+                self.with(|o: &mut OnlineState, cx| o.online_toolbar_ui(cx, ui));
             });
         }
+        self.pending.append(&mut asked);
     }
 }

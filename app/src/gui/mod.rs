@@ -31,6 +31,7 @@ pub mod selection;
 pub mod settings;
 pub mod state;
 pub mod tables;
+pub mod tabs;
 #[cfg(test)]
 mod test_harness;
 pub mod theme;
@@ -150,8 +151,20 @@ features! {
     state::FileState => files,
 }
 
-/// Most view tabs kept open; the oldest closes first.
-const MAX_TABS: usize = 10;
+/// The window's title: the project's file name, `*` while it has unsaved changes, and
+/// the program's name (as GSKLadder and most editors show it).
+pub fn window_title(doc: Option<&Document>, lang: i18n::Lang) -> String {
+    match doc {
+        Some(doc) => {
+            let name = doc
+                .name()
+                .unwrap_or_else(|| Msg::Untitled.text(lang).to_string());
+            let mark = if doc.is_dirty() { "*" } else { "" };
+            format!("{name}{mark} — Ladder Studio")
+        }
+        None => "Ladder Studio".to_string(),
+    }
+}
 
 impl LadderApp {
     /// The one door of the features: runs `f` on feature `F` with the part of the editor it
@@ -222,30 +235,6 @@ impl LadderApp {
             app.files.offer_restore();
         }
         app
-    }
-
-    /// The window's title: the project's file name, `*` while it has unsaved changes, and
-    /// the program's name (as GSKLadder and most editors show it).
-    pub fn window_title(&self) -> String {
-        match &self.doc {
-            Some(doc) => {
-                let name = doc
-                    .name()
-                    .unwrap_or_else(|| self.t(Msg::Untitled).to_string());
-                let mark = if doc.is_dirty() { "*" } else { "" };
-                format!("{name}{mark} — Ladder Studio")
-            }
-            None => "Ladder Studio".to_string(),
-        }
-    }
-
-    fn t(&self, m: Msg) -> &'static str {
-        m.text(self.settings.lang)
-    }
-
-    /// F9: compiles into the output window.
-    pub fn compile(&mut self) {
-        self.with_context(diagnostics::compile);
     }
 
     /// Runs `f` with the part of the editor a feature without state of its own may use.
@@ -324,92 +313,6 @@ impl LadderApp {
                 self.selection = None;
             }
         }
-    }
-
-    /// A view's name, for its tab.
-    pub fn view_title(&self, view: View) -> String {
-        let lang = self.settings.lang;
-        let t = |m: Msg| m.text(lang).to_string();
-        let project = self.doc.as_ref().map(|d| d.project());
-        match view {
-            View::Block(0) => t(Msg::Level1),
-            View::Block(1) => t(Msg::Level2),
-            View::Block(b) => {
-                project
-                    .and_then(|p| p.ladder.blocks.get(b))
-                    .map_or(String::new(), |b| match &b.kind {
-                        model::BlockKind::Sub { number, name } => format!("P{number:04} {name}"),
-                        k => k.label(),
-                    })
-            }
-            View::Symbols(i) => project
-                .and_then(|p| p.symbol_tables.get(i))
-                .map_or(t(Msg::SymbolTables), |s| s.name.clone()),
-            View::Data => t(Msg::DataTables),
-            View::Messages => t(Msg::Messages),
-            View::RefIndex => t(Msg::RefIndex),
-            View::RefBits => t(Msg::RefBits),
-            View::RefBytes => t(Msg::RefBytes),
-            View::Diagnosis => t(Msg::Diagnosis),
-            View::Permissions => t(Msg::Permissions),
-            View::MCodes => t(Msg::MCodes),
-            View::Version => t(Msg::VersionInfo),
-        }
-    }
-
-    /// The view tabs (manual §3.1 视图切换标签): every view opened, one click away.
-    fn tabs_ui(&mut self, ui: &mut egui::Ui) {
-        if self.doc.is_none() {
-            // No project, no views: nothing of a closed project stays on screen.
-            self.tabs.clear();
-            return;
-        }
-        // Tabs of blocks that no longer exist (a deleted subprogram) close themselves.
-        let blocks = self
-            .doc
-            .as_ref()
-            .map_or(0, |d| d.project().ladder.blocks.len());
-        self.tabs
-            .retain(|v| !matches!(v, View::Block(b) if *b >= blocks));
-        if !self.tabs.contains(&self.view) {
-            self.tabs.push(self.view);
-            if self.tabs.len() > MAX_TABS {
-                self.tabs.remove(0);
-            }
-        }
-        let mut close = None;
-        ui.horizontal_wrapped(|ui| {
-            for (i, v) in self.tabs.clone().into_iter().enumerate() {
-                let title = self.view_title(v);
-                let selected = self.view == v;
-                let r = ui.selectable_label(selected, &title);
-                // Named "Tab: …" for assistive technology, apart from the tree's entry.
-                let name = format!("{}: {title}", Msg::Tab.text(self.settings.lang));
-                r.widget_info(|| {
-                    egui::WidgetInfo::selected(egui::Role::Tab, true, selected, &name)
-                });
-                if r.clicked() {
-                    self.ask(command::Command::ShowView(v));
-                }
-                if ui
-                    .small_button("×")
-                    .on_hover_text(Msg::Close.text(self.settings.lang))
-                    .clicked()
-                {
-                    close = Some(i);
-                }
-                ui.separator();
-            }
-        });
-        if let Some(i) = close
-            && self.tabs.len() > 1
-        {
-            let closed = self.tabs.remove(i);
-            if closed == self.view {
-                self.view = self.tabs[i.min(self.tabs.len() - 1)];
-            }
-        }
-        ui.separator();
     }
 
     fn main_ui(&mut self, ui: &mut egui::Ui) {
@@ -605,7 +508,7 @@ impl eframe::App for LadderApp {
         self.with(|o: &mut FileState, cx| o.close_requested(cx, &ctx));
         self.with(|o: &mut FileState, cx| o.autosave_tick(cx));
         self.with(|o: &mut OnlineState, cx| o.online_frame(cx));
-        let title = self.window_title();
+        let title = window_title(self.doc.as_ref(), self.settings.lang);
         if title != self.title {
             ctx.send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
             self.title = title;
@@ -613,7 +516,12 @@ impl eframe::App for LadderApp {
         if self.files.question.is_some() {
             self.with(|o: &mut FileState, cx| o.question_ui(cx, &ctx));
         }
-        egui::Panel::top("menu").show(ui, |ui| self.menu_ui(ui));
+        egui::Panel::top("menu").show(ui, |ui| {
+            let mut menus = menus::Menus::new(self);
+            menus.menu_ui(ui);
+            let mut asked = menus.asked;
+            self.pending.append(&mut asked);
+        });
         // Below the menu bar: the replace window never covers it. It reads its keys
         // (Enter, Escape) before the editor's.
         let area = ui.available_rect_before_wrap();
@@ -694,7 +602,11 @@ impl eframe::App for LadderApp {
                 });
         }
         egui::CentralPanel::default().show(ui, |ui| {
-            self.tabs_ui(ui);
+            let project = self.doc.as_ref().map(|d| d.project());
+            let lang = self.settings.lang;
+            if let Some(c) = tabs::tabs_ui(ui, &mut self.view, &mut self.tabs, project, lang) {
+                self.ask(c);
+            }
             self.main_ui(ui)
         });
         self.with(|o: &mut EditState, cx| o.prompt_window(cx, &ctx));
