@@ -10,13 +10,15 @@ use egui_kittest::Harness;
 use ladder_studio::gui::LadderApp;
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::online::OnlineState;
+use ladder_studio::gui::state::EditState;
 use std::path::PathBuf;
 use std::time::Instant;
 
 fn frames(h: &mut Harness<'static, LadderApp>, networks: usize) -> Vec<f64> {
     let mut times = Vec::new();
     for k in 0..300 {
-        h.state_mut().edit.jump_to = Some(k * 7 % networks.max(1));
+        h.state_mut()
+            .with(|f: &mut EditState, _| f.jump_to = Some(k * 7 % networks.max(1)));
         let t = Instant::now();
         h.step();
         h.step();
@@ -50,32 +52,34 @@ fn main() {
     h.run();
     let networks = h
         .state()
-        .doc
-        .as_ref()
+        .doc()
         .map_or(0, |d| d.project().ladder.blocks[1].networks.len());
     let offline = frames(&mut h, networks);
     print("offline", networks, &offline);
     // Element comments and both address and symbol: the most text a frame draws.
-    h.state_mut().settings.show_element_comments = true;
-    h.state_mut().settings.display = ladder_studio::gui::settings::DisplayMode::Both;
+    h.state_mut().settings_mut().show_element_comments = true;
+    h.state_mut().settings_mut().display = ladder_studio::gui::settings::DisplayMode::Both;
     let labelled = frames(&mut h, networks);
     print(
         "offline, address+symbol and element comments",
         networks,
         &labelled,
     );
-    h.state_mut().settings.show_element_comments = false;
-    h.state_mut().settings.display = ladder_studio::gui::settings::DisplayMode::Address;
+    h.state_mut().settings_mut().show_element_comments = false;
+    h.state_mut().settings_mut().display = ladder_studio::gui::settings::DisplayMode::Address;
     h.state_mut().ask(Command::Run);
     h.step();
     std::thread::sleep(std::time::Duration::from_millis(200));
     h.step();
-    assert!(h.state().online.is_online(), "the stress project runs");
+    assert!(
+        h.state().feature::<OnlineState>().is_online(),
+        "the stress project runs"
+    );
     let online = frames(&mut h, networks);
     print("monitored, running at real time", networks, &online);
     let ticks = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .map_or(0, |s| s.published.snapshot.ticks);
@@ -113,7 +117,8 @@ fn idle_paints() {
         h.state_mut()
             .with(|o: &mut OnlineState, cx| o.start_running(cx, program));
         if cutting {
-            h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
+            h.state_mut()
+                .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Cnc);
         }
         // Settle (power-on writes, the cycle start), then count over 5 s of real time with
         // the UI stepping at 60 Hz.
@@ -122,7 +127,7 @@ fn idle_paints() {
             h.step();
             std::thread::sleep(std::time::Duration::from_millis(16));
         }
-        let gate = std::sync::Arc::clone(&h.state().online.gate);
+        let gate = std::sync::Arc::clone(&h.state().feature::<OnlineState>().gate);
         let (f0, (v0, i0)) = (gate.frames(), gate.counts());
         let t = Instant::now();
         while t.elapsed().as_secs_f64() < 5.0 {

@@ -3,6 +3,8 @@
 mod common;
 
 use common::*;
+use ladder_studio::gui::replace::Replace;
+use ladder_studio::gui::state::EditState;
 use ladder_studio::gui::state::FileState;
 
 #[test]
@@ -13,7 +15,7 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     let mut h = harness(Some(path.clone()), Lang::En);
     h.run();
-    let empty = h.state().doc.as_ref().unwrap().project().ladder.clone();
+    let empty = h.state().doc().unwrap().project().ladder.clone();
     h.key_press_modifiers(Modifiers::COMMAND, Key::I); // a network
     h.run();
     h.key_press(Key::F1); // start X2.1
@@ -32,8 +34,8 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
     enter_operand(&mut h, "Y3.7");
     h.key_press_modifiers(Modifiers::COMMAND, Key::S);
     h.run();
-    let drawn = h.state().doc.as_ref().unwrap().project().ladder.clone();
-    assert!(!h.state().doc.as_ref().unwrap().is_dirty(), "saved");
+    let drawn = h.state().doc().unwrap().project().ladder.clone();
+    assert!(!h.state().doc().unwrap().is_dirty(), "saved");
 
     // Reopened from the file, the ladder exports the manual's instruction list.
     assert_eq!(
@@ -46,12 +48,12 @@ fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
         h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
         h.run();
     }
-    assert_eq!(h.state().doc.as_ref().unwrap().project().ladder, empty);
+    assert_eq!(h.state().doc().unwrap().project().ladder, empty);
     for _ in 0..20 {
         h.key_press_modifiers(Modifiers::COMMAND, Key::Y);
         h.run();
     }
-    assert_eq!(h.state().doc.as_ref().unwrap().project().ladder, drawn);
+    assert_eq!(h.state().doc().unwrap().project().ladder, drawn);
 }
 
 #[test]
@@ -69,23 +71,31 @@ fn find_and_replace_an_address() {
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::F);
     enter_operand(&mut h, "y3.7");
-    let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    let out: Vec<String> = h.state().output().iter().map(|l| l.text.clone()).collect();
     assert_eq!(out.last().unwrap(), "3 found", "{out:?}");
     let at = |h: &Harness<'static, LadderApp>| {
-        let c = h.state().cursor;
+        let c = h.state().cursor();
         (c.network, c.row, c.col)
     };
     assert_eq!(at(&h), (0, 0, 10), "the cursor went to the first match");
     // Ctrl+F, Enter again: the next match ("find next").
     h.key_press_modifiers(Modifiers::COMMAND, Key::F);
     h.run();
-    assert_eq!(h.state().edit.prompt.as_ref().unwrap().text, "y3.7");
+    assert_eq!(
+        h.state()
+            .feature::<EditState>()
+            .prompt
+            .as_ref()
+            .unwrap()
+            .text,
+        "y3.7"
+    );
     h.key_press(Key::Enter);
     h.run();
     assert_eq!(at(&h), (0, 1, 0));
     h.get_by_label_contains("LEVEL2 N0002 1:1").click();
     h.run();
-    assert_eq!(h.state().view, View::Block(1));
+    assert_eq!(h.state().view(), View::Block(1));
     // Replace: the contacts may take X1.0; the coil would be refused (an X is an input).
     h.key_press_modifiers(Modifiers::COMMAND, Key::H);
     h.run();
@@ -101,29 +111,29 @@ fn find_and_replace_an_address() {
     h.get_by_label("3 places: 2 to change, 1 skipped (the result is not valid there)");
     h.get_by_label_contains("LEVEL2 N0001 2:1   Y0003.7 → X0001.0");
     h.get_by_label_contains("LEVEL2 N0001 1:11   Y0003.7   (skipped");
-    assert_eq!(h.state().doc.as_ref().unwrap().history().undo_len(), 0);
+    assert_eq!(h.state().doc().unwrap().history().undo_len(), 0);
     h.get_by_label("Replace all (2)").click();
     h.run();
-    let project = h.state().doc.as_ref().unwrap().project();
+    let project = h.state().doc().unwrap().project();
     let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
     assert!(
         il.contains("OR   X0001.0") && il.contains("OUT  Y0003.7") && il.contains("LD   X0001.0"),
         "{il}"
     );
     assert_eq!(
-        h.state().doc.as_ref().unwrap().history().undo_len(),
+        h.state().doc().unwrap().history().undo_len(),
         1,
         "the whole replace is one undo step"
     );
     h.key_press(Key::Escape);
     h.run();
     assert!(
-        h.state().replace.dialog.is_none(),
+        h.state().feature::<Replace>().dialog.is_none(),
         "Escape closes the replace window"
     );
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
-    let project = h.state().doc.as_ref().unwrap().project();
+    let project = h.state().doc().unwrap().project();
     let il = ladder_engine::il::print(&ladder_engine::compiler::compile(project).program);
     assert!(
         !il.contains("X0001.0"),
@@ -171,14 +181,14 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
     on_level2(&mut h);
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "30 2");
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!((c.block, c.network, c.row, c.col), (1, 29, 1, 0));
-    assert!(h.state().edit.prompt.is_none());
+    assert!(h.state().feature::<EditState>().prompt.is_none());
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "9999");
     let prompt = h
         .state()
-        .edit
+        .feature::<EditState>()
         .prompt
         .clone()
         .expect("the prompt stays open");
@@ -188,7 +198,7 @@ fn ctrl_g_goes_to_a_network_and_row_and_refuses_one_that_is_not_there() {
     );
     h.key_press(Key::Escape);
     h.run();
-    assert!(h.state().edit.prompt.is_none());
+    assert!(h.state().feature::<EditState>().prompt.is_none());
 }
 
 #[test]
@@ -198,7 +208,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     // Just above the first row: the network's header.
     let header = h
         .state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_rect(0, 0, 3)
         .unwrap()
@@ -207,14 +217,14 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     pointer(&mut h, header, egui::PointerButton::Primary);
     assert!(
         matches!(
-            h.state().selection,
+            h.state().selection(),
             Some((
                 1,
                 ladder_studio::gui::selection::Selection::Networks { networks: (0, 0) }
             ))
         ),
         "{:?}",
-        h.state().selection
+        h.state().selection()
     );
     h.get_by_label_contains("selected 1 Network");
     h.key_press_modifiers(Modifiers::COMMAND, Key::C);
@@ -238,7 +248,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
             "END"
         ]
     );
-    let ids: Vec<u64> = h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+    let ids: Vec<u64> = h.state().doc().unwrap().project().ladder.blocks[1]
         .networks
         .iter()
         .map(|n| n.id.0)
@@ -250,7 +260,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     // Cut the second network: it goes, and comes back with Ctrl+V below the first.
     let header2 = h
         .state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_rect(1, 0, 3)
         .unwrap()
@@ -260,7 +270,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::X);
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+        h.state().doc().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         1
@@ -279,7 +289,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.key_press_modifiers(Modifiers::SHIFT, Key::ArrowRight);
     h.run();
     assert!(matches!(
-        h.state().selection,
+        h.state().selection(),
         Some((
             1,
             ladder_studio::gui::selection::Selection::Cells {
@@ -292,7 +302,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::X);
     h.run();
     let row0 = |h: &Harness<'static, LadderApp>| {
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0]
+        h.state().doc().unwrap().project().ladder.blocks[1].networks[0].rows[0]
             .cells
             .clone()
     };
@@ -310,7 +320,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::V);
     h.run();
-    let rows = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0]
+    let rows = h.state().doc().unwrap().project().ladder.blocks[1].networks[0]
         .rows
         .clone();
     assert_eq!(rows.len(), 2);
@@ -324,7 +334,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     h.run();
     h.get_by_label("Draw lines").click();
     h.run();
-    assert!(h.state().edit.pen);
+    assert!(h.state().feature::<EditState>().pen);
     // A contact in the second row, first column, then a wire and a link to join it.
     let c = cell_pos(&h, 0, 1, 0);
     pointer(&mut h, c, egui::PointerButton::Primary);
@@ -332,7 +342,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     enter_operand(&mut h, "X2.2");
     let (a, z) = (cell_pos(&h, 0, 1, 1), cell_pos(&h, 0, 1, 3));
     drag(&mut h, a, z);
-    let net = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].clone();
+    let net = h.state().doc().unwrap().project().ladder.blocks[1].networks[0].clone();
     for col in 1..=3 {
         assert_eq!(
             net.rows[1].cells[col],
@@ -342,7 +352,7 @@ fn dragging_with_the_pen_draws_wires_along_a_row_and_links_down_a_column() {
     }
     let (a, z) = (cell_pos(&h, 0, 0, 4), cell_pos(&h, 0, 1, 4));
     drag(&mut h, a, z);
-    let net = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].clone();
+    let net = h.state().doc().unwrap().project().ladder.blocks[1].networks[0].clone();
     assert!(net.link(0, 4), "a link at the left edge of column 5");
     assert_eq!(
         il_now(&h)[3..7],
@@ -357,20 +367,20 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
     let p = cell_pos(&h, 1, 0, 0);
     pointer(&mut h, p, egui::PointerButton::Secondary);
     assert_eq!(
-        h.state().cursor.network,
+        h.state().cursor().network,
         1,
         "the right click moved the cursor"
     );
     h.get_by_label_contains("Insert network above").click();
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+        h.state().doc().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         3
     );
     assert!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[1].is_empty(),
+        h.state().doc().unwrap().project().ladder.blocks[1].networks[1].is_empty(),
         "the new network is above the clicked one"
     );
     let p = cell_pos(&h, 2, 0, 0);
@@ -383,7 +393,7 @@ fn right_click_offers_the_insert_and_delete_commands_at_the_cell() {
         "the second network went"
     );
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+        h.state().doc().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         2
@@ -408,16 +418,17 @@ fn double_clicking_a_contact_edits_its_address() {
     h.run();
     let prompt = h
         .state()
-        .edit
+        .feature::<EditState>()
         .prompt
         .clone()
         .expect("the operand prompt opened");
     assert_eq!(prompt.text, "X0002.1", "with the contact's address");
-    h.state_mut().edit.prompt.as_mut().unwrap().text.clear();
+    h.state_mut()
+        .with(|f: &mut EditState, _| f.prompt.as_mut().unwrap().text.clear());
     enter_operand(&mut h, "X2.3");
     assert_eq!(il_now(&h)[3], "LD X0002.3");
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0].cells[1],
+        h.state().doc().unwrap().project().ladder.blocks[1].networks[0].rows[0].cells[1],
         ladder_engine::model::Cell::Wire,
         "the wire right of it is untouched"
     );
@@ -440,18 +451,10 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.key_press(egui::Key::Enter);
     h.run();
     h.get_by_label("P0005 SPINDLE");
-    let blocks = h
-        .state()
-        .doc
-        .as_ref()
-        .unwrap()
-        .project()
-        .ladder
-        .blocks
-        .len();
+    let blocks = h.state().doc().unwrap().project().ladder.blocks.len();
     assert_eq!(blocks, 4, "P0005 joins P0007");
     assert_eq!(
-        h.state().view,
+        h.state().view(),
         View::Block(2),
         "the new subprogram is shown"
     );
@@ -464,10 +467,10 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.run();
     h.key_press(egui::Key::Enter);
     h.run();
-    let out: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    let out: Vec<String> = h.state().output().iter().map(|l| l.text.clone()).collect();
     assert!(
         h.state()
-            .edit
+            .feature::<EditState>()
             .prompt
             .as_ref()
             .and_then(|p| p.error.clone())
@@ -480,7 +483,7 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
     h.state_mut()
         .ask(ladder_studio::gui::command::Command::ViewCalls(7));
     h.run();
-    assert_eq!(h.state().output.last().unwrap().text, "P0007: 2 calls");
+    assert_eq!(h.state().output().last().unwrap().text, "P0007: 2 calls");
     h.get_by_label_contains("LEVEL2 N0002 1:  CALLU P0007");
     h.get_by_label_contains("LEVEL2 N0001 1:  CALL P0007");
     // Rename.
@@ -488,11 +491,17 @@ fn subprograms_are_created_renamed_listed_by_their_calls_and_deleted_with_undo()
         .ask(ladder_studio::gui::command::Command::RenameSub(5));
     h.run();
     assert_eq!(
-        h.state().edit.prompt.as_ref().unwrap().text,
+        h.state()
+            .feature::<EditState>()
+            .prompt
+            .as_ref()
+            .unwrap()
+            .text,
         "5 SPINDLE",
         "the prompt shows the current number and name"
     );
-    h.state_mut().edit.prompt.as_mut().unwrap().text = "5 SPINDLE_MAIN".into();
+    h.state_mut()
+        .with(|f: &mut EditState, _| f.prompt.as_mut().unwrap().text = "5 SPINDLE_MAIN".into());
     h.run();
     h.key_press(egui::Key::Enter);
     h.run();
@@ -522,13 +531,20 @@ fn typing_after_f1_completes_from_the_symbol_table() {
     h.get_by_label_contains("TOOL_T1  X0000.0  Tool station 1 sensor");
     h.key_press(egui::Key::Tab);
     h.run();
-    assert_eq!(h.state().edit.prompt.as_ref().unwrap().text, "TOOL_T1");
+    assert_eq!(
+        h.state()
+            .feature::<EditState>()
+            .prompt
+            .as_ref()
+            .unwrap()
+            .text,
+        "TOOL_T1"
+    );
     h.key_press(egui::Key::Enter);
     h.run();
-    let c = h.state().cursor;
-    let cell = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[c.network].rows
-        [0]
-    .cells[0]
+    let c = h.state().cursor();
+    let cell = h.state().doc().unwrap().project().ladder.blocks[1].networks[c.network].rows[0]
+        .cells[0]
         .clone();
     assert_eq!(
         cell,
@@ -551,7 +567,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.run();
     h.key_press(Key::Enter);
     h.run();
-    assert_eq!(h.state().view, View::Block(2));
+    assert_eq!(h.state().view(), View::Block(2));
     // The rename prompt is open on P0077 when its creation is undone.
     h.state_mut()
         .ask(ladder_studio::gui::command::Command::RenameSub(77));
@@ -559,17 +575,22 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.state_mut().undo();
     h.run();
     assert_eq!(
-        h.state().view,
+        h.state().view(),
         View::Block(1),
         "the view left the vanished block"
     );
     h.key_press(Key::Enter);
     h.run();
-    let err = h.state().edit.prompt.as_ref().and_then(|p| p.error.clone());
+    let err = h
+        .state()
+        .feature::<EditState>()
+        .prompt
+        .as_ref()
+        .and_then(|p| p.error.clone());
     assert!(err.is_some_and(|e| e.contains("no longer exists")));
     h.key_press(Key::Escape);
     h.run();
-    let before = h.state().doc.as_ref().unwrap().history().undo_len();
+    let before = h.state().doc().unwrap().history().undo_len();
     for k in [Key::F5, Key::Delete] {
         h.key_press(k);
         h.run();
@@ -580,7 +601,7 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.get_by_label("Level 1").click();
     h.run();
     let l1 = |h: &Harness<'static, LadderApp>| {
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[0]
+        h.state().doc().unwrap().project().ladder.blocks[0]
             .networks
             .len()
     };
@@ -588,7 +609,15 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.run();
     h.key_press(Key::F1);
     enter_operand(&mut h, "X99999.9");
-    assert!(h.state().edit.prompt.as_ref().unwrap().error.is_some());
+    assert!(
+        h.state()
+            .feature::<EditState>()
+            .prompt
+            .as_ref()
+            .unwrap()
+            .error
+            .is_some()
+    );
     h.key_press(Key::Escape);
     h.run();
     h.key_press(Key::F3);
@@ -597,18 +626,15 @@ fn commands_after_undoing_a_new_subprogram_neither_panic_nor_leave_stray_steps()
     h.run();
     assert_eq!(l1(&h), 0, "no network was added for nothing");
     // A contact in the empty block is one undo step, network included.
-    let steps = h.state().doc.as_ref().unwrap().history().undo_len();
+    let steps = h.state().doc().unwrap().history().undo_len();
     h.key_press(Key::F1);
     enter_operand(&mut h, "X2.1");
     assert_eq!(l1(&h), 1);
-    assert_eq!(
-        h.state().doc.as_ref().unwrap().history().undo_len(),
-        steps + 1
-    );
+    assert_eq!(h.state().doc().unwrap().history().undo_len(), steps + 1);
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
     assert_eq!(l1(&h), 0, "one undo takes back the contact and its network");
-    assert!(h.state().doc.as_ref().unwrap().history().undo_len() >= before);
+    assert!(h.state().doc().unwrap().history().undo_len() >= before);
 }
 
 #[test]
@@ -624,7 +650,7 @@ fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block()
     h.run();
     h.get_by_label("Delete").click();
     h.run();
-    let cells = h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[0].rows[0]
+    let cells = h.state().doc().unwrap().project().ladder.blocks[1].networks[0].rows[0]
         .cells
         .clone();
     assert_eq!(
@@ -635,14 +661,14 @@ fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block()
         ],
         "both selected contacts went, as with the Delete key"
     );
-    assert_eq!(h.state().doc.as_ref().unwrap().history().undo_len(), 1);
+    assert_eq!(h.state().doc().unwrap().history().undo_len(), 1);
     // On a new project's empty level 2 the button deletes nothing and adds no network.
     h.state_mut()
         .with(|o: &mut FileState, cx| o.perform(cx, ladder_studio::gui::files::Action::New));
     h.run();
     h.get_by_label("Delete").click();
     h.run();
-    let doc = h.state().doc.as_ref().unwrap();
+    let doc = h.state().doc().unwrap();
     assert!(doc.project().ladder.blocks[1].networks.is_empty());
     assert_eq!(doc.history().undo_len(), 0);
     assert!(!doc.is_dirty());

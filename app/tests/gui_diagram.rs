@@ -4,6 +4,8 @@
 
 mod common;
 use common::*;
+use ladder_studio::gui::properties::ElementProperties;
+use ladder_studio::gui::state::EditState;
 
 /// One notch of Ctrl+wheel at `mouse`, in (`up`) or out, and the frames it is smoothed over.
 fn wheel(h: &mut Harness<'static, LadderApp>, mouse: egui::Pos2, up: bool) {
@@ -21,10 +23,10 @@ fn wheel(h: &mut Harness<'static, LadderApp>, mouse: egui::Pos2, up: bool) {
 
 /// Zooms in and out about the cursor cell's centre and checks it stays under the mouse.
 fn zoom_keeps_the_cell_under_the_mouse(h: &mut Harness<'static, LadderApp>) {
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     let cell = |h: &Harness<'static, LadderApp>| {
         h.state()
-            .edit
+            .feature::<EditState>()
             .geometry
             .cell_rect(c.network, c.row, c.col)
             .expect("the cursor cell is drawn")
@@ -38,7 +40,7 @@ fn zoom_keeps_the_cell_under_the_mouse(h: &mut Harness<'static, LadderApp>) {
         (false, 75),
     ] {
         wheel(h, mouse, up);
-        assert_eq!(h.state().settings.zoom, zoom);
+        assert_eq!(h.state().settings().zoom, zoom);
         let now = cell(h);
         assert!(
             now.contains(mouse),
@@ -54,10 +56,10 @@ fn zoom_keeps_the_element_under_the_pointer_on_the_last_network() {
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::End);
     h.run();
     h.run();
-    let last = h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+    let last = h.state().doc().unwrap().project().ladder.blocks[1]
         .networks
         .len();
-    assert_eq!(h.state().cursor.network, last - 1);
+    assert_eq!(h.state().cursor().network, last - 1);
     zoom_keeps_the_cell_under_the_mouse(&mut h);
 }
 
@@ -87,14 +89,14 @@ fn no_label_is_drawn_over_another_or_across_its_cell_in_any_display_mode() {
     let mut h = lathe();
     h.key_press(egui::Key::F11);
     h.run();
-    assert!(h.state().settings.show_element_comments);
+    assert!(h.state().settings().show_element_comments);
     for zoom in [75, 100, 150] {
         for mode in DISPLAY_MODES {
-            h.state_mut().settings.zoom = zoom;
-            h.state_mut().settings.display = mode;
+            h.state_mut().settings_mut().zoom = zoom;
+            h.state_mut().settings_mut().display = mode;
             h.run();
             h.run();
-            let g = h.state().edit.geometry.clone();
+            let g = h.state().feature::<EditState>().geometry.clone();
             let labels: Vec<_> = g.labels.iter().filter(|(_, t)| !t.is_empty()).collect();
             assert!(labels.len() > 20, "{mode:?}: {} labels", labels.len());
             assert!(
@@ -142,12 +144,18 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     // A new network with a lone contact: it leads to no coil, an error.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
-    let wrong = h.state().cursor;
+    let wrong = h.state().cursor();
     h.key_press(egui::Key::F1);
     enter_operand(&mut h, "X0.0");
     h.run();
     // Before the first compile nothing is marked: a drawing in progress is not an error.
-    assert!(h.state().edit.geometry.error_marks.is_empty());
+    assert!(
+        h.state()
+            .feature::<EditState>()
+            .geometry
+            .error_marks
+            .is_empty()
+    );
     h.key_press(egui::Key::F9);
     h.run();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
@@ -155,13 +163,13 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     h.key_press(egui::Key::F12);
     h.run();
     h.run();
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!(
         (c.network, c.row, c.col),
         (wrong.network, 0, 0),
         "F12 went to it"
     );
-    let g = h.state().edit.geometry.clone();
+    let g = h.state().feature::<EditState>().geometry.clone();
     let cell = g.cell_rect(c.network, c.row, c.col).unwrap();
     assert!(
         g.error_marks.iter().any(|m| cell.contains_rect(*m)),
@@ -178,12 +186,18 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
     h.run();
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F12);
     h.run();
-    assert_eq!(h.state().cursor.network, wrong.network);
+    assert_eq!(h.state().cursor().network, wrong.network);
     // Fixed (the contact taken back), the mark goes without compiling again.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
     h.run();
     h.run();
-    assert!(h.state().edit.geometry.error_marks.is_empty());
+    assert!(
+        h.state()
+            .feature::<EditState>()
+            .geometry
+            .error_marks
+            .is_empty()
+    );
     assert!(
         h.query_by_label_contains("1 errors, 0 warnings (F12)")
             .is_none()
@@ -196,26 +210,29 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
     enter_operand(&mut h, "2 1");
     let rows = |h: &Harness<'static, LadderApp>| {
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1].networks[1]
+        h.state().doc().unwrap().project().ladder.blocks[1].networks[1]
             .rows
             .len()
     };
     let before = rows(&h);
-    let undo_depth = h.state().doc.as_ref().unwrap().history().undo_len();
+    let undo_depth = h.state().doc().unwrap().history().undo_len();
     // F6 on the first row: refused at once, no prompt to type into.
     h.key_press(egui::Key::F6);
     h.run();
-    assert!(h.state().edit.prompt.is_none(), "no operand is asked for");
     assert!(
-        h.state().output.last().is_some_and(|l| l.error),
+        h.state().feature::<EditState>().prompt.is_none(),
+        "no operand is asked for"
+    );
+    assert!(
+        h.state().output().last().is_some_and(|l| l.error),
         "the refusal is said: {:?}",
-        h.state().output.last()
+        h.state().output().last()
     );
     for _ in 0..before {
         h.key_press(egui::Key::ArrowDown);
         h.run();
     }
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!(
         (c.network, c.row),
         (1, before),
@@ -223,7 +240,7 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     );
     assert!(
         h.state()
-            .edit
+            .feature::<EditState>()
             .geometry
             .cell_rect(1, before, c.col)
             .is_some(),
@@ -235,14 +252,14 @@ fn down_past_the_last_row_offers_a_new_row_and_an_impossible_f6_is_refused_befor
     enter_operand(&mut h, "X0.3");
     h.run();
     assert_eq!(rows(&h), before + 1);
-    let doc = h.state().doc.as_ref().unwrap();
+    let doc = h.state().doc().unwrap();
     assert_eq!(doc.history().undo_len(), undo_depth + 1, "one undo step");
     // Down again from an offered row goes on to the next network.
     h.key_press(egui::Key::ArrowDown);
     h.run();
     h.key_press(egui::Key::ArrowDown);
     h.run();
-    assert_eq!(h.state().cursor.network, 2);
+    assert_eq!(h.state().cursor().network, 2);
 }
 
 #[test]
@@ -258,7 +275,7 @@ fn at_900_by_600_the_ladder_keeps_half_the_height_and_replace_opens_ready_to_typ
         h.run();
         let shown = h
             .state()
-            .edit
+            .feature::<EditState>()
             .geometry
             .visible
             .expect("the ladder is drawn");
@@ -311,8 +328,8 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
     enter_operand(&mut h, "3 1");
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    let c = h.state().cursor;
-    let before = h.state().edit.geometry.clone();
+    let c = h.state().cursor();
+    let before = h.state().feature::<EditState>().geometry.clone();
     let cell = before.cell_rect(c.network, c.row, c.col).unwrap();
     h.key_press(egui::Key::F1);
     h.run();
@@ -325,7 +342,7 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
         "the field {at:?} is at the cell {cell:?}"
     );
     assert_eq!(
-        h.state().edit.geometry.origin,
+        h.state().feature::<EditState>().geometry.origin,
         before.origin,
         "the ladder did not move"
     );
@@ -344,7 +361,7 @@ fn an_operand_is_typed_in_place_at_the_cell_and_nothing_moves() {
     assert!(first.rect().top() >= at.bottom(), "under the field");
     h.key_press(egui::Key::Escape);
     h.run();
-    assert!(h.state().edit.prompt.is_none());
+    assert!(h.state().feature::<EditState>().prompt.is_none());
     // A title is typed at the network's header.
     h.state_mut()
         .ask(ladder_studio::gui::command::Command::NetworkTitle);
@@ -366,8 +383,8 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     let mut h = lathe();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::G);
     enter_operand(&mut h, "3 1");
-    let c = h.state().cursor;
-    let project = h.state().doc.as_ref().unwrap().project();
+    let c = h.state().cursor();
+    let project = h.state().doc().unwrap().project();
     let Some(ladder_engine::model::Cell::Contact { operand, .. }) =
         project.ladder.blocks[1].networks[c.network].cell(c.row, c.col)
     else {
@@ -386,19 +403,12 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
         .unwrap()
         .name
         .clone();
-    let symbols = |h: &Harness<'static, LadderApp>| {
-        h.state()
-            .doc
-            .as_ref()
-            .unwrap()
-            .project()
-            .symbol_tables
-            .clone()
-    };
+    let symbols =
+        |h: &Harness<'static, LadderApp>| h.state().doc().unwrap().project().symbol_tables.clone();
     let before = symbols(&h);
-    let depth = h.state().doc.as_ref().unwrap().history().undo_len();
+    let depth = h.state().doc().unwrap().history().undo_len();
     // A double-click on the contact's label opens its properties over it.
-    let g = h.state().edit.geometry.clone();
+    let g = h.state().feature::<EditState>().geometry.clone();
     let cell = g.cell_rect(c.network, c.row, c.col).unwrap();
     let label = g
         .labels
@@ -410,7 +420,7 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     h.run();
     let form = h
         .state()
-        .properties
+        .feature::<ElementProperties>()
         .form
         .clone()
         .expect("the properties are open");
@@ -435,11 +445,11 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
     assert!(
-        h.state().properties.form.is_none(),
+        h.state().feature::<ElementProperties>().form.is_none(),
         "closed on OK: {:?}",
-        h.state().properties.form
+        h.state().feature::<ElementProperties>().form
     );
-    let p = h.state().doc.as_ref().unwrap().project();
+    let p = h.state().doc().unwrap().project();
     assert_eq!(p.resolve_symbol("AUTO_KEY"), Some(x));
     assert!(
         p.comment_of(x, "en")
@@ -447,7 +457,7 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
             .ends_with("(front panel)\nsecond line")
     );
     assert_eq!(
-        h.state().doc.as_ref().unwrap().history().undo_len(),
+        h.state().doc().unwrap().history().undo_len(),
         depth + 1,
         "one undo step"
     );
@@ -466,7 +476,12 @@ fn element_properties_edit_the_symbol_table_in_one_undo_step() {
     h.run();
     h.get_by_role_and_label(Role::Button, "OK").click();
     h.run();
-    let form = h.state().properties.form.clone().expect("still open");
+    let form = h
+        .state()
+        .feature::<ElementProperties>()
+        .form
+        .clone()
+        .expect("still open");
     assert!(form.error.is_some_and(|e| e.contains(&taken)));
     assert_eq!(symbols(&h), before, "nothing written");
 }

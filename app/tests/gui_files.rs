@@ -67,13 +67,16 @@ fn closing_the_window_with_unsaved_changes_saves_them_first_when_asked() {
         .clear();
     h.run();
     assert!(
-        !h.state().files.exit_confirmed,
+        !h.state().feature::<FileState>().exit_confirmed,
         "the window stays while asking"
     );
     h.get_by_label_contains("Save the changes to");
     h.get_by_label("Save changes").click();
     h.run();
-    assert!(h.state().files.exit_confirmed, "saved, then closed");
+    assert!(
+        h.state().feature::<FileState>().exit_confirmed,
+        "saved, then closed"
+    );
     let saved = ladder_engine::file::load(&path).unwrap();
     assert_eq!(
         saved.ladder.blocks[0].networks.len(),
@@ -105,10 +108,10 @@ fn an_untitled_project_is_saved_through_the_save_as_dialog_and_joins_the_recent_
     h.key_press_modifiers(Modifiers::COMMAND, Key::S);
     h.run();
     assert_eq!(doc_state(&h), Some((Some(path.clone()), false, 1)));
-    assert_eq!(h.state().settings.recent.first(), Some(&path));
+    assert_eq!(h.state().settings().recent.first(), Some(&path));
     assert_eq!(
         ladder_engine::file::load(&path).unwrap(),
-        h.state().doc.as_ref().unwrap().project().clone()
+        h.state().doc().unwrap().project().clone()
     );
 }
 
@@ -133,12 +136,12 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     h.get_by_label_contains("Open what can be read of it");
     h.get_by_label("Open read-only").click();
     h.run();
-    let doc = h.state().doc.as_ref().unwrap();
+    let doc = h.state().doc().unwrap();
     assert!(doc.is_read_only() && doc.path().is_none());
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::I);
     h.run();
     assert_eq!(
-        h.state().doc.as_ref().unwrap().project().ladder.blocks[1]
+        h.state().doc().unwrap().project().ladder.blocks[1]
             .networks
             .len(),
         1,
@@ -150,7 +153,7 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     assert_eq!(std::fs::read_to_string(&path).unwrap(), text, "untouched");
     assert!(
         h.state()
-            .output
+            .output()
             .iter()
             .any(|l| l.text.contains("damaged original is not overwritten"))
     );
@@ -162,7 +165,7 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
         il.contains("OUT  Y0003.6"),
         "what could be read was kept: {il}"
     );
-    assert!(!h.state().doc.as_ref().unwrap().is_read_only());
+    assert!(!h.state().doc().unwrap().is_read_only());
 }
 
 #[test]
@@ -175,7 +178,8 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     {
         let mut h = harness(Some(path.clone()), Lang::En);
-        h.state_mut().files.recovery_dir = Some(rec.clone());
+        h.state_mut()
+            .with(|f: &mut FileState, _| f.recovery_dir = Some(rec.clone()));
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
@@ -187,7 +191,8 @@ fn an_autosaved_recovery_copy_is_offered_after_a_crash_and_restores_the_work() {
     assert_eq!(copies.len(), 1);
     assert_eq!(copies[0].original.as_ref(), Some(&path));
     let mut h = harness(None, Lang::En);
-    h.state_mut().files.recovery_dir = Some(rec.clone());
+    h.state_mut()
+        .with(|f: &mut FileState, _| f.recovery_dir = Some(rec.clone()));
     h.state_mut().with(|f: &mut FileState, _| f.offer_restore());
     h.run();
     h.get_by_label_contains("did not end normally");
@@ -220,7 +225,7 @@ fn export_il_and_comments_from_the_file_menu() {
     h.run();
     h.run();
     let il = std::fs::read_to_string(&il_path).unwrap();
-    let project = h.state().doc.as_ref().unwrap().project().clone();
+    let project = h.state().doc().unwrap().project().clone();
     assert_eq!(
         il,
         ladder_engine::il::print(&ladder_engine::compiler::compile(&project).program)
@@ -245,7 +250,8 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     {
         let mut h = harness(Some(path.clone()), Lang::En);
-        h.state_mut().files.recovery_dir = Some(rec.clone());
+        h.state_mut()
+            .with(|f: &mut FileState, _| f.recovery_dir = Some(rec.clone()));
         h.run();
         h.key_press_modifiers(Modifiers::COMMAND, Key::I);
         h.run();
@@ -253,12 +259,13 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
             .with(|o: &mut FileState, cx| o.autosave_now(cx));
     }
     let mut h = harness(None, Lang::En);
-    h.state_mut().files.recovery_dir = Some(rec.clone());
+    h.state_mut()
+        .with(|f: &mut FileState, _| f.recovery_dir = Some(rec.clone()));
     h.state_mut().with(|f: &mut FileState, _| f.offer_restore());
     h.run();
     h.key_press(Key::Escape);
     h.run();
-    assert!(h.state().files.question.is_none());
+    assert!(h.state().feature::<FileState>().question.is_none());
     assert_eq!(
         ladder_studio::gui::files::recovery_copies(&rec).len(),
         1,
@@ -273,7 +280,7 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     h.run();
     assert!(
         matches!(
-            h.state().files.question,
+            h.state().feature::<FileState>().question,
             Some(ladder_studio::gui::files::Question::Unsaved { .. })
         ),
         "the edit made meanwhile is not dropped without asking"
@@ -287,17 +294,14 @@ fn the_window_title_names_the_project_and_marks_unsaved_changes() {
     ladder_engine::file::save(&ladder_engine::model::Project::default(), &path).unwrap();
     let mut h = harness(Some(path), Lang::En);
     h.run();
-    assert_eq!(h.state().title, "mill.ldp — Ladder Studio");
+    assert_eq!(h.state().title(), "mill.ldp — Ladder Studio");
     h.key_press(egui::Key::F4);
     h.run();
-    assert!(
-        h.state().doc.as_ref().unwrap().is_dirty(),
-        "a wire was drawn"
-    );
-    assert_eq!(h.state().title, "mill.ldp* — Ladder Studio");
+    assert!(h.state().doc().unwrap().is_dirty(), "a wire was drawn");
+    assert_eq!(h.state().title(), "mill.ldp* — Ladder Studio");
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::S);
     h.run();
-    assert_eq!(h.state().title, "mill.ldp — Ladder Studio", "saved");
+    assert_eq!(h.state().title(), "mill.ldp — Ladder Studio", "saved");
 }
 
 #[test]
@@ -316,11 +320,12 @@ fn without_a_system_dialog_save_as_asks_in_the_window_and_saves_under_the_typed_
         .with_accessibility_check(false)
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, Some(open));
-            app.settings.lang = Lang::Zh;
+            app.settings_mut().lang = Lang::Zh;
             app
         });
-    h.state_mut().files.dialogs =
-        Box::new(ladder_studio::gui::file_dialog::SystemDialogs::in_app_only());
+    h.state_mut().with(|f: &mut FileState, _| {
+        f.dialogs = Box::new(ladder_studio::gui::file_dialog::SystemDialogs::in_app_only())
+    });
     h.run();
     h.get_by_label("文件").click();
     h.run();
@@ -373,7 +378,7 @@ fn each_project_starts_with_its_own_output() {
     h.state_mut().ask(Command::Compile);
     h.run();
     assert!(
-        h.state().output.iter().any(|l| l.error),
+        h.state().output().iter().any(|l| l.error),
         "the errors are listed"
     );
     h.state_mut()
@@ -381,10 +386,14 @@ fn each_project_starts_with_its_own_output() {
     h.run();
     assert!(
         h.state()
-            .output
+            .output()
             .iter()
             .all(|l| !l.error && !l.text.contains("NO_SUCH_SYMBOL")),
         "nothing of the other project: {:?}",
-        h.state().output.iter().map(|l| &l.text).collect::<Vec<_>>()
+        h.state()
+            .output()
+            .iter()
+            .map(|l| &l.text)
+            .collect::<Vec<_>>()
     );
 }

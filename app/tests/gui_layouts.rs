@@ -66,7 +66,8 @@ fn the_f3_dialog_fits_900_by_600_and_its_rows_stay_under_the_pointer() {
 #[test]
 fn the_version_page_and_the_symbol_table_fit_900_by_600() {
     let mut h = small(None, Lang::Zh);
-    h.state_mut().view = ladder_studio::gui::place::View::Version;
+    h.state_mut()
+        .show_view(ladder_studio::gui::place::View::Version);
     h.run();
     let fields: Vec<egui::Rect> = h
         .get_all_by_role(Role::TextInput)
@@ -89,7 +90,8 @@ fn the_version_page_and_the_symbol_table_fit_900_by_600() {
     h.run();
     let r = h.get_by_label("设置密码").rect();
     assert!(inside(r), "the password buttons can be reached: {r:?}");
-    h.state_mut().view = ladder_studio::gui::place::View::Symbols(0);
+    h.state_mut()
+        .show_view(ladder_studio::gui::place::View::Symbols(0));
     h.run();
     let cells: Vec<egui::Rect> = h
         .get_all_by_role(Role::TextInput)
@@ -114,7 +116,8 @@ fn the_version_page_and_the_symbol_table_fit_900_by_600() {
 #[test]
 fn a_row_inserted_below_shows_its_address_as_a_suggestion_not_as_typed_text() {
     let mut h = small(None, Lang::En);
-    h.state_mut().view = ladder_studio::gui::place::View::Symbols(0);
+    h.state_mut()
+        .show_view(ladder_studio::gui::place::View::Symbols(0));
     h.run();
     h.get_by_role_and_label(Role::TextInput, "Symbol 1").click();
     h.run();
@@ -122,7 +125,7 @@ fn a_row_inserted_below_shows_its_address_as_a_suggestion_not_as_typed_text() {
     h.run();
     h.get_by_label("Insert row below").click();
     h.run();
-    let rows = &h.state().doc.as_ref().unwrap().project().symbol_tables[0].rows;
+    let rows = &h.state().doc().unwrap().project().symbol_tables[0].rows;
     assert!(rows[1].name.is_empty(), "a new, blank row 2");
     let proposed = rows[1].address.to_string();
     let field = h.get_by_role_and_label(Role::TextInput, "Address 2");

@@ -6,6 +6,8 @@ use common::online::*;
 use common::*;
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::online::OnlineState;
+use ladder_studio::gui::state::EditState;
+use ladder_studio::gui::tables::TableState;
 
 /// Two presses queued before one frame: both act (a fast typist, a slow frame).
 fn two_presses(h: &mut Harness<'static, LadderApp>, m: egui::Modifiers, key: egui::Key) {
@@ -22,7 +24,7 @@ fn two_key_presses_in_one_frame_move_the_cursor_twice() {
     click_cell(&mut h, 0, 0, 0);
     two_presses(&mut h, egui::Modifiers::NONE, egui::Key::ArrowRight);
     h.run();
-    assert_eq!(h.state().cursor.col, 2, "Right Right moved twice");
+    assert_eq!(h.state().cursor().col, 2, "Right Right moved twice");
 }
 
 #[test]
@@ -32,13 +34,17 @@ fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
     click_cell(&mut h, 0, 0, 0);
-    h.state_mut().online.forces_confirmed = true;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.forces_confirmed = true);
     // The first press forces X0010.0 to 1; the second, sent before any snapshot showed the
     // force, releases it rather than forcing again from the old state.
     two_presses(&mut h, egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
     assert!(
-        h.state().online.forced_addresses().is_empty(),
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty(),
         "forced, then released"
     );
     assert_eq!(
@@ -51,7 +57,10 @@ fn two_force_presses_in_one_frame_force_and_release_the_bit_at_the_cursor() {
     settle(&mut h);
     ticks(&mut h, 1);
     assert_eq!(value(&h, "X0010.0"), 0);
-    assert_eq!(h.state().online.forced_addresses().len(), 1);
+    assert_eq!(
+        h.state().feature::<OnlineState>().forced_addresses().len(),
+        1
+    );
 }
 
 #[test]
@@ -100,7 +109,7 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
     ticks(&mut h, 3);
     let past = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -109,13 +118,9 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
         .ticks
         - 1;
     h.state_mut()
-        .online
-        .session
-        .as_mut()
-        .unwrap()
-        .scrub_to(Some(past));
+        .with(|f: &mut OnlineState, _| f.session.as_mut().unwrap().scrub_to(Some(past)));
     h.step();
-    assert!(h.state().online.scrubbing());
+    assert!(h.state().feature::<OnlineState>().scrubbing());
     assert!(!h.state().enabled(Command::Undo), "Undo is greyed out");
     // Ctrl+Z, an edit and a write all leave the project and the machine as they were.
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
@@ -128,22 +133,25 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
             }))
             .is_err()
     );
-    let x = ladder_studio::gui::online::watch::resolve(
-        h.state().doc.as_ref().unwrap().project(),
-        "X0010.2",
-    )
-    .unwrap();
+    let x =
+        ladder_studio::gui::online::watch::resolve(h.state().doc().unwrap().project(), "X0010.2")
+            .unwrap();
     h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(cx, ladder_engine::machine::MachineCommand::Write(x, 1))
     });
     assert!(output(&h).contains("nothing can change until Back to live"));
     command(&mut h, Command::LiveView);
     settle(&mut h);
-    let p = h.state().doc.as_ref().unwrap().project().clone();
+    let p = h.state().doc().unwrap().project().clone();
     let cell = &p.ladder.blocks[1].networks[0].rows[0].cells[1];
     assert_eq!(*cell, contact("X0010.3"), "the edit was not undone");
     assert!(
-        h.state().online.session.as_ref().unwrap().drawing_runs(&p),
+        h.state()
+            .feature::<OnlineState>()
+            .session
+            .as_ref()
+            .unwrap()
+            .drawing_runs(&p),
         "the program that ran runs on"
     );
     assert_eq!(value(&h, "X0010.2"), 0, "the write was not sent");
@@ -152,8 +160,7 @@ fn undo_is_disabled_while_replaying_and_nothing_changes_the_project_or_the_machi
 
 fn write(h: &mut Harness<'static, LadderApp>, a: &str, v: i64) {
     let t =
-        ladder_studio::gui::online::watch::resolve(h.state().doc.as_ref().unwrap().project(), a)
-            .unwrap();
+        ladder_studio::gui::online::watch::resolve(h.state().doc().unwrap().project(), a).unwrap();
     h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
     });
@@ -161,7 +168,7 @@ fn write(h: &mut Harness<'static, LadderApp>, a: &str, v: i64) {
 
 fn now(h: &Harness<'static, LadderApp>) -> u64 {
     h.state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -185,7 +192,7 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     let key = h
         .state_mut()
         .with(|o: &mut OnlineState, cx| o.watch_key(cx));
-    h.state_mut().settings.triggers.insert(
+    h.state_mut().settings_mut().triggers.insert(
         key,
         TriggerSetup {
             signal: "X0010.0".into(),
@@ -195,7 +202,8 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
             post: 20,
         },
     );
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Trace;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Trace);
     h.run();
     h.get_by_label("Arm").click();
     h.run();
@@ -207,7 +215,13 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     let edge = now(&h);
     ticks(&mut h, 30);
     h.run();
-    let capture = h.state().online.trace.capture.clone().expect("captured");
+    let capture = h
+        .state()
+        .feature::<OnlineState>()
+        .trace
+        .capture
+        .clone()
+        .expect("captured");
     assert_eq!(capture.at, edge);
     assert_eq!(
         (capture.data.first, capture.data.last),
@@ -220,7 +234,8 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     assert_eq!(y.value_at(edge), 1, "Y0010.0 follows in the same tick");
     h.get_by_label_contains("Captured: triggered at tick");
     // Pause shows its own copy while the machine runs on.
-    h.state_mut().online.trace.show_capture = false;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.trace.show_capture = false);
     h.run();
     h.get_by_label("Pause").click();
     h.run();
@@ -245,7 +260,7 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
     ticks(&mut h, 15_000);
     let oldest = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -253,8 +268,12 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
         .oldest()
         .unwrap();
     assert!(oldest > edge + 20, "the ring moved past the capture");
-    assert_eq!(h.state().online.trace.capture.as_ref(), Some(&capture));
-    h.state_mut().online.trace.show_capture = true;
+    assert_eq!(
+        h.state().feature::<OnlineState>().trace.capture.as_ref(),
+        Some(&capture)
+    );
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.trace.show_capture = true);
     assert_eq!(
         h.state_mut()
             .with(|o: &mut OnlineState, cx| o.shown_trace(cx)),
@@ -272,9 +291,9 @@ fn a_triggered_capture_survives_two_minutes_of_running_and_a_pause_keeps_its_cop
 /// Whether the output column of the cursor's row is on screen.
 fn output_on_screen(h: &Harness<'static, LadderApp>) -> bool {
     let app = h.state();
-    let g = &app.edit.geometry;
-    let c = app.cursor;
-    let width = app.doc.as_ref().unwrap().project().ladder.width;
+    let g = &app.feature::<EditState>().geometry;
+    let c = app.cursor();
+    let width = app.doc().unwrap().project().ladder.width;
     let cell = g.cell_rect(c.network, c.row, width).expect("drawn");
     g.visible.expect("drawn").contains_rect(cell.shrink(2.0))
 }
@@ -285,16 +304,19 @@ fn fit_width_shows_the_output_column_at_1280_by_800_with_the_online_window_open(
     h.run();
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
-    h.state_mut().settings.show_online = true;
+    h.state_mut().settings_mut().show_online = true;
     h.run();
-    assert!(h.state().settings.fit_width, "going online fits the width");
+    assert!(
+        h.state().settings().fit_width,
+        "going online fits the width"
+    );
     assert!(output_on_screen(&h), "the coils are on screen");
-    let zoom = h.state().edit.geometry.zoom;
+    let zoom = h.state().feature::<EditState>().geometry.zoom;
     assert!((50..100).contains(&zoom), "zoom {zoom}");
     // A zoom step leaves fit width; End still brings the output column into view.
     command(&mut h, Command::ZoomIn);
     h.run();
-    assert!(!h.state().settings.fit_width);
+    assert!(!h.state().settings().fit_width);
     command(&mut h, Command::ZoomIn);
     h.run();
     h.key_press(egui::Key::Home);
@@ -308,19 +330,19 @@ fn fit_width_shows_the_output_column_at_1280_by_800_with_the_online_window_open(
     );
     h.key_press(egui::Key::Home);
     h.run();
-    let g = &h.state().edit.geometry;
+    let g = &h.state().feature::<EditState>().geometry;
     let first = g.cell_rect(0, 0, 0).unwrap();
     assert!(
         g.visible.unwrap().contains_rect(first.shrink(2.0)),
         "Home: back left"
     );
     // Arrow by arrow to the output column: the view follows each step.
-    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    let width = h.state().doc().unwrap().project().ladder.width;
     for _ in 0..width {
         h.key_press(egui::Key::ArrowRight);
         h.run();
     }
-    assert_eq!(h.state().cursor.col, width);
+    assert_eq!(h.state().cursor().col, width);
     assert!(output_on_screen(&h), "Right arrows: the view followed");
 }
 
@@ -350,7 +372,7 @@ fn a_refused_edit_is_shown_at_the_bottom_of_the_output_and_its_errors_go_with_un
     h.step();
     settle(&mut h);
     h.run();
-    let last = h.state().output.last().unwrap().text.clone();
+    let last = h.state().output().last().unwrap().text.clone();
     assert!(last.contains("was not swapped in"), "{last}");
     // The newest line is on screen, inside the window.
     let node = h.get_by_label_contains("was not swapped in");
@@ -377,7 +399,10 @@ fn the_first_force_asks_first_and_the_status_bar_counts_forces_in_amber() {
     h.run();
     settle(&mut h);
     assert!(
-        h.state().online.forced_addresses().is_empty(),
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty(),
         "cancelled: nothing forced"
     );
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
@@ -385,12 +410,20 @@ fn the_first_force_asks_first_and_the_status_bar_counts_forces_in_amber() {
     h.get_by_label("Force").click();
     h.run();
     settle(&mut h);
-    assert_eq!(h.state().online.forced_addresses().len(), 1);
+    assert_eq!(
+        h.state().feature::<OnlineState>().forced_addresses().len(),
+        1
+    );
     h.get_by_label_contains("Forces active (1)");
     // Asked once: the next press releases at once.
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
-    assert!(h.state().online.forced_addresses().is_empty());
+    assert!(
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty()
+    );
     assert!(h.query_by_label("Force a signal").is_none());
 }
 
@@ -401,7 +434,7 @@ fn the_toolbar_shows_the_scan_in_steps_and_the_watchdog_limit() {
     ticks(&mut h, 3);
     let (last, max) = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -434,8 +467,10 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
     h.state_mut()
         .with(|o: &mut OnlineState, cx| o.send_request(cx, Request::Release(key)));
     ticks(&mut h, 20);
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
-    h.state_mut().online.cnc.mdi = "M08".into();
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Cnc);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.cnc.mdi = "M08".into());
     h.run();
     h.get_by_label("Send MDI").click();
     h.run();
@@ -447,7 +482,7 @@ fn the_cnc_page_sends_mdi_with_feedback_starts_it_and_keeps_its_codes_and_strobe
     ticks(&mut h, 60);
     let status = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -472,7 +507,8 @@ fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
         let mut h = harness_sized(Some(lathe()), Lang::En, size);
         h.run();
         command(&mut h, Command::StepTick);
-        h.state_mut().online.tab = OnlineTab::Panel;
+        h.state_mut()
+            .with(|f: &mut OnlineState, _| f.tab = OnlineTab::Panel);
         h.run();
         h.run();
         let labels: Vec<String> = h
@@ -502,7 +538,7 @@ fn the_988ta_panel_fits_its_page_and_the_tabs_stay_put_at_both_sizes() {
             OnlineTab::Machine,
             OnlineTab::Panel,
         ] {
-            h.state_mut().online.tab = tab;
+            h.state_mut().with(|f: &mut OnlineState, _| f.tab = tab);
             h.run();
             assert_eq!(tabs(&h), first, "{tab:?} at {size:?}");
         }
@@ -515,17 +551,26 @@ fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     command(&mut h, Command::StepTick);
-    h.state_mut().online.forces_confirmed = true;
-    h.state_mut().online.tab = OnlineTab::Signals;
-    h.state_mut().online.signals.from = 8;
-    h.state_mut().online.signals.to = 12;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.forces_confirmed = true);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = OnlineTab::Signals);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.signals.from = 8);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.signals.to = 12);
     h.run();
     // X0010.2 starts the timer: a click writes it once.
     h.get_by_label("X0010.2").click();
     h.run();
     settle(&mut h);
     assert_eq!(value(&h, "X0010.2"), 1);
-    assert!(h.state().online.forced_addresses().is_empty());
+    assert!(
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty()
+    );
     // With "a click forces" a click forces X0010.0 to the opposite of its value.
     h.get_by_label("A click forces or releases").click();
     h.run();
@@ -535,7 +580,7 @@ fn the_signal_page_writes_and_forces_a_bit_and_writes_a_byte() {
     ticks(&mut h, 1);
     let forced: Vec<String> = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .forced_addresses()
         .iter()
         .map(|a| a.to_string())
@@ -566,21 +611,25 @@ fn prepared_values_are_written_in_one_tick_and_rows_show_symbols_units_and_prese
             .unwrap();
     }
     command(&mut h, Command::StepTick);
-    h.state_mut().online.tab = OnlineTab::Watch;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = OnlineTab::Watch);
     h.run();
     h.get_by_label_contains(" ms / 1000 ms");
     // Running as fast as it can: two separate writes would land ticks apart.
-    h.state_mut().online.speed = ladder_engine::runner::Speed::Max;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.speed = ladder_engine::runner::Speed::Max);
     command(&mut h, Command::Speed(ladder_engine::runner::Speed::Max));
     command(&mut h, Command::Run);
-    h.state_mut().online.watch.values = vec!["1".into(), "1".into(), String::new()];
+    h.state_mut().with(|f: &mut OnlineState, _| {
+        f.watch.values = vec!["1".into(), "1".into(), String::new()]
+    });
     h.run();
     h.get_by_label_contains("2 rows have a prepared value");
     h.get_by_label("Write prepared values").click();
     h.run();
     settle(&mut h);
     command(&mut h, Command::Stop);
-    let s = h.state().online.session.as_ref().unwrap();
+    let s = h.state().feature::<OnlineState>().session.as_ref().unwrap();
     let layout = &s.running.layout;
     let off = layout.loc("X0010.0".parse().unwrap(), false).off;
     let newest = s.recorder().newest().unwrap();
@@ -617,7 +666,8 @@ fn data_tables_show_running_values_edit_them_and_save_them_as_one_undo_step() {
     h.run();
     command(&mut h, Command::StepTick);
     h.state_mut().ask(Command::ShowView(View::Data));
-    h.state_mut().tables.data_tab = DataTab::D;
+    h.state_mut()
+        .with(|f: &mut TableState, _| f.data_tab = DataTab::D);
     h.run();
     h.get_by_label("Running values (online)");
     h.get_by_label_contains("0 rows differ");
@@ -631,7 +681,7 @@ fn data_tables_show_running_values_edit_them_and_save_them_as_one_undo_step() {
     settle(&mut h);
     assert_eq!(value(&h, "D0010"), 42);
     let file_value =
-        |h: &Harness<'static, LadderApp>| h.state().doc.as_ref().unwrap().project().data.d[0].value;
+        |h: &Harness<'static, LadderApp>| h.state().doc().unwrap().project().data.d[0].value;
     assert_eq!(file_value(&h), 5);
     h.get_by_label_contains("1 rows differ");
     h.get_by_label("Save running values into the project")
@@ -653,19 +703,31 @@ fn the_online_window_can_stand_on_its_own_and_the_ladder_takes_the_width() {
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
     h.run();
-    let beside = h.state().edit.geometry.visible.unwrap().width();
+    let beside = h
+        .state()
+        .feature::<EditState>()
+        .geometry
+        .visible
+        .unwrap()
+        .width();
     command(&mut h, Command::DetachOnline);
     h.run();
     h.run();
-    assert!(h.state().settings.online_window);
+    assert!(h.state().settings().online_window);
     // Headless there is no second native window: it stands as a window over the editor,
     // and the ladder has the whole width.
-    let alone = h.state().edit.geometry.visible.unwrap().width();
+    let alone = h
+        .state()
+        .feature::<EditState>()
+        .geometry
+        .visible
+        .unwrap()
+        .width();
     assert!(alone > beside + 200.0, "{beside} → {alone}");
     h.get_by_label("Panel");
     command(&mut h, Command::DetachOnline);
     h.run();
-    assert!(!h.state().settings.online_window);
+    assert!(!h.state().settings().online_window);
 }
 
 #[test]

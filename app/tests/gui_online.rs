@@ -9,33 +9,45 @@ use common::*;
 use ladder_engine::model::{Cell, CellRef, Edit, Operand};
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::online::OnlineState;
+use ladder_studio::gui::state::EditState;
 
 #[test]
 fn the_cursor_keys_force_an_input_and_release_it() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     // Asked once per run of the editor (gui_monitor.rs tests the question).
-    h.state_mut().online.forces_confirmed = true;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.forces_confirmed = true);
     on_level2(&mut h);
     command(&mut h, Command::StepTick);
-    assert!(h.state().online.is_online(), "a step goes online");
+    assert!(
+        h.state().feature::<OnlineState>().is_online(),
+        "a step goes online"
+    );
     // Cursor on X0000.0 (network 1, row 1, column 1): Shift+F7 forces it to 1.
     click_cell(&mut h, 0, 0, 0);
     h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F7);
     settle(&mut h);
     ticks(&mut h, 1);
     assert_eq!(value(&h, "X0010.0"), 1);
-    let forced = h.state().online.forced_addresses();
+    let forced = h.state().feature::<OnlineState>().forced_addresses();
     assert_eq!(forced.len(), 1, "{forced:?}");
     assert_eq!(forced[0].to_string(), "X0010.0");
     // The force list shows it with a release button.
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Forces;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Forces);
     h.step();
     h.get_by_label("X0010.0");
     h.get_by_label("Release all").click();
     h.step();
     settle(&mut h);
-    assert!(h.state().online.forced_addresses().is_empty(), "released");
+    assert!(
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty(),
+        "released"
+    );
     assert_eq!(
         value(&h, "X0010.0"),
         1,
@@ -52,7 +64,8 @@ fn the_watch_table_shows_a_timer_counting() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     // Asked once per run of the editor (gui_monitor.rs tests the question).
-    h.state_mut().online.forces_confirmed = true;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.forces_confirmed = true);
     h.state_mut()
         .with(|o: &mut OnlineState, cx| o.add_watch(cx, "T0000"))
         .unwrap();
@@ -66,7 +79,8 @@ fn the_watch_table_shows_a_timer_counting() {
             ladder_engine::machine::MachineCommand::Force("X0010.2".parse().unwrap(), 1),
         )
     });
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Watch;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Watch);
     ticks(&mut h, 10);
     let first = value(&h, "T0000");
     ticks(&mut h, 10);
@@ -97,7 +111,8 @@ fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     let mut h = harness(Some(il_project(RUNG)), Lang::En);
     h.run();
     // Asked once per run of the editor (gui_monitor.rs tests the question).
-    h.state_mut().online.forces_confirmed = true;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.forces_confirmed = true);
     command(&mut h, Command::StepTick);
     h.state_mut().with(|o: &mut OnlineState, cx| {
         o.send_command(
@@ -128,11 +143,11 @@ fn an_online_edit_is_swapped_in_without_resetting_a_running_timer() {
     assert!(output(&h).contains("The edit runs now"), "{}", output(&h));
     assert!(
         h.state()
-            .online
+            .feature::<OnlineState>()
             .session
             .as_ref()
             .unwrap()
-            .drawing_runs(h.state().doc.as_ref().unwrap().project())
+            .drawing_runs(h.state().doc().unwrap().project())
     );
     ticks(&mut h, 1);
     assert_eq!(value(&h, "T0000"), before + 8, "the timer went on counting");
@@ -171,7 +186,7 @@ fn an_edit_that_does_not_compile_is_refused_and_the_status_says_so() {
     );
     // The machine runs on with the old program.
     ticks(&mut h, 2);
-    assert!(h.state().online.is_online());
+    assert!(h.state().feature::<OnlineState>().is_online());
 }
 
 #[test]
@@ -180,11 +195,8 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
     h.run();
     command(&mut h, Command::StepTick);
     let write = |h: &mut Harness<'static, LadderApp>, a: &str, v: i64| {
-        let t = ladder_studio::gui::online::watch::resolve(
-            h.state().doc.as_ref().unwrap().project(),
-            a,
-        )
-        .unwrap();
+        let t = ladder_studio::gui::online::watch::resolve(h.state().doc().unwrap().project(), a)
+            .unwrap();
         h.state_mut().with(|o: &mut OnlineState, cx| {
             o.send_command(cx, ladder_engine::machine::MachineCommand::Write(t, v))
         });
@@ -195,7 +207,7 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
     assert_eq!(value(&h, "Y0010.0"), 1);
     let on_tick = h
         .state()
-        .online
+        .feature::<OnlineState>()
         .session
         .as_ref()
         .unwrap()
@@ -207,11 +219,7 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
     assert_eq!(value(&h, "Y0010.0"), 0);
     // Back to a tick where the coil was on: the view shows it, read-only.
     h.state_mut()
-        .online
-        .session
-        .as_mut()
-        .unwrap()
-        .scrub_to(Some(on_tick));
+        .with(|f: &mut OnlineState, _| f.session.as_mut().unwrap().scrub_to(Some(on_tick)));
     h.step();
     assert_eq!(value(&h, "Y0010.0"), 1, "the recorded state");
     assert!(
@@ -222,22 +230,24 @@ fn scrubbing_back_shows_an_earlier_state_and_why_names_the_contact_that_broke_th
     command(&mut h, Command::LiveView);
     assert_eq!(value(&h, "Y0010.0"), 0);
     // Why is the coil off? X0000.1 broke the rung, and changed at the tick after `on_tick`.
-    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
-    h.state_mut().cursor = CellRef {
-        block: 1,
-        network: 0,
-        row: 0,
-        col: width,
-    };
+    let width = h.state().doc().unwrap().project().ladder.width;
+    h.state_mut().with_context(|cx| {
+        *cx.cursor = CellRef {
+            block: 1,
+            network: 0,
+            row: 0,
+            col: width,
+        }
+    });
     command(&mut h, Command::Why);
     let out = output(&h);
     assert!(
         out.contains("X0010.1") && out.contains("broke the rung"),
         "{out}"
     );
-    let why = h.state().online.why.clone().unwrap();
+    let why = h.state().feature::<OnlineState>().why.clone().unwrap();
     assert_eq!(why.cells, vec![(0, 1)]);
-    let s = h.state().online.session.as_ref().unwrap();
+    let s = h.state().feature::<OnlineState>().session.as_ref().unwrap();
     assert_eq!(
         s.scrub,
         Some(on_tick + 1),
@@ -254,10 +264,10 @@ fn closing_the_project_or_the_window_while_running_stops_the_machine() {
         h.step();
         std::thread::sleep(std::time::Duration::from_millis(5));
     }
-    assert!(h.state().online.is_online());
+    assert!(h.state().feature::<OnlineState>().is_online());
     command(&mut h, Command::Close);
     assert!(
-        !h.state().online.is_online(),
+        !h.state().feature::<OnlineState>().is_online(),
         "the machine went with the project"
     );
     // Run again on a new project, then drop the whole app while running.
@@ -279,7 +289,7 @@ fn a_project_with_compile_errors_does_not_run_and_says_why() {
         },
     );
     command(&mut h, Command::Run);
-    assert!(!h.state().online.is_online());
+    assert!(!h.state().feature::<OnlineState>().is_online());
     assert!(
         output(&h).contains("compile errors and cannot run"),
         "{}",
@@ -304,7 +314,8 @@ fn the_jog_key_of_the_panel_selects_jog_and_lights_its_lamp() {
     let mut h = harness(Some(lathe()), Lang::En);
     h.run();
     command(&mut h, Command::StepTick);
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Panel;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Panel);
     ticks(&mut h, 2);
     assert_eq!(value(&h, "G0043"), 0, "power-on: MDI");
     click(&mut h, "JOG");
@@ -312,7 +323,10 @@ fn the_jog_key_of_the_panel_selects_jog_and_lights_its_lamp() {
     assert_eq!(value(&h, "X0002.3"), 0, "the key is up again");
     assert_eq!(value(&h, "G0043"), 5, "MD4 + MD1: JOG");
     assert_eq!(value(&h, "Y0001.3"), 1, "the JOG lamp");
-    assert!(h.state().online.alarms.on.is_empty(), "a healthy machine");
+    assert!(
+        h.state().feature::<OnlineState>().alarms.on.is_empty(),
+        "a healthy machine"
+    );
 }
 
 #[test]
@@ -321,11 +335,14 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
     h.run();
     command(&mut h, Command::StepTick);
     ticks(&mut h, 2);
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Cnc;
-    h.state_mut().online.cnc.program = "O0001; M03 S800; M30".into();
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Cnc);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.cnc.program = "O0001; M03 S800; M30".into());
     h.step();
     click(&mut h, "Load program");
-    h.state_mut().online.tab = ladder_studio::gui::online::OnlineTab::Panel;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = ladder_studio::gui::online::OnlineTab::Panel);
     h.step();
     click(&mut h, "AUTO");
     ticks(&mut h, 12);
@@ -336,7 +353,7 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
     assert_eq!(value(&h, "Y0000.0"), 1, "spindle CW");
     // The spindle coil is drawn energised in the ladder view.
     let (b, n, r) = {
-        let p = h.state().doc.as_ref().unwrap().project();
+        let p = h.state().doc().unwrap().project();
         let width = p.ladder.width;
         let mut at = None;
         for (bi, block) in p.ladder.blocks.iter().enumerate() {
@@ -365,12 +382,12 @@ fn an_m03_program_from_the_cnc_page_runs_the_spindle_coil_and_fin_comes_back() {
         .state_mut()
         .with(|o: &mut OnlineState, cx| o.live_network_view(cx, b, n))
         .expect("on screen");
-    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    let width = h.state().doc().unwrap().project().ladder.width;
     assert!(view.cells[r][width].power_in, "the coil is energised");
     // FIN comes back within the M code time (200 ms), and the CNC goes on to M30.
     ticks(&mut h, 40);
     assert_ne!(value(&h, "F0010:4"), 3, "M03 is done");
-    let s = h.state().online.session.as_ref().unwrap();
+    let s = h.state().feature::<OnlineState>().session.as_ref().unwrap();
     let fin = s.running.layout.loc("G0004.3".parse().unwrap(), false).off;
     let mut changes = Vec::new();
     let newest = s.recorder().newest().unwrap();
@@ -412,7 +429,7 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
             .wrapping_mul(6_364_136_223_846_793_005)
             .wrapping_add(1_442_695_040_888_963_407);
         let pick = (seed >> 33) as usize;
-        if i % 7 == 3 && h.state().doc.is_some() {
+        if i % 7 == 3 && h.state().doc().is_some() {
             // An edit, valid or not, where the cursor is.
             let operand = if pick.is_multiple_of(2) {
                 "X0010.3"
@@ -434,13 +451,20 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
                 })
             });
         } else if i % 11 == 5 {
-            let scrub = h.state().online.session.as_ref().and_then(|s| {
-                let r = s.recorder();
-                r.oldest()
+            let scrub = h
+                .state()
+                .feature::<OnlineState>()
+                .session
+                .as_ref()
+                .and_then(|s| {
+                    let r = s.recorder();
+                    r.oldest()
+                });
+            h.state_mut().with(|o: &mut OnlineState, _| {
+                if let Some(s) = o.session.as_mut() {
+                    s.scrub_to(scrub);
+                }
             });
-            if let Some(s) = h.state_mut().online.session.as_mut() {
-                s.scrub_to(scrub);
-            }
         } else {
             let c = commands[pick % commands.len()];
             h.state_mut().ask(c);
@@ -455,7 +479,7 @@ fn no_sequence_of_run_stop_step_force_edit_undo_and_close_panics() {
 fn double_click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
     let p = h
         .state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_center(network, row, col)
         .expect("the cell is on screen");
@@ -481,7 +505,7 @@ fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
         .with_step_dt(1.0 / 60.0)
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, Some(path));
-            app.settings.lang = Lang::En;
+            app.settings_mut().lang = Lang::En;
             app
         });
     h.run();
@@ -490,16 +514,17 @@ fn online_a_double_click_toggles_a_contact_and_writes_a_box_operand() {
     double_click_cell(&mut h, 0, 0, 0);
     assert_eq!(value(&h, "X0010.0"), 1, "the contact's bit was toggled");
     assert!(
-        h.state().edit.function_dialog.is_none(),
+        h.state().feature::<EditState>().function_dialog.is_none(),
         "online, no edit dialog"
     );
-    let width = h.state().doc.as_ref().unwrap().project().ladder.width;
+    let width = h.state().doc().unwrap().project().ladder.width;
     double_click_cell(&mut h, 1, 0, width);
     assert!(
-        h.state().online.values.at.is_some(),
+        h.state().feature::<OnlineState>().values.at.is_some(),
         "the box's value window"
     );
-    h.state_mut().online.values.texts[0] = "500".into();
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.values.texts[0] = "500".into());
     h.step();
     // The first row's Write: T0000 (the preset is a constant and has none).
     h.get_all_by_label("Write").next().unwrap().click();
@@ -529,8 +554,9 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     // Offline: the Machine page adds an actuator and binds it.
     h.state_mut().ask(Command::MachineModel);
     h.run();
-    assert_eq!(h.state().online.tab, OnlineTab::Machine);
-    h.state_mut().online.machine.add_kind = 1;
+    assert_eq!(h.state().feature::<OnlineState>().tab, OnlineTab::Machine);
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.machine.add_kind = 1);
     h.run();
     h.get_by_label("Add device").click();
     h.run();
@@ -541,16 +567,16 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     fill(&mut h, "travel time, ms", "400");
     h.get_by_label("Apply").click();
     h.run();
-    let machine = h.state().doc.as_ref().unwrap().project().machine.clone();
+    let machine = h.state().doc().unwrap().project().machine.clone();
     assert_eq!(machine.devices.len(), 1, "{machine:?}");
     assert_eq!(machine.devices[0].name, "actuator");
     // One undoable change.
     h.state_mut().ask(Command::Undo);
     h.run();
-    assert!(h.state().doc.as_ref().unwrap().project().machine.is_empty());
+    assert!(h.state().doc().unwrap().project().machine.is_empty());
     h.state_mut().ask(Command::Redo);
     h.run();
-    assert_eq!(h.state().doc.as_ref().unwrap().project().machine, machine);
+    assert_eq!(h.state().doc().unwrap().project().machine, machine);
     // Run: the cylinder travels 400 ms, then its switch closes and lights the contact.
     command(&mut h, Command::StepTick);
     ticks(&mut h, 20);
@@ -560,16 +586,7 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     assert_eq!(value(&h, "X0011.0"), 1, "the clamp switch");
     assert_eq!(value(&h, "Y0011.0"), 1);
     h.get_by_label("advanced");
-    let level2 = h
-        .state()
-        .doc
-        .as_ref()
-        .unwrap()
-        .project()
-        .ladder
-        .blocks
-        .len()
-        - 1;
+    let level2 = h.state().doc().unwrap().project().ladder.blocks.len() - 1;
     h.state_mut().jump(CellRef {
         block: level2,
         network: 1,
@@ -584,7 +601,7 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
         .with(|o: &mut OnlineState, cx| o.live_network_view(cx, level2, 1))
         .expect("on screen");
     assert!(view.cells[0][0].power_out, "the X0011.0 contact is lit");
-    assert!(h.state().online.alarms.on.is_empty());
+    assert!(h.state().feature::<OnlineState>().alarms.on.is_empty());
     // A stuck clamp switch: the ladder's timer raises its alarm 1 s later.
     h.get_by_label("Fault").click();
     h.run();
@@ -594,7 +611,8 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     assert_eq!(value(&h, "X0011.0"), 0);
     assert_eq!(value(&h, "A0000.0"), 1);
     h.get_by_label("Device faults: 1");
-    h.state_mut().online.tab = OnlineTab::Alarms;
+    h.state_mut()
+        .with(|f: &mut OnlineState, _| f.tab = OnlineTab::Alarms);
     h.run();
     h.get_by_label("Clamp timeout");
     h.get_by_label("1001");

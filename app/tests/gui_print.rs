@@ -26,13 +26,14 @@ fn queue(h: &mut Harness<'static, LadderApp>, present: bool) -> ScriptedQueue {
         present,
         ..ScriptedQueue::default()
     };
-    h.state_mut().print.queue = Box::new(q.clone());
+    h.state_mut()
+        .with(|f: &mut PrintState, _| f.queue = Box::new(q.clone()));
     q
 }
 
 fn output(h: &Harness<'static, LadderApp>) -> String {
     h.state()
-        .output
+        .output()
         .iter()
         .map(|l| l.text.clone())
         .collect::<Vec<_>>()
@@ -48,7 +49,7 @@ fn the_preview_opens_on_the_sample_and_its_pages_turn() {
     h.run();
     let total = h
         .state()
-        .print
+        .feature::<PrintState>()
         .preview
         .as_ref()
         .expect("the preview is open")
@@ -64,13 +65,34 @@ fn the_preview_opens_on_the_sample_and_its_pages_turn() {
     h.run();
     h.get_by_label("◀").click();
     h.run();
-    assert_eq!(h.state().print.preview.as_ref().unwrap().page, 1);
+    assert_eq!(
+        h.state()
+            .feature::<PrintState>()
+            .preview
+            .as_ref()
+            .unwrap()
+            .page,
+        1
+    );
     // It opened at fit width; zoom in: the page is drawn larger and fit width is off.
-    let fitted = h.state().print.preview.as_ref().unwrap().zoom;
-    assert!(h.state().print.preview.as_ref().unwrap().fit);
+    let fitted = h
+        .state()
+        .feature::<PrintState>()
+        .preview
+        .as_ref()
+        .unwrap()
+        .zoom;
+    assert!(
+        h.state()
+            .feature::<PrintState>()
+            .preview
+            .as_ref()
+            .unwrap()
+            .fit
+    );
     h.get_by_label("+").click();
     h.run();
-    let p = h.state().print.preview.as_ref().unwrap();
+    let p = h.state().feature::<PrintState>().preview.as_ref().unwrap();
     assert!(p.zoom > fitted && !p.fit, "{} after {fitted}", p.zoom);
 }
 
@@ -81,7 +103,7 @@ fn the_preview_opens_at_fit_width() {
         .ask(ladder_studio::gui::command::Command::PrintPreview);
     h.run();
     h.run();
-    let p = h.state().print.preview.as_ref().unwrap();
+    let p = h.state().feature::<PrintState>().preview.as_ref().unwrap();
     // An A4 page (595 pt) in a preview window about 760 px wide: more than 100 %.
     assert!(p.fit && (100..=140).contains(&p.zoom), "{}", p.zoom);
 }
@@ -98,15 +120,16 @@ fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
         },
         ..ScriptedQueue::default()
     };
-    h.state_mut().print.queue = Box::new(q.clone());
+    h.state_mut()
+        .with(|f: &mut PrintState, _| f.queue = Box::new(q.clone()));
     h.state_mut()
         .ask(ladder_studio::gui::command::Command::PageSetup);
     h.run();
     h.run();
     assert_eq!(
         h.state()
-            .print
-            .chosen_printer(&h.state().settings)
+            .feature::<PrintState>()
+            .chosen_printer(h.state().settings())
             .as_deref(),
         Some("shop-floor")
     );
@@ -117,7 +140,7 @@ fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
     h.get_by_label("office").click();
     h.run();
     assert_eq!(
-        h.state().settings.page_setup.printer.as_deref(),
+        h.state().settings().page_setup.printer.as_deref(),
         Some("office"),
         "kept in the settings"
     );
@@ -130,7 +153,7 @@ fn the_printer_is_chosen_from_the_queue_list_with_the_default_preselected() {
 #[test]
 fn a_network_range_in_the_page_setup_prints_those_networks() {
     let mut h = on_sample();
-    h.state_mut().settings.page_setup.networks = "LEVEL2:3-5".into();
+    h.state_mut().settings_mut().page_setup.networks = "LEVEL2:3-5".into();
     let doc = h
         .state_mut()
         .with_context(|cx| PrintState::document(cx))
@@ -156,7 +179,10 @@ fn without_a_queue_the_preview_says_so() {
     h.key_press_modifiers(Modifiers::COMMAND, Key::P);
     h.run();
     h.run();
-    assert!(h.state().print.preview.is_some(), "the preview stays open");
+    assert!(
+        h.state().feature::<PrintState>().preview.is_some(),
+        "the preview stays open"
+    );
     assert_eq!(
         h.query_all_by_label_contains("no print queue").count(),
         2,
@@ -210,8 +236,8 @@ fn the_selected_networks_alone_print_when_asked() {
         .len();
     {
         let app = h.state_mut();
-        app.settings.page_setup.selection_only = true;
-        app.settings.page_setup.tables = false;
+        app.settings_mut().page_setup.selection_only = true;
+        app.settings_mut().page_setup.tables = false;
     }
     let one = h
         .state_mut()
@@ -230,7 +256,7 @@ fn the_selected_networks_alone_print_when_asked() {
 #[test]
 fn export_as_svg_writes_a_file_per_page() {
     let mut h = on_sample();
-    h.state_mut().settings.page_setup.selection_only = true;
+    h.state_mut().settings_mut().page_setup.selection_only = true;
     let dir = tempfile_dir();
     scripted(&mut h, vec![Some(dir.join("net.svg"))]);
     h.get_by_label("File").click();

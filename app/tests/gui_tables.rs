@@ -8,11 +8,7 @@ use egui::accesskit::Role;
 use ladder_engine::model::Project;
 
 fn project<'a>(h: &'a Harness<'static, LadderApp>) -> &'a Project {
-    h.state()
-        .doc
-        .as_ref()
-        .expect("the sample is open")
-        .project()
+    h.state().doc().expect("the sample is open").project()
 }
 
 /// The sample's first symbol table shown, in English.
@@ -20,7 +16,7 @@ fn on_symbols(size: egui::Vec2) -> Harness<'static, LadderApp> {
     let mut h = harness(None, Lang::En);
     h.set_size(size);
     h.run();
-    h.state_mut().view = View::Symbols(0);
+    h.state_mut().show_view(View::Symbols(0));
     h.run();
     h
 }
@@ -209,7 +205,7 @@ fn message_texts_and_data_comments_have_a_column_per_language_too() {
     let mut h = harness(None, Lang::En);
     h.set_size(egui::vec2(width, height));
     h.run();
-    h.state_mut().view = View::Messages;
+    h.state_mut().show_view(View::Messages);
     h.run();
     let texts = project(&h).messages.rows[0].texts.clone();
     assert_eq!(cell_value(&h, "Message text (zh) 1"), texts["zh"]);
@@ -219,7 +215,7 @@ fn message_texts_and_data_comments_have_a_column_per_language_too() {
     assert_eq!(now["zh"], "刀架换刀时间过长");
     assert_eq!(now["en"], texts["en"], "the English text is not touched");
 
-    h.state_mut().view = View::Data;
+    h.state_mut().show_view(View::Data);
     h.run();
     h.get_by_label("D").click();
     h.run();

@@ -4,6 +4,8 @@ mod common;
 
 use common::*;
 use ladder_studio::gui::state::EditState;
+use ladder_studio::gui::tables::TableState;
+use ladder_studio::gui::xref_view::XrefState;
 
 #[test]
 fn starts_on_the_bundled_sample_with_the_project_tree() {
@@ -27,7 +29,7 @@ fn starts_on_the_bundled_sample_with_the_project_tree() {
     }
     h.get_by_label_contains("P0001");
     assert_eq!(
-        h.state().view,
+        h.state().view(),
         View::Block(0),
         "level 1 is shown first, as in the manual's editor"
     );
@@ -41,7 +43,7 @@ fn the_language_switches_at_run_time() {
     h.run();
     h.get_by_label("English (英文)").click();
     h.run();
-    assert_eq!(h.state().settings.lang, Lang::En);
+    assert_eq!(h.state().settings().lang, Lang::En);
     h.get_by_label("Level 2");
     h.get_by_label("Cross-reference");
     assert!(h.query_by_label("二级程序").is_none());
@@ -55,7 +57,7 @@ fn f9_compiles_into_the_output_window() {
     h.run();
     let last = h
         .state()
-        .output
+        .output()
         .last()
         .expect("a summary line")
         .text
@@ -78,19 +80,23 @@ fn a_compile_error_jumps_to_its_network() {
     h.run();
     h.get_by_label("Level 1").click();
     h.run();
-    assert_eq!(h.state().view, View::Block(0));
+    assert_eq!(h.state().view(), View::Block(0));
     h.key_press(egui::Key::F9);
     h.run();
-    let diag = h.state().output[0].clone();
+    let diag = h.state().output()[0].clone();
     let at = diag.target.expect("the diagnostic has a cell");
     assert_eq!((at.block, at.network), (1, 1), "{}", diag.text);
     h.get_by_label_contains("undefined symbol `NOWHERE`")
         .click();
     h.run();
-    assert_eq!(h.state().view, View::Block(1), "the error's block is shown");
-    assert_eq!(h.state().cursor, at, "the cursor is on the cell");
     assert_eq!(
-        h.state().edit.jump_to,
+        h.state().view(),
+        View::Block(1),
+        "the error's block is shown"
+    );
+    assert_eq!(h.state().cursor(), at, "the cursor is on the cell");
+    assert_eq!(
+        h.state().feature::<EditState>().jump_to,
         None,
         "and its network was scrolled to"
     );
@@ -110,7 +116,7 @@ fn a_compile_error_reads_in_chinese_in_a_chinese_ui() {
     h.run();
     h.key_press(egui::Key::F9);
     h.run();
-    let diag = h.state().output[0].clone();
+    let diag = h.state().output()[0].clone();
     assert!(
         diag.text
             .starts_with("err.ldp 二级程序 网络 2 行 1 列 2：错误：[L020] 符号 `NOWHERE` 未定义"),
@@ -139,7 +145,7 @@ fn the_cross_reference_view_lists_addresses() {
     h.run();
     h.get_by_label("Bit usage").click();
     h.run();
-    assert_eq!(h.state().view, View::RefBits);
+    assert_eq!(h.state().view(), View::RefBits);
     h.get_by_label_contains("BIT     7 6 5 4 3 2 1 0");
 }
 
@@ -156,15 +162,15 @@ fn the_reference_index_filters_by_address_and_jumps_to_the_element() {
     h.get_by_role_and_label(egui::accesskit::Role::TextInput, "Address or symbol")
         .type_text("y3.6");
     h.run();
-    assert_eq!(h.state().xref.filter, "y3.6");
+    assert_eq!(h.state().feature::<XrefState>().filter, "y3.6");
     assert!(
         h.query_by_label_contains("Y0003.7").is_none(),
         "the filter leaves only Y3.6"
     );
     let place = h.get_by_label("N0002 1:11").rect().center();
     double_click(&mut h, place);
-    assert_eq!(h.state().view, View::Block(1));
-    let c = h.state().cursor;
+    assert_eq!(h.state().view(), View::Block(1));
+    let c = h.state().cursor();
     assert_eq!((c.block, c.network, c.row, c.col), (1, 1, 0, 10));
 }
 
@@ -177,12 +183,12 @@ fn every_view_opened_gets_a_tab_that_switches_back_to_it() {
     h.get_by_label("Display messages").click();
     h.run();
     assert_eq!(
-        h.state().tabs,
+        h.state().tabs(),
         [View::Block(0), View::Block(1), View::Messages]
     );
     h.get_by_label("Tab: Level 1").click();
     h.run();
-    assert_eq!(h.state().view, View::Block(0));
+    assert_eq!(h.state().view(), View::Block(0));
 }
 
 #[test]
@@ -190,20 +196,30 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
     use egui::{Key, Modifiers};
     let mut h = harness(None, Lang::En);
     h.run();
-    h.state_mut().view = View::Symbols(0);
+    h.state_mut().show_view(View::Symbols(0));
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "25");
-    assert!(h.state().edit.prompt.is_none());
+    assert!(h.state().feature::<EditState>().prompt.is_none());
     let sheet = ladder_studio::gui::tables::Sheet::Symbols(0);
-    assert_eq!(h.state().tables.selected.get(&sheet), Some(&24));
+    assert_eq!(
+        h.state().feature::<TableState>().selected.get(&sheet),
+        Some(&24)
+    );
     assert!(
         h.query_all_by_value("KEY_SP_CCW").next().is_some(),
         "row 25 was scrolled into view (only visible rows are laid out)"
     );
     h.key_press_modifiers(Modifiers::COMMAND, Key::G);
     enter_operand(&mut h, "9999");
-    let err = h.state().edit.prompt.clone().unwrap().error.unwrap();
+    let err = h
+        .state()
+        .feature::<EditState>()
+        .prompt
+        .clone()
+        .unwrap()
+        .error
+        .unwrap();
     assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
 }
 
@@ -212,14 +228,7 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
     use egui::{Key, Modifiers};
     let (mut h, _) = editor_on(TWO_NETWORKS, "undoview.ldp");
     // A change in a table, then the ladder view and a change in its second network.
-    let mut tables = h
-        .state()
-        .doc
-        .as_ref()
-        .unwrap()
-        .project()
-        .symbol_tables
-        .clone();
+    let mut tables = h.state().doc().unwrap().project().symbol_tables.clone();
     tables[0].rows.push(ladder_engine::model::Symbol {
         name: "START".into(),
         address: ladder_engine::Address::parse("X0002.1").unwrap(),
@@ -228,33 +237,33 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
     h.state_mut().with(|o: &mut EditState, cx| {
         o.edit_table(cx, ladder_engine::model::TableEdit::Symbols(tables))
     });
-    h.state_mut().view = View::Messages;
+    h.state_mut().show_view(View::Messages);
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
     assert_eq!(
-        h.state().view,
+        h.state().view(),
         View::Symbols(0),
         "the undone rename is shown"
     );
     assert!(
-        h.state().doc.as_ref().unwrap().project().symbol_tables[0]
+        h.state().doc().unwrap().project().symbol_tables[0]
             .rows
             .is_empty()
     );
-    h.state_mut().view = View::Block(1);
-    h.state_mut().cursor.network = 1;
+    h.state_mut().show_view(View::Block(1));
+    h.state_mut().with_context(|cx| cx.cursor.network = 1);
     h.run();
     h.key_press(Key::Delete);
     h.run();
-    h.state_mut().cursor.network = 0;
-    h.state_mut().view = View::Data;
+    h.state_mut().with_context(|cx| cx.cursor.network = 0);
+    h.state_mut().show_view(View::Data);
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);
     h.run();
-    assert_eq!(h.state().view, View::Block(1));
+    assert_eq!(h.state().view(), View::Block(1));
     assert_eq!(
-        h.state().cursor.network,
+        h.state().cursor().network,
         1,
         "the cursor is on the contact brought back"
     );
@@ -286,17 +295,23 @@ fn each_block_keeps_its_own_cursor_and_the_status_bar_speaks_of_the_block_shown(
     h.run();
     h.key_press(Key::Enter);
     h.run();
-    assert_eq!(h.state().cursor.network, 42);
+    assert_eq!(h.state().cursor().network, 42);
     h.get_by_label_contains("P0001").click();
     h.run();
-    assert_eq!(h.state().view, View::Block(2));
-    assert_eq!((h.state().cursor.block, h.state().cursor.network), (2, 0));
+    assert_eq!(h.state().view(), View::Block(2));
+    assert_eq!(
+        (h.state().cursor().block, h.state().cursor().network),
+        (2, 0)
+    );
     h.get_by_label_contains("Cursor: P0001 Network 1 ");
     assert!(h.query_by_label_contains("Network 43").is_none());
     // Back in level 2 the cursor is where it was left.
     h.get_by_label("Level 2").click();
     h.run();
-    assert_eq!((h.state().cursor.block, h.state().cursor.network), (1, 42));
+    assert_eq!(
+        (h.state().cursor().block, h.state().cursor().network),
+        (1, 42)
+    );
 }
 
 #[test]
@@ -304,14 +319,14 @@ fn closing_the_project_leaves_no_tab_and_no_output_behind() {
     let (mut h, _) = editor_on(&long_level2(2), "close.ldp");
     h.key_press(egui::Key::F9);
     h.run();
-    assert!(!h.state().output.is_empty());
+    assert!(!h.state().output().is_empty());
     h.get_by_label("File").click();
     h.run();
     h.get_by_label("Close").click();
     h.run();
-    assert!(h.state().doc.is_none());
-    assert!(h.state().tabs.is_empty(), "{:?}", h.state().tabs);
-    assert!(h.state().output.is_empty());
+    assert!(h.state().doc().is_none());
+    assert!(h.state().tabs().is_empty(), "{:?}", h.state().tabs());
+    assert!(h.state().output().is_empty());
     assert!(h.query_by_label_contains("Tab:").is_none());
 }
 
@@ -325,36 +340,36 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
     h.run();
     on_level2(&mut h);
     let (networks, width) = {
-        let p = h.state().doc.as_ref().unwrap().project();
+        let p = h.state().doc().unwrap().project();
         (p.ladder.blocks[1].networks.len(), p.ladder.width)
     };
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::End);
     h.run();
     h.run();
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!(c.network, networks - 1, "Ctrl+End: the last network");
     let p = h
         .state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_center(c.network, c.row, 0)
         .expect("drawn");
     assert!((0.0..800.0).contains(&p.y), "the view followed: {p:?}");
     h.key_press(egui::Key::End);
     h.run();
-    assert_eq!(h.state().cursor.col, width, "End: the output column");
+    assert_eq!(h.state().cursor().col, width, "End: the output column");
     h.key_press(egui::Key::Home);
     h.run();
-    assert_eq!(h.state().cursor.col, 0, "Home: the first column");
+    assert_eq!(h.state().cursor().col, 0, "Home: the first column");
     h.key_press(egui::Key::PageUp);
     h.run();
-    assert_eq!(h.state().cursor.network, networks - 9, "PgUp: a page up");
+    assert_eq!(h.state().cursor().network, networks - 9, "PgUp: a page up");
     h.key_press(egui::Key::PageDown);
     h.run();
-    assert_eq!(h.state().cursor.network, networks - 1);
+    assert_eq!(h.state().cursor().network, networks - 1);
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Home);
     h.run();
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!(
         (c.network, c.row, c.col),
         (0, 0, 0),
@@ -365,14 +380,14 @@ fn home_end_page_and_ctrl_end_move_the_cursor_and_the_view_follows() {
 #[test]
 fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
     let (mut h, _) = stress_at(40);
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     // Ctrl+plus zooms in about the cursor cell: it stays where it was.
-    let g = h.state().edit.geometry.clone();
+    let g = h.state().feature::<EditState>().geometry.clone();
     let before = g.cell_rect(c.network, c.row, c.col).unwrap().center();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Plus);
     h.run();
-    assert_eq!(h.state().settings.zoom, 125);
-    let g = h.state().edit.geometry.clone();
+    assert_eq!(h.state().settings().zoom, 125);
+    let g = h.state().feature::<EditState>().geometry.clone();
     let after = g.cell_rect(c.network, c.row, c.col).unwrap();
     assert!(
         after.contains(before),
@@ -392,8 +407,8 @@ fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
     });
     // The wheel's motion is smoothed over a few frames.
     h.run_steps(30);
-    assert_eq!(h.state().settings.zoom, 150, "one notch, one zoom step");
-    let g = h.state().edit.geometry.clone();
+    assert_eq!(h.state().settings().zoom, 150, "one notch, one zoom step");
+    let g = h.state().feature::<EditState>().geometry.clone();
     let a = g.anchor_at(mouse).unwrap();
     assert_eq!(
         (a.network, a.row),
@@ -408,8 +423,8 @@ fn ctrl_wheel_zooms_and_the_element_under_the_mouse_stays_under_it() {
 fn the_view_follows_the_cursor_after_an_insert_and_a_paste() {
     let (mut h, _) = stress_at(60);
     let visible = |h: &Harness<'static, LadderApp>| {
-        let c = h.state().cursor;
-        let g = &h.state().edit.geometry;
+        let c = h.state().cursor();
+        let g = &h.state().feature::<EditState>().geometry;
         let r = g.cell_rect(c.network, c.row, c.col).unwrap();
         let screen = h.ctx.content_rect();
         r.top() >= 0.0 && r.bottom() <= screen.bottom()
@@ -438,35 +453,35 @@ fn each_block_opens_again_where_it_was_left_cursor_included() {
     // The cursor one column along, as a user leaves it.
     h.key_press(egui::Key::ArrowRight);
     h.run();
-    let cursor = h.state().cursor;
+    let cursor = h.state().cursor();
     assert_eq!((cursor.network, cursor.col), (119, 1));
-    let top = h.state().settings.tops[&path]["LEVEL2"];
+    let top = h.state().settings().tops[&path]["LEVEL2"];
     assert!(
         (100..=119).contains(&top),
         "network 120 is on screen: top {top}"
     );
-    let settings = h.state().settings.clone();
+    let settings = h.state().settings().clone();
     drop(h);
     // Another session with the same settings: level 1 first, then level 2 where it was.
     let mut h = egui_kittest::Harness::builder()
         .with_size(egui::vec2(1280.0, 800.0))
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, Some(path));
-            app.settings = settings;
+            *app.settings_mut() = settings;
             app
         });
     h.run();
-    assert_eq!(h.state().view, View::Block(0));
+    assert_eq!(h.state().view(), View::Block(0));
     on_level2(&mut h);
     h.run();
-    let g = h.state().edit.geometry.clone();
+    let g = h.state().feature::<EditState>().geometry.clone();
     let shown = g.cell_rect(top, 0, 0).unwrap();
     assert!(
         shown.top() >= 0.0 && shown.top() < 200.0,
         "network {top} is at the top again: {shown:?}"
     );
     assert_eq!(
-        h.state().cursor,
+        h.state().cursor(),
         cursor,
         "the cursor came back with the view"
     );
@@ -507,8 +522,8 @@ fn element_comments_and_long_names_fit_their_cells_and_the_tooltip_shows_them_wh
     h.key_press(egui::Key::F11); // element comments on
     h.run();
     h.run();
-    assert!(h.state().settings.show_element_comments);
-    let g = h.state().edit.geometry.clone();
+    assert!(h.state().settings().show_element_comments);
+    let g = h.state().feature::<EditState>().geometry.clone();
     let texts: Vec<&str> = g.labels.iter().map(|(_, t)| t.as_str()).collect();
     assert!(
         texts.contains(&"X0000.0") && texts.contains(&"防护门"),
@@ -571,7 +586,7 @@ fn the_output_window_resizes_keeps_its_height_lists_a_branch_once_and_copies_a_l
     }
     h.key_press(egui::Key::F9);
     h.run();
-    let lines: Vec<String> = h.state().output.iter().map(|l| l.text.clone()).collect();
+    let lines: Vec<String> = h.state().output().iter().map(|l| l.text.clone()).collect();
     assert_eq!(
         lines.iter().filter(|l| l.contains("[L002]")).count(),
         1,
@@ -588,7 +603,7 @@ fn the_output_window_resizes_keeps_its_height_lists_a_branch_once_and_copies_a_l
     assert!(copied, "{:?}", h.output().platform_output.commands);
     h.run();
     // Drag the window's top edge up by 100 points: it grows, and the settings keep it.
-    let before = h.state().settings.output_height;
+    let before = h.state().settings().output_height;
     let top = h.get_by_label("Output").rect().top() - 4.0;
     drag(
         &mut h,
@@ -596,7 +611,7 @@ fn the_output_window_resizes_keeps_its_height_lists_a_branch_once_and_copies_a_l
         egui::pos2(600.0, top - 100.0),
     );
     h.run();
-    let after = h.state().settings.output_height;
+    let after = h.state().settings().output_height;
     assert!(after > before + 60.0, "{before} → {after}");
 }
 
@@ -616,14 +631,14 @@ fn network_comments_show_a_line_per_language_as_the_csv_has_them() {
     assert!(csv.contains("主轴启动") && csv.contains("Spindle start"));
     let mut h = harness(Some(path), Lang::En);
     h.run();
-    assert!(h.state().settings.show_comments);
-    let header = 22.0 * f32::from(h.state().settings.zoom) / 100.0;
-    let first_row = h.state().edit.geometry.rows[0][0];
+    assert!(h.state().settings().show_comments);
+    let header = 22.0 * f32::from(h.state().settings().zoom) / 100.0;
+    let first_row = h.state().feature::<EditState>().geometry.rows[0][0];
     assert_eq!(first_row, 3.0 * header, "title, then a zh and an en line");
     h.state_mut().ask(Command::ToggleComments);
     h.run();
     assert_eq!(
-        h.state().edit.geometry.rows[0][0],
+        h.state().feature::<EditState>().geometry.rows[0][0],
         header,
         "hidden: the title only"
     );

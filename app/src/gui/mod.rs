@@ -62,46 +62,46 @@ pub use output::OutputLine;
 /// groups (see `state.rs`).
 pub struct LadderApp {
     /// Persisted settings.
-    pub settings: Settings,
+    settings: Settings,
     /// The open project.
-    pub doc: Option<Document>,
+    doc: Option<Document>,
     /// What the main area shows.
-    pub view: View,
+    view: View,
     /// The view tabs above the main area, in the order they were opened.
-    pub tabs: Vec<View>,
+    tabs: Vec<View>,
     /// The output window.
-    pub output: output::Output,
+    output: output::Output,
     /// Find and replace: its window, while open.
-    pub replace: replace::Replace,
+    replace: replace::Replace,
     /// The ladder cursor: the cell the editor's commands act on.
-    pub cursor: model::CellRef,
+    cursor: model::CellRef,
     /// The ladder selection: its block and region, if any.
-    pub selection: Option<(usize, selection::Selection)>,
+    selection: Option<(usize, selection::Selection)>,
     /// The ladder editor: clipboard, gestures, the view's geometry.
-    pub edit: state::EditState,
+    edit: state::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
-    pub files: state::FileState,
+    files: state::FileState,
     /// The open Help window.
-    pub help: Option<HelpPage>,
+    help: Option<HelpPage>,
     /// Element properties: the form, while open.
-    pub properties: properties::ElementProperties,
+    properties: properties::ElementProperties,
     /// The table editors' UI state (selected row, text being typed, caches).
-    pub tables: tables::TableState,
+    tables: tables::TableState,
     /// The cross-reference views: the index filter and what was derived from the project.
-    pub xref: xref_view::XrefState,
+    xref: xref_view::XrefState,
     /// Printing: the page setup, the preview, the print queue.
-    pub print: printing::PrintState,
+    print: printing::PrintState,
     /// The egui context, for starting dialogs outside a frame's closures.
-    pub ctx: Option<egui::Context>,
+    ctx: Option<egui::Context>,
     /// Commands asked for during this frame; they run after it.
-    pub pending: Vec<command::Command>,
+    pending: Vec<command::Command>,
     /// When the project last changed, on the tables' draft clock (undo takes back the later
     /// of a change and a draft).
-    pub last_change: u64,
+    last_change: u64,
     /// Online: the machine running behind the editor, and the online views' state.
-    pub online: online::OnlineState,
+    online: online::OnlineState,
     /// The window title last sent, so it is sent only when it changes.
-    pub title: String,
+    title: String,
 }
 
 /// A part of the editor with its own state in the app, reached through the one door
@@ -144,6 +144,8 @@ macro_rules! features {
 
 features! {
     printing::PrintState => print,
+    tables::TableState => tables,
+    xref_view::XrefState => xref,
     replace::Replace => replace,
     properties::ElementProperties => properties,
     online::OnlineState => online,
@@ -181,6 +183,51 @@ impl LadderApp {
     /// A feature's state, to read.
     pub fn feature<F: Feature>(&self) -> &F {
         F::of(self)
+    }
+
+    /// The open project's document, to read.
+    pub fn doc(&self) -> Option<&Document> {
+        self.doc.as_ref()
+    }
+
+    /// The settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The settings, to change (the View menu's switches, the language).
+    pub fn settings_mut(&mut self) -> &mut Settings {
+        &mut self.settings
+    }
+
+    /// What the main area shows.
+    pub fn view(&self) -> View {
+        self.view
+    }
+
+    /// The view tabs, in the order they were opened.
+    pub fn tabs(&self) -> &[View] {
+        &self.tabs
+    }
+
+    /// The output window's lines.
+    pub fn output(&self) -> &output::Output {
+        &self.output
+    }
+
+    /// The ladder cursor.
+    pub fn cursor(&self) -> model::CellRef {
+        self.cursor
+    }
+
+    /// The ladder selection: its block and region.
+    pub fn selection(&self) -> Option<(usize, selection::Selection)> {
+        self.selection
+    }
+
+    /// The window title last sent.
+    pub fn title(&self) -> &str {
+        &self.title
     }
 
     /// Starts on `path`, else the last project, else the bundled sample (README, "The editor").

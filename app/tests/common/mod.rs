@@ -8,6 +8,8 @@ pub use egui_kittest::Harness;
 pub use egui_kittest::kittest::Queryable;
 pub use ladder_studio::gui::LadderApp;
 pub use ladder_studio::gui::i18n::Lang;
+use ladder_studio::gui::state::EditState;
+use ladder_studio::gui::state::FileState;
 pub use ladder_studio::gui::tree::View;
 pub use std::path::PathBuf;
 
@@ -29,7 +31,7 @@ pub fn harness_sized(
         .with_max_steps(16)
         .build_eframe(move |cc| {
             let mut app = LadderApp::from_creation(cc, path);
-            app.settings.lang = lang;
+            app.settings_mut().lang = lang;
             app
         })
 }
@@ -86,12 +88,12 @@ pub fn click_at(h: &mut Harness<'static, LadderApp>, p: egui::Pos2) {
 pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usize, col: usize) {
     let p = h
         .state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_center(network, row, col)
         .expect("the cell is on screen");
     click_at(h, p);
-    let c = h.state().cursor;
+    let c = h.state().cursor();
     assert_eq!(
         (c.network, c.row, c.col),
         (network, row, col),
@@ -101,7 +103,7 @@ pub fn click_cell(h: &mut Harness<'static, LadderApp>, network: usize, row: usiz
 
 /// The app's state of a document: (path, dirty, networks in the whole ladder).
 pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bool, usize)> {
-    h.state().doc.as_ref().map(|d| {
+    h.state().doc().map(|d| {
         (
             d.path().map(|p| p.to_path_buf()),
             d.is_dirty(),
@@ -116,8 +118,9 @@ pub fn doc_state(h: &Harness<'static, LadderApp>) -> Option<(Option<PathBuf>, bo
 }
 
 pub fn scripted(h: &mut Harness<'static, LadderApp>, answers: Vec<Option<PathBuf>>) {
-    h.state_mut().files.dialogs =
-        Box::new(ladder_studio::gui::files::ScriptedDialogs::new(answers));
+    h.state_mut().with(|f: &mut FileState, _| {
+        f.dialogs = Box::new(ladder_studio::gui::files::ScriptedDialogs::new(answers))
+    });
 }
 
 /// A project saved in a fresh file, opened in the editor (English).
@@ -142,7 +145,7 @@ pub fn on_level2(h: &mut Harness<'static, LadderApp>) {
 
 /// The instructions the editor's project compiles to (directives kept, spaces folded).
 pub fn il_now(h: &Harness<'static, LadderApp>) -> Vec<String> {
-    let project = h.state().doc.as_ref().unwrap().project();
+    let project = h.state().doc().unwrap().project();
     ladder_engine::il::print(&ladder_engine::compiler::compile(project).program)
         .lines()
         .map(|l| l.split_whitespace().collect::<Vec<_>>().join(" "))
@@ -170,7 +173,7 @@ pub fn cell_pos(
     col: usize,
 ) -> egui::Pos2 {
     h.state()
-        .edit
+        .feature::<EditState>()
         .geometry
         .cell_center(network, row, col)
         .expect("the cell is on screen")

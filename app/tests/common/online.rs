@@ -3,6 +3,7 @@
 
 use super::*;
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::online::OnlineState;
 
 /// Runs frames until the machine has carried out everything sent (at most 20 s).
 pub fn settle(h: &mut Harness<'static, LadderApp>) {
@@ -10,7 +11,11 @@ pub fn settle(h: &mut Harness<'static, LadderApp>) {
     loop {
         h.step();
         let s = h.state();
-        if s.online.session.as_ref().is_none_or(|s| s.caught_up()) {
+        if s.feature::<OnlineState>()
+            .session
+            .as_ref()
+            .is_none_or(|s| s.caught_up())
+        {
             h.step();
             return;
         }
@@ -29,15 +34,15 @@ pub fn command(h: &mut Harness<'static, LadderApp>, c: Command) {
 }
 
 pub fn ticks(h: &mut Harness<'static, LadderApp>, n: u64) {
-    h.state_mut().settings.step_ticks = n;
+    h.state_mut().settings_mut().step_ticks = n;
     command(h, Command::StepN);
 }
 
 pub fn value(h: &Harness<'static, LadderApp>, text: &str) -> i64 {
     let app = h.state();
-    let p = app.doc.as_ref().unwrap().project();
+    let p = app.doc().unwrap().project();
     let t = ladder_studio::gui::online::watch::resolve(p, text).unwrap();
-    app.online
+    app.feature::<OnlineState>()
         .session
         .as_ref()
         .expect("online")
@@ -47,7 +52,7 @@ pub fn value(h: &Harness<'static, LadderApp>, text: &str) -> i64 {
 
 pub fn output(h: &Harness<'static, LadderApp>) -> String {
     h.state()
-        .output
+        .output()
         .iter()
         .map(|l| l.text.clone())
         .collect::<Vec<_>>()
