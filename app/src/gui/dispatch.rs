@@ -9,7 +9,6 @@ use super::diagnostics;
 use super::editing::PlaceKind;
 use super::files::{Action, DialogKind};
 use super::place::{BlockKey, View};
-use super::selection::Selection;
 use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
@@ -188,11 +187,6 @@ impl LadderApp {
 
     /// Runs a command now. Only [`LadderApp::run_pending`] calls this.
     fn execute(&mut self, c: Command) {
-        let copy_to_system = |app: &mut LadderApp| {
-            if let Some(ctx) = app.ctx.clone() {
-                app.edit.copy_to_system(&ctx);
-            }
-        };
         match c {
             Command::New => self.with(|o: &mut FileState, cx| o.request(cx, Action::New)),
             Command::Open => self.with(|o: &mut FileState, cx| o.request(cx, Action::OpenDialog)),
@@ -248,113 +242,11 @@ impl LadderApp {
                     self.tables.go_to_row(sheet, row, doc.project());
                 }
             }
-            Command::Contact => self
-                .edit
-                .open_prompt(PlaceKind::Contact { negated: false }, "".into()),
-            Command::ContactNc => self
-                .edit
-                .open_prompt(PlaceKind::Contact { negated: true }, "".into()),
-            Command::Coil => self
-                .edit
-                .open_prompt(PlaceKind::Coil { negated: false }, "".into()),
-            Command::CoilN => self
-                .edit
-                .open_prompt(PlaceKind::Coil { negated: true }, "".into()),
-            Command::Function => self.with(|o: &mut EditState, cx| o.open_function_dialog(cx)),
-            Command::Wire => self.with(|o: &mut EditState, cx| o.wire(cx)),
-            Command::Link => self.with(|o: &mut EditState, cx| o.link(cx)),
-            Command::Parallel | Command::ParallelNc => {
-                // Refused before any typing when there is nothing above to be parallel with.
-                let at = self.cursor;
-                match ladder_engine::model::Ladder::can_parallel(at) {
-                    Err(e) if self.view == View::Block(at.block) => {
-                        self.with(|o: &mut EditState, cx| o.report_edit_error(cx, &e))
-                    }
-                    _ => {
-                        let negated = c == Command::ParallelNc;
-                        self.edit
-                            .open_prompt(PlaceKind::Parallel { negated }, "".into())
-                    }
-                }
-            }
-            Command::Cut => {
-                self.with(|o: &mut EditState, cx| o.cut(cx));
-                copy_to_system(self);
-            }
-            Command::Copy => {
-                self.with(|o: &mut EditState, cx| o.copy(cx));
-                copy_to_system(self);
-            }
-            Command::Paste => self.with(|o: &mut EditState, cx| o.paste(cx)),
-            Command::CopyRow => {
-                self.with(|o: &mut EditState, cx| o.copy_row(cx));
-                copy_to_system(self);
-            }
-            Command::Delete => {
-                // The selection when there is one, else the element at the cursor; never a
-                // network added to an empty block only to delete nothing in it.
-                if self.selection.is_some() {
-                    self.with(|o: &mut EditState, cx| o.delete_selection(cx));
-                } else if let Some(at) = self.with(|o: &mut EditState, cx| o.existing_cursor(cx)) {
-                    self.with(|o: &mut EditState, cx| {
-                        o.edit(
-                            cx,
-                            ladder_engine::model::Edit::SetCell {
-                                at,
-                                cell: ladder_engine::model::Cell::Empty,
-                            },
-                        )
-                    });
-                }
-            }
-            Command::DeleteLink => {
-                if let Some(at) = self.with(|o: &mut EditState, cx| o.existing_cursor(cx)) {
-                    self.with(|o: &mut EditState, cx| {
-                        o.edit(cx, ladder_engine::model::Edit::SetLink { at, on: false })
-                    });
-                }
-            }
-            Command::InsertRowAbove => self.with(|o: &mut EditState, cx| o.insert_row(cx, false)),
-            Command::InsertRowBelow => self.with(|o: &mut EditState, cx| o.insert_row(cx, true)),
-            Command::DeleteRow => self.with(|o: &mut EditState, cx| {
-                o.delete_at_cursor(cx, |at| Selection::Rows {
-                    network: at.network,
-                    rows: (at.row, at.row),
-                })
-            }),
-            Command::InsertNetworkAbove => {
-                self.with(|o: &mut EditState, cx| o.insert_network(cx, false))
-            }
-            Command::InsertNetworkBelow => {
-                self.with(|o: &mut EditState, cx| o.insert_network(cx, true))
-            }
-            Command::DeleteNetwork => self.with(|o: &mut EditState, cx| {
-                o.delete_at_cursor(cx, |at| Selection::Networks {
-                    networks: (at.network, at.network),
-                })
-            }),
-            Command::NetworkTitle | Command::NetworkComment => {
-                if let Some(at) = self.with(|o: &mut EditState, cx| o.ensure_network(cx))
-                    && let Some(n) = self
-                        .doc
-                        .as_ref()
-                        .and_then(|d| d.project().ladder.blocks.get(at.block))
-                        .and_then(|b| b.networks.get(at.network))
-                {
-                    let (kind, text) = if c == Command::NetworkTitle {
-                        (PlaceKind::NetworkTitle, n.title.clone())
-                    } else {
-                        (PlaceKind::NetworkComment, n.comment.clone())
-                    };
-                    self.edit.open_prompt(kind, text);
-                }
-            }
             Command::ClearSelection => {
                 // Escape abandons what was typed in a table and not taken.
                 self.selection = None;
                 self.tables.forget_drafts();
             }
-            Command::Pen => self.edit.pen = !self.edit.pen,
             Command::ToggleComments => self.settings.show_comments ^= true,
             Command::ToggleElementComments => self.settings.show_element_comments ^= true,
             Command::ToggleTitles => self.settings.show_titles ^= true,
@@ -362,8 +254,6 @@ impl LadderApp {
             Command::ToggleOutput => self.settings.show_output ^= true,
             Command::ToggleToolbar => self.settings.show_toolbar ^= true,
             Command::ToggleStatus => self.settings.show_status ^= true,
-            Command::ZoomIn => self.with(|o: &mut EditState, cx| o.zoom_step(cx, true, None)),
-            Command::ZoomOut => self.with(|o: &mut EditState, cx| o.zoom_step(cx, false, None)),
             Command::ZoomFit => self.settings.fit_width = !self.settings.fit_width,
             Command::Compile => self.with_context(diagnostics::compile),
             Command::NextError => self.with_context(|cx| diagnostics::step_error(cx, true)),
@@ -391,39 +281,8 @@ impl LadderApp {
             | Command::Why
             | Command::LiveView
             | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
-            Command::ZoomTo(z) => self.with(|e: &mut EditState, cx| e.zoom_to(cx, z, None)),
             Command::ConfirmForces(yes) => {
                 self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, yes))
-            }
-            Command::NewSub => self.edit.open_prompt(PlaceKind::NewSub, String::new()),
-            Command::ViewCalls(n) => self.with(|o: &mut EditState, cx| o.view_calls(cx, n)),
-            Command::RenameSub(n) => {
-                let name = self.doc.as_ref().and_then(|d| {
-                    let l = &d.project().ladder;
-                    l.sub_index(n).map(|i| l.blocks[i].kind.clone())
-                });
-                if let Some(ladder_engine::model::BlockKind::Sub { number, name }) = name {
-                    let text = format!("{number} {name}").trim().to_string();
-                    self.edit.open_prompt(PlaceKind::RenameSub(number), text);
-                }
-            }
-            Command::DeleteSub(n) => {
-                if let Some(i) = self
-                    .doc
-                    .as_ref()
-                    .and_then(|d| d.project().ladder.sub_index(n))
-                {
-                    self.with(|o: &mut EditState, cx| o.delete_subprogram(cx, i));
-                }
-            }
-            Command::BlockInfo(key) => {
-                let info = self.doc.as_ref().and_then(|d| {
-                    let l = &d.project().ladder;
-                    key.index(l).map(|i| l.blocks[i].info.clone())
-                });
-                if let Some(info) = info {
-                    self.edit.open_prompt(PlaceKind::BlockInfo(key), info);
-                }
             }
             Command::Language(l) => self.settings.lang = l,
             Command::Display(m) => self.settings.display = m,
@@ -433,20 +292,8 @@ impl LadderApp {
                 self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportTrace))
             }
             Command::Help(p) => self.help = Some(p),
-            Command::Move(d) => {
-                let (dr, dc) = d.delta();
-                self.with(|o: &mut EditState, cx| o.move_cursor(cx, dr, dc));
-            }
-            Command::RowStart
-            | Command::RowEnd
-            | Command::PageUp
-            | Command::PageDown
-            | Command::BlockStart
-            | Command::BlockEnd => self.with(|o: &mut EditState, cx| o.navigate(cx, c)),
-            Command::Extend(d) => {
-                let (dr, dc) = d.delta();
-                self.with(|o: &mut EditState, cx| o.extend_by(cx, dr, dc));
-            }
+            // The ladder editor's own commands.
+            c => self.with(|e: &mut EditState, cx| e.execute(cx, c)),
         }
     }
 

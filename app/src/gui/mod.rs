@@ -7,6 +7,7 @@ pub mod diagnostics;
 pub mod dialogs;
 pub mod dispatch;
 pub mod document;
+pub mod edit_commands;
 pub mod editing;
 pub mod errors;
 pub mod file_dialog;
