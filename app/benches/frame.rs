@@ -9,8 +9,8 @@
 use egui_kittest::Harness;
 use ladder_studio::gui::LadderApp;
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::online::OnlineState;
-use ladder_studio::gui::state::EditState;
 use std::path::PathBuf;
 use std::time::Instant;
 

@@ -3,9 +3,9 @@
 mod common;
 
 use common::*;
+use ladder_studio::gui::editor::EditState;
+use ladder_studio::gui::files::FileState;
 use ladder_studio::gui::replace::Replace;
-use ladder_studio::gui::state::EditState;
-use ladder_studio::gui::state::FileState;
 
 #[test]
 fn the_self_holding_circuit_drawn_with_the_keyboard_exports_the_manual_il() {
@@ -220,7 +220,7 @@ fn a_network_selected_by_its_title_is_copied_pasted_and_undone_in_one_step() {
             h.state().selection(),
             Some((
                 1,
-                ladder_studio::gui::selection::Selection::Networks { networks: (0, 0) }
+                ladder_studio::gui::editor::selection::Selection::Networks { networks: (0, 0) }
             ))
         ),
         "{:?}",
@@ -292,7 +292,7 @@ fn cells_selected_with_shift_are_cut_and_pasted_and_ctrl_e_copies_a_row() {
         h.state().selection(),
         Some((
             1,
-            ladder_studio::gui::selection::Selection::Cells {
+            ladder_studio::gui::editor::selection::Selection::Cells {
                 network: 0,
                 rows: (0, 0),
                 cols: (0, 1)

@@ -4,8 +4,8 @@
 
 mod common;
 use common::*;
+use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::properties::ElementProperties;
-use ladder_studio::gui::state::EditState;
 
 /// One notch of Ctrl+wheel at `mouse`, in (`up`) or out, and the frames it is smoothed over.
 fn wheel(h: &mut Harness<'static, LadderApp>, mouse: egui::Pos2, up: bool) {

@@ -3,8 +3,8 @@
 mod common;
 
 use common::*;
-use ladder_studio::gui::state::EditState;
-use ladder_studio::gui::state::FileState;
+use ladder_studio::gui::editor::EditState;
+use ladder_studio::gui::files::FileState;
 
 #[test]
 fn new_asks_about_unsaved_changes_and_cancel_keeps_them() {
@@ -324,7 +324,7 @@ fn without_a_system_dialog_save_as_asks_in_the_window_and_saves_under_the_typed_
             app
         });
     h.state_mut().with(|f: &mut FileState, _| {
-        f.dialogs = Box::new(ladder_studio::gui::file_dialog::SystemDialogs::in_app_only())
+        f.dialogs = Box::new(ladder_studio::gui::files::file_dialog::SystemDialogs::in_app_only())
     });
     h.run();
     h.get_by_label("文件").click();

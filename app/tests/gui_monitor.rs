@@ -5,8 +5,8 @@ mod common;
 use common::online::*;
 use common::*;
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::online::OnlineState;
-use ladder_studio::gui::state::EditState;
 use ladder_studio::gui::tables::TableState;
 
 /// Two presses queued before one frame: both act (a fast typist, a slow frame).

@@ -8,8 +8,8 @@ use common::online::*;
 use common::*;
 use ladder_engine::model::{Cell, CellRef, Edit, Operand};
 use ladder_studio::gui::command::Command;
+use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::online::OnlineState;
-use ladder_studio::gui::state::EditState;
 
 #[test]
 fn the_cursor_keys_force_an_input_and_release_it() {

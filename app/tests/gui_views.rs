@@ -3,7 +3,7 @@
 mod common;
 
 use common::*;
-use ladder_studio::gui::state::EditState;
+use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::tables::TableState;
 use ladder_studio::gui::xref_view::XrefState;
 
@@ -234,9 +234,8 @@ fn undo_goes_to_the_view_and_the_place_it_changes() {
         address: ladder_engine::Address::parse("X0002.1").unwrap(),
         comments: Default::default(),
     });
-    h.state_mut().with(|o: &mut EditState, cx| {
-        o.edit_table(cx, ladder_engine::model::TableEdit::Symbols(tables))
-    });
+    h.state_mut()
+        .with_context(|cx| cx.apply_or_say(ladder_engine::model::TableEdit::Symbols(tables)));
     h.state_mut().show_view(View::Messages);
     h.run();
     h.key_press_modifiers(Modifiers::COMMAND, Key::Z);

@@ -9,8 +9,8 @@ use super::document::Document;
 use super::i18n::Msg;
 use super::output::Output;
 use super::place::View;
-use super::selection::Selection;
 use super::settings::Settings;
+use ladder_engine::model::region::Region as Selection;
 use ladder_engine::model::{CellRef, Change};
 
 /// The editor as a feature sees it.
@@ -85,6 +85,18 @@ impl<'a> Context<'a> {
             .map_err(|e| super::errors::refused(&e, lang))?;
         self.changed |= changed;
         Ok(changed)
+    }
+
+    /// Applies a change from a command or a table; a refusal goes to the output window. True
+    /// when the change was applied (or changed nothing).
+    pub fn apply_or_say(&mut self, change: impl Into<Change>) -> bool {
+        match self.apply(change) {
+            Ok(_) => true,
+            Err(text) => {
+                self.output.say(text, true);
+                false
+            }
+        }
     }
 
     /// Compiles the open project (the document keeps the result) and gives the result with

@@ -6,14 +6,14 @@
 use super::LadderApp;
 use super::command::Command;
 use super::diagnostics;
-use super::editing::PlaceKind;
 use super::files::{Action, DialogKind};
 use super::place::{BlockKey, View};
+use crate::gui::editor::EditState;
+use crate::gui::editor::editing::PlaceKind;
+use crate::gui::files::FileState;
 use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
-use crate::gui::state::EditState;
-use crate::gui::state::FileState;
 
 impl LadderApp {
     /// Queues a command; it runs after the frame.

@@ -3,13 +3,13 @@
 
 use super::LadderApp;
 use super::command::Command;
-use super::editing::Cursor;
 use super::ladder_view::{Hit, ViewEvents};
 use super::place::View;
-use super::selection::Selection;
+use crate::gui::editor::EditState;
+use crate::gui::editor::editing::Cursor;
+use crate::gui::editor::selection::Selection;
 use crate::gui::online::OnlineState;
 use crate::gui::properties::ElementProperties;
-use crate::gui::state::EditState;
 
 impl LadderApp {
     /// Handles what the pointer did in the ladder view of `block`.
@@ -41,7 +41,7 @@ impl LadderApp {
             match hit {
                 Hit::Cell { network, row, col } => {
                     if mods.shift {
-                        super::state::extend_selection(
+                        crate::gui::editor::extend_selection(
                             &mut self.cursor,
                             &mut self.selection,
                             cell(network, row, col),

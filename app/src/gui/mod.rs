@@ -4,16 +4,12 @@
 pub mod command;
 pub mod context;
 pub mod diagnostics;
-pub mod dialogs;
 pub mod dispatch;
 pub mod document;
-pub mod edit_commands;
-pub mod editing;
+pub mod editor;
 pub mod errors;
-pub mod file_dialog;
 pub mod files;
 pub mod fonts;
-pub mod function_dialog;
 pub mod help;
 pub mod history;
 pub mod i18n;
@@ -23,14 +19,10 @@ pub mod menus;
 pub mod online;
 pub mod output;
 pub mod place;
-pub mod pointer;
 pub mod printing;
-pub mod prompt;
 pub mod properties;
 pub mod replace;
-pub mod selection;
 pub mod settings;
-pub mod state;
 pub mod tables;
 pub mod tabs;
 #[cfg(test)]
@@ -39,12 +31,12 @@ pub mod theme;
 pub mod tree;
 pub mod xref_view;
 
+use crate::gui::editor::EditState;
+use crate::gui::files::FileState;
 use crate::gui::online::OnlineState;
 use crate::gui::printing::PrintState;
 use crate::gui::properties::ElementProperties;
 use crate::gui::replace::Replace;
-use crate::gui::state::EditState;
-use crate::gui::state::FileState;
 pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
@@ -77,11 +69,11 @@ pub struct LadderApp {
     /// The ladder cursor: the cell the editor's commands act on.
     cursor: model::CellRef,
     /// The ladder selection: its block and region, if any.
-    selection: Option<(usize, selection::Selection)>,
+    selection: Option<(usize, editor::selection::Selection)>,
     /// The ladder editor: clipboard, gestures, the view's geometry.
-    edit: state::EditState,
+    edit: editor::EditState,
     /// Files: dialogs, the question waited on, recovery copies.
-    files: state::FileState,
+    files: files::FileState,
     /// The open Help window.
     help: Option<HelpPage>,
     /// Element properties: the form, while open.
@@ -150,8 +142,8 @@ features! {
     replace::Replace => replace,
     properties::ElementProperties => properties,
     online::OnlineState => online,
-    state::EditState => edit,
-    state::FileState => files,
+    editor::EditState => edit,
+    files::FileState => files,
 }
 
 /// The window's title: the project's file name, `*` while it has unsaved changes, and
@@ -222,7 +214,7 @@ impl LadderApp {
     }
 
     /// The ladder selection: its block and region.
-    pub fn selection(&self) -> Option<(usize, selection::Selection)> {
+    pub fn selection(&self) -> Option<(usize, editor::selection::Selection)> {
         self.selection
     }
 
@@ -349,13 +341,17 @@ impl LadderApp {
                     .is_some_and(|net| r < net.rows.len())
             };
             let ok = match sel {
-                selection::Selection::Cells {
+                editor::selection::Selection::Cells {
                     network,
                     rows,
                     cols,
                 } => fits(network, rows.0.max(rows.1)) && cols.0.max(cols.1) <= p.ladder.width,
-                selection::Selection::Rows { network, rows } => fits(network, rows.0.max(rows.1)),
-                selection::Selection::Networks { networks } => fits(networks.0.max(networks.1), 0),
+                editor::selection::Selection::Rows { network, rows } => {
+                    fits(network, rows.0.max(rows.1))
+                }
+                editor::selection::Selection::Networks { networks } => {
+                    fits(networks.0.max(networks.1), 0)
+                }
             };
             if !ok {
                 self.selection = None;
@@ -507,15 +503,15 @@ impl LadderApp {
                     && sb == b
                 {
                     let what = match sel {
-                        selection::Selection::Cells { rows, cols, .. } => format!(
+                        editor::selection::Selection::Cells { rows, cols, .. } => format!(
                             "{}×{}",
                             rows.0.abs_diff(rows.1) + 1,
                             cols.0.abs_diff(cols.1) + 1
                         ),
-                        selection::Selection::Rows { rows, .. } => {
+                        editor::selection::Selection::Rows { rows, .. } => {
                             format!("{} {}", rows.0.abs_diff(rows.1) + 1, t(Msg::Row))
                         }
-                        selection::Selection::Networks { networks } => format!(
+                        editor::selection::Selection::Networks { networks } => format!(
                             "{} {}",
                             networks.0.abs_diff(networks.1) + 1,
                             t(Msg::Network)
@@ -674,7 +670,7 @@ impl eframe::App for LadderApp {
         self.run_pending();
         // The first force waits for the user's yes: the question is the editor's one modal.
         if std::mem::take(&mut self.online.ask_first_force) {
-            self.files.question = Some(dialogs::Question::FirstForce);
+            self.files.question = Some(files::Question::FirstForce);
             ctx.request_repaint();
         }
     }

@@ -7,9 +7,9 @@ pub mod online;
 pub use egui_kittest::Harness;
 pub use egui_kittest::kittest::Queryable;
 pub use ladder_studio::gui::LadderApp;
+use ladder_studio::gui::editor::EditState;
+use ladder_studio::gui::files::FileState;
 pub use ladder_studio::gui::i18n::Lang;
-use ladder_studio::gui::state::EditState;
-use ladder_studio::gui::state::FileState;
 pub use ladder_studio::gui::tree::View;
 pub use std::path::PathBuf;
 

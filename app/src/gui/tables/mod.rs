@@ -28,7 +28,6 @@ use super::document::Document;
 use super::i18n::{Lang, Msg};
 use super::tree::View;
 use crate::gui::online::OnlineState;
-use crate::gui::state::EditState;
 use ladder_engine::model::sheets::{TableError, changed_row};
 use ladder_engine::model::{Project, TableEdit};
 use std::collections::HashMap;
@@ -370,7 +369,7 @@ impl LadderApp {
         for event in events {
             match event {
                 TableEvent::Apply(edit) => {
-                    self.with(|o: &mut EditState, cx| o.edit_table(cx, edit))
+                    self.with_context(|cx| cx.apply_or_say(edit));
                 }
             }
         }

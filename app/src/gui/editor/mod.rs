@@ -1,16 +1,20 @@
-//! The application's state in groups, each with what one part of the editor owns: the
-//! ladder editor's place and gestures, and the file side (dialogs, questions, recovery). A
-//! function that needs one group borrows that group, not the whole application.
+//! The ladder editor: the feature that places and deletes elements, wires, rows and networks,
+//! moves the cursor and the selection, keeps the clipboard and the operand prompt, and opens
+//! the function-instruction dialog. Its state is [`EditState`]; it changes the project only
+//! through the narrow `Context` (see `context.rs`).
 
-use super::dialogs::{Action, FileDialogs, Question};
-use super::file_dialog::SystemDialogs;
-use super::ladder_view::{Geometry, Hit};
-use super::place::{BlockKey, Cursor};
+pub mod commands;
+pub mod editing;
+pub mod function_dialog;
+pub mod pointer;
+pub mod prompt;
+pub mod selection;
+
+use crate::gui::ladder_view::{Geometry, Hit};
+use crate::gui::place::{BlockKey, Cursor};
 use ladder_engine::model::CellRef;
 use ladder_engine::model::region::{Clip, Region as Selection};
 use std::collections::HashMap;
-use std::path::PathBuf;
-use std::time::Instant;
 
 /// The ladder editor's state: where the user is and what their gestures hold. UI state only,
 /// never saved in the project.
@@ -39,9 +43,9 @@ pub struct EditState {
     /// differs, the view brings the cursor into sight.
     pub followed: Option<(Cursor, u64, u64)>,
     /// The open operand prompt (F1, F2, F3, F6, Ctrl+G, titles).
-    pub prompt: Option<super::editing::Prompt>,
+    pub prompt: Option<crate::gui::editor::editing::Prompt>,
     /// The open function-instruction dialog (F3, or a double-click on a box).
-    pub function_dialog: Option<super::function_dialog::FunctionDialog>,
+    pub function_dialog: Option<crate::gui::editor::function_dialog::FunctionDialog>,
     /// The (document, block) pairs shown since they were opened: the first showing scrolls
     /// to where the block was left in an earlier session.
     pub shown: std::collections::HashSet<(u64, usize)>,
@@ -68,35 +72,6 @@ impl EditState {
             pen: self.pen,
             ..Default::default()
         };
-    }
-}
-
-/// The file side: the file dialogs, the question the editor waits on and the recovery copies.
-pub struct FileState {
-    /// File dialogs (native, or scripted in tests).
-    pub dialogs: Box<dyn FileDialogs>,
-    /// The question the editor waits on (unsaved changes, damaged file, restore).
-    pub question: Option<Question>,
-    /// What to do once the pending Save or Save As succeeds.
-    pub after_save: Option<Action>,
-    /// The user agreed to quit.
-    pub exit_confirmed: bool,
-    /// Where recovery copies are autosaved; `None` turns autosave off.
-    pub recovery_dir: Option<PathBuf>,
-    /// When the recovery copy was last written.
-    pub last_autosave: Option<Instant>,
-}
-
-impl Default for FileState {
-    fn default() -> FileState {
-        FileState {
-            dialogs: Box::new(SystemDialogs::default()),
-            question: None,
-            after_save: None,
-            exit_confirmed: false,
-            recovery_dir: None,
-            last_autosave: None,
-        }
     }
 }
 

@@ -5,7 +5,7 @@
 //! cannot be used is shown red with the reason, and OK stays disabled until every operand is
 //! valid. The whole IL line may also be typed at once (`TMRB T0000 DT0004 R0300.0`).
 
-use super::i18n::{Lang, Msg};
+use crate::gui::i18n::{Lang, Msg};
 
 mod apply;
 #[cfg(test)]
@@ -17,7 +17,7 @@ use ladder_engine::compiler::operands::{Refusal, operand_error, operand_ok};
 use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 
-use super::theme::{CAUTION as ORANGE, ERROR as RED};
+use crate::gui::theme::{CAUTION as ORANGE, ERROR as RED};
 
 /// The dialog's widest size and tallest body (at 1280×800 and larger).
 const DIALOG_WIDTH: f32 = 1000.0;
@@ -189,7 +189,7 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
             Lang::Zh => Refusal::DigitGroup(why).zh(op),
             Lang::En => why,
         },
-        Refusal::Range(e) => super::tables::address_error(&e, profile, lang),
+        Refusal::Range(e) => crate::gui::tables::address_error(&e, profile, lang),
         Refusal::ReadOnly { .. }
         | Refusal::Area { .. }
         | Refusal::Kind { .. }

@@ -2,15 +2,15 @@
 //! editing commands shared by the Edit menu and the right-click menu, and the subprogram
 //! commands of the project tree.
 
-use super::OutputLine;
-use super::context::Context;
-use super::editing::{Cursor, PlaceKind};
-use super::i18n::Msg;
-use super::ladder_view::Hit;
-pub use super::place::BlockKey;
-use super::place::View;
-use super::selection::Selection;
-use super::state::EditState;
+use crate::gui::OutputLine;
+use crate::gui::context::Context;
+use crate::gui::editor::EditState;
+use crate::gui::editor::editing::{Cursor, PlaceKind};
+use crate::gui::editor::selection::Selection;
+use crate::gui::i18n::Msg;
+use crate::gui::ladder_view::Hit;
+pub use crate::gui::place::BlockKey;
+use crate::gui::place::View;
 use ladder_engine::model::{Cell, Edit, parse_sub};
 
 impl EditState {
@@ -193,7 +193,7 @@ impl EditState {
     /// A new subprogram from `NUMBER [NAME]`, inserted in number order and shown.
     pub fn new_subprogram(&mut self, cx: &mut Context<'_>, text: &str) -> Result<(), String> {
         let lang = cx.settings.lang;
-        let sub = |e| super::errors::sub_error(&e, lang);
+        let sub = |e| crate::gui::errors::sub_error(&e, lang);
         let project = cx.doc().ok_or(Msg::NoProject.text(lang))?.project();
         let (number, name) = parse_sub(text, project.profile()).map_err(sub)?;
         let (index, edit) = project.ladder.plan_new_sub(number, name).map_err(sub)?;
@@ -226,7 +226,7 @@ impl EditState {
         text: &str,
     ) -> Result<(), String> {
         let lang = cx.settings.lang;
-        let sub = |e| super::errors::sub_error(&e, lang);
+        let sub = |e| crate::gui::errors::sub_error(&e, lang);
         let project = cx.doc().ok_or(Msg::NoProject.text(lang))?.project();
         let (number, name) = parse_sub(text, project.profile()).map_err(sub)?;
         let edit = project
@@ -291,7 +291,11 @@ impl EditState {
 
     /// One zoom step in or out about `at` (the mouse, for Ctrl+wheel), else the cursor cell.
     pub fn zoom_step(&mut self, cx: &mut Context<'_>, up: bool, at: Option<egui::Pos2>) {
-        self.zoom_to(cx, super::settings::next_zoom(cx.settings.zoom, up), at);
+        self.zoom_to(
+            cx,
+            crate::gui::settings::next_zoom(cx.settings.zoom, up),
+            at,
+        );
     }
 
     /// Zooms to `zoom` percent keeping the ladder point at `at` (else at the cursor cell's

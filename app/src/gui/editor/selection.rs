@@ -2,10 +2,10 @@
 //! rows or whole networks of one block. Selection and clipboard are UI state: never saved,
 //! and every change they make goes through the engine's edits as one undo step.
 
-use super::OutputLine;
-use super::context::Context;
-use super::i18n::Msg;
-use super::state::EditState;
+use crate::gui::OutputLine;
+use crate::gui::context::Context;
+use crate::gui::editor::EditState;
+use crate::gui::i18n::Msg;
 use ladder_engine::model::Cell;
 pub use ladder_engine::model::region::{Clip, Region as Selection};
 
@@ -21,7 +21,7 @@ impl EditState {
     /// The selection in the shown block, or the cursor's cell when nothing is selected.
     pub fn effective_selection(&self, cx: &Context<'_>) -> Option<(usize, Selection)> {
         let block = match *cx.view {
-            super::place::View::Block(b) => b,
+            crate::gui::place::View::Block(b) => b,
             _ => return None,
         };
         match *cx.selection {

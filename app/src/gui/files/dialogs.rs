@@ -64,7 +64,7 @@ pub trait FileDialogs {
     fn busy(&self) -> bool;
     /// Draws a dialog that lives in the editor's window, once a frame (system dialogs have
     /// their own window and draw nothing here).
-    fn show(&mut self, _ctx: &egui::Context, _lang: super::i18n::Lang) {}
+    fn show(&mut self, _ctx: &egui::Context, _lang: crate::gui::i18n::Lang) {}
 }
 
 /// The system's dialogs (rfd: the xdg portal, else zenity), each on its own thread.

@@ -178,7 +178,7 @@ fn editing_a_box_changes_its_operand_and_one_undo_restores_it() {
         col,
     };
     h.state_mut()
-        .with(|e: &mut crate::gui::state::EditState, cx| e.edit_function_box(cx, at));
+        .with(|e: &mut crate::gui::editor::EditState, cx| e.edit_function_box(cx, at));
     h.run();
     h.get_by_label("Change function instruction");
     let t = h.get_by_role_and_label(Role::TextInput, "T").value();

@@ -4,11 +4,11 @@
 //! under it: the eye stays on the rung and nothing moves. The rest is typed in a bar under
 //! the toolbar.
 
-use super::editing::PlaceKind;
-use super::i18n::Msg;
-use super::place::View;
 use crate::gui::context::Context;
-use crate::gui::state::EditState;
+use crate::gui::editor::EditState;
+use crate::gui::editor::editing::PlaceKind;
+use crate::gui::i18n::Msg;
+use crate::gui::place::View;
 use egui::{Key, Modifiers};
 use ladder_engine::model::Operand;
 
@@ -122,7 +122,7 @@ impl EditState {
                 .labelled_by(label.id);
             r.request_focus();
             if let Some(e) = &prompt.error {
-                ui.colored_label(super::theme::ERROR, e);
+                ui.colored_label(crate::gui::theme::ERROR, e);
             }
             if ui.input(|i| i.key_pressed(Key::Escape)) {
                 close = true;

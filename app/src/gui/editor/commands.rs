@@ -2,12 +2,12 @@
 //! networks, the clipboard, moving the cursor, subprograms and the zoom. The editor's
 //! dispatch hands every command it does not run itself to [`EditState::execute`].
 
-use super::command::Command;
-use super::context::Context;
-use super::editing::PlaceKind;
-use super::place::View;
-use super::selection::Selection;
-use super::state::EditState;
+use crate::gui::command::Command;
+use crate::gui::context::Context;
+use crate::gui::editor::EditState;
+use crate::gui::editor::editing::PlaceKind;
+use crate::gui::editor::selection::Selection;
+use crate::gui::place::View;
 
 impl EditState {
     /// Runs a ladder editing command.

@@ -1,14 +1,14 @@
 //! Editing with the keyboard and the mouse (manual §3.2.2 keys): every change goes through
 //! the engine's edit operations and the document's history, so undo is exact.
 
-use super::OutputLine;
-use super::context::Context;
-use super::i18n::Msg;
-use super::place::View;
-use super::state::EditState;
+use crate::gui::OutputLine;
+use crate::gui::context::Context;
+use crate::gui::editor::EditState;
+use crate::gui::i18n::Msg;
+use crate::gui::place::View;
 use ladder_engine::Op;
 use ladder_engine::find::{self, Query};
-use ladder_engine::model::{Cell, Change, Edit, EditError, Ladder, Operand, TableEdit};
+use ladder_engine::model::{Cell, Change, Edit, EditError, Ladder, Operand};
 
 /// What the operand prompt will place.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -45,7 +45,7 @@ pub enum PlaceKind {
     /// Renumber or rename subprogram P`0`: `NUMBER [NAME]`.
     RenameSub(u16),
     /// A block's information text.
-    BlockInfo(super::place::BlockKey),
+    BlockInfo(crate::gui::place::BlockKey),
 }
 
 /// The open operand prompt.
@@ -59,10 +59,10 @@ pub struct Prompt {
     pub error: Option<String>,
 }
 
-pub use super::place::Cursor;
+pub use crate::gui::place::Cursor;
 
 impl EditState {
-    pub(super) fn open_prompt(&mut self, kind: PlaceKind, text: String) {
+    pub(crate) fn open_prompt(&mut self, kind: PlaceKind, text: String) {
         self.prompt = Some(Prompt {
             kind,
             text,
@@ -74,7 +74,7 @@ impl EditState {
     pub(crate) fn delete_at_cursor(
         &mut self,
         cx: &mut Context<'_>,
-        what: impl FnOnce(super::place::Cursor) -> super::selection::Selection,
+        what: impl FnOnce(crate::gui::place::Cursor) -> crate::gui::editor::selection::Selection,
     ) {
         if let Some(at) = self.existing_cursor(cx) {
             *cx.selection = Some((at.block, what(at)));
@@ -92,17 +92,7 @@ impl EditState {
     /// Applies a change from a command; a refusal goes to the output window. True when the
     /// change was applied (or changed nothing).
     pub fn edit(&mut self, cx: &mut Context<'_>, change: impl Into<Change>) -> bool {
-        match cx.apply(change) {
-            Ok(_) => true,
-            Err(text) => {
-                cx.output.push(OutputLine {
-                    text,
-                    error: true,
-                    target: None,
-                });
-                false
-            }
-        }
+        cx.apply_or_say(change)
     }
 
     /// The ladder, to read.
@@ -283,7 +273,8 @@ impl EditState {
         if row == 0 || row > rows {
             return Err(format!("{}: 1–{rows}", Msg::NoSuchTableRow.text(lang)));
         }
-        cx.pending.push(super::command::Command::GoToRow(row - 1));
+        cx.pending
+            .push(crate::gui::command::Command::GoToRow(row - 1));
         Ok(())
     }
 
@@ -313,7 +304,7 @@ impl EditState {
         }
         let lang = cx.settings.lang;
         let operand =
-            |t: &str| Operand::parse(t).map_err(|e| super::errors::operand_error(&e, lang));
+            |t: &str| Operand::parse(t).map_err(|e| crate::gui::errors::operand_error(&e, lang));
         // A typing error refuses before anything changes (no network added for nothing).
         if matches!(
             kind,
@@ -337,7 +328,7 @@ impl EditState {
                 };
                 let edit = if matches!(kind, PlaceKind::Parallel { .. }) {
                     Ladder::plan_parallel_contact(at, cell)
-                        .map_err(|e| super::errors::edit_error(&e, cx.settings.lang))?
+                        .map_err(|e| crate::gui::errors::edit_error(&e, cx.settings.lang))?
                 } else {
                     Edit::SetCell { at, cell }
                 };
@@ -379,7 +370,7 @@ impl EditState {
                     .ladder(cx)
                     .map(|l| l.plan_output(at, cell))
                     .transpose()
-                    .map_err(|e| super::errors::edit_error(&e, cx.settings.lang))?;
+                    .map_err(|e| crate::gui::errors::edit_error(&e, cx.settings.lang))?;
                 if let Some(edit) = edit
                     && cx.apply(edit)?
                 {
@@ -400,7 +391,7 @@ impl EditState {
         if selection.is_none() {
             *cx.cursor = from;
         }
-        super::state::extend_selection(&mut *cx.cursor, &mut *cx.selection, to);
+        crate::gui::editor::extend_selection(&mut *cx.cursor, &mut *cx.selection, to);
     }
 
     pub(super) fn move_cursor(&mut self, cx: &mut Context<'_>, dr: i32, dc: i32) {
@@ -428,8 +419,8 @@ impl EditState {
     }
 
     /// Home, End, PgUp, PgDn, Ctrl+Home, Ctrl+End: the cursor jumps, and the view follows.
-    pub(super) fn navigate(&mut self, cx: &mut Context<'_>, c: super::command::Command) {
-        use super::command::Command;
+    pub(super) fn navigate(&mut self, cx: &mut Context<'_>, c: crate::gui::command::Command) {
+        use crate::gui::command::Command;
         /// Networks a page moves: about what a screen shows at 100 %.
         const PAGE: usize = 8;
         let Some(block) = self.block(cx) else { return };
@@ -541,15 +532,9 @@ impl EditState {
         }
     }
 
-    /// Replaces a table through the document's door (table editors call this for every
-    /// change).
-    pub fn edit_table(&mut self, cx: &mut Context<'_>, edit: TableEdit) {
-        self.edit(cx, edit);
-    }
-
     /// Reports an edit the engine refused, in the output window.
     pub fn report_edit_error(&mut self, cx: &mut Context<'_>, e: &EditError) {
-        let text = super::errors::edit_error(e, cx.settings.lang);
+        let text = crate::gui::errors::edit_error(e, cx.settings.lang);
         cx.output.push(OutputLine {
             text,
             error: true,

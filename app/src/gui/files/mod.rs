@@ -3,18 +3,50 @@
 //! instruction list, export and import of comments; the read-only recovery open of a damaged
 //! file; and the autosaved recovery copy offered back after a crash.
 
-pub use super::dialogs::{
+pub mod dialogs;
+pub mod file_dialog;
+
+use crate::gui::context::Context;
+use crate::gui::document::Document;
+use crate::gui::files::file_dialog::SystemDialogs;
+use crate::gui::i18n::Msg;
+pub use crate::gui::settings::canonical;
+pub use dialogs::{
     Action, DialogKind, FileDialogs, NativeDialogs, Question, RecoveryCopy, ScriptedDialogs,
 };
-use super::document::Document;
-use super::i18n::Msg;
-pub use super::settings::canonical;
-use crate::gui::context::Context;
-use crate::gui::state::FileState;
 use ladder_engine::file::{self, FileError};
 use ladder_engine::model::{Change, Project};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
+
+/// The file side: the file dialogs, the question the editor waits on and the recovery copies.
+pub struct FileState {
+    /// File dialogs (native, or scripted in tests).
+    pub dialogs: Box<dyn FileDialogs>,
+    /// The question the editor waits on (unsaved changes, damaged file, restore).
+    pub question: Option<Question>,
+    /// What to do once the pending Save or Save As succeeds.
+    pub after_save: Option<Action>,
+    /// The user agreed to quit.
+    pub exit_confirmed: bool,
+    /// Where recovery copies are autosaved; `None` turns autosave off.
+    pub recovery_dir: Option<PathBuf>,
+    /// When the recovery copy was last written.
+    pub last_autosave: Option<Instant>,
+}
+
+impl Default for FileState {
+    fn default() -> FileState {
+        FileState {
+            dialogs: Box::new(SystemDialogs::default()),
+            question: None,
+            after_save: None,
+            exit_confirmed: false,
+            recovery_dir: None,
+            last_autosave: None,
+        }
+    }
+}
 
 /// Minutes between autosaves of the recovery copy.
 pub const AUTOSAVE_MINUTES: u64 = 3;
@@ -183,14 +215,14 @@ impl FileState {
                         "{} {}: {}",
                         Msg::OpenFailed.text(lang),
                         path.display(),
-                        super::errors::file_error(&e, lang)
+                        crate::gui::errors::file_error(&e, lang)
                     ),
                     true,
                 );
                 if !matches!(e, FileError::Io { .. }) {
                     self.question = Some(Question::Damaged {
                         path: path.to_path_buf(),
-                        error: super::errors::file_error(&e, lang),
+                        error: crate::gui::errors::file_error(&e, lang),
                     });
                 }
                 false
@@ -205,7 +237,7 @@ impl FileState {
         let lang = cx.settings.lang;
         let result = std::fs::read(path)
             .map_err(|e| e.to_string())
-            .and_then(|b| file::recover(&b).map_err(|e| super::errors::file_error(&e, lang)));
+            .and_then(|b| file::recover(&b).map_err(|e| crate::gui::errors::file_error(&e, lang)));
         match result {
             Ok(project) => {
                 let doc = Document::recovered(project, path.to_path_buf());
@@ -247,7 +279,8 @@ impl FileState {
             }
             Err(e) => {
                 self.after_save = None;
-                cx.output.say(super::errors::file_error(&e, lang), true);
+                cx.output
+                    .say(crate::gui::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -278,7 +311,8 @@ impl FileState {
             }
             Err(e) => {
                 self.after_save = None;
-                cx.output.say(super::errors::file_error(&e, lang), true);
+                cx.output
+                    .say(crate::gui::errors::file_error(&e, lang), true);
             }
         }
     }
@@ -363,7 +397,7 @@ impl FileState {
             .map_err(|e| e.to_string())
             .and_then(|()| {
                 file::save(doc.project(), &copy)
-                    .map_err(|e| super::errors::file_error(&e, cx.settings.lang))
+                    .map_err(|e| crate::gui::errors::file_error(&e, cx.settings.lang))
             })
             .and_then(|()| {
                 let origin = doc
@@ -421,7 +455,7 @@ impl FileState {
             }
             Err(e) => {
                 remove_copy(&copy.copy);
-                let e = super::errors::file_error(&e, lang);
+                let e = crate::gui::errors::file_error(&e, lang);
                 cx.output
                     .say(format!("{}: {e}", Msg::CannotRecover.text(lang)), true);
             }
@@ -511,10 +545,10 @@ impl FileState {
             (Question::Restore(copy), 1) => remove_copy(&copy.copy),
             (Question::FirstForce, 0) => cx
                 .pending
-                .push(super::command::Command::ConfirmForces(true)),
+                .push(crate::gui::command::Command::ConfirmForces(true)),
             (Question::FirstForce, _) => cx
                 .pending
-                .push(super::command::Command::ConfirmForces(false)),
+                .push(crate::gui::command::Command::ConfirmForces(false)),
             _ => {}
         }
     }

@@ -1,10 +1,10 @@
 //! The dialog's entry points in the application: opening it for a new or an existing box,
 //! drawing it, and placing the box it describes through the document's door.
 
-use super::super::i18n::{Lang, Msg};
 use super::{Action, FunctionDialog};
 use crate::gui::context::Context;
-use crate::gui::state::EditState;
+use crate::gui::editor::EditState;
+use crate::gui::i18n::{Lang, Msg};
 use egui::{Key, Modifiers};
 use ladder_engine::model::{Cell, CellRef, Edit, EditError};
 

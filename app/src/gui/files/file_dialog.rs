@@ -8,8 +8,8 @@
 //! back faster than a person can click means the dialog never appeared). Either way the
 //! in-app dialog opens on the same question, and stays the choice for the session.
 
-use super::dialogs::{DialogKind, FileDialogs, NativeDialogs};
-use super::i18n::{Lang, Msg};
+use crate::gui::files::dialogs::{DialogKind, FileDialogs, NativeDialogs};
+use crate::gui::i18n::{Lang, Msg};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
@@ -259,7 +259,7 @@ mod tests {
 
     #[test]
     fn a_system_dialog_that_cancels_at_once_never_appeared_and_the_in_app_one_opens() {
-        use super::super::dialogs::ScriptedDialogs;
+        use crate::gui::files::dialogs::ScriptedDialogs;
         let ctx = egui::Context::default();
         // An empty script answers "cancelled" at once, as rfd does without portal or zenity.
         let mut d = SystemDialogs::over(Box::new(ScriptedDialogs::new([])), true);
@@ -279,7 +279,7 @@ mod tests {
 
     #[test]
     fn a_system_dialog_answered_with_a_file_is_the_answer() {
-        use super::super::dialogs::ScriptedDialogs;
+        use crate::gui::files::dialogs::ScriptedDialogs;
         let ctx = egui::Context::default();
         let scripted = ScriptedDialogs::new([Some(PathBuf::from("/tmp/x.ldp"))]);
         let mut d = SystemDialogs::over(Box::new(scripted), true);
