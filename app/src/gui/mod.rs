@@ -51,8 +51,9 @@ pub const APP_ID: &str = "Ladder Studio";
 
 pub use output::OutputLine;
 
-/// The application: persisted settings, the open document and the UI state around it, in
-/// groups (see `state.rs`).
+/// The editor's shell: the settings, the open document, the view, the cursor and selection,
+/// the output, and one state per feature (each reached through [`LadderApp::with`]; see
+/// ARCHITECTURE.md).
 pub struct LadderApp {
     /// Persisted settings.
     settings: Settings,

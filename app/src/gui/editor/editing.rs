@@ -127,7 +127,7 @@ impl EditState {
         }
     }
 
-    /// As [`LadderApp::ensure_network`], and the new row below a network opened for real
+    /// As [`EditState::ensure_network`], and the new row below a network opened for real
     /// when the cursor is on it: drawing there adds the row, in the gesture's undo step.
     pub fn ensure_row(&mut self, cx: &mut Context<'_>) -> Option<Cursor> {
         if self.on_new_row(cx) {

@@ -1,8 +1,7 @@
 //! The questions the editor asks about files and how they are answered: the file dialogs
 //! behind a small trait (native ones on a named thread; tests script the answers and never
 //! open one), the actions that wait on the unsaved-changes question, and the recovery copies.
-//! A leaf module: the application's file side (`files.rs`) and its state (`state.rs`) both
-//! build on it.
+//! A leaf module: the files feature (`files/mod.rs`) builds on it.
 
 use std::collections::VecDeque;
 use std::path::PathBuf;
