@@ -180,7 +180,7 @@ fn the_trace_records_the_macro_handshake_as_the_f_and_g_bits_it_is() {
 #[test]
 fn bench_with_the_cnc_times_the_exchange_on_a_set_up_machine() {
     let lathe = here().join("../projects/lathe-988ta.ldp");
-    let setup = here().join("lathe/cycle.script");
+    let setup = here().join("../projects/lathe-988ta.tests/cycle.script");
     let r = run(&[
         "bench",
         lathe.to_str().unwrap(),

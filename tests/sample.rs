@@ -3,7 +3,7 @@
 use ladder_engine::address::Area;
 use ladder_engine::compiler::compile;
 use ladder_engine::{file, xref};
-use ladder_tests::{here, run, run_scripts, scripts};
+use ladder_tests::{here, run};
 
 fn lathe() -> ladder_engine::model::Project {
     file::load(&here().join("../projects/lathe-988ta.ldp")).expect("the sample loads")
@@ -57,27 +57,6 @@ fn every_address_of_the_lathe_has_a_symbol_with_both_comments() {
 }
 
 #[test]
-fn the_lathe_scripts_pass_against_the_project_under_the_simulated_cnc() {
-    let ldp = here().join("../projects/lathe-988ta.ldp");
-    let scripts = scripts(&here().join("lathe"));
-    assert!(scripts.len() >= 10);
-    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc", "--no-machine"]);
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
-    assert!(expects > 400, "only {expects} expectations ran");
-}
-
-#[test]
-fn the_lathe_runs_the_machine_scripts_against_its_own_machine_model() {
-    // tests/machine: nothing sets a sensor by hand; the sample's devices answer the ladder.
-    let ldp = here().join("../projects/lathe-988ta.ldp");
-    let scripts = scripts(&here().join("machine"));
-    assert!(scripts.len() >= 2);
-    let (failures, expects) = run_scripts(&scripts, |_| ldp.clone(), &["--cnc"]);
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
-    assert!(expects >= 25, "only {expects} expectations ran");
-}
-
-#[test]
 fn every_bundled_project_checks_clean() {
     for name in ["lathe-988ta.ldp", "start-stop.ldp", "stress-5000.ldp"] {
         let path = here().join("../projects").join(name);
@@ -93,7 +72,7 @@ fn every_bundled_project_checks_clean() {
 #[test]
 fn the_part_program_shows_every_handshake_in_the_trace() {
     let ldp = here().join("../projects/lathe-988ta.ldp");
-    let script = here().join("lathe/part-program.script");
+    let script = here().join("../projects/lathe-988ta.tests/part-program.script");
     let dir = tempfile::tempdir().unwrap();
     let trace = dir.path().join("trace.csv");
     let r = run(&[

@@ -17,13 +17,16 @@ use std::hint::black_box;
 use std::path::Path;
 use std::time::Instant;
 
-/// The sample set up by tests/machine/part-program.script up to its cycle start.
+/// The sample set up by projects/lathe-988ta.tests/machine-part-program.script up to its cycle start.
 fn sample() -> Machine {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let project =
         ladder_engine::file::load(&root.join("projects/lathe-988ta.ldp")).expect("the sample");
     let mut m = Machine::new(&project, true).expect("the sample compiles");
-    let text = std::fs::read_to_string(root.join("tests/machine/part-program.script")).unwrap();
+    let text = std::fs::read_to_string(
+        root.join("projects/lathe-988ta.tests/machine-part-program.script"),
+    )
+    .unwrap();
     // Up to the first long run: reference return and cycle start.
     let setup: String = text
         .lines()

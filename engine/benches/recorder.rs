@@ -5,7 +5,7 @@
 //! [`Recorder::record`] after every tick, and its cost in percent of the tick (target ≤ 10 %),
 //! the same for the sample lathe; the recorder's memory per recorded second of virtual
 //! time for that project and for the sample lathe (a healthy machine idle, and looping the part
-//! program of tests/lathe/cycle.script); and the time to rebuild an image and to query one
+//! program of projects/lathe-988ta.tests/cycle.script); and the time to rebuild an image and to query one
 //! byte's changes over the window.
 
 use ladder_engine::machine::{Machine, MachineCommand, Target};
@@ -261,7 +261,8 @@ fn main() {
     }
 
     // The healthy-machine inputs of the lathe scripts: the lines before the part program.
-    let cycle = std::fs::read_to_string(root().join("tests/lathe/cycle.script")).unwrap();
+    let cycle =
+        std::fs::read_to_string(root().join("projects/lathe-988ta.tests/cycle.script")).unwrap();
     let healthy: String = cycle
         .lines()
         .take_while(|l| !l.starts_with("cnc program"))

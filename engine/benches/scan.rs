@@ -80,7 +80,7 @@ fn main() {
         t.elapsed().as_secs_f64()
     );
 
-    // The sample lathe under the simulated CNC, set up and started by tests/lathe/cycle.script.
+    // The sample lathe under the simulated CNC, set up and started by projects/lathe-988ta.tests/cycle.script.
     let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let project = ladder_engine::file::load(&root.join("projects/lathe-988ta.ldp"))
         .expect("the sample loads");
@@ -88,7 +88,8 @@ fn main() {
     let mut machine = Machine::new(&project, true)
         .expect("the sample compiles")
         .without_devices();
-    let text = std::fs::read_to_string(root.join("tests/lathe/cycle.script")).unwrap();
+    let text =
+        std::fs::read_to_string(root.join("projects/lathe-988ta.tests/cycle.script")).unwrap();
     let script = Script::parse_with(
         &text,
         machine.plc().profile(),

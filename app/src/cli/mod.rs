@@ -5,6 +5,7 @@
 mod print;
 mod running;
 mod say;
+mod testing;
 
 pub use say::Say;
 
@@ -102,6 +103,18 @@ pub enum Command {
         /// Run without the project's machine model, so that the script drives every input.
         #[arg(long)]
         no_machine: bool,
+    },
+    /// Run every script of the project's test folder (NAME.tests/ beside NAME.ldp), each on
+    /// a fresh machine, several at once; exits 1 when one fails.
+    Test {
+        /// A project (.ldp) or an instruction list (.il).
+        path: PathBuf,
+        /// Also write the results as JUnit XML, for a CI server.
+        #[arg(long, value_name = "OUT.xml")]
+        junit: Option<PathBuf>,
+        /// Scripts run at once (default: one per core).
+        #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
+        jobs: Option<u16>,
     },
     /// Time the scan.
     Bench {
@@ -256,6 +269,9 @@ where
             out,
             err,
         ),
+        Some(Command::Test { path, junit, jobs }) => {
+            testing::test(&path, junit.as_deref(), jobs.map(usize::from), say, out)
+        }
         Some(Command::Bench {
             path,
             scans,

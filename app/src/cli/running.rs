@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// The exit code of a run stopped by Ctrl+C (128 + SIGINT, as a shell reports it).
-const STOPPED: i32 = 130;
+pub(super) const STOPPED: i32 = 130;
 
 /// How long a run goes quietly before its first progress line, and between two lines.
 const PROGRESS_AFTER: Duration = Duration::from_secs(2);
@@ -22,7 +22,7 @@ static STOP: AtomicBool = AtomicBool::new(false);
 
 /// Listens for Ctrl+C from now on and returns the flag it sets. A second Ctrl+C ends the
 /// process at once, for a run stuck where the flag is not read.
-fn stop_on_ctrl_c() -> &'static AtomicBool {
+pub(super) fn stop_on_ctrl_c() -> &'static AtomicBool {
     static INSTALL: std::sync::Once = std::sync::Once::new();
     INSTALL.call_once(|| {
         // Without a handler (none can be installed) Ctrl+C ends the process as usual.
@@ -66,7 +66,7 @@ fn percent(done: u64, of: u64) -> u64 {
 
 /// Reads and parses a stimulus script (`cnc program-file` paths relative to its folder), or
 /// reports its first bad line (exit 2).
-fn read_script(
+pub(super) fn read_script(
     script_path: &Path,
     machine: &Machine,
     cnc: bool,
