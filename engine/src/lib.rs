@@ -7,6 +7,7 @@ pub mod catalog;
 pub mod cnc;
 pub mod comments;
 pub mod compiler;
+pub mod coverage;
 pub mod devices;
 pub mod file;
 pub mod find;

@@ -103,6 +103,9 @@ pub enum Command {
         /// Run without the project's machine model, so that the script drives every input.
         #[arg(long)]
         no_machine: bool,
+        /// Measure rung coverage and write it to this JSON file (a summary is printed).
+        #[arg(long, value_name = "OUT.json")]
+        coverage: Option<PathBuf>,
     },
     /// Run every script of the project's test folder (NAME.tests/ beside NAME.ldp), each on
     /// a fresh machine, several at once; exits 1 when one fails.
@@ -115,6 +118,9 @@ pub enum Command {
         /// Scripts run at once (default: one per core).
         #[arg(long, value_parser = clap::value_parser!(u16).range(1..=256))]
         jobs: Option<u16>,
+        /// Measure rung coverage over all the scripts and write it to this JSON file.
+        #[arg(long, value_name = "OUT.json")]
+        coverage: Option<PathBuf>,
     },
     /// Time the scan.
     Bench {
@@ -133,6 +139,9 @@ pub enum Command {
         /// Run without the project's machine model.
         #[arg(long)]
         no_machine: bool,
+        /// Measure rung coverage while timing (its cost against the plain scan).
+        #[arg(long)]
+        coverage: bool,
     },
     /// Print the project: a PDF document, or SVG pages.
     Print(print::PrintArgs),
@@ -260,28 +269,38 @@ where
             trace,
             cnc,
             no_machine,
+            coverage,
         }) => running::sim(
             &path,
-            &script,
-            trace.as_deref(),
+            (&script, trace.as_deref(), coverage.as_deref()),
             (cnc, !no_machine),
             say,
             out,
             err,
         ),
-        Some(Command::Test { path, junit, jobs }) => {
-            testing::test(&path, junit.as_deref(), jobs.map(usize::from), say, out)
-        }
+        Some(Command::Test {
+            path,
+            junit,
+            jobs,
+            coverage,
+        }) => testing::test(
+            &path,
+            (junit.as_deref(), coverage.as_deref()),
+            jobs.map(usize::from),
+            say,
+            out,
+        ),
         Some(Command::Bench {
             path,
             scans,
             cnc,
             script,
             no_machine,
+            coverage,
         }) => running::bench(
             &path,
             scans,
-            (cnc, !no_machine),
+            (cnc, !no_machine, coverage),
             script.as_deref(),
             say,
             out,
@@ -420,6 +439,57 @@ fn import_il(path: &Path, output: &Path, say: Say, err: &mut dyn Write) -> anyho
         );
     }
     Ok(i32::from(errors > 0))
+}
+
+/// The program a PATH runs, as [`machine`] builds it (for placing what the machine measured,
+/// such as coverage, back on its instructions).
+fn program_of(path: &Path, say: Say) -> anyhow::Result<ladder_engine::compiler::Program> {
+    Ok(match Source::read(path, say)? {
+        Source::Project(p) => compile(&p).program,
+        Source::Il { imported, .. } => imported.compiled.program,
+    })
+}
+
+/// The coverage summary lines (`level 2: 412/520 networks fully covered, 78 %`).
+fn coverage_lines(c: &ladder_engine::coverage::Coverage, say: Say) -> Vec<String> {
+    c.summary()
+        .iter()
+        .map(|l| {
+            let (en, zh) = match l.group {
+                "LEVEL1" => ("level 1", "一级程序"),
+                "LEVEL2" => ("level 2", "二级程序"),
+                _ => ("subprograms", "子程序"),
+            };
+            say.pick(
+                format!(
+                    "{en}: {}/{} networks fully covered, {} % ({}/{} elements)",
+                    l.covered,
+                    l.networks,
+                    l.percent(),
+                    l.elements_covered,
+                    l.elements
+                ),
+                format!(
+                    "{zh}：{}/{} 个网络完全覆盖，{} %（元素 {}/{}）",
+                    l.covered,
+                    l.networks,
+                    l.percent(),
+                    l.elements_covered,
+                    l.elements
+                ),
+            )
+        })
+        .collect()
+}
+
+/// Writes a coverage report as JSON (atomically).
+fn write_coverage(
+    path: &Path,
+    c: &ladder_engine::coverage::Coverage,
+    say: Say,
+) -> anyhow::Result<()> {
+    crate::atomic::write_atomic(path, c.to_json().as_bytes())
+        .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))
 }
 
 /// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the

@@ -3,6 +3,7 @@
 //! moment, and both stop cleanly on Ctrl+C with what they have (docs/scripts.md, "Long runs").
 
 use super::{Say, machine};
+use ladder_engine::coverage::Coverage;
 use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Control, Progress, Script};
 use ladder_engine::vm::cnc::Cnc;
@@ -103,8 +104,7 @@ pub(super) fn read_script(
 /// streaming the trace. `(cnc, devices)`: with the simulated CNC, with the machine model.
 pub(super) fn sim(
     path: &Path,
-    script_path: &Path,
-    trace: Option<&Path>,
+    (script_path, trace, coverage): (&Path, Option<&Path>, Option<&Path>),
     (cnc, devices): (bool, bool),
     say: Say,
     out: &mut dyn Write,
@@ -161,6 +161,9 @@ pub(super) fn sim(
         stop: Some(stop_on_ctrl_c()),
         progress: Some(&mut progress),
     };
+    if coverage.is_some() {
+        machine.plc_mut().set_coverage(true);
+    }
     let outcome = sim::run_with(&mut machine, &script, &name, control);
     let outcome = match (outcome, trace) {
         (Ok(o), _) => o,
@@ -186,6 +189,15 @@ pub(super) fn sim(
             )
         );
     }
+    if let Some(c) = coverage {
+        let program = super::program_of(path, say)?;
+        if let Some(measured) = Coverage::measure(machine.plc(), &program) {
+            for line in super::coverage_lines(&measured, say) {
+                let _ = writeln!(out, "{line}");
+            }
+            super::write_coverage(c, &measured, say)?;
+        }
+    }
     let (passed, failed) = (outcome.passed, outcome.failed);
     let _ = writeln!(
         out,
@@ -206,7 +218,7 @@ pub(super) fn sim(
 pub(super) fn bench(
     path: &Path,
     scans: u64,
-    (cnc, devices): (bool, bool),
+    (cnc, devices, coverage): (bool, bool, bool),
     setup: Option<&Path>,
     say: Say,
     out: &mut dyn Write,
@@ -239,6 +251,8 @@ pub(super) fn bench(
             return Ok(1);
         }
     }
+    // Timed with coverage measured, for its cost against the plain scan.
+    machine.plc_mut().set_coverage(coverage);
     let stop = stop_on_ctrl_c();
     let scans = scans.max(1);
     // Warm up caches and branch predictors before timing.

@@ -9,6 +9,8 @@
 
 use super::Say;
 use super::running::{STOPPED, read_script, stop_on_ctrl_c};
+use ladder_engine::compiler::Program;
+use ladder_engine::coverage::Coverage;
 use ladder_engine::sim::{self, Control};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::io::Write;
@@ -46,6 +48,8 @@ struct Ran {
     stopped: bool,
     /// How long it took.
     time: Duration,
+    /// Its rung coverage, when measured.
+    coverage: Option<Coverage>,
 }
 
 impl Ran {
@@ -113,7 +117,13 @@ pub fn cases(folder: &Path) -> std::io::Result<Vec<Case>> {
 }
 
 /// Runs one script on a machine of its own.
-fn run_case(project: &Path, case: &Case, stop: &AtomicBool, say: Say) -> Ran {
+/// With `program`, rung coverage is measured on it.
+fn run_case(
+    project: &Path,
+    case: &Case,
+    (stop, program): (&AtomicBool, Option<&Program>),
+    say: Say,
+) -> Ran {
     let start = Instant::now();
     let mut said = Vec::new();
     let mut ran = Ran::default();
@@ -139,6 +149,9 @@ fn run_case(project: &Path, case: &Case, stop: &AtomicBool, say: Say) -> Ran {
     };
     match (machine, script) {
         (Some(mut machine), Some(script)) => {
+            if program.is_some() {
+                machine.plc_mut().set_coverage(true);
+            }
             let control = Control {
                 trace: None,
                 stop: Some(stop),
@@ -151,6 +164,7 @@ fn run_case(project: &Path, case: &Case, stop: &AtomicBool, say: Say) -> Ran {
                     ran.failed = o.failed;
                     ran.output = o.output;
                     ran.stopped = o.stopped.is_some();
+                    ran.coverage = program.and_then(|p| Coverage::measure(machine.plc(), p));
                 }
                 Err(e) => ran.error = Some(e.to_string()),
             }
@@ -163,7 +177,12 @@ fn run_case(project: &Path, case: &Case, stop: &AtomicBool, say: Say) -> Ran {
 
 /// Runs the cases on `jobs` threads; the results come back in the cases' order.
 /// Once Ctrl+C sets `stop`, the script running stops and no other starts.
-fn run_all(project: &Path, cases: &[Case], jobs: usize, stop: &AtomicBool, say: Say) -> Vec<Ran> {
+fn run_all(
+    project: &Path,
+    cases: &[Case],
+    (jobs, stop, program): (usize, &AtomicBool, Option<&Program>),
+    say: Say,
+) -> Vec<Ran> {
     let next = AtomicUsize::new(0);
     let results: Mutex<Vec<Option<Ran>>> = Mutex::new(vec![None; cases.len()]);
     std::thread::scope(|scope| {
@@ -178,7 +197,7 @@ fn run_all(project: &Path, cases: &[Case], jobs: usize, stop: &AtomicBool, say: 
                         if stop.load(Ordering::SeqCst) {
                             break;
                         }
-                        let ran = run_case(project, case, stop, say);
+                        let ran = run_case(project, case, (stop, program), say);
                         if let Ok(mut r) = results.lock() {
                             r[i] = Some(ran);
                         }
@@ -202,7 +221,7 @@ fn run_all(project: &Path, cases: &[Case], jobs: usize, stop: &AtomicBool, say: 
                 stopped: true,
                 ..Ran::default()
             },
-            None => run_case(project, case, stop, say),
+            None => run_case(project, case, (stop, program), say),
         })
         .collect()
 }
@@ -258,7 +277,7 @@ fn junit(project: &Path, cases: &[Case], results: &[Ran]) -> String {
 /// there is nothing to run or the report cannot be written.
 pub(super) fn test(
     project: &Path,
-    junit_out: Option<&Path>,
+    (junit_out, coverage_out): (Option<&Path>, Option<&Path>),
     jobs: Option<usize>,
     say: Say,
     out: &mut dyn Write,
@@ -286,7 +305,16 @@ pub(super) fn test(
         ));
     }
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    let results = run_all(project, &cases, jobs, stop_on_ctrl_c(), say);
+    let program = match coverage_out {
+        Some(_) => Some(super::program_of(project, say)?),
+        None => None,
+    };
+    let results = run_all(
+        project,
+        &cases,
+        (jobs, stop_on_ctrl_c(), program.as_ref()),
+        say,
+    );
     let mut failed = 0;
     for (case, ran) in cases.iter().zip(&results) {
         let checks = ran.passed + ran.failed;
@@ -321,6 +349,22 @@ pub(super) fn test(
         let detail = ran.error.iter().flat_map(|e| e.lines().map(str::to_string));
         for line in detail.chain(ran.output.iter().cloned()) {
             let _ = writeln!(out, "      {line}");
+        }
+    }
+    if let Some(path) = coverage_out {
+        // Merged in the scripts' order: the same whatever finished first.
+        let mut merged: Option<Coverage> = None;
+        for c in results.iter().filter_map(|r| r.coverage.as_ref()) {
+            match &mut merged {
+                None => merged = Some(c.clone()),
+                Some(m) => m.merge(c).map_err(|e| anyhow::anyhow!("{e}"))?,
+            }
+        }
+        if let Some(m) = merged {
+            for line in super::coverage_lines(&m, say) {
+                let _ = writeln!(out, "{line}");
+            }
+            super::write_coverage(path, &m, say)?;
         }
     }
     let passed = cases.len() - failed;

@@ -159,7 +159,7 @@ impl Vm {
                 VmOp::Out | VmOp::Outn => {
                     // Only while forcing: the write is followed by the forces.
                     if TRACE {
-                        self.trace[at as usize] = r.acc as u8;
+                        record(&mut self.trace, at, r.acc);
                     }
                     let v = r.acc ^ u32::from(op == VmOp::Outn);
                     write_bit(&mut self.mem, arg, v);
@@ -168,7 +168,7 @@ impl Vm {
                 }
                 VmOp::Set | VmOp::Rst => {
                     if TRACE {
-                        self.trace[at as usize] = r.acc as u8;
+                        record(&mut self.trace, at, r.acc);
                     }
                     if r.acc != 0 {
                         write_bit(&mut self.mem, arg, u32::from(op == VmOp::Set));
@@ -179,7 +179,7 @@ impl Vm {
                 VmOp::Lbl => r.steps += 2,
                 VmOp::Jmpb => {
                     if TRACE {
-                        self.trace[at as usize] = r.acc as u8;
+                        record(&mut self.trace, at, r.acc);
                     }
                     r.steps += 2;
                     if r.acc != 0 {
@@ -193,7 +193,7 @@ impl Vm {
                 VmOp::Call | VmOp::Callu => {
                     let unconditional = op == VmOp::Callu;
                     if TRACE {
-                        self.trace[at as usize] = r.acc as u8;
+                        record(&mut self.trace, at, r.acc);
                     }
                     r.steps += 2;
                     if r.acc != 0 || unconditional {
@@ -218,7 +218,7 @@ impl Vm {
                     } = self;
                     let f = &code.fns[arg as usize];
                     if TRACE {
-                        trace[at as usize] = r.acc as u8;
+                        record(trace, at, r.acc);
                     }
                     r.steps += u64::from(f.cost);
                     let mut cx = Ctx {
@@ -265,6 +265,17 @@ impl Vm {
         }
     }
 }
+
+/// Records what word `at` read or received (bit 0, for the monitor) and that this value was
+/// seen (bit 1 for 0, bit 2 for 1, for coverage): one write either way.
+#[inline(always)]
+fn record(trace: &mut [u8], at: u32, v: u32) {
+    let t = &mut trace[at as usize];
+    *t = (*t & SEEN) | (v as u8 & 1) | (2 << (v & 1));
+}
+
+/// The bits of a trace byte that say which values were seen.
+pub(super) const SEEN: u8 = 0b110;
 
 /// What the hot loop needs to know besides code, memory and registers.
 #[derive(Clone, Copy)]
@@ -324,7 +335,7 @@ fn hot<const TRACE: bool>(
                 // Every contact form: the opcode's bits are its flags (see `code::C_*`).
                 let raw = u32::from(mem[index] >> shift) & 1;
                 if TRACE {
-                    trace[at as usize] = raw as u8;
+                    record(trace, at, raw);
                 }
                 let v = raw ^ (op & C_INVERT);
                 let push = u64::from(op >> 3 & 1);
@@ -352,7 +363,7 @@ fn hot<const TRACE: bool>(
                     break at;
                 }
                 if TRACE {
-                    trace[at as usize] = acc as u8;
+                    record(trace, at, acc);
                 }
                 let byte = &mut mem[index];
                 *byte = (*byte & !(1 << shift)) | (((acc ^ (op & 1)) as u8) << shift);
@@ -363,7 +374,7 @@ fn hot<const TRACE: bool>(
                     break at;
                 }
                 if TRACE {
-                    trace[at as usize] = acc as u8;
+                    record(trace, at, acc);
                 }
                 if acc != 0 {
                     let byte = &mut mem[index];

@@ -125,6 +125,8 @@ pub struct Vm {
     /// Per word of code: the value a contact read or the power an output received, for
     /// watched networks (0/1), written only while tracing.
     trace: Vec<u8>,
+    /// Whether coverage is being measured: the trace's seen bits since it was turned on.
+    covering: bool,
     profile: &'static Profile,
 }
 
@@ -168,6 +170,7 @@ impl Vm {
             window: vec![0; d.len() / 4],
             watched: vec![false; code.networks.len()],
             trace: vec![0; code.words().len()],
+            covering: false,
             watch_count: 0,
             mem: vec![0; size],
             force_mask: vec![0; size],
@@ -447,13 +450,31 @@ impl Vm {
         }
     }
 
+    /// Turns rung coverage on (every network recorded, and every value each word reads or
+    /// receives kept, from now on) or off. Off, the scan does no coverage work at all.
+    pub fn set_coverage(&mut self, on: bool) {
+        self.trace.fill(0);
+        self.covering = on;
+        for n in 0..self.watched.len() {
+            self.watch(n, on);
+        }
+    }
+
+    /// What coverage has seen since it was turned on, per word of code (bit 1: the value 0,
+    /// bit 2: the value 1; see [`Vm::trace`]), with [`Code::source`] to place each word;
+    /// `None` while off.
+    pub fn coverage(&self) -> Option<(&[u8], &Code)> {
+        self.covering.then_some((&self.trace[..], &self.code))
+    }
+
     /// Whether a code network is being recorded.
     pub fn is_watched(&self, network: usize) -> bool {
         self.watched.get(network).copied().unwrap_or(false)
     }
 
-    /// What the last execution of each word recorded (contacts: the bit read; outputs: their
-    /// ACT), valid for watched networks.
+    /// What the last execution of each word recorded in bit 0 (contacts: the bit read;
+    /// outputs: their ACT), valid for watched networks; bits 1 and 2 say whether 0 and 1 were
+    /// ever seen (coverage).
     pub fn trace(&self) -> &[u8] {
         &self.trace
     }

@@ -146,7 +146,7 @@ pub fn network_view(
                         .get_mut(row as usize)
                         .and_then(|r| r.get_mut(col as usize))
                 {
-                    *slot = trace.get(word as usize).map(|t| *t == 1);
+                    *slot = trace.get(word as usize).map(|t| *t & 1 == 1);
                 }
             }
         }

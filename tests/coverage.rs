@@ -1,0 +1,136 @@
+//! Rung coverage from the command line: `sim --coverage` on programs written so that the
+//! exact figures are known, and `test --coverage` merging the scripts of a test folder.
+
+use ladder_engine::coverage::{Coverage, State};
+use ladder_tests::run;
+use std::path::Path;
+
+/// One network energised through one branch only; a compare whose "greater" result is never
+/// seen, read by the next network.
+const PROGRAM: &str = "\
+LEVEL1
+NETWORK \"one branch\"
+LD   X0000.0
+OR   X0000.1
+OUT  Y0000.0
+LEVEL2
+NETWORK \"compare\"
+LD   X0002.1
+CMP  1 R0100 R0200 R0300.0
+NETWORK \"greater\"
+LD   R0300.0
+OUT  Y0001.0
+END
+";
+
+/// X0000.0 on then off; the compare run with R100 < R200, then equal, then not run.
+const SCRIPT: &str = "\
+set X0000.0 1
+scan 4
+set X0000.0 0
+scan 4
+set X0002.1 1
+set R0100 1
+set R0200 2
+scan 4
+expect R0300.2 1
+set R0100 2
+scan 4
+expect R0300.1 1
+set X0002.1 0
+scan 4
+expect Y0001.0 0
+";
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.to_str().unwrap().to_string()
+}
+
+fn states(c: &Coverage, network: usize) -> Vec<(String, State)> {
+    c.networks[network]
+        .elements
+        .iter()
+        .map(|e| (e.il.clone(), e.state()))
+        .collect()
+}
+
+#[test]
+fn sim_measures_the_branch_never_taken_and_the_result_never_seen() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = write(dir.path(), "plant.il", PROGRAM);
+    let script = write(dir.path(), "run.script", SCRIPT);
+    let json = dir.path().join("cov.json");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        &script,
+        "--coverage",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    assert_eq!(
+        r.stdout,
+        "level 1: 0/1 networks fully covered, 0 % (2/3 elements)\n\
+         level 2: 1/2 networks fully covered, 50 % (2/4 elements)\n\
+         3 passed, 0 failed\n"
+    );
+    let c = Coverage::from_json(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let s = |il: &str, st: State| (il.to_string(), st);
+    assert_eq!(
+        states(&c, 0),
+        [
+            s("LD X0000.0", State::Covered),
+            s("OR X0000.1", State::Half),
+            s("OUT Y0000.0", State::Covered)
+        ]
+    );
+    assert_eq!(c.networks[1].state(), State::Covered);
+    assert_eq!(
+        states(&c, 2),
+        [s("LD R0300.0", State::Half), s("OUT Y0001.0", State::Half)]
+    );
+    // Where each element is: the IL's own lines have no grid cell.
+    assert!(c.networks[0].elements.iter().all(|e| e.cell.is_none()));
+}
+
+#[test]
+fn test_merges_the_coverage_of_every_script() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = write(dir.path(), "plant.il", PROGRAM);
+    std::fs::create_dir(dir.path().join("plant.tests")).unwrap();
+    let tests = dir.path().join("plant.tests");
+    // Each script takes one branch: together they cover the first network.
+    write(
+        &tests,
+        "a.script",
+        "set X0000.0 1\nscan 2\nset X0000.0 0\nscan 2\nexpect Y0000.0 0\n",
+    );
+    write(
+        &tests,
+        "b.script",
+        "set X0000.1 1\nscan 2\nset X0000.1 0\nscan 2\nexpect Y0000.0 0\n",
+    );
+    let json = dir.path().join("cov.json");
+    let r = run(&["test", &il, "--coverage", json.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    assert!(
+        r.stdout
+            .contains("level 1: 1/1 networks fully covered, 100 % (3/3 elements)\n"),
+        "{}",
+        r.stdout
+    );
+    let c = Coverage::from_json(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(c.runs, 2);
+    // Neither script ran the compare.
+    assert_eq!(c.networks[1].state(), State::Half);
+}
+
+#[test]
+fn a_coverage_file_that_is_not_one_is_refused_by_the_reader() {
+    assert!(
+        Coverage::from_json("{\"format\":\"something else\",\"runs\":1,\"networks\":[]}").is_err()
+    );
+}
