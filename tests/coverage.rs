@@ -134,3 +134,40 @@ fn a_coverage_file_that_is_not_one_is_refused_by_the_reader() {
         Coverage::from_json("{\"format\":\"something else\",\"runs\":1,\"networks\":[]}").is_err()
     );
 }
+
+#[test]
+fn the_html_page_lists_the_networks_left_to_cover_and_their_elements() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = write(dir.path(), "plant.il", PROGRAM);
+    let script = write(dir.path(), "run.script", SCRIPT);
+    let page = dir.path().join("cov.html");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        &script,
+        "--coverage-html",
+        page.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(
+        html.starts_with("<!DOCTYPE html>")
+            && html.contains("<title>Rung coverage of plant.il</title>")
+    );
+    assert!(
+        html.contains("<h2>2 networks not fully covered</h2>"),
+        "{html}"
+    );
+    assert!(html.contains("<h3>LEVEL1 N0001 one branch</h3>"));
+    assert!(
+        html.contains(
+            "<tr class=\"half\"><td><code>OR X0000.1</code></td><td>half</td><td>0</td></tr>"
+        ),
+        "{html}"
+    );
+    // The fully covered compare network is not listed; the one reading its result is.
+    assert!(!html.contains("N0001 compare") && html.contains("<h3>LEVEL2 N0002 greater</h3>"));
+    // Self-contained: no link to anything outside the page.
+    assert!(!html.contains("http") && !html.contains("<link") && !html.contains("<script"));
+}

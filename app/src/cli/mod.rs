@@ -2,6 +2,7 @@
 //! input that fails (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad
 //! arguments).
 
+mod coverage;
 mod print;
 mod running;
 mod say;
@@ -106,6 +107,9 @@ pub enum Command {
         /// Measure rung coverage and write it to this JSON file (a summary is printed).
         #[arg(long, value_name = "OUT.json")]
         coverage: Option<PathBuf>,
+        /// Measure rung coverage and write it as an HTML page.
+        #[arg(long, value_name = "OUT.html")]
+        coverage_html: Option<PathBuf>,
     },
     /// Run every script of the project's test folder (NAME.tests/ beside NAME.ldp), each on
     /// a fresh machine, several at once; exits 1 when one fails.
@@ -121,6 +125,9 @@ pub enum Command {
         /// Measure rung coverage over all the scripts and write it to this JSON file.
         #[arg(long, value_name = "OUT.json")]
         coverage: Option<PathBuf>,
+        /// Measure rung coverage over all the scripts and write it as an HTML page.
+        #[arg(long, value_name = "OUT.html")]
+        coverage_html: Option<PathBuf>,
     },
     /// Time the scan.
     Bench {
@@ -270,9 +277,17 @@ where
             cnc,
             no_machine,
             coverage,
+            coverage_html,
         }) => running::sim(
             &path,
-            (&script, trace.as_deref(), coverage.as_deref()),
+            (
+                &script,
+                trace.as_deref(),
+                coverage::Outputs {
+                    json: coverage.as_deref(),
+                    html: coverage_html.as_deref(),
+                },
+            ),
             (cnc, !no_machine),
             say,
             out,
@@ -283,9 +298,16 @@ where
             junit,
             jobs,
             coverage,
+            coverage_html,
         }) => testing::test(
             &path,
-            (junit.as_deref(), coverage.as_deref()),
+            (
+                junit.as_deref(),
+                coverage::Outputs {
+                    json: coverage.as_deref(),
+                    html: coverage_html.as_deref(),
+                },
+            ),
             jobs.map(usize::from),
             say,
             out,
@@ -448,48 +470,6 @@ fn program_of(path: &Path, say: Say) -> anyhow::Result<ladder_engine::compiler::
         Source::Project(p) => compile(&p).program,
         Source::Il { imported, .. } => imported.compiled.program,
     })
-}
-
-/// The coverage summary lines (`level 2: 412/520 networks fully covered, 78 %`).
-fn coverage_lines(c: &ladder_engine::coverage::Coverage, say: Say) -> Vec<String> {
-    c.summary()
-        .iter()
-        .map(|l| {
-            let (en, zh) = match l.group {
-                "LEVEL1" => ("level 1", "一级程序"),
-                "LEVEL2" => ("level 2", "二级程序"),
-                _ => ("subprograms", "子程序"),
-            };
-            say.pick(
-                format!(
-                    "{en}: {}/{} networks fully covered, {} % ({}/{} elements)",
-                    l.covered,
-                    l.networks,
-                    l.percent(),
-                    l.elements_covered,
-                    l.elements
-                ),
-                format!(
-                    "{zh}：{}/{} 个网络完全覆盖，{} %（元素 {}/{}）",
-                    l.covered,
-                    l.networks,
-                    l.percent(),
-                    l.elements_covered,
-                    l.elements
-                ),
-            )
-        })
-        .collect()
-}
-
-/// Writes a coverage report as JSON (atomically).
-fn write_coverage(
-    path: &Path,
-    c: &ladder_engine::coverage::Coverage,
-    say: Say,
-) -> anyhow::Result<()> {
-    crate::atomic::write_atomic(path, c.to_json().as_bytes())
-        .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))
 }
 
 /// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the

@@ -104,7 +104,7 @@ pub(super) fn read_script(
 /// streaming the trace. `(cnc, devices)`: with the simulated CNC, with the machine model.
 pub(super) fn sim(
     path: &Path,
-    (script_path, trace, coverage): (&Path, Option<&Path>, Option<&Path>),
+    (script_path, trace, coverage): (&Path, Option<&Path>, super::coverage::Outputs<'_>),
     (cnc, devices): (bool, bool),
     say: Say,
     out: &mut dyn Write,
@@ -161,7 +161,7 @@ pub(super) fn sim(
         stop: Some(stop_on_ctrl_c()),
         progress: Some(&mut progress),
     };
-    if coverage.is_some() {
+    if coverage.wanted() {
         machine.plc_mut().set_coverage(true);
     }
     let outcome = sim::run_with(&mut machine, &script, &name, control);
@@ -189,13 +189,10 @@ pub(super) fn sim(
             )
         );
     }
-    if let Some(c) = coverage {
+    if coverage.wanted() {
         let program = super::program_of(path, say)?;
         if let Some(measured) = Coverage::measure(machine.plc(), &program) {
-            for line in super::coverage_lines(&measured, say) {
-                let _ = writeln!(out, "{line}");
-            }
-            super::write_coverage(c, &measured, say)?;
+            coverage.report(&measured, path, say, out)?;
         }
     }
     let (passed, failed) = (outcome.passed, outcome.failed);

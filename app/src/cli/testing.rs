@@ -277,7 +277,7 @@ fn junit(project: &Path, cases: &[Case], results: &[Ran]) -> String {
 /// there is nothing to run or the report cannot be written.
 pub(super) fn test(
     project: &Path,
-    (junit_out, coverage_out): (Option<&Path>, Option<&Path>),
+    (junit_out, coverage_out): (Option<&Path>, super::coverage::Outputs<'_>),
     jobs: Option<usize>,
     say: Say,
     out: &mut dyn Write,
@@ -305,9 +305,9 @@ pub(super) fn test(
         ));
     }
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    let program = match coverage_out {
-        Some(_) => Some(super::program_of(project, say)?),
-        None => None,
+    let program = match coverage_out.wanted() {
+        true => Some(super::program_of(project, say)?),
+        false => None,
     };
     let results = run_all(
         project,
@@ -351,7 +351,7 @@ pub(super) fn test(
             let _ = writeln!(out, "      {line}");
         }
     }
-    if let Some(path) = coverage_out {
+    if coverage_out.wanted() {
         // Merged in the scripts' order: the same whatever finished first.
         let mut merged: Option<Coverage> = None;
         for c in results.iter().filter_map(|r| r.coverage.as_ref()) {
@@ -361,10 +361,7 @@ pub(super) fn test(
             }
         }
         if let Some(m) = merged {
-            for line in super::coverage_lines(&m, say) {
-                let _ = writeln!(out, "{line}");
-            }
-            super::write_coverage(path, &m, say)?;
+            coverage_out.report(&m, project, say, out)?;
         }
     }
     let passed = cases.len() - failed;

@@ -1,0 +1,167 @@
+//! Rung coverage on the command line: the summary lines, the JSON file and the HTML page
+//! (docs/scripts.md, "Coverage").
+
+use super::Say;
+use ladder_engine::coverage::{Coverage, State};
+use std::path::Path;
+
+/// The coverage summary lines (`level 2: 412/520 networks fully covered, 78 %`).
+fn lines(c: &Coverage, say: Say) -> Vec<String> {
+    c.summary()
+        .iter()
+        .map(|l| {
+            let (en, zh) = match l.group {
+                "LEVEL1" => ("level 1", "一级程序"),
+                "LEVEL2" => ("level 2", "二级程序"),
+                _ => ("subprograms", "子程序"),
+            };
+            say.pick(
+                format!(
+                    "{en}: {}/{} networks fully covered, {} % ({}/{} elements)",
+                    l.covered,
+                    l.networks,
+                    l.percent(),
+                    l.elements_covered,
+                    l.elements
+                ),
+                format!(
+                    "{zh}：{}/{} 个网络完全覆盖，{} %（元素 {}/{}）",
+                    l.covered,
+                    l.networks,
+                    l.percent(),
+                    l.elements_covered,
+                    l.elements
+                ),
+            )
+        })
+        .collect()
+}
+
+/// Where a run's coverage goes: the JSON file, the HTML page (either asks for coverage).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct Outputs<'a> {
+    /// `--coverage OUT.json`.
+    pub json: Option<&'a Path>,
+    /// `--coverage-html OUT.html`.
+    pub html: Option<&'a Path>,
+}
+
+impl Outputs<'_> {
+    /// Whether coverage is to be measured.
+    pub fn wanted(&self) -> bool {
+        self.json.is_some() || self.html.is_some()
+    }
+
+    /// Prints the summary lines and writes the files asked for.
+    pub fn report(
+        &self,
+        c: &Coverage,
+        project: &Path,
+        say: Say,
+        out: &mut dyn std::io::Write,
+    ) -> anyhow::Result<()> {
+        for line in lines(c, say) {
+            let _ = writeln!(out, "{line}");
+        }
+        if let Some(path) = self.json {
+            write(path, c, say)?;
+        }
+        if let Some(path) = self.html {
+            let name = project
+                .file_name()
+                .map_or(String::new(), |n| n.to_string_lossy().into_owned());
+            crate::atomic::write_atomic(path, html(c, &name, say).as_bytes())
+                .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))?;
+        }
+        Ok(())
+    }
+}
+
+/// Writes a coverage report as JSON (atomically).
+fn write(path: &Path, c: &Coverage, say: Say) -> anyhow::Result<()> {
+    crate::atomic::write_atomic(path, c.to_json().as_bytes())
+        .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))
+}
+
+/// The coverage as a self-contained HTML page: the summary, then every network not fully
+/// covered with its elements and what was seen of each.
+fn html(c: &Coverage, project: &str, say: Say) -> String {
+    let esc = |t: &str| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+            .replace('"', "&quot;")
+    };
+    let title = say.pick(
+        format!("Rung coverage of {}", esc(project)),
+        format!("{} 的梯形图覆盖率", esc(project)),
+    );
+    let mut page = format!(
+        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{title}</title>\n\
+         <style>body{{font-family:sans-serif;margin:2em;color:#222}}\
+         table{{border-collapse:collapse;margin:.5em 0 1.5em}}\
+         td,th{{border:1px solid #ccc;padding:.2em .6em;text-align:left}}\
+         .covered{{color:#1a7f37}}.half{{color:#9a6700}}.never{{color:#cf222e}}\
+         code{{font-family:monospace}}</style></head><body>\n<h1>{title}</h1>\n",
+        if say.zh { "zh" } else { "en" }
+    );
+    page.push_str(&format!(
+        "<p>{}</p>\n<ul>\n",
+        say.pick(
+            format!("{} runs merged.", c.runs),
+            format!("合并了 {} 次运行。", c.runs)
+        )
+    ));
+    for line in lines(c, say) {
+        page.push_str(&format!("<li>{}</li>\n", esc(&line)));
+    }
+    page.push_str("</ul>\n");
+    let (h_el, h_state, h_seen) = if say.zh {
+        ("元素", "状态", "见到")
+    } else {
+        ("Element", "State", "Seen")
+    };
+    let open = c
+        .networks
+        .iter()
+        .filter(|n| n.state() != State::Covered)
+        .collect::<Vec<_>>();
+    page.push_str(&format!(
+        "<h2>{}</h2>\n",
+        say.pick(
+            format!("{} networks not fully covered", open.len()),
+            format!("{} 个网络未完全覆盖", open.len())
+        )
+    ));
+    for n in open {
+        page.push_str(&format!(
+            "<h3>{} N{:04} {}</h3>\n<table><tr><th>{h_el}</th><th>{h_state}</th><th>{h_seen}</th></tr>\n",
+            esc(&n.block),
+            n.network + 1,
+            esc(&n.title)
+        ));
+        for e in &n.elements {
+            let (class, state) = match e.state() {
+                State::Covered => ("covered", say.pick("covered", "已覆盖")),
+                State::Half => ("half", say.pick("half", "部分")),
+                State::Never => ("never", say.pick("never", "从未")),
+            };
+            let seen = match (e.seen0, e.seen1) {
+                (true, true) => "0, 1",
+                (true, false) => "0",
+                (false, true) => "1",
+                (false, false) => "—",
+            };
+            let cell = e
+                .cell
+                .map_or(String::new(), |(r, c)| format!(" ({}, {})", r + 1, c + 1));
+            page.push_str(&format!(
+                "<tr class=\"{class}\"><td><code>{}</code>{cell}</td><td>{state}</td><td>{seen}</td></tr>\n",
+                esc(&e.il)
+            ));
+        }
+        page.push_str("</table>\n");
+    }
+    page.push_str("</body></html>\n");
+    page
+}
