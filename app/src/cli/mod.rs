@@ -205,66 +205,7 @@ where
         return 2;
     }
     let result = match cli.command {
-        None => {
-            if let Some(p) = &cli.project
-                && !p.exists()
-            {
-                let _ = writeln!(
-                    err,
-                    "ladder-studio: {}",
-                    say.pick(
-                        format!(
-                            "no project file or subcommand `{}` (see --help)",
-                            p.display()
-                        ),
-                        format!("没有工程文件或子命令 `{}`（见 --help）", p.display())
-                    )
-                );
-                return 2;
-            }
-            let read = ladder_engine::cnc::program::read_program_file;
-            let nc = match cli.nc.as_deref().map(read) {
-                Some(Ok(text)) => Some(text),
-                Some(Err(e)) => {
-                    let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
-                    let _ = writeln!(
-                        err,
-                        "ladder-studio: {}",
-                        say.pick(e.message(nc, false), e.message(nc, true))
-                    );
-                    return 2;
-                }
-                None => None,
-            };
-            // winit aborts without a display; say so instead.
-            let display = ["DISPLAY", "WAYLAND_DISPLAY"]
-                .iter()
-                .any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
-            if !display {
-                let _ = writeln!(
-                    err,
-                    "ladder-studio: {}",
-                    say.pick(
-                        "the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)",
-                        "编辑器需要图形界面（没有 DISPLAY 或 WAYLAND_DISPLAY）；子命令无需图形界面即可运行（见 --help）"
-                    )
-                );
-                return 2;
-            }
-            let start = crate::gui::Start {
-                project: cli.project,
-                run: cli.run,
-                nc,
-                lang: cli.lang.as_deref().map(|l| {
-                    if l == "zh" {
-                        crate::gui::i18n::Lang::Zh
-                    } else {
-                        crate::gui::i18n::Lang::En
-                    }
-                }),
-            };
-            crate::gui::run(start).map(|()| 0)
-        }
+        None => open_editor(cli, say, err),
         Some(Command::Check { path }) => check(&path, say, out),
         Some(Command::ExportIl { path, output }) => {
             export_il(&path, output.as_deref(), say, out, err)
@@ -346,6 +287,69 @@ where
             2
         }
     }
+}
+
+/// Without a subcommand: the editor, on PROJECT (online with `--run`), once the options
+/// are known to be usable.
+fn open_editor(cli: Cli, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
+    if let Some(p) = &cli.project
+        && !p.exists()
+    {
+        let _ = writeln!(
+            err,
+            "ladder-studio: {}",
+            say.pick(
+                format!(
+                    "no project file or subcommand `{}` (see --help)",
+                    p.display()
+                ),
+                format!("没有工程文件或子命令 `{}`（见 --help）", p.display())
+            )
+        );
+        return Ok(2);
+    }
+    let read = ladder_engine::cnc::program::read_program_file;
+    let nc = match cli.nc.as_deref().map(read) {
+        Some(Ok(text)) => Some(text),
+        Some(Err(e)) => {
+            let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
+            let _ = writeln!(
+                err,
+                "ladder-studio: {}",
+                say.pick(e.message(nc, false), e.message(nc, true))
+            );
+            return Ok(2);
+        }
+        None => None,
+    };
+    // winit aborts without a display; say so instead.
+    let display = ["DISPLAY", "WAYLAND_DISPLAY"]
+        .iter()
+        .any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
+    if !display {
+        let _ = writeln!(
+            err,
+            "ladder-studio: {}",
+            say.pick(
+                "the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)",
+                "编辑器需要图形界面（没有 DISPLAY 或 WAYLAND_DISPLAY）；子命令无需图形界面即可运行（见 --help）"
+            )
+        );
+        return Ok(2);
+    }
+    let start = crate::gui::Start {
+        project: cli.project,
+        run: cli.run,
+        nc,
+        lang: cli.lang.as_deref().map(|l| {
+            if l == "zh" {
+                crate::gui::i18n::Lang::Zh
+            } else {
+                crate::gui::i18n::Lang::En
+            }
+        }),
+    };
+    crate::gui::run(start).map(|()| 0)
 }
 
 fn print_diagnostics(path: &Path, compiled: &Compiled, say: Say, w: &mut dyn Write) {
