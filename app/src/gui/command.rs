@@ -206,6 +206,10 @@ commands! {
     ToggleComments => ShowComments;
     /// Element comments under contacts and coils (on/off).
     ToggleElementComments => ShowElementComments, NONE F11;
+    /// Rung coverage laid over the ladder (on/off; the first time, asks for the file).
+    ToggleCoverage => ShowCoverage;
+    /// Read a coverage file (`test --coverage`) and show it.
+    LoadCoverage => CoverageFile;
     /// Network titles shown (on/off).
     ToggleTitles => ShowTitles;
     /// The project manager shown (on/off).

@@ -110,6 +110,7 @@ impl LadderApp {
             Command::ZoomFit => s.fit_width,
             Command::ToggleComments => s.show_comments,
             Command::ToggleElementComments => s.show_element_comments,
+            Command::ToggleCoverage => self.coverage.shown,
             Command::ToggleTitles => s.show_titles,
             Command::ToggleTree => s.show_tree,
             Command::ToggleOutput => s.show_output,
@@ -249,6 +250,24 @@ impl LadderApp {
             }
             Command::ToggleComments => self.settings.show_comments ^= true,
             Command::ToggleElementComments => self.settings.show_element_comments ^= true,
+            Command::ToggleCoverage if self.coverage.report.is_some() => {
+                self.coverage.shown ^= true;
+            }
+            Command::ToggleCoverage | Command::LoadCoverage => {
+                // The switch reads the project's own coverage file when there is one.
+                let beside = (c == Command::ToggleCoverage)
+                    .then(|| self.doc.as_ref().and_then(|d| d.path()))
+                    .flatten()
+                    .map(super::coverage_view::beside)
+                    .filter(|p| p.is_file());
+                match beside {
+                    Some(p) => {
+                        self.with(|v: &mut super::coverage_view::CoverageView, cx| v.open(cx, &p))
+                    }
+                    None => self
+                        .with(|f: &mut FileState, cx| f.start_dialog(cx, DialogKind::OpenCoverage)),
+                }
+            }
             Command::ToggleTitles => self.settings.show_titles ^= true,
             Command::ToggleTree => self.settings.show_tree ^= true,
             Command::ToggleOutput => self.settings.show_output ^= true,

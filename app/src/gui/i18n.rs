@@ -204,6 +204,15 @@ messages! {
     DisplayBoth => "地址：符号显示", "Show address: symbol";
     ShowComments => "显示网络注释", "Show network comments";
     ShowElementComments => "显示元件注释", "Show element comments";
+    ShowCoverage => "显示覆盖率", "Show coverage";
+    CoverageFile => "打开覆盖率文件…", "Coverage file…";
+    Coverage => "覆盖率", "Coverage";
+    CoverFull => "已覆盖", "covered";
+    CoverHalf => "部分覆盖", "half";
+    CoverNever => "未运行", "never";
+    CoverageOpenNetworks => "个网络未完全覆盖（单击转到）", "networks not fully covered (click to go there)";
+    CoverageLeft => "待覆盖", "left";
+    CoverageUnread => "无法读取覆盖率文件", "Cannot read the coverage file";
     About => "关于 Ladder Studio", "About Ladder Studio";
     Project => "工程", "Project";
     Ladder => "梯形图", "Ladder";

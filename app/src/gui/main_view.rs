@@ -152,6 +152,8 @@ impl LadderApp {
         self.replace.dialog = None;
         self.tables = Default::default();
         self.online.machine = Default::default();
+        // A coverage file belongs to its project.
+        self.coverage = Default::default();
         // Nothing of the old project stays: cursor, selection, drag, tabs, and its output —
         // each document starts with its own (what opening it says comes after). The clipboard
         // stays: copying between projects is how networks move from one machine's ladder to

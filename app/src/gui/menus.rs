@@ -176,6 +176,9 @@ impl<'a> Menus<'a> {
         self.entry(ui, Command::ToggleComments);
         self.entry(ui, Command::ToggleElementComments);
         ui.separator();
+        self.entry(ui, Command::ToggleCoverage);
+        self.entry(ui, Command::LoadCoverage);
+        ui.separator();
         for c in VIEW_TOGGLES {
             self.entry(ui, *c);
         }

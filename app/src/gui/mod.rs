@@ -3,6 +3,7 @@
 
 pub mod command;
 pub mod context;
+pub mod coverage_view;
 pub mod diagnostics;
 pub mod dispatch;
 pub mod document;
@@ -83,6 +84,8 @@ pub struct LadderApp {
     tables: tables::TableState,
     /// The cross-reference views: the index filter and what was derived from the project.
     xref: xref_view::XrefState,
+    /// View → Coverage: the coverage file shown over the ladder.
+    coverage: coverage_view::CoverageView,
     /// Printing: the page setup, the preview, the print queue.
     print: printing::PrintState,
     /// The egui context, for starting dialogs outside a frame's closures.
@@ -140,6 +143,7 @@ features! {
     printing::PrintState => print,
     tables::TableState => tables,
     xref_view::XrefState => xref,
+    coverage_view::CoverageView => coverage,
     replace::Replace => replace,
     properties::ElementProperties => properties,
     online::OnlineState => online,
@@ -242,6 +246,7 @@ impl LadderApp {
             tables: tables::TableState::default(),
             xref: Default::default(),
             print: Default::default(),
+            coverage: Default::default(),
             ctx: None,
             pending: Vec::new(),
             last_change: 0,
@@ -416,6 +421,8 @@ impl LadderApp {
                         error: d.severity() == Severity::Error,
                     })
                     .collect();
+                let cover = self.coverage.marks(doc.project(), b);
+                self.coverage.legend_ui(ui, self.settings.lang);
                 let seen = (self.cursor, doc.serial(), doc.generation());
                 let follow = self.edit.followed != Some(seen);
                 self.edit.followed = Some(seen);
@@ -434,6 +441,7 @@ impl LadderApp {
                         .show_element_comments
                         .then_some(self.settings.lang.code()),
                     errors: &errors,
+                    coverage: &cover,
                 };
                 // The view's scroll target and geometry are the editor's; the online feature
                 // draws with them while it holds the cursor.
@@ -545,6 +553,9 @@ impl eframe::App for LadderApp {
         match self.with(|f: &mut FileState, cx| f.poll_dialogs(cx)) {
             Some((files::DialogKind::ExportTrace, path)) => {
                 self.with(|o: &mut OnlineState, cx| o.export_trace(cx, &path))
+            }
+            Some((files::DialogKind::OpenCoverage, path)) => {
+                self.with(|c: &mut coverage_view::CoverageView, cx| c.open(cx, &path))
             }
             Some((_, path)) => self.with_context(|cx| PrintState::export(cx, &path)),
             None => {}

@@ -12,6 +12,12 @@ pub const ERROR_GROUND: Color32 = Color32::from_rgb(0xff, 0xec, 0xec);
 pub const OK: Color32 = Color32::from_rgb(0x10, 0x80, 0x10);
 /// An operand that can be used but will not compile yet (an undefined symbol).
 pub const CAUTION: Color32 = Color32::from_rgb(0xb0, 0x60, 0x00);
+/// Coverage: an element seen both ways (translucent over the ladder's paper).
+pub const COVER_FULL: Color32 = Color32::from_rgba_unmultiplied_const(0x30, 0xb0, 0x50, 0x50);
+/// Coverage: an element seen one way only.
+pub const COVER_HALF: Color32 = Color32::from_rgba_unmultiplied_const(0xf0, 0xb0, 0x00, 0x70);
+/// Coverage: an element never run.
+pub const COVER_NEVER: Color32 = Color32::from_rgba_unmultiplied_const(0xe0, 0x30, 0x30, 0x60);
 /// The background of the "forces active" badge: amber, as a warning lamp.
 pub const AMBER: Color32 = Color32::from_rgb(0xff, 0xbf, 0x00);
 

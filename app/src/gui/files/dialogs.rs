@@ -25,6 +25,8 @@ pub enum DialogKind {
     ExportTrace,
     /// Pick where to write the printed document (PDF, or SVG pages).
     ExportDocument,
+    /// Pick a coverage file to show (JSON, from `test --coverage`).
+    OpenCoverage,
 }
 
 impl DialogKind {
@@ -49,6 +51,7 @@ impl DialogKind {
                 ("CSV", &["csv"])
             }
             DialogKind::ExportDocument => ("PDF / SVG", &["pdf", "svg"]),
+            DialogKind::OpenCoverage => ("Coverage", &["json"]),
         }
     }
 }

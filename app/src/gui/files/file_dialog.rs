@@ -185,6 +185,7 @@ fn texts(d: egui_file::FileDialog, kind: DialogKind, lang: Lang) -> egui_file::F
         DialogKind::ImportComments => Msg::ImportComments,
         DialogKind::ExportTrace => Msg::TraceExport,
         DialogKind::ExportDocument => Msg::ExportDocument,
+        DialogKind::OpenCoverage => Msg::CoverageFile,
     };
     d.title(title.text(lang))
         .open_button_text(t(Msg::DialogOpen))

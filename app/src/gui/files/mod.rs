@@ -154,7 +154,7 @@ impl FileState {
             .and_then(|p| p.file_stem())
             .map_or("project".to_string(), |s| s.to_string_lossy().into_owned());
         let ext = match kind {
-            DialogKind::OpenProject | DialogKind::ImportComments => None,
+            DialogKind::OpenProject | DialogKind::ImportComments | DialogKind::OpenCoverage => None,
             DialogKind::SaveProjectAs => Some("ldp"),
             DialogKind::ExportIl => Some("il"),
             DialogKind::ExportComments | DialogKind::ExportTrace => Some("csv"),
@@ -193,7 +193,9 @@ impl FileState {
             DialogKind::ExportIl => self.export_il(cx, &path),
             DialogKind::ExportComments => self.export_comments(cx, &path),
             DialogKind::ImportComments => self.import_comments(cx, &path),
-            DialogKind::ExportTrace | DialogKind::ExportDocument => return Some((kind, path)),
+            DialogKind::ExportTrace | DialogKind::ExportDocument | DialogKind::OpenCoverage => {
+                return Some((kind, path));
+            }
         }
         None
     }

@@ -223,6 +223,8 @@ pub struct Geometry {
     pub labels: Vec<(Rect, String)>,
     /// Every cell drawn with an error mark (frame) last frame.
     pub error_marks: Vec<Rect>,
+    /// Every cell tinted with its coverage last frame.
+    pub cover_marks: Vec<(Rect, ladder_engine::coverage::State)>,
     /// The part of the ladder on screen, in screen coordinates.
     pub visible: Option<Rect>,
 }
@@ -247,6 +249,7 @@ impl Geometry {
         self.mid = m.mid;
         self.labels.clear();
         self.error_marks.clear();
+        self.cover_marks.clear();
         self.tops = placed.iter().map(|p| p.top).collect();
         self.heights = placed.iter().map(|p| p.height).collect();
         self.rows = b
@@ -292,6 +295,28 @@ pub struct ErrorMark {
     pub error: bool,
 }
 
+/// An element's coverage, in the block shown (View → Coverage).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CoverMark {
+    /// The network.
+    pub network: usize,
+    /// The row.
+    pub row: usize,
+    /// The column (the output column is the ladder's width).
+    pub col: usize,
+    /// Covered, half or never.
+    pub state: ladder_engine::coverage::State,
+}
+
+/// The tint of a coverage state.
+pub fn cover_tint(state: ladder_engine::coverage::State) -> egui::Color32 {
+    match state {
+        ladder_engine::coverage::State::Covered => theme::COVER_FULL,
+        ladder_engine::coverage::State::Half => theme::COVER_HALF,
+        ladder_engine::coverage::State::Never => theme::COVER_NEVER,
+    }
+}
+
 /// How a block is shown.
 #[derive(Clone, Copy, Debug)]
 pub struct ViewOptions<'a> {
@@ -318,6 +343,8 @@ pub struct ViewOptions<'a> {
     pub element_comments: Option<&'static str>,
     /// The cells of this block the last compile found wrong.
     pub errors: &'a [ErrorMark],
+    /// The coverage of this block's elements, while View → Coverage is on.
+    pub coverage: &'a [CoverMark],
 }
 
 /// The top of each row of a network, relative to the network's top (after its header and,

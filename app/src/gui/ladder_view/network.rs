@@ -622,6 +622,20 @@ impl Drawn<'_> {
             }
             _ => None,
         };
+        for mark in opts.coverage.iter().filter(|m| m.network == i) {
+            let width = self.project.ladder.width;
+            let r = cell_rect(
+                &b.networks[i],
+                origin,
+                (mark.row, mark.col),
+                width,
+                self.style,
+            )
+            .shrink(1.0);
+            self.painter
+                .rect_filled(r, 2.0, super::cover_tint(mark.state));
+            geometry.cover_marks.push((r, mark.state));
+        }
         let labels_before = geometry.labels.len();
         network_ui(
             self.painter,

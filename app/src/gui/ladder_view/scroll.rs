@@ -129,6 +129,7 @@ mod tests {
             mid: m.mid,
             labels: Vec::new(),
             error_marks: Vec::new(),
+            cover_marks: Vec::new(),
             visible: None,
         };
         (placed, g)
