@@ -2,6 +2,7 @@
 //! and the networks left to cover listed in the output window.
 
 mod common;
+use common::online::*;
 use common::*;
 use ladder_engine::coverage::State;
 use ladder_studio::gui::command::Command;
@@ -114,4 +115,38 @@ fn the_switch_reads_the_projects_own_coverage_file_without_asking() {
     h.run();
     assert!(h.state().feature::<CoverageView>().shown);
     assert!(!marks(&h).is_empty());
+}
+
+#[test]
+fn online_the_switch_measures_the_running_machine_and_lists_what_is_left_when_off() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../projects");
+    let dir = tempfile_dir();
+    let ldp = dir.join("lathe-988ta.ldp");
+    std::fs::copy(root.join("lathe-988ta.ldp"), &ldp).unwrap();
+    let mut h = harness(Some(ldp), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    command(&mut h, Command::ToggleCoverage);
+    assert!(h.state().feature::<CoverageView>().live);
+    ticks(&mut h, 200);
+    // The report is taken from what the machine publishes (at most twice a second).
+    let start = std::time::Instant::now();
+    while !marks(&h).contains(&State::Half) && start.elapsed() < std::time::Duration::from_secs(10)
+    {
+        std::thread::sleep(std::time::Duration::from_millis(100));
+        ticks(&mut h, 1);
+    }
+    // Level 1 runs every tick with its inputs still: each element is seen one way.
+    let live = marks(&h);
+    assert!(live.iter().all(|s| *s == State::Half), "{live:?}");
+    command(&mut h, Command::ToggleCoverage);
+    assert!(marks(&h).is_empty());
+    let out = h.state().output();
+    assert!(
+        out.iter().any(|l| l
+            .text
+            .starts_with("Coverage (measured on the running machine)")),
+        "{:?}",
+        out.iter().map(|l| &l.text).collect::<Vec<_>>()
+    );
 }

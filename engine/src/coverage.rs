@@ -130,6 +130,12 @@ impl Coverage {
     /// runs); `None` while coverage is off.
     pub fn measure(vm: &Vm, program: &Program) -> Option<Coverage> {
         let (seen, code) = vm.coverage()?;
+        Some(Coverage::from_trace(seen, code, program))
+    }
+
+    /// The coverage a trace carries ([`Vm::trace`]: bits 1 and 2 of each word), placed on the
+    /// program the code was lowered from (a running machine's published trace, say).
+    pub fn from_trace(seen: &[u8], code: &crate::vm::code::Code, program: &Program) -> Coverage {
         // Per instruction, what its words saw.
         let mut by_instr: std::collections::HashMap<(usize, usize, usize), u8> =
             std::collections::HashMap::new();
@@ -174,11 +180,11 @@ impl Coverage {
                 }
             }
         }
-        Some(Coverage {
+        Coverage {
             format: FORMAT.into(),
             runs: 1,
             networks,
-        })
+        }
     }
 
     /// Adds what `other`, a run of the same program, saw.

@@ -28,6 +28,10 @@ pub struct CoverageView {
     pub file: Option<PathBuf>,
     /// Whether the ladder shows it.
     pub shown: bool,
+    /// Measured live on the running machine (online), not read from a file.
+    pub live: bool,
+    /// The published state the live report was last taken from, and when.
+    refreshed: Option<(u64, std::time::Instant)>,
 }
 
 impl CoverageView {
@@ -48,23 +52,61 @@ impl CoverageView {
         };
         self.file = Some(path.to_path_buf());
         self.shown = true;
-        if let Some(doc) = cx.doc() {
-            let lines = uncovered_lines(&report, doc.project(), lang);
-            cx.output.say(
-                format!(
-                    "{} {}: {} {}",
-                    Msg::Coverage.text(lang),
-                    path.display(),
-                    lines.len(),
-                    Msg::CoverageOpenNetworks.text(lang)
-                ),
-                false,
-            );
-            for line in lines {
-                cx.output.push(line);
-            }
-        }
+        self.live = false;
         self.report = Some(report);
+        self.list(cx, &path.display().to_string());
+    }
+
+    /// Lists the networks the report has not fully covered in the output window, under a line
+    /// naming where the report came from.
+    pub fn list(&self, cx: &mut Context<'_>, from: &str) {
+        let lang = cx.settings.lang;
+        let (Some(report), Some(doc)) = (&self.report, cx.doc()) else {
+            return;
+        };
+        let lines = uncovered_lines(report, doc.project(), lang);
+        cx.output.say(
+            format!(
+                "{} {from}: {} {}",
+                Msg::Coverage.text(lang),
+                lines.len(),
+                Msg::CoverageOpenNetworks.text(lang)
+            ),
+            false,
+        );
+        for line in lines {
+            cx.output.push(line);
+        }
+    }
+
+    /// Online: coverage measured on the running machine from now on (shown as it grows), or
+    /// no longer (the networks left are listed then).
+    pub fn set_live(&mut self, cx: &mut Context<'_>, on: bool) {
+        if !on && self.live {
+            let from = Msg::CoverageLive.text(cx.settings.lang);
+            self.list(cx, from);
+        }
+        self.live = on;
+        self.shown = on;
+        self.refreshed = None;
+        if on {
+            self.report = None;
+            self.file = None;
+        }
+    }
+
+    /// Takes the live report again from the machine's published state `seq` (at most twice
+    /// a second: placing the trace on the program allocates).
+    pub fn refresh_live(&mut self, seq: u64, measure: impl FnOnce() -> Option<Coverage>) {
+        let due = self.refreshed.is_none_or(|(s, at)| {
+            s != seq && at.elapsed() >= std::time::Duration::from_millis(500)
+        });
+        if self.live && due {
+            if let Some(r) = measure() {
+                self.report = Some(r);
+            }
+            self.refreshed = Some((seq, std::time::Instant::now()));
+        }
     }
 
     /// The marks of block `b` of `project`, while shown.
@@ -114,7 +156,9 @@ impl CoverageView {
                     .rect_filled(rect, 2.0, super::ladder_view::cover_tint(state));
                 ui.label(msg.text(lang));
             }
-            if let Some(f) = &self.file {
+            if self.live {
+                ui.weak(Msg::CoverageLive.text(lang));
+            } else if let Some(f) = &self.file {
                 ui.weak(
                     f.file_name()
                         .map_or(String::new(), |n| n.to_string_lossy().into_owned()),

@@ -250,6 +250,14 @@ impl LadderApp {
             }
             Command::ToggleComments => self.settings.show_comments ^= true,
             Command::ToggleElementComments => self.settings.show_element_comments ^= true,
+            Command::ToggleCoverage if self.online.is_online() => {
+                // Online: measured on the running machine, from now on.
+                let on = !self.coverage.live;
+                if let Some(s) = self.online.session.as_mut() {
+                    s.send(ladder_engine::runner::Request::Coverage(on));
+                }
+                self.with(|v: &mut super::coverage_view::CoverageView, cx| v.set_live(cx, on));
+            }
             Command::ToggleCoverage if self.coverage.report.is_some() => {
                 self.coverage.shown ^= true;
             }

@@ -213,6 +213,7 @@ messages! {
     CoverageOpenNetworks => "个网络未完全覆盖（单击转到）", "networks not fully covered (click to go there)";
     CoverageLeft => "待覆盖", "left";
     CoverageUnread => "无法读取覆盖率文件", "Cannot read the coverage file";
+    CoverageLive => "（运行中测量）", "(measured on the running machine)";
     About => "关于 Ladder Studio", "About Ladder Studio";
     Project => "工程", "Project";
     Ladder => "梯形图", "Ladder";

@@ -42,6 +42,7 @@ pub use command::HelpPage;
 use document::Document;
 use i18n::Msg;
 use ladder_engine::compiler::Severity;
+use ladder_engine::coverage::Coverage;
 use ladder_engine::model;
 use settings::Settings;
 use std::path::{Path, PathBuf};
@@ -421,6 +422,18 @@ impl LadderApp {
                         error: d.severity() == Severity::Error,
                     })
                     .collect();
+                if let Some(s) = &self.online.session {
+                    let running = &s.running;
+                    let trace = &s.published.snapshot.trace;
+                    self.coverage.refresh_live(s.published.seq, || {
+                        (trace.len() == running.code.words().len())
+                            .then(|| Coverage::from_trace(trace, &running.code, &running.program))
+                    });
+                } else if self.coverage.live {
+                    // Offline: the machine and its measuring are gone.
+                    self.coverage.live = false;
+                    self.coverage.shown = false;
+                }
                 let cover = self.coverage.marks(doc.project(), b);
                 self.coverage.legend_ui(ui, self.settings.lang);
                 let seen = (self.cursor, doc.serial(), doc.generation());

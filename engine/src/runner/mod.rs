@@ -43,6 +43,9 @@ pub enum Request {
     Swap(Box<Vm>, u64),
     /// The pace.
     Speed(Speed),
+    /// Rung coverage measured from now on (from zero), or no longer ([`Vm::set_coverage`]);
+    /// the published trace then carries what was seen.
+    Coverage(bool),
 }
 
 /// What the machine answered to a request.
@@ -137,6 +140,7 @@ impl Runner {
                     published_memory: Vec::new(),
                     published_cnc: None,
                     handled: 0,
+                    covering: false,
                     published_handled: 0,
                 };
                 worker.publish(true);
@@ -227,6 +231,8 @@ struct Worker {
     last_publish: Instant,
     published_memory: Vec<u8>,
     published_cnc: Option<crate::cnc::CncStatus>,
+    /// Whether rung coverage is measured (kept across an online edit).
+    covering: bool,
     handled: u64,
     published_handled: u64,
 }
@@ -343,6 +349,10 @@ impl Worker {
             }
             Request::Swap(vm, n) => match self.machine.swap(*vm) {
                 Ok(s) => {
+                    // Coverage goes on over the new program, from zero: its words differ.
+                    if self.covering {
+                        self.machine.plc_mut().set_coverage(true);
+                    }
                     self.program = n;
                     self.replies.push(Reply::Swapped(n, s));
                 }
@@ -355,6 +365,10 @@ impl Worker {
                 self.clock = Clock::new(s);
                 self.clock
                     .restart(Instant::now(), self.machine.plc().ticks());
+            }
+            Request::Coverage(on) => {
+                self.covering = on;
+                self.machine.plc_mut().set_coverage(on);
             }
         }
     }

@@ -438,6 +438,10 @@ impl Vm {
     /// Turns the recording of a network's values on or off (networks as in
     /// [`Code::networks`]). Recording costs nothing for networks nobody watches.
     pub fn watch(&mut self, network: usize, on: bool) {
+        // While coverage is measured every network stays recorded.
+        if self.covering && !on {
+            return;
+        }
         if let Some(w) = self.watched.get_mut(network)
             && *w != on
         {
@@ -454,10 +458,11 @@ impl Vm {
     /// receives kept, from now on) or off. Off, the scan does no coverage work at all.
     pub fn set_coverage(&mut self, on: bool) {
         self.trace.fill(0);
-        self.covering = on;
+        self.covering = false;
         for n in 0..self.watched.len() {
             self.watch(n, on);
         }
+        self.covering = on;
     }
 
     /// What coverage has seen since it was turned on, per word of code (bit 1: the value 0,

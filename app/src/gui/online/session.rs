@@ -142,6 +142,7 @@ pub fn changes_machine(r: &Request) -> bool {
     !matches!(
         r,
         Request::Speed(_)
+            | Request::Coverage(_)
             | Request::Command(MachineCommand::Watch(_) | MachineCommand::WatchNetwork(..))
     )
 }
