@@ -196,14 +196,7 @@ pub(super) fn sim(
         }
     }
     let (passed, failed) = (outcome.passed, outcome.failed);
-    let _ = writeln!(
-        out,
-        "{}",
-        say.pick(
-            format!("{passed} passed, {failed} failed"),
-            format!("{passed} 项通过，{failed} 项失败")
-        )
-    );
+    let _ = writeln!(out, "{}", say.passed(passed, failed));
     if outcome.stopped.is_some() {
         return Ok(STOPPED);
     }

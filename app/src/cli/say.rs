@@ -36,6 +36,14 @@ impl Say {
             .unwrap_or_else(|| "C".to_string())
     }
 
+    /// The last line of `sim` and `test`: `N passed, M failed` (checks, or scripts).
+    pub fn passed(self, passed: usize, failed: usize) -> String {
+        self.pick(
+            format!("{passed} passed, {failed} failed"),
+            format!("{passed} 项通过，{failed} 项失败"),
+        )
+    }
+
     /// `en` or `zh`, as the language is.
     pub fn pick(self, en: impl Display, zh: impl Display) -> String {
         if self.zh {

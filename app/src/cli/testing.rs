@@ -365,14 +365,7 @@ pub(super) fn test(
         }
     }
     let passed = cases.len() - failed;
-    let _ = writeln!(
-        out,
-        "{}",
-        say.pick(
-            format!("{passed} passed, {failed} failed"),
-            format!("{passed} 项通过，{failed} 项失败")
-        )
-    );
+    let _ = writeln!(out, "{}", say.passed(passed, failed));
     if let Some(path) = junit_out {
         let xml = junit(project, &cases, &results);
         crate::atomic::write_atomic(path, xml.as_bytes())
