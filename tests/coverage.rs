@@ -129,6 +129,24 @@ fn test_merges_the_coverage_of_every_script() {
 }
 
 #[test]
+fn a_coverage_file_that_could_not_be_written_is_refused_before_the_run() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = write(dir.path(), "plant.il", PROGRAM);
+    let script = write(dir.path(), "run.script", SCRIPT);
+    let nowhere = dir.path().join("missing/cov.json");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        &script,
+        "--coverage",
+        nowhere.to_str().unwrap(),
+    ]);
+    assert_eq!((r.code, r.stdout.as_str()), (2, ""), "{}", r.stderr);
+    assert!(r.stderr.contains("no such folder"), "{}", r.stderr);
+}
+
+#[test]
 fn a_coverage_file_that_is_not_one_is_refused_by_the_reader() {
     assert!(
         Coverage::from_json("{\"format\":\"something else\",\"runs\":1,\"networks\":[]}").is_err()

@@ -142,6 +142,24 @@ fn a_project_without_a_test_folder_is_refused_with_where_to_put_one() {
     let r = run(&["test", program.to_str().unwrap()]);
     assert_eq!(r.code, 2);
     assert!(r.stderr.contains("no .script files to run"), "{}", r.stderr);
+    let r = run(&["test", dir.path().to_str().unwrap()]);
+    assert_eq!(r.code, 2);
+    assert!(r.stderr.contains("not a project file"), "{}", r.stderr);
+}
+
+#[test]
+fn a_report_that_could_not_be_written_is_refused_before_anything_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let program = plant(dir.path());
+    let nowhere = dir.path().join("no-such-folder/results.xml");
+    let r = run(&[
+        "test",
+        program.to_str().unwrap(),
+        "--junit",
+        nowhere.to_str().unwrap(),
+    ]);
+    assert_eq!((r.code, r.stdout.as_str()), (2, ""), "{}", r.stderr);
+    assert!(r.stderr.contains("no such folder"), "{}", r.stderr);
 }
 
 #[test]

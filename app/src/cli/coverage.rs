@@ -52,6 +52,15 @@ impl Outputs<'_> {
         self.json.is_some() || self.html.is_some()
     }
 
+    /// Refuses, before anything runs, a file that could not be written afterwards (its folder
+    /// is missing), so a long run does not end in an error.
+    pub fn check(&self, say: Say) -> anyhow::Result<()> {
+        for path in [self.json, self.html].into_iter().flatten() {
+            writable(path, say)?;
+        }
+        Ok(())
+    }
+
     /// Prints the summary lines and writes the files asked for.
     pub fn report(
         &self,
@@ -74,6 +83,22 @@ impl Outputs<'_> {
                 .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))?;
         }
         Ok(())
+    }
+}
+
+/// Whether a file can be written where `path` says: its folder must exist.
+pub(super) fn writable(path: &Path, say: Say) -> anyhow::Result<()> {
+    let folder = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if folder.is_dir() {
+        Ok(())
+    } else {
+        Err(anyhow::anyhow!(say.cannot_write(
+            path,
+            say.pick("no such folder", "文件夹不存在")
+        )))
     }
 }
 

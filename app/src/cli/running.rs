@@ -162,6 +162,7 @@ pub(super) fn sim(
         progress: Some(&mut progress),
     };
     if coverage.wanted() {
+        coverage.check(say)?;
         machine.plc_mut().set_coverage(true);
     }
     let outcome = sim::run_with(&mut machine, &script, &name, control);

@@ -282,8 +282,17 @@ pub(super) fn test(
     say: Say,
     out: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    if !project.exists() {
-        anyhow::bail!(say.cannot_read(project, say.pick("no such file", "文件不存在")));
+    if !project.is_file() {
+        let why = if project.exists() {
+            say.pick("not a project file", "不是工程文件")
+        } else {
+            say.pick("no such file", "文件不存在")
+        };
+        anyhow::bail!(say.cannot_read(project, why));
+    }
+    coverage_out.check(say)?;
+    if let Some(path) = junit_out {
+        super::coverage::writable(path, say)?;
     }
     let folder = test_folder(project);
     let cases = cases(&folder).map_err(|e| {
