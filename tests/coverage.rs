@@ -56,20 +56,27 @@ fn states(c: &Coverage, network: usize) -> Vec<(String, State)> {
         .collect()
 }
 
-#[test]
-fn sim_measures_the_branch_never_taken_and_the_result_never_seen() {
+/// `sim` of [`PROGRAM`] under [`SCRIPT`] with `option OUT` (OUT a file `out` in a fresh
+/// folder, or in a folder that does not exist); returns the run and OUT.
+fn sim_with(option: &str, out: &str) -> (ladder_tests::Run, std::path::PathBuf, tempfile::TempDir) {
     let dir = tempfile::tempdir().unwrap();
     let il = write(dir.path(), "plant.il", PROGRAM);
     let script = write(dir.path(), "run.script", SCRIPT);
-    let json = dir.path().join("cov.json");
+    let path = dir.path().join(out);
     let r = run(&[
         "sim",
         &il,
         "--script",
         &script,
-        "--coverage",
-        json.to_str().unwrap(),
+        option,
+        path.to_str().unwrap(),
     ]);
+    (r, path, dir)
+}
+
+#[test]
+fn sim_measures_the_branch_never_taken_and_the_result_never_seen() {
+    let (r, json, _dir) = sim_with("--coverage", "cov.json");
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
     assert_eq!(
         r.stdout,
@@ -130,18 +137,7 @@ fn test_merges_the_coverage_of_every_script() {
 
 #[test]
 fn a_coverage_file_that_could_not_be_written_is_refused_before_the_run() {
-    let dir = tempfile::tempdir().unwrap();
-    let il = write(dir.path(), "plant.il", PROGRAM);
-    let script = write(dir.path(), "run.script", SCRIPT);
-    let nowhere = dir.path().join("missing/cov.json");
-    let r = run(&[
-        "sim",
-        &il,
-        "--script",
-        &script,
-        "--coverage",
-        nowhere.to_str().unwrap(),
-    ]);
+    let (r, _, _dir) = sim_with("--coverage", "missing/cov.json");
     assert_eq!((r.code, r.stdout.as_str()), (2, ""), "{}", r.stderr);
     assert!(r.stderr.contains("no such folder"), "{}", r.stderr);
 }
@@ -155,18 +151,7 @@ fn a_coverage_file_that_is_not_one_is_refused_by_the_reader() {
 
 #[test]
 fn the_html_page_lists_the_networks_left_to_cover_and_their_elements() {
-    let dir = tempfile::tempdir().unwrap();
-    let il = write(dir.path(), "plant.il", PROGRAM);
-    let script = write(dir.path(), "run.script", SCRIPT);
-    let page = dir.path().join("cov.html");
-    let r = run(&[
-        "sim",
-        &il,
-        "--script",
-        &script,
-        "--coverage-html",
-        page.to_str().unwrap(),
-    ]);
+    let (r, page, _dir) = sim_with("--coverage-html", "cov.html");
     assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
     let html = std::fs::read_to_string(&page).unwrap();
     assert!(

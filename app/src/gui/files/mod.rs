@@ -272,15 +272,24 @@ impl FileState {
             self.start_dialog(cx, DialogKind::SaveProjectAs);
             return;
         }
-        match doc.save() {
+        let saved = doc.save();
+        if saved.is_ok() {
+            self.drop_recovery_copy(cx);
+        }
+        self.after_saving(cx, saved);
+    }
+
+    /// After a save: what waited on it runs; a failure is said, and what waited is dropped.
+    fn after_saving(&mut self, cx: &mut Context<'_>, saved: Result<(), FileError>) {
+        match saved {
             Ok(()) => {
-                self.drop_recovery_copy(cx);
                 if let Some(then) = self.after_save.take() {
                     self.perform(cx, then);
                 }
             }
             Err(e) => {
                 self.after_save = None;
+                let lang = cx.settings.lang;
                 cx.output
                     .say(crate::gui::errors::file_error(&e, lang), true);
             }
@@ -301,22 +310,14 @@ impl FileState {
             .recovery_dir
             .as_ref()
             .map(|d| recovery_path(d, doc.path()));
-        match doc.save_as(path) {
-            Ok(()) => {
-                if let Some(c) = old_copy {
-                    remove_copy(&c);
-                }
-                cx.settings.remember(path.to_path_buf());
-                if let Some(then) = self.after_save.take() {
-                    self.perform(cx, then);
-                }
+        let saved = doc.save_as(path);
+        if saved.is_ok() {
+            if let Some(c) = old_copy {
+                remove_copy(&c);
             }
-            Err(e) => {
-                self.after_save = None;
-                cx.output
-                    .say(crate::gui::errors::file_error(&e, lang), true);
-            }
+            cx.settings.remember(path.to_path_buf());
         }
+        self.after_saving(cx, saved);
     }
 
     /// Writes the compiled instruction list (as `export-il` does: refused while a network has
