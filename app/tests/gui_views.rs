@@ -62,7 +62,7 @@ fn f9_compiles_into_the_output_window() {
         .expect("a summary line")
         .text
         .clone();
-    assert_eq!(last, "Compiled without errors (716 steps)");
+    assert_eq!(last, "Compiled without errors (717 steps)");
     h.get_by_label_contains("Compiled without errors");
 }
 
@@ -220,7 +220,7 @@ fn ctrl_g_in_a_table_goes_to_a_row_of_the_table() {
         .unwrap()
         .error
         .unwrap();
-    assert!(err.starts_with("The table has no such row: 1–245"), "{err}");
+    assert!(err.starts_with("The table has no such row: 1–246"), "{err}");
 }
 
 #[test]

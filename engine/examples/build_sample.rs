@@ -3,12 +3,13 @@
 //!
 //! Sources, next to each other: `NAME.il` (the program), `NAME.symbols.csv`
 //! (`address,name,zh,en`), `NAME.data.csv` (`table,address,value,min,max,zh,en`, table one of
-//! K D DT DC), `NAME.messages.csv` (`address,number,zh,en`) and, when the sample has a
-//! machine model, `NAME.machine.ron` (docs/machine.md).
+//! K D DT DC), `NAME.messages.csv` (`address,number,zh,en`), `NAME.mcodes.csv`
+//! (`code,zh,en`, the M-code comment table) and, when the sample has a machine model,
+//! `NAME.machine.ron` (docs/machine.md).
 
 use ladder_engine::address::{Address, Area};
 use ladder_engine::compiler::compile;
-use ladder_engine::model::{Comments, DataRow, MessageTable, Symbol, SymbolTable};
+use ladder_engine::model::{Comments, DataRow, MCodeRow, MessageTable, Symbol, SymbolTable};
 use ladder_engine::{file, il};
 use std::process::exit;
 
@@ -116,6 +117,17 @@ fn main() {
         };
         project.messages.rows[k].number = r[1].trim().parse().ok();
         project.messages.rows[k].texts = comments(&r[2], &r[3]);
+    }
+    let m_path = format!("{stem}.mcodes.csv");
+    for r in records(&m_path) {
+        let code = r[0].trim().parse().unwrap_or_else(|_| {
+            eprintln!("{m_path}: `{}` is not an M code", &r[0]);
+            exit(2)
+        });
+        project.m_codes.push(MCodeRow {
+            code,
+            comments: comments(&r[1], &r[2]),
+        });
     }
     // The machine model, when the sample has one.
     let machine_path = format!("{stem}.machine.ron");

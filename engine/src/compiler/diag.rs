@@ -110,6 +110,20 @@ pub enum Code {
     W009PresetRange,
     W010DeviceReadsNothing,
     W011PanelDrivesDeviceInput,
+    /// Strobe with no path to its finish signal.
+    W012StrobeNoFinish,
+    /// Finish signal written by several rungs or latched.
+    W013FinishWriters,
+    /// M-code table and decoding disagree.
+    W014MCodeTable,
+    /// Emergency stop, reset or mode signal never written.
+    W015CncSignalUnwritten,
+    /// Answer read but its request never written.
+    W016RequestUnwritten,
+    /// Alarm bit without a message row.
+    W017AlarmNoMessage,
+    /// Message row whose alarm bit is never set.
+    W018MessageNeverSet,
 }
 
 impl Code {
@@ -169,6 +183,13 @@ impl Code {
         Code::W009PresetRange,
         Code::W010DeviceReadsNothing,
         Code::W011PanelDrivesDeviceInput,
+        Code::W012StrobeNoFinish,
+        Code::W013FinishWriters,
+        Code::W014MCodeTable,
+        Code::W015CncSignalUnwritten,
+        Code::W016RequestUnwritten,
+        Code::W017AlarmNoMessage,
+        Code::W018MessageNeverSet,
     ];
 
     /// What is wrong, in one Chinese phrase in the words of the GSK manual (docs/diagnostics.md
@@ -320,6 +341,28 @@ impl Code {
                 "操作面板也驱动设备的输入",
                 "panel item drives a device's input",
             ),
+            Code::W012StrobeNoFinish => (
+                "选通信号没有通向完成信号的逻辑",
+                "strobe with no path to its finish signal",
+            ),
+            Code::W013FinishWriters => (
+                "完成信号多处写入或只置位不复位",
+                "finish signal written by several rungs or latched",
+            ),
+            Code::W014MCodeTable => ("M 代码表与译码不一致", "M-code table and decoding disagree"),
+            Code::W015CncSignalUnwritten => (
+                "急停、复位或方式信号无人写",
+                "emergency stop, reset or mode signal never written",
+            ),
+            Code::W016RequestUnwritten => (
+                "读取应答信号但其请求信号无人写",
+                "answer read but its request never written",
+            ),
+            Code::W017AlarmNoMessage => ("报警位没有信息行", "alarm bit without a message row"),
+            Code::W018MessageNeverSet => (
+                "信息行的报警位无人置位",
+                "message row whose alarm bit is never set",
+            ),
         }
     }
 
@@ -377,6 +420,13 @@ impl Code {
             Code::M005InputTwice => "M005",
             Code::W010DeviceReadsNothing => "W010",
             Code::W011PanelDrivesDeviceInput => "W011",
+            Code::W012StrobeNoFinish => "W012",
+            Code::W013FinishWriters => "W013",
+            Code::W014MCodeTable => "W014",
+            Code::W015CncSignalUnwritten => "W015",
+            Code::W016RequestUnwritten => "W016",
+            Code::W017AlarmNoMessage => "W017",
+            Code::W018MessageNeverSet => "W018",
             Code::W001CoilTwice => "W001",
             Code::W002TimerTwice => "W002",
             Code::W003BitsSpill => "W003",

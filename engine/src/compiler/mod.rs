@@ -8,8 +8,12 @@
 //! [`decompile`] and [`layout`]; [`written`] keeps an imported network's list as written.
 
 pub mod check;
+pub mod cnc;
+#[cfg(test)]
+mod cnc_tests;
 pub mod decompile;
 pub mod diag;
+pub mod flow;
 pub mod layout;
 pub mod lower;
 pub mod machine;
@@ -153,12 +157,14 @@ pub fn compile(project: &Project) -> Compiled {
     let steps = check::check_program(&mut program, project, &mut sink);
     tables::check_tables(project, &mut sink);
     machine::check_machine(project, &program, &mut sink);
+    cnc::check_cnc(project, &program, &mut sink);
     finish(program, sink, steps)
 }
 
 /// Checks an already parsed program (from IL) against a project's symbols and profile.
 pub fn compile_program(mut program: Program, project: &Project, mut sink: Sink) -> Compiled {
     let steps = check::check_program(&mut program, project, &mut sink);
+    cnc::check_cnc(project, &program, &mut sink);
     finish(program, sink, steps)
 }
 

@@ -20,10 +20,10 @@ use std::collections::HashMap;
 /// The "block" numbers of the tables, after every ladder block, in the tree's order.
 const SYMBOLS: usize = usize::MAX - 6;
 const DATA: usize = usize::MAX - 5;
-const MESSAGES: usize = usize::MAX - 4;
+pub(super) const MESSAGES: usize = usize::MAX - 4;
 const DIAGNOSIS: usize = usize::MAX - 3;
 const PERMISSIONS: usize = usize::MAX - 2;
-const MCODES: usize = usize::MAX - 1;
+pub(super) const MCODES: usize = usize::MAX - 1;
 const VERSION: usize = usize::MAX;
 
 /// Reports every comment of a row longer than the CNC keeps (W007), each at its language's

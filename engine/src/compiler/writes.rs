@@ -22,7 +22,7 @@ use std::collections::{HashMap, HashSet};
 
 /// The smallest thing two writes can share: a bit of a 1-byte area, or a whole address of a
 /// 4-byte area (bit 0). Numbers are wide enough for a write running past the area's end.
-type Unit = (Area, u32, u8);
+pub(super) type Unit = (Area, u32, u8);
 
 /// One operand an instruction writes.
 struct Writer {
@@ -76,7 +76,7 @@ pub(super) fn writes(spec: &OperandSpec, operands: &[Operand]) -> bool {
 
 /// The units a write of `spec` at `a` covers (docs/plc.md, "Width rule"). A table whose
 /// length comes from memory counts as its first element.
-fn units(spec: &OperandSpec, operands: &[Operand], a: Address) -> Vec<Unit> {
+pub(super) fn units(spec: &OperandSpec, operands: &[Operand], a: Address) -> Vec<Unit> {
     let number = u32::from(a.number);
     if let Some(bit) = a.bit {
         let count = if spec.width == Width::Bits3 { 3 } else { 1 };

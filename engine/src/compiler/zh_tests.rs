@@ -409,10 +409,16 @@ fn every_machine_model_diagnostic_is_in_chinese_with_its_specifics() {
 
 #[test]
 fn the_corpus_reaches_every_code() {
-    let reached: BTreeSet<Code> = [IL_CODES, DRAWN_CODES, TABLE_CODES, MACHINE_CODES]
-        .concat()
-        .into_iter()
-        .collect();
+    let reached: BTreeSet<Code> = [
+        IL_CODES,
+        DRAWN_CODES,
+        TABLE_CODES,
+        MACHINE_CODES,
+        super::cnc_tests::CNC_CODES,
+    ]
+    .concat()
+    .into_iter()
+    .collect();
     let all: BTreeSet<Code> = Code::ALL.iter().copied().collect();
     assert_eq!(reached, all);
 }
