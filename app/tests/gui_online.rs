@@ -617,3 +617,73 @@ NETWORK\nLD R0001.0\nOUT A0000.0\n";
     h.get_by_label("Clamp timeout");
     h.get_by_label("1001");
 }
+
+/// The lathe with one saved scenario, in a temporary folder.
+fn lathe_with_scenario() -> PathBuf {
+    let mut p = ladder_engine::file::load(&lathe()).unwrap();
+    p.scenarios = vec![ladder_engine::scenario::Scenario {
+        name: "lube-low".into(),
+        note: "R0010 marked, R0500.0 held".into(),
+        lines: vec!["set R0010 7".into(), "force R0500.0 1".into()],
+    }];
+    let path = tempfile_dir().join("scen.ldp");
+    ladder_engine::file::save(&p, &path).unwrap();
+    path
+}
+
+#[test]
+fn the_scenarios_page_edits_the_list_as_undoable_changes() {
+    let mut h = harness(Some(lathe_with_scenario()), Lang::En);
+    h.run();
+    command(&mut h, Command::ScenariosPage);
+    h.run();
+    h.get_by_label("lube-low");
+    h.get_by_label_contains("Every line can be applied");
+    fill(&mut h, "Name", "low-lube");
+    h.key_press(egui::Key::Enter);
+    h.run();
+    let names = |h: &Harness<'static, LadderApp>| -> Vec<String> {
+        let p = h.state().doc().unwrap().project();
+        p.scenarios.iter().map(|s| s.name.clone()).collect()
+    };
+    assert_eq!(names(&h), ["low-lube"]);
+    // A name a script line could not carry stays a draft, with the reason.
+    fill(&mut h, "Name", "two words");
+    h.key_press(egui::Key::Enter);
+    h.run();
+    h.get_by_label_contains("use at most 32 letters, digits");
+    assert_eq!(names(&h), ["low-lube"]);
+    h.get_by_label("New scenario").click();
+    h.run();
+    assert_eq!(names(&h), ["low-lube", "S1"]);
+    command(&mut h, Command::Undo);
+    command(&mut h, Command::Undo);
+    h.run();
+    assert_eq!(names(&h), ["lube-low"]);
+}
+
+#[test]
+fn a_scenario_applies_from_the_plc_menu_and_its_release_restores_memory() {
+    let mut h = harness(Some(lathe_with_scenario()), Lang::En);
+    h.run();
+    command(&mut h, Command::StepTick);
+    let before = (value(&h, "R0010"), value(&h, "R0500.0"));
+    assert_eq!(h.state().checked(Command::Scenario(0)), Some(false));
+    command(&mut h, Command::Scenario(0));
+    assert_eq!((value(&h, "R0010"), value(&h, "R0500.0")), (7, 1));
+    assert_eq!(h.state().checked(Command::Scenario(0)), Some(true));
+    assert!(
+        output(&h).contains("Applied scenario `lube-low`"),
+        "{}",
+        output(&h)
+    );
+    command(&mut h, Command::Scenario(0));
+    assert_eq!((value(&h, "R0010"), value(&h, "R0500.0")), before);
+    assert_eq!(h.state().checked(Command::Scenario(0)), Some(false));
+    assert!(
+        h.state()
+            .feature::<OnlineState>()
+            .forced_addresses()
+            .is_empty()
+    );
+}

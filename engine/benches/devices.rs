@@ -50,6 +50,7 @@ fn sample() -> Machine {
             cnc: true,
             read_file: &read,
             machine: Some(&project.machine),
+            project: Some(&project),
         },
     )
     .expect("the set-up parses");

@@ -36,6 +36,7 @@ fn run_script(machine: &mut Machine, text: &str) {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
             machine: None,
+            project: None,
         },
     )
     .expect("the script parses");

@@ -97,6 +97,7 @@ fn main() {
             cnc: true,
             read_file: &|p| Err(p.to_string()),
             machine: None,
+            project: None,
         },
     )
     .expect("the cycle script parses");

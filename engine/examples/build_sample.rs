@@ -4,8 +4,9 @@
 //! Sources, next to each other: `NAME.il` (the program), `NAME.symbols.csv`
 //! (`address,name,zh,en`), `NAME.data.csv` (`table,address,value,min,max,zh,en`, table one of
 //! K D DT DC), `NAME.messages.csv` (`address,number,zh,en`), `NAME.mcodes.csv`
-//! (`code,zh,en`, the M-code comment table) and, when the sample has a machine model,
-//! `NAME.machine.ron` (docs/machine.md).
+//! (`code,zh,en`, the M-code comment table) and, when the sample has them, `NAME.machine.ron`
+//! (the machine model, docs/machine.md) and `NAME.scenarios.ron` (the saved scenarios,
+//! docs/scenarios.md).
 
 use ladder_engine::address::{Address, Area};
 use ladder_engine::compiler::compile;
@@ -134,6 +135,14 @@ fn main() {
     if let Ok(text) = std::fs::read_to_string(&machine_path) {
         project.machine = ron::from_str(&text).unwrap_or_else(|e| {
             eprintln!("{machine_path}: {e}");
+            exit(2)
+        });
+    }
+    // The saved scenarios, when the sample has some.
+    let scenarios_path = format!("{stem}.scenarios.ron");
+    if let Ok(text) = std::fs::read_to_string(&scenarios_path) {
+        project.scenarios = ron::from_str(&text).unwrap_or_else(|e| {
+            eprintln!("{scenarios_path}: {e}");
             exit(2)
         });
     }

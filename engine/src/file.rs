@@ -15,9 +15,10 @@ pub const MAGIC: &str = "LADDER-STUDIO-PROJECT";
 /// History: v1 had one symbol list and no other tables; v2 has the symbol tables, data-setting
 /// tables, message, diagnosis, permission and M-code tables and the version information; v3
 /// keeps an imported network's instruction list as written ([`crate::model::Network::il`]) and
-/// its checksum covers the header too; v4 adds the machine model ([`crate::devices`]). A
-/// project without a machine model is still written as v3, so its bytes do not change.
-pub const SCHEMA_VERSION: u32 = 4;
+/// its checksum covers the header too; v4 adds the machine model ([`crate::devices`]); v5 the
+/// saved scenarios ([`crate::scenario`]). A project is written at the lowest version that
+/// holds what it has (v3 without a machine model or scenarios), so its bytes do not change.
+pub const SCHEMA_VERSION: u32 = 5;
 
 /// Why a project file could not be read or written.
 #[derive(Debug, Error)]
@@ -181,10 +182,12 @@ pub fn to_string(project: &Project) -> String {
         .depth_limit(7);
     let body = ron::ser::to_string_pretty(project, config)
         .expect("a project always serializes: it holds only plain data");
-    let version = if project.machine.is_empty() {
-        3
+    let version = if !project.scenarios.is_empty() {
+        5
+    } else if !project.machine.is_empty() {
+        4
     } else {
-        SCHEMA_VERSION
+        3
     };
     let crc = checksum(version, &body);
     format!("{MAGIC} v{version} crc32={crc:08x}\n{body}\n")
@@ -315,6 +318,16 @@ fn parse_versioned(body: &str, version: u32) -> Result<Project, FileError> {
             line: 1,
             column: 1,
             message: "the project has a machine model (`machine`), which version 4 introduced"
+                .into(),
+        });
+    }
+    // Before version 5 there were no scenarios.
+    if version < 5 && !p.scenarios.is_empty() {
+        return Err(FileError::Schema {
+            version,
+            line: 1,
+            column: 1,
+            message: "the project has saved scenarios (`scenarios`), which version 5 introduced"
                 .into(),
         });
     }

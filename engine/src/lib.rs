@@ -19,6 +19,7 @@ pub mod profile;
 pub mod recorder;
 pub mod refusal;
 pub mod runner;
+pub mod scenario;
 pub mod sim;
 pub mod vm;
 pub mod xref;

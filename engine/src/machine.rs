@@ -14,6 +14,8 @@ use crate::vm::swap::{SwapError, Swapped};
 use crate::vm::{BuildError, Halt, Vm};
 use std::fmt;
 
+mod scenarios;
+
 /// An address with a byte count, as scripts write it (`D0010:2`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Target {
@@ -124,6 +126,10 @@ pub enum MachineCommand {
     /// The machine model replaced (edited online): unchanged devices keep their state, every
     /// device its fault, by name.
     LoadModel(Box<MachineModel>),
+    /// Apply a saved scenario (docs/scenarios.md), remembering how to undo each action.
+    Scenario(Box<crate::scenario::Applied>),
+    /// Release an applied scenario, by name: what it changed goes back as it was.
+    Release(String),
 }
 
 /// What a user does to one device of the machine model.
@@ -147,6 +153,8 @@ pub struct Machine {
     plant: Option<Plant>,
     watches: Vec<Probe>,
     running: bool,
+    /// The scenarios applied, oldest first, each with its undo list.
+    applied: Vec<(String, Vec<crate::scenario::Undo>)>,
 }
 
 /// A copy of a machine's state between ticks.
@@ -177,6 +185,8 @@ pub struct Snapshot {
     /// Every forced address: the bits of byte areas one by one (a whole forced byte as the
     /// byte), 4-byte values whole.
     pub forced: Vec<Address>,
+    /// The saved scenarios applied now, by name, oldest first.
+    pub scenarios: Vec<String>,
 }
 
 impl Machine {
@@ -273,6 +283,7 @@ impl Machine {
             plant: None,
             watches: Vec::new(),
             running: false,
+            applied: Vec::new(),
         }
     }
 
@@ -404,6 +415,8 @@ impl Machine {
             MachineCommand::LoadModel(model) => self
                 .load_model(model)
                 .map_err(|e| Refusal::new(e.to_string(), e.zh()))?,
+            MachineCommand::Scenario(applied) => self.apply_scenario(applied)?,
+            MachineCommand::Release(name) => self.release_scenario(name)?,
         }
         Ok(())
     }
@@ -462,6 +475,15 @@ impl Machine {
         match &self.plant {
             Some(p) => p.status_into(&mut s.devices),
             None => s.devices.clear(),
+        }
+        // Compared, not rebuilt: the list changes only when a scenario is applied or released.
+        if !s
+            .scenarios
+            .iter()
+            .map(String::as_str)
+            .eq(self.applied_scenarios())
+        {
+            s.scenarios = self.applied_scenarios().map(String::from).collect();
         }
     }
 

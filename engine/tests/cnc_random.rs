@@ -300,6 +300,7 @@ fn random_cnc_scripts_are_refused_with_a_line_or_run_without_panic() {
             cnc: true,
             read_file: &|_| Err("no files".into()),
             machine: None,
+            project: None,
         };
         match Script::parse_with(&text, profile, &options) {
             Ok(script) => {

@@ -131,9 +131,9 @@ fn truncated_foreign_and_future_files_say_which() {
         file::from_bytes(b"LD X1.0\nOUT Y1.0\n"),
         Err(FileError::Foreign)
     ));
-    let future = text.replacen(" v3 ", " v5 ", 1);
+    let future = text.replacen(" v3 ", " v6 ", 1);
     let e = file::from_bytes(future.as_bytes()).unwrap_err();
-    assert!(e.to_string().contains("schema version 5 is newer"), "{e}");
+    assert!(e.to_string().contains("schema version 6 is newer"), "{e}");
     // A body that parses badly reports the line and column in the file (header = line 1).
     let body = "(\n profile: Gsk988ta,\n level2_division: x,\n)";
     let bad = format!(

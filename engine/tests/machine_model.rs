@@ -150,6 +150,7 @@ fn parse(text: &str, machine: Option<&MachineModel>) -> Result<Script, String> {
             cnc: true,
             read_file: &|p| Err(format!("no {p}")),
             machine,
+            project: None,
         },
     )
     .map_err(|e| format!("{}: {}", e.line, e.message))

@@ -68,7 +68,7 @@ fn percent(done: u64, of: u64) -> u64 {
 /// Reads and parses a stimulus script (`cnc program-file` paths relative to its folder), or
 /// reports its first bad line (exit 2).
 pub(super) fn read_script(
-    script_path: &Path,
+    (project_path, script_path): (&Path, &Path),
     machine: &Machine,
     cnc: bool,
     say: Say,
@@ -85,10 +85,16 @@ pub(super) fn read_script(
         ladder_engine::cnc::program::read_program_file(&full)
             .map_err(|e| say.pick(e.message(&full, false), e.message(&full, true)))
     };
+    // The project again, for its saved scenarios and operator panel (`scenario` lines).
+    let project = match crate::source::Source::read(project_path, say)? {
+        crate::source::Source::Project(p) => Some(p),
+        crate::source::Source::Il { .. } => None,
+    };
     let options = sim::Options {
         cnc,
         read_file: &read_file,
         machine: machine.plant().map(|p| p.model()),
+        project: project.as_ref(),
     };
     match Script::parse_with(&text, machine.plc().profile(), &options) {
         Ok(s) => Ok(Ok(s)),
@@ -118,7 +124,7 @@ pub(super) fn sim(
         Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
     };
-    let script = match read_script(script_path, &machine, cnc, say, err)? {
+    let script = match read_script((path, script_path), &machine, cnc, say, err)? {
         Ok(s) => s,
         Err(code) => return Ok(code),
     };
@@ -221,7 +227,7 @@ pub(super) fn bench(
         Err(code) => return Ok(code),
     };
     if let Some(script_path) = setup {
-        let script = match read_script(script_path, &machine, cnc, say, err)? {
+        let script = match read_script((path, script_path), &machine, cnc, say, err)? {
             Ok(s) => s,
             Err(code) => return Ok(code),
         };

@@ -137,7 +137,7 @@ fn run_case(
         }
     };
     let script = match &machine {
-        Some(m) => match read_script(&case.file, m, case.cnc, say, &mut said) {
+        Some(m) => match read_script((project, &case.file), m, case.cnc, say, &mut said) {
             Ok(Ok(s)) => Some(s),
             Ok(Err(_)) => None,
             Err(e) => {

@@ -88,6 +88,8 @@ macro_rules! commands {
             Extend(Dir),
             /// The online pace.
             Speed(ladder_engine::runner::Speed),
+            /// Apply saved scenario `0` (index in the project), or release it when applied.
+            Scenario(usize),
         }
 
         impl Command {
@@ -264,6 +266,8 @@ commands! {
     DetachOnline => OnlineDetached;
     /// The Machine page: the machine model's devices, online or not.
     MachineModel => MachineModelPage;
+    /// The page of saved scenarios.
+    ScenariosPage => ScenariosPage;
     /// The cursor to the first column of its row.
     RowStart => CursorRowStart, NONE Home;
     /// The cursor to the output column of its row.
@@ -456,6 +460,7 @@ impl Command {
             Command::Speed(ladder_engine::runner::Speed::Times10) => Msg::Speed10,
             Command::Speed(ladder_engine::runner::Speed::Times100) => Msg::Speed100,
             Command::Speed(ladder_engine::runner::Speed::Max) => Msg::SpeedMax,
+            Command::Scenario(_) => Msg::Scenarios,
             _ => Msg::Untitled,
         }
     }

@@ -95,6 +95,11 @@ impl LadderApp {
             Command::LiveView => self.online.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline | Command::DetachOnline => true,
             Command::MachineModel => doc.is_some(),
+            Command::Scenario(i) => {
+                self.online.is_online()
+                    && !self.online.scrubbing()
+                    && doc.is_some_and(|d| i < d.project().scenarios.len())
+            }
             c if c.navigates() => in_ladder,
             // A recorded past is read-only: no edits while the view shows one.
             c if c.edits_ladder() => in_ladder && !self.online.scrubbing(),
@@ -121,6 +126,12 @@ impl LadderApp {
             Command::Speed(sp) => self.online.speed == sp,
             Command::Display(m) => s.display == m,
             Command::Language(l) => s.lang == l,
+            Command::Scenario(i) => self.doc.as_ref().is_some_and(|d| {
+                d.project()
+                    .scenarios
+                    .get(i)
+                    .is_some_and(|sc| self.online.is_applied(&sc.name))
+            }),
             _ => return None,
         })
     }
@@ -295,6 +306,8 @@ impl LadderApp {
                 self.settings.show_online = true;
                 self.online.tab = super::online::OnlineTab::Machine;
             }
+            Command::ScenariosPage => self.show_view(View::Scenarios),
+            Command::Scenario(i) => self.with(|o: &mut OnlineState, cx| o.toggle_scenario(cx, i)),
             Command::Run
             | Command::Stop
             | Command::StepTick

@@ -97,6 +97,8 @@ impl<'a> Menus<'a> {
                 for s in ladder_engine::runner::Speed::ALL {
                     self.entry(ui, Command::Speed(s));
                 }
+                ui.separator();
+                ui.menu_button(Msg::Scenarios.text(lang), |ui| self.scenarios_menu_ui(ui));
             });
             ui.menu_button(Msg::Tools.text(lang), |ui| {
                 for v in REFERENCE_VIEWS {
@@ -113,6 +115,25 @@ impl<'a> Menus<'a> {
                 }
             });
         });
+    }
+
+    /// The saved scenarios, each a switch (applied or not), then the page that edits them.
+    fn scenarios_menu_ui(&mut self, ui: &mut egui::Ui) {
+        let names: Vec<String> = self.app.doc.as_ref().map_or_else(Vec::new, |d| {
+            d.project()
+                .scenarios
+                .iter()
+                .map(|s| s.name.clone())
+                .collect()
+        });
+        if names.is_empty() {
+            ui.weak(Msg::ScenarioNone.text(self.app.settings.lang));
+        }
+        for (i, name) in names.into_iter().enumerate() {
+            self.entry_text(ui, Command::Scenario(i), name);
+        }
+        ui.separator();
+        self.entry(ui, Command::ScenariosPage);
     }
 
     fn file_menu_ui(&mut self, ui: &mut egui::Ui) {

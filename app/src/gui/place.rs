@@ -28,6 +28,8 @@ pub enum View {
     MCodes,
     /// The version information.
     Version,
+    /// The saved scenarios.
+    Scenarios,
 }
 
 /// The cell cursor (UI state, never saved).

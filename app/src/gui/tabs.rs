@@ -33,6 +33,7 @@ pub fn view_title(view: View, project: Option<&Project>, lang: Lang) -> String {
         View::Permissions => t(Msg::Permissions),
         View::MCodes => t(Msg::MCodes),
         View::Version => t(Msg::VersionInfo),
+        View::Scenarios => t(Msg::Scenarios),
     }
 }
 

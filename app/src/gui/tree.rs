@@ -107,5 +107,6 @@ pub fn tree_ui(ui: &mut egui::Ui, project: &Project, lang: Lang, current: View) 
     leaf(ui, a, current, View::Permissions, t(Msg::Permissions));
     leaf(ui, a, current, View::MCodes, t(Msg::MCodes));
     leaf(ui, a, current, View::Version, t(Msg::VersionInfo));
+    leaf(ui, a, current, View::Scenarios, t(Msg::Scenarios));
     asked
 }

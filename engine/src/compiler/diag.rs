@@ -124,6 +124,8 @@ pub enum Code {
     W017AlarmNoMessage,
     /// Message row whose alarm bit is never set.
     W018MessageNeverSet,
+    /// Saved scenario that cannot be applied.
+    W019ScenarioBroken,
 }
 
 impl Code {
@@ -190,6 +192,7 @@ impl Code {
         Code::W016RequestUnwritten,
         Code::W017AlarmNoMessage,
         Code::W018MessageNeverSet,
+        Code::W019ScenarioBroken,
     ];
 
     /// What is wrong, in one Chinese phrase in the words of the GSK manual (docs/diagnostics.md
@@ -205,6 +208,9 @@ impl Code {
 
     /// Both titles in one exhaustive match, so a new code cannot go without either.
     fn titles(self) -> (&'static str, &'static str) {
+        if let Some(t) = self.warning_titles() {
+            return t;
+        }
         match self {
             Code::L001NotConnected => (
                 "元件未连接到左母线",
@@ -309,6 +315,14 @@ impl Code {
             Code::M003DeviceParameter => ("设备参数不可能", "impossible device parameter"),
             Code::M004DeviceCondition => ("设备条件写法有误", "device condition does not read"),
             Code::M005InputTwice => ("两个设备驱动同一个输入", "two devices drive one input"),
+            // Every warning has its titles above.
+            _ => ("", ""),
+        }
+    }
+
+    /// The titles of the warnings (`None` for an error).
+    fn warning_titles(self) -> Option<(&'static str, &'static str)> {
+        Some(match self {
             Code::W001CoilTwice => ("线圈重复输出", "coil driven twice"),
             Code::W002TimerTwice => ("定时器或计数器号重复使用", "timer or counter used twice"),
             Code::W003BitsSpill => (
@@ -363,7 +377,9 @@ impl Code {
                 "信息行的报警位无人置位",
                 "message row whose alarm bit is never set",
             ),
-        }
+            Code::W019ScenarioBroken => ("场景无法应用", "scenario that cannot be applied"),
+            _ => return None,
+        })
     }
 
     /// The code as printed: `L012`, `W001`.
@@ -427,6 +443,7 @@ impl Code {
             Code::W016RequestUnwritten => "W016",
             Code::W017AlarmNoMessage => "W017",
             Code::W018MessageNeverSet => "W018",
+            Code::W019ScenarioBroken => "W019",
             Code::W001CoilTwice => "W001",
             Code::W002TimerTwice => "W002",
             Code::W003BitsSpill => "W003",
@@ -575,6 +592,7 @@ impl Location {
             "MCODES" => "M 代码表".to_string(),
             "VERSION" => "梯形图版本信息".to_string(),
             "MACHINE" => format!("机床模型 设备 {network}"),
+            "SCENARIOS" => format!("场景 {network}"),
             sub if sub.starts_with('P') => format!("子程序 {sub} 网络 {network}"),
             other => format!("{other} 网络 {network}"),
         };

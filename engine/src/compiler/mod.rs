@@ -20,6 +20,7 @@ pub mod machine;
 pub mod operands;
 pub mod presets;
 pub mod rung;
+pub mod scenarios;
 pub mod tables;
 #[cfg(test)]
 mod warn_tests;
@@ -155,9 +156,11 @@ pub fn compile(project: &Project) -> Compiled {
     let mut sink = Sink::default();
     let mut program = ladder_program(project, &mut sink);
     let steps = check::check_program(&mut program, project, &mut sink);
+    // Before the tables' checks: an error there says nothing about the program's data flow.
+    cnc::check_cnc(project, &program, &mut sink);
     tables::check_tables(project, &mut sink);
     machine::check_machine(project, &program, &mut sink);
-    cnc::check_cnc(project, &program, &mut sink);
+    scenarios::check_scenarios(project, &mut sink);
     finish(program, sink, steps)
 }
 

@@ -238,6 +238,11 @@ impl Plant {
             .position(|c| c.name.eq_ignore_ascii_case(name))
     }
 
+    /// Device `i`'s fault, if it has one.
+    pub fn fault(&self, i: usize) -> Option<Fault> {
+        self.devices.get(i).and_then(|d| d.fault)
+    }
+
     /// Injects a fault into device `i` (`None` clears it).
     pub fn set_fault(&mut self, i: usize, fault: Option<Fault>) {
         if let Some(d) = self.devices.get_mut(i) {

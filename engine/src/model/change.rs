@@ -31,6 +31,8 @@ pub enum TableEdit {
     Panel(Box<Panel>),
     /// The machine model (docs/machine.md).
     Machine(Box<MachineModel>),
+    /// The saved scenarios (docs/scenarios.md).
+    Scenarios(Vec<crate::scenario::Scenario>),
 }
 
 /// One undoable change of a project.
@@ -75,6 +77,7 @@ impl Project {
             TableEdit::Version(t) => TableEdit::Version(Box::new(replace(&mut self.version, *t))),
             TableEdit::Panel(t) => TableEdit::Panel(Box::new(replace(&mut self.panel, *t))),
             TableEdit::Machine(t) => TableEdit::Machine(Box::new(replace(&mut self.machine, *t))),
+            TableEdit::Scenarios(t) => TableEdit::Scenarios(replace(&mut self.scenarios, t)),
         }
     }
 
@@ -241,6 +244,7 @@ impl Project {
                 TableEdit::Version(t) => **t == self.version,
                 TableEdit::Panel(t) => **t == self.panel,
                 TableEdit::Machine(t) => **t == self.machine,
+                TableEdit::Scenarios(t) => *t == self.scenarios,
             },
         }
     }

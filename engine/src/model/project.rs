@@ -51,6 +51,10 @@ pub struct Project {
     /// so a project without one saves as before it existed (schema 3).
     #[serde(default, skip_serializing_if = "MachineModel::is_empty")]
     pub machine: MachineModel,
+    /// The saved scenarios (docs/scenarios.md); written only when there is one, so a project
+    /// without keeps its bytes.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub scenarios: Vec<crate::scenario::Scenario>,
 }
 
 impl Default for Project {
@@ -71,6 +75,7 @@ impl Default for Project {
             version: VersionInfo::default(),
             panel: Panel::default(),
             machine: MachineModel::default(),
+            scenarios: Vec::new(),
         }
     }
 }

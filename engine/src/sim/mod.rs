@@ -6,6 +6,7 @@
 mod device;
 mod lex;
 mod run;
+pub mod scenario;
 
 use crate::address::{Address, AddressError, Area};
 use crate::cnc::command::{CncCommand, CncKey, CncValue};
@@ -105,6 +106,9 @@ pub struct Options<'a> {
     /// The machine model the script runs with (none: `--no-machine`, or no devices): it
     /// names the `device` lines' devices and refuses `set` of the inputs they drive.
     pub machine: Option<&'a crate::devices::MachineModel>,
+    /// The project the script runs on (none for an instruction list): its saved scenarios
+    /// and operator panel serve the `scenario` lines.
+    pub project: Option<&'a crate::model::Project>,
 }
 
 const COMMANDS: &[&str] = &[
@@ -122,6 +126,7 @@ const COMMANDS: &[&str] = &[
     "power-cycle",
     "cnc",
     "device",
+    "scenario",
 ];
 
 fn target(text: &str, profile: &Profile) -> Result<Target, Msg> {
@@ -327,6 +332,7 @@ impl Script {
                 cnc: false,
                 read_file: &no_files,
                 machine: None,
+                project: None,
             },
         )
     }
@@ -354,6 +360,25 @@ impl Script {
         }
         Ok(Script { commands })
     }
+}
+
+/// The N of `scan N`: a number of ticks one line may run.
+fn scan_count(n: &str) -> Result<u64, Msg> {
+    let count = n.parse::<u64>().map_err(|_| {
+        msg(
+            format!("`{n}` is not a number of scans"),
+            format!("`{n}` 不是扫描次数"),
+        )
+    })?;
+    if count > MAX_TICKS {
+        return Err(msg(
+            format!(
+                "`scan {n}` is more than one line may run: at most {MAX_TICKS} scans; split it over several lines"
+            ),
+            format!("`scan {n}` 超过一行允许的次数：最多 {MAX_TICKS} 次；请分成几行"),
+        ));
+    }
+    Ok(count)
 }
 
 fn parse_line(
@@ -403,25 +428,7 @@ fn parse_line(
         "scan" => {
             want(0..=1, "scan [N]")?;
             let n = match args.first() {
-                Some(n) => {
-                    let count = n.parse::<u64>().map_err(|_| {
-                        msg(
-                            format!("`{n}` is not a number of scans"),
-                            format!("`{n}` 不是扫描次数"),
-                        )
-                    })?;
-                    if count > MAX_TICKS {
-                        return Err(msg(
-                            format!(
-                                "`scan {n}` is more than one line may run: at most {MAX_TICKS} scans; split it over several lines"
-                            ),
-                            format!(
-                                "`scan {n}` 超过一行允许的次数：最多 {MAX_TICKS} 次；请分成几行"
-                            ),
-                        ));
-                    }
-                    count
-                }
+                Some(n) => scan_count(n)?,
                 None => 1,
             };
             act(MachineCommand::Tick(n))
@@ -494,6 +501,7 @@ fn parse_line(
             ))
         }
         "device" => device::line(args, options.machine),
+        "scenario" => scenario::line(args, options),
         _ => {
             let prefix: String = lower.chars().take(3).collect();
             let near = COMMANDS.iter().find(|c| c.starts_with(&prefix));
@@ -533,6 +541,7 @@ mod tests {
             Profile::get(ProfileId::Gsk988ta),
             &Options {
                 machine: None,
+                project: None,
                 cnc: true,
                 read_file: &|p| {
                     if p == "part.nc" {

@@ -415,6 +415,39 @@ impl Vm {
         self.forced_bytes.retain(|o| mask[*o as usize] != 0);
     }
 
+    /// The force state of an address's bytes (a saved scenario puts it back on release).
+    pub fn force_state(&self, a: Address) -> crate::scenario::ForceState {
+        let loc = self.layout.loc(a, false);
+        let mut st = crate::scenario::ForceState::default();
+        let bytes = if loc.wide { 4 } else { 1 };
+        for (k, slot) in st.bytes.iter_mut().enumerate().take(bytes) {
+            let off = loc.off as usize + k;
+            let mask = self.force_mask.get(off).copied().unwrap_or(0);
+            *slot = (mask, self.force_value.get(off).copied().unwrap_or(0) & mask);
+        }
+        st
+    }
+
+    /// Puts an address's bytes' forces back as `state` recorded them.
+    pub fn restore_force(&mut self, a: Address, state: crate::scenario::ForceState) {
+        let loc = self.layout.loc(a, false);
+        let bytes = if loc.wide { 4 } else { 1 };
+        // A bit address owns only its bit: the byte's other forces stay as they are now.
+        let own = a.bit.map_or(0xFF, |b| 1u8 << b);
+        for (k, (mask, value)) in state.bytes.iter().copied().enumerate().take(bytes) {
+            let off = loc.off as usize + k;
+            self.force_mask[off] = (self.force_mask[off] & !own) | (mask & own);
+            self.force_value[off] = (self.force_value[off] & !own) | (value & own);
+            let mask = self.force_mask[off];
+            if mask != 0 && !self.forced_bytes.contains(&(off as u32)) {
+                self.forced_bytes.push(off as u32);
+            }
+        }
+        let m = &self.force_mask;
+        self.forced_bytes.retain(|o| m[*o as usize] != 0);
+        self.apply_forces();
+    }
+
     /// Whether any bit of an address is forced (for a bit address, that bit).
     pub fn is_forced(&self, a: Address) -> bool {
         let loc = self.layout.loc(a, false);

@@ -15,6 +15,7 @@ pub mod machine_page;
 pub mod macro_view;
 pub mod panel_view;
 pub mod repaint;
+mod scenarios;
 pub mod session;
 pub mod signals;
 pub mod toolpath_raster;

@@ -15,6 +15,7 @@
 
 mod error_text;
 mod k_page;
+pub mod scenarios;
 mod sheet;
 #[cfg(test)]
 mod tests;
@@ -55,6 +56,8 @@ pub enum DataTab {
 pub enum TableEvent {
     /// A table edit to apply to the document (and record for undo), in order.
     Apply(TableEdit),
+    /// An online command asked for from a page (a scenario's Apply/Release).
+    Online(crate::gui::command::Command),
 }
 
 /// A cell: its table, row and column.
@@ -110,6 +113,12 @@ pub struct TableState {
     seen: Option<(View, u64)>,
     /// The last stamp given to a draft.
     stamp: u64,
+    /// The scenario the Scenarios page shows (index in the project).
+    pub scenario: usize,
+    /// Its name, note and lines as being typed.
+    scenario_draft: Option<scenarios::ScenarioDraft>,
+    /// For the page's button, set by the editor each frame: (online, the scenario applied).
+    scenario_online: (bool, bool),
 }
 
 impl TableState {
@@ -197,6 +206,7 @@ impl TableState {
             TableEdit::Permissions(_) => View::Permissions,
             TableEdit::MCodes(_) => View::MCodes,
             TableEdit::Version(_) => View::Version,
+            TableEdit::Scenarios(_) => View::Scenarios,
             TableEdit::Panel(_) | TableEdit::Machine(_) => return None,
         })
     }
@@ -240,6 +250,7 @@ impl TableState {
         self.op_error = None;
         self.version = Default::default();
         self.password = PasswordDraft::default();
+        self.scenario_draft = None;
     }
 
     /// A stamp for a draft typed or refused now.
@@ -315,6 +326,7 @@ pub fn tables_ui(
                     version::version_ui(ui, doc, state, lang, &mut events)
                 });
         }
+        View::Scenarios => scenarios::scenarios_ui(ui, doc, state, lang, &mut events),
         View::Block(_) | View::RefIndex | View::RefBits | View::RefBytes => {}
     }
     state.seen(view, doc.generation());
@@ -365,12 +377,18 @@ impl LadderApp {
         let Some(doc) = self.doc.as_ref() else {
             return;
         };
+        let scenario = crate::gui::command::Command::Scenario(self.tables.scenario);
+        self.tables.scenario_online = (
+            self.enabled(scenario),
+            self.checked(scenario).unwrap_or(false),
+        );
         let events = tables_ui(ui, doc, self.view, &mut self.tables, self.settings.lang);
         for event in events {
             match event {
                 TableEvent::Apply(edit) => {
                     self.with_context(|cx| cx.apply_or_say(edit));
                 }
+                TableEvent::Online(c) => self.pending.push(c),
             }
         }
         if let Some(doc) = &self.doc {

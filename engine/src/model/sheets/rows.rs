@@ -280,7 +280,11 @@ pub fn changed_row(project: &Project, edit: &TableEdit) -> Option<(Sheet, usize)
         TableEdit::MCodes(rows) => {
             first_difference(&project.m_codes, rows).map(|i| at(Sheet::MCodes, i))
         }
-        // The version information has no rows; the panel is no sheet.
-        TableEdit::Version(_) | TableEdit::Panel(_) | TableEdit::Machine(_) => None,
+        // The version information has no rows; the panel, the machine model and the
+        // scenarios are no sheets.
+        TableEdit::Version(_)
+        | TableEdit::Panel(_)
+        | TableEdit::Machine(_)
+        | TableEdit::Scenarios(_) => None,
     }
 }

@@ -1,0 +1,107 @@
+//! W019: a saved scenario that cannot be applied (docs/scenarios.md): a name a script line
+//! cannot carry or that another scenario has, or a line that does not read against the
+//! project. Reported like the tables: the "block" is `SCENARIOS`, the "network" the
+//! scenario (from 1), the row its line.
+
+use super::diag::{Code, Origin, Sink};
+use crate::model::Project;
+use crate::scenario::name_error;
+use crate::sim::{Options, scenario::resolve};
+
+/// The "block" number of the scenarios, before the machine model.
+pub const SCENARIOS: usize = usize::MAX - 8;
+
+/// Checks every scenario of a project.
+pub fn check_scenarios(project: &Project, sink: &mut Sink) {
+    let read_file = |p: &str| Err(format!("no file `{p}` is read while checking"));
+    let options = Options {
+        cnc: true,
+        read_file: &read_file,
+        machine: (!project.machine.is_empty()).then_some(&project.machine),
+        project: Some(project),
+    };
+    for (i, s) in project.scenarios.iter().enumerate() {
+        sink.at(SCENARIOS, "SCENARIOS", i);
+        // A name taken is reported at the later of the two.
+        if let Some((en, zh)) = name_error(&s.name, &project.scenarios[..i], None) {
+            sink.report(Origin::None, Code::W019ScenarioBroken, en, zh);
+        }
+        if let Err(e) = resolve(s, project, &options) {
+            sink.report(
+                Origin::Cell {
+                    row: e.line as u32 - 1,
+                    col: 0,
+                },
+                Code::W019ScenarioBroken,
+                format!("scenario `{}`, line {}: {}", s.name, e.line, e.message),
+                format!("场景 `{}` 第 {} 行：{}", s.name, e.line, e.message_zh),
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+    use crate::compiler::compile;
+    use crate::scenario::Scenario;
+
+    /// The codes this module's tests reach (the Chinese-message corpus counts them).
+    pub(in crate::compiler) const SCENARIO_CODES: &[Code] = &[Code::W019ScenarioBroken];
+
+    fn scenario(name: &str, lines: &[&str]) -> Scenario {
+        Scenario {
+            name: name.into(),
+            note: String::new(),
+            lines: lines.iter().map(|l| l.to_string()).collect(),
+        }
+    }
+
+    #[test]
+    fn a_bad_name_or_line_is_reported_at_its_scenario_and_row_in_both_languages() {
+        let p = Project {
+            scenarios: vec![
+                scenario("good", &["set R0001 1", "force X0002.1 1"]),
+                scenario("good", &["set R0001 1"]),
+                scenario("typo", &["set R0001 1", "frce X0002.1 1"]),
+            ],
+            ..Project::default()
+        };
+        let found: Vec<_> = compile(&p)
+            .diagnostics
+            .into_iter()
+            .filter(|d| d.code == Code::W019ScenarioBroken)
+            .collect();
+        let places: Vec<_> = found
+            .iter()
+            .map(|d| {
+                (
+                    d.location.block_label.as_str(),
+                    d.location.network,
+                    d.location.origin,
+                )
+            })
+            .collect();
+        assert_eq!(
+            places,
+            [
+                ("SCENARIOS", 1, Origin::None),
+                ("SCENARIOS", 2, Origin::Cell { row: 1, col: 0 })
+            ]
+        );
+        assert_eq!(
+            found[0].message,
+            "scenario name `good` is already used; give each scenario its own"
+        );
+        assert!(
+            found[1]
+                .message
+                .starts_with("scenario `typo`, line 2: `frce` cannot be part of a scenario"),
+            "{}",
+            found[1].message
+        );
+        for d in &found {
+            crate::compiler::zh_tests::assert_bilingual(&d.message, &d.message_zh);
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! Applying and releasing saved scenarios on a machine (docs/scenarios.md): each action
+//! records what it is about to change, so the release writes back exactly that.
+
+use super::{Machine, Target};
+use crate::refusal::Refusal;
+use crate::scenario::{Action, Applied, Undo};
+
+impl Machine {
+    /// The names of the scenarios applied now, oldest first.
+    pub fn applied_scenarios(&self) -> impl Iterator<Item = &str> {
+        self.applied.iter().map(|(n, _)| n.as_str())
+    }
+
+    /// Applies a scenario; a scenario already applied is refused (release it first).
+    pub(super) fn apply_scenario(&mut self, applied: &Applied) -> Result<(), Refusal> {
+        let name = &applied.name;
+        if self.applied.iter().any(|(n, _)| n == name) {
+            return Err(Refusal::new(
+                format!("scenario `{name}` is already applied; release it first"),
+                format!("场景 `{name}` 已经应用；请先解除"),
+            ));
+        }
+        // Every fault's device must exist before anything changes: all or nothing.
+        for a in &applied.actions {
+            if let Action::Fault(i, _) = a
+                && self.plant.as_ref().is_none_or(|p| *i >= p.names().count())
+            {
+                return Err(Refusal::new(
+                    format!(
+                        "scenario `{name}` injects a device fault, but no machine model is running (or it has no device {}): run with the machine model",
+                        i + 1
+                    ),
+                    format!(
+                        "场景 `{name}` 要向设备注入故障，但没有运行机床模型（或没有第 {} 号设备）：请带机床模型运行",
+                        i + 1
+                    ),
+                ));
+            }
+        }
+        let mut undo = Vec::with_capacity(applied.actions.len());
+        for a in &applied.actions {
+            undo.push(self.act(a));
+        }
+        self.applied.push((name.clone(), undo));
+        Ok(())
+    }
+
+    /// Carries out one action and says how to undo it.
+    fn act(&mut self, a: &Action) -> Undo {
+        match a {
+            Action::Write(t, v) => {
+                let old = self.plc.read(t.address, t.bytes);
+                self.plc.write(t.address, t.bytes, *v);
+                Undo::Write(*t, old)
+            }
+            Action::Force(addr, v) => {
+                let t = Target::whole(*addr);
+                let state = self.plc.force_state(*addr);
+                let old = self.plc.read(t.address, t.bytes);
+                self.plc.force(*addr, *v);
+                Undo::Force(*addr, state, t, old)
+            }
+            Action::Knob { input, mask, value } => {
+                let t = Target::whole(*input);
+                let old = self.plc.read(*input, 1);
+                let mask = i64::from(*mask);
+                self.plc
+                    .write(*input, 1, (old & 0xff & !mask) | (value & mask));
+                Undo::Write(t, old)
+            }
+            Action::Fault(i, f) => {
+                let plant = self.plant.as_mut().expect("checked before acting");
+                let old = plant.fault(*i);
+                plant.set_fault(*i, Some(*f));
+                Undo::Fault(*i, old)
+            }
+        }
+    }
+
+    /// Releases an applied scenario: its actions are undone last first.
+    pub(super) fn release_scenario(&mut self, name: &str) -> Result<(), Refusal> {
+        let Some(k) = self.applied.iter().position(|(n, _)| n == name) else {
+            return Err(Refusal::new(
+                format!("scenario `{name}` is not applied"),
+                format!("场景 `{name}` 没有应用"),
+            ));
+        };
+        let (_, undo) = self.applied.remove(k);
+        for u in undo.into_iter().rev() {
+            match u {
+                Undo::Write(t, v) => self.plc.write(t.address, t.bytes, v),
+                Undo::Force(a, state, t, v) => {
+                    // The value first: a force put back wins over it, as it did before.
+                    self.plc.unforce(a);
+                    self.plc.write(t.address, t.bytes, v);
+                    self.plc.restore_force(a, state);
+                }
+                Undo::Fault(i, f) => {
+                    if let Some(p) = &mut self.plant {
+                        p.set_fault(i, f);
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,108 @@
+//! Saved scenarios (docs/scenarios.md): a named set of writes, forces, operator-panel states
+//! and machine-device faults, kept in the project, applied in one step and released in one
+//! step, the release putting back exactly what the application changed.
+//!
+//! A scenario is kept as lines in the stimulus-script syntax (`force X0002.1 1`, `device
+//! chuck fault stuck 0`, `panel "Feed override" 50%`), so the page, the file and a script read
+//! it alike; [`crate::sim::scenario`] turns the lines into [`Action`]s against a project, and
+//! the machine ([`crate::machine::Machine`]) applies them and remembers how to undo each.
+
+use crate::address::Address;
+use crate::devices::Fault;
+use crate::machine::Target;
+use serde::{Deserialize, Serialize};
+
+/// The longest scenario name.
+pub const NAME_MAX: usize = 32;
+
+/// One saved scenario.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Scenario {
+    /// Its name: letters, digits, `_` and `-`, unique in the project (a script names it).
+    pub name: String,
+    /// What it sets up, for the reader.
+    #[serde(default, skip_serializing_if = "String::is_empty")]
+    pub note: String,
+    /// Its lines, in the script syntax: `set`, `force`, `panel` and `device … fault`.
+    #[serde(default)]
+    pub lines: Vec<String>,
+}
+
+/// What one line of a scenario does, resolved against a project.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Action {
+    /// Write a value once (`set`).
+    Write(Target, i64),
+    /// Hold a bit or an address at a value (`force`).
+    Force(Address, i64),
+    /// Put a panel knob at a position: only the knob's bits of its byte change.
+    Knob {
+        /// The X byte.
+        input: Address,
+        /// The knob's bits.
+        mask: u8,
+        /// The position's value.
+        value: i64,
+    },
+    /// Inject a fault into a device of the machine model, by index.
+    Fault(usize, Fault),
+}
+
+/// A scenario resolved and ready to apply: its name and actions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Applied {
+    /// The scenario's name.
+    pub name: String,
+    /// Its actions, in line order.
+    pub actions: Vec<Action>,
+}
+
+/// The force state of the (up to 4) bytes of an address: per byte, the forced bits and their
+/// values, so a release puts back a force that was there before, not just none.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ForceState {
+    /// (mask, values) per byte.
+    pub bytes: [(u8, u8); 4],
+}
+
+/// How to undo one action.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Undo {
+    /// Write this value back.
+    Write(Target, i64),
+    /// Put the forces of this address back as they were, then its value.
+    Force(Address, ForceState, Target, i64),
+    /// Put the device's fault back (`None`: no fault).
+    Fault(usize, Option<Fault>),
+}
+
+/// Why a scenario's name cannot be used, or `None`.
+pub fn name_error(name: &str, others: &[Scenario], own: Option<usize>) -> Option<(String, String)> {
+    if name.is_empty() {
+        return Some(("a scenario needs a name".into(), "场景需要一个名称".into()));
+    }
+    if name.chars().count() > NAME_MAX
+        || !name
+            .chars()
+            .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
+    {
+        return Some((
+            format!(
+                "scenario name `{name}`: use at most {NAME_MAX} letters, digits, `_` or `-` (a script line names it)"
+            ),
+            format!(
+                "场景名称 `{name}`：最多 {NAME_MAX} 个字母、数字、`_` 或 `-`（脚本行会用到它）"
+            ),
+        ));
+    }
+    let taken = others
+        .iter()
+        .enumerate()
+        .any(|(k, s)| Some(k) != own && s.name.eq_ignore_ascii_case(name));
+    taken.then(|| {
+        (
+            format!("scenario name `{name}` is already used; give each scenario its own"),
+            format!("场景名称 `{name}` 已被使用；请为每个场景取不同的名称"),
+        )
+    })
+}
