@@ -6,7 +6,7 @@ use ladder_tests::run;
 use std::path::Path;
 
 /// One network energised through one branch only; a compare whose "greater" result is never
-/// seen, read by the next network.
+/// seen (so it is not covered, though its ACT was seen both ways), read by the next network.
 const PROGRAM: &str = "\
 LEVEL1
 NETWORK \"one branch\"
@@ -81,7 +81,7 @@ fn sim_measures_the_branch_never_taken_and_the_result_never_seen() {
     assert_eq!(
         r.stdout,
         "level 1: 0/1 networks fully covered, 0 % (2/3 elements)\n\
-         level 2: 1/2 networks fully covered, 50 % (2/4 elements)\n\
+         level 2: 0/2 networks fully covered, 0 % (1/4 elements)\n\
          3 passed, 0 failed\n"
     );
     let c = Coverage::from_json(&std::fs::read_to_string(&json).unwrap()).unwrap();
@@ -94,13 +94,71 @@ fn sim_measures_the_branch_never_taken_and_the_result_never_seen() {
             s("OUT Y0000.0", State::Covered)
         ]
     );
-    assert_eq!(c.networks[1].state(), State::Covered);
+    // The compare: ACT seen off and on, "less" and "equal" seen, "greater" never.
+    let cmp = &c.networks[1].elements[1];
+    assert_eq!((cmp.seen0, cmp.seen1), (true, true));
+    assert_eq!(cmp.outcomes, Some([false, true, true]));
+    assert_eq!(cmp.state(), State::Half);
+    assert_eq!(c.networks[1].state(), State::Half);
     assert_eq!(
         states(&c, 2),
         [s("LD R0300.0", State::Half), s("OUT Y0001.0", State::Half)]
     );
     // Where each element is: the IL's own lines have no grid cell.
     assert!(c.networks[0].elements.iter().all(|e| e.cell.is_none()));
+}
+
+#[test]
+fn a_contact_counts_only_where_it_decides_its_step() {
+    let dir = tempfile::tempdir().unwrap();
+    let il = write(
+        dir.path(),
+        "series.il",
+        "LEVEL1\nNETWORK\nLD   X0000.0\nAND  X0000.1\nOUT  Y0000.0\nEND\n",
+    );
+    // X0.1 flips while X0.0 is open: the series contact never decides the rung then.
+    let script = write(
+        dir.path(),
+        "s.script",
+        "set X0000.1 1\nscan 2\nset X0000.1 0\nscan 2\nexpect Y0000.0 0\n",
+    );
+    let json = dir.path().join("cov.json");
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        &script,
+        "--coverage",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    let c = Coverage::from_json(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    let s = |il: &str, st: State| (il.to_string(), st);
+    assert_eq!(
+        states(&c, 0),
+        [
+            s("LD X0000.0", State::Half),
+            s("AND X0000.1", State::Never),
+            s("OUT Y0000.0", State::Half)
+        ]
+    );
+    // With power at its left, its closing and opening decide: covered.
+    let script = write(
+        dir.path(),
+        "t.script",
+        "set X0000.0 1\nset X0000.1 1\nscan 2\nset X0000.1 0\nscan 2\nexpect Y0000.0 0\n",
+    );
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        &script,
+        "--coverage",
+        json.to_str().unwrap(),
+    ]);
+    assert_eq!(r.code, 0, "{}{}", r.stdout, r.stderr);
+    let c = Coverage::from_json(&std::fs::read_to_string(&json).unwrap()).unwrap();
+    assert_eq!(c.networks[0].elements[1].state(), State::Covered);
 }
 
 #[test]
@@ -159,7 +217,7 @@ fn the_html_page_lists_the_networks_left_to_cover_and_their_elements() {
             && html.contains("<title>Rung coverage of plant.il</title>")
     );
     assert!(
-        html.contains("<h2>2 networks not fully covered</h2>"),
+        html.contains("<h2>3 networks not fully covered</h2>"),
         "{html}"
     );
     assert!(html.contains("<h3>LEVEL1 N0001 one branch</h3>"));
@@ -169,8 +227,14 @@ fn the_html_page_lists_the_networks_left_to_cover_and_their_elements() {
         ),
         "{html}"
     );
-    // The fully covered compare network is not listed; the one reading its result is.
-    assert!(!html.contains("N0001 compare") && html.contains("<h3>LEVEL2 N0002 greater</h3>"));
+    // The compare is listed with the results it saw, and the network reading "greater".
+    assert!(
+        html.contains(
+            "<tr class=\"half\"><td><code>CMP 1 R0100 R0200 R0300.0</code></td><td>half</td><td>0, 1 · = &lt;</td></tr>"
+        ),
+        "{html}"
+    );
+    assert!(html.contains("<h3>LEVEL2 N0002 greater</h3>"));
     // Self-contained: no link to anything outside the page.
     assert!(!html.contains("http") && !html.contains("<link") && !html.contains("<script"));
 }

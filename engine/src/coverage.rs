@@ -1,11 +1,14 @@
 //! Rung coverage: which elements of a program have been seen both ways while it ran
 //! (docs/scripts.md, "Coverage").
 //!
-//! The VM keeps, per word of code, whether the word read or received 0 and whether 1
-//! ([`Vm::set_coverage`]); this module places those words back on the program's
-//! instructions. A contact is covered once it was read closed and open, a coil or a function
-//! box once its ACT (the rung's power reaching it) was seen on and off; a network is fully
-//! covered when all of its elements are. Reports of several runs of one program merge.
+//! The VM keeps, per word of code, whether the word read or received 0 and whether 1, and
+//! which results a compare took ([`Vm::set_coverage`]); this module places those words back on
+//! the program's instructions. A contact is covered once it was seen closed and open where it
+//! decided its step of the rung (LD always; a series contact with power reaching it; a
+//! parallel one while the branch it joins is off), a coil or a function box once its ACT (the
+//! rung's power reaching it) was seen on and off, a compare once each of its three results was
+//! seen too; a network is fully covered when all of its elements are. Reports of several runs
+//! of one program merge.
 
 use crate::catalog::InstrClass;
 use crate::compiler::{Origin, Program};
@@ -14,7 +17,7 @@ use crate::vm::Vm;
 use serde::{Deserialize, Serialize};
 
 /// The format line of a coverage file.
-pub const FORMAT: &str = "ladder-studio coverage 1";
+pub const FORMAT: &str = "ladder-studio coverage 2";
 
 /// How far an element was exercised.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -38,15 +41,29 @@ pub struct Element {
     pub seen0: bool,
     /// Read closed (a contact) or with power (an output).
     pub seen1: bool,
+    /// A compare's (CMP, CMPR, ZCP) results seen, in the order of its result bits: greater,
+    /// equal, less (ZCP: below, within, above). `None` for every other element.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outcomes: Option<[bool; 3]>,
 }
 
 impl Element {
-    /// How far it was exercised.
+    /// How far it was exercised: a compare is covered only once each of its results was seen.
     pub fn state(&self) -> State {
+        let results = self.outcomes.is_none_or(|o| o.iter().all(|&x| x));
         match (self.seen0, self.seen1) {
-            (true, true) => State::Covered,
+            (true, true) if results => State::Covered,
             (false, false) => State::Never,
             _ => State::Half,
+        }
+    }
+
+    /// The names of a compare's results, in [`Element::outcomes`] order.
+    pub fn outcome_names(&self) -> [&'static str; 3] {
+        if self.il.starts_with("ZCP") {
+            ["below", "within", "above"]
+        } else {
+            [">", "=", "<"]
         }
     }
 }
@@ -141,9 +158,15 @@ impl Coverage {
             std::collections::HashMap::new();
         for (w, src) in code.source.iter().enumerate() {
             if let Some((b, n, i)) = *src {
+                let bits = seen.get(w).copied().unwrap_or(0) >> 1;
+                let op = code.words().get(w).map_or(u32::MAX, |x| x & 0xFF);
                 *by_instr
                     .entry((usize::from(b), n as usize, i as usize))
-                    .or_default() |= seen.get(w).copied().unwrap_or(0) >> 1;
+                    .or_default() |= if op < crate::vm::code::CONTACT_END {
+                    contact_seen(op, bits)
+                } else {
+                    bits
+                };
             }
         }
         let mut networks = Vec::new();
@@ -167,6 +190,11 @@ impl Coverage {
                             },
                             seen0: bits & 1 != 0,
                             seen1: bits & 2 != 0,
+                            outcomes: compares(ins.op).then_some([
+                                bits & 4 != 0,
+                                bits & 8 != 0,
+                                bits & 16 != 0,
+                            ]),
                         }
                     })
                     .collect();
@@ -221,6 +249,11 @@ impl Coverage {
             for (x, y) in a.elements.iter_mut().zip(&b.elements) {
                 x.seen0 |= y.seen0;
                 x.seen1 |= y.seen1;
+                if let (Some(o), Some(p)) = (&mut x.outcomes, y.outcomes) {
+                    for (u, v) in o.iter_mut().zip(p) {
+                        *u |= v;
+                    }
+                }
             }
         }
         self.runs += other.runs;
@@ -275,6 +308,26 @@ impl Coverage {
         }
         Ok(c)
     }
+}
+
+/// A contact's values seen where it decided its step (bit 0 open, bit 1 closed), from the
+/// pairs of value and accumulator its word recorded (bit 2·value + acc).
+fn contact_seen(op: u32, pairs: u8) -> u8 {
+    let mut out = 0;
+    for value in 0..2u32 {
+        for acc in 0..2u32 {
+            if pairs >> (value << 1 | acc) & 1 == 1 && crate::vm::decides(op, acc) {
+                out |= 1 << value;
+            }
+        }
+    }
+    out
+}
+
+/// Whether an instruction is a compare whose results coverage tells apart.
+fn compares(op: crate::catalog::Op) -> bool {
+    use crate::catalog::Op;
+    matches!(op, Op::Cmp | Op::Cmpr | Op::Zcp)
 }
 
 /// Whether an instruction is an element coverage counts: contacts, and the outputs that take

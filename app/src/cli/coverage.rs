@@ -171,18 +171,33 @@ fn html(c: &Coverage, project: &str, say: Say) -> String {
                 State::Half => ("half", say.pick("half", "部分")),
                 State::Never => ("never", say.pick("never", "从未")),
             };
-            let seen = match (e.seen0, e.seen1) {
+            let mut seen = match (e.seen0, e.seen1) {
                 (true, true) => "0, 1",
                 (true, false) => "0",
                 (false, true) => "1",
                 (false, false) => "—",
-            };
+            }
+            .to_string();
+            // A compare: the results seen (each must be, for it to be covered).
+            if let Some(o) = e.outcomes {
+                let names = e.outcome_names();
+                let got: Vec<&str> = (0..3).filter(|&k| o[k]).map(|k| names[k]).collect();
+                seen.push_str(&format!(
+                    " · {}",
+                    if got.is_empty() {
+                        "—".to_string()
+                    } else {
+                        got.join(" ")
+                    }
+                ));
+            }
             let cell = e
                 .cell
                 .map_or(String::new(), |(r, c)| format!(" ({}, {})", r + 1, c + 1));
             page.push_str(&format!(
-                "<tr class=\"{class}\"><td><code>{}</code>{cell}</td><td>{state}</td><td>{seen}</td></tr>\n",
-                esc(&e.il)
+                "<tr class=\"{class}\"><td><code>{}</code>{cell}</td><td>{state}</td><td>{}</td></tr>\n",
+                esc(&e.il),
+                esc(&seen)
             ));
         }
         page.push_str("</table>\n");

@@ -113,7 +113,13 @@ impl Vm {
         let g_base = self.layout.area_range(Area::G).start as u32;
         let d_range = self.layout.area_range(Area::D);
         let forcing = !self.forced_bytes.is_empty();
-        let watching = self.watch_count > 0;
+        // Whether recording may start or stop at a network: recording, unless every network
+        // is recorded (coverage); not recording, when any network is watched.
+        let watching = if TRACE {
+            !self.covering
+        } else {
+            self.watch_count > 0
+        };
         let mut r = Regs {
             pc,
             acc: 0,
@@ -151,7 +157,7 @@ impl Vm {
                         *steps_out = r.steps;
                         return Exit::Suspend(at);
                     }
-                    if (TRACE || watching) && self.watched[arg as usize] != TRACE {
+                    if watching && self.watched[arg as usize] != TRACE {
                         *steps_out = r.steps;
                         return Exit::Switch(at);
                     }
@@ -232,6 +238,12 @@ impl Vm {
                         d_range: d_range.clone(),
                     };
                     functions::exec(f, r.acc != 0, &mut states[f.state as usize], &mut cx);
+                    if TRACE && r.acc != 0 {
+                        let o = functions::outcome(f, mem);
+                        if o < functions::NO_OUTCOME {
+                            trace[at as usize] |= 8 << o;
+                        }
+                    }
                     if forcing {
                         self.apply_forces();
                     }
@@ -274,15 +286,51 @@ fn record(trace: &mut [u8], at: u32, v: u32) {
     *t = (*t & SEEN) | (v as u8 & 1) | (2 << (v & 1));
 }
 
-/// The bits of a trace byte that say which values were seen.
-pub(super) const SEEN: u8 = 0b110;
+/// Per contact opcode (bits 2·op and 2·op + 1 for the accumulator at 0 and at 1): whether
+/// the contact's value decides the step's result. With the flags of `code::C_*`, the result
+/// is `(acc & (v | OR)) | (v & LOAD_OR)`, which depends on v exactly when
+/// `(acc | LOAD_OR) ^ (acc & OR)` is 1: LD always, AND with power on its left, OR while the
+/// branch it joins is off.
+const DECIDES: u64 = {
+    let mut table = 0u64;
+    let mut op = 0;
+    while op < CONTACT_END as u64 {
+        let (or, load_or) = (op >> 1 & 1, op >> 2 & 1);
+        let mut acc = 0;
+        while acc < 2 {
+            table |= (((acc | load_or) ^ (acc & or)) & 1) << (op << 1 | acc);
+            acc += 1;
+        }
+        op += 1;
+    }
+    table
+};
+
+/// Whether a contact with opcode `op` decides its step when it meets accumulator `acc`.
+pub(crate) fn decides(op: u32, acc: u32) -> bool {
+    op < CONTACT_END && DECIDES >> (op << 1 | (acc & 1)) & 1 == 1
+}
+
+/// Records what a contact read (bit 0, for the monitor) and, for coverage, that this value
+/// met this accumulator: bit 1 + (2·value + acc). The same few operations as [`record`].
+#[inline(always)]
+fn record_contact(trace: &mut [u8], at: u32, raw: u32, acc: u32) {
+    let t = &mut trace[at as usize];
+    // Both are 0 or 1 here (a bit read; the accumulator), so no masking.
+    *t = (*t & SEEN) | raw as u8 | (2u8 << (raw * 2 + acc));
+}
+
+/// The bits of a trace byte that say what was seen: bits 1 and 2 the values 0 and 1, bits 3
+/// to 5 a compare's three results ([`functions::NO_OUTCOME`]); a contact's bits 1 to 4 the
+/// four pairs of its value and the accumulator it met ([`record_contact`]).
+pub(super) const SEEN: u8 = 0b11_1110;
 
 /// What the hot loop needs to know besides code, memory and registers.
 #[derive(Clone, Copy)]
 struct Stops<'a> {
     /// Level 2's quota for this slice (`u64::MAX`: never stop at a network).
     quota: u64,
-    /// Whether any network is watched.
+    /// Whether recording may start or stop at a network marker (see `Vm::exec`).
     watching: bool,
     /// Which networks are.
     watched: &'a [bool],
@@ -315,6 +363,13 @@ fn hot<const TRACE: bool>(
         watched,
         forcing,
     } = *stops;
+    // As long as the code (one trace byte per word): an index that reads a word needs no
+    // second bounds check to record it. Untouched when nothing records.
+    let trace = if TRACE {
+        &mut trace[..words.len()]
+    } else {
+        trace
+    };
     let mut pc = r.pc;
     let mut acc = r.acc;
     let mut blocks = r.blocks;
@@ -335,7 +390,9 @@ fn hot<const TRACE: bool>(
                 // Every contact form: the opcode's bits are its flags (see `code::C_*`).
                 let raw = u32::from(mem[index] >> shift) & 1;
                 if TRACE {
-                    record(trace, at, raw);
+                    // With the accumulator it met: coverage counts the value only where it
+                    // decided the step ([`decides`]), worked out when the report is made.
+                    record_contact(trace, at, raw, acc);
                 }
                 let v = raw ^ (op & C_INVERT);
                 let push = u64::from(op >> 3 & 1);
@@ -384,7 +441,7 @@ fn hot<const TRACE: bool>(
             }
             byte::NET => {
                 // Leave only to suspend level 2, or where recording starts or stops.
-                if steps >= quota || ((TRACE || watching) && watched[arg as usize] != TRACE) {
+                if steps >= quota || (watching && watched[arg as usize] != TRACE) {
                     break at;
                 }
                 continue;

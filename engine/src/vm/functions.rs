@@ -30,6 +30,27 @@ pub(super) struct Ctx<'a> {
     pub d_range: Range<usize>,
 }
 
+/// [`outcome`] of an execution that compared nothing.
+pub(super) const NO_OUTCOME: u8 = 3;
+
+/// The result a compare (CMP, CMPR, ZCP) that just ran with ACT = 1 took, as the index of the
+/// result bit it set (0, 1, 2); [`NO_OUTCOME`] for any other instruction. Read back from its
+/// result bits, so only coverage pays for it.
+pub(super) fn outcome(f: &FnCall, mem: &[u8]) -> u8 {
+    let out = match f.op {
+        FnOp::Cmp => f.args[3],
+        FnOp::Cmpr => f.args[2],
+        FnOp::Zcp => f.args[4],
+        _ => return NO_OUTCOME,
+    };
+    let Arg::Bit(b) = out else {
+        return NO_OUTCOME;
+    };
+    (0..3u8)
+        .find(|&k| bit(mem, Arg::Bit(b + u32::from(k))))
+        .unwrap_or(NO_OUTCOME)
+}
+
 fn real(mem: &[u8], a: Arg) -> f32 {
     match a {
         Arg::Real(r) => r,

@@ -8,6 +8,7 @@
 pub mod cnc;
 pub mod code;
 mod exec;
+pub(crate) use exec::decides;
 mod functions;
 pub mod memory;
 pub mod monitor;
@@ -498,9 +499,8 @@ impl Vm {
         self.covering = on;
     }
 
-    /// What coverage has seen since it was turned on, per word of code (bit 1: the value 0,
-    /// bit 2: the value 1; see [`Vm::trace`]), with [`Code::source`] to place each word;
-    /// `None` while off.
+    /// What coverage has seen since it was turned on, per word of code (see [`Vm::trace`]),
+    /// with [`Code::source`] to place each word; `None` while off.
     pub fn coverage(&self) -> Option<(&[u8], &Code)> {
         self.covering.then_some((&self.trace[..], &self.code))
     }
@@ -511,8 +511,10 @@ impl Vm {
     }
 
     /// What the last execution of each word recorded in bit 0 (contacts: the bit read;
-    /// outputs: their ACT), valid for watched networks; bits 1 and 2 say whether 0 and 1 were
-    /// ever seen (coverage).
+    /// outputs: their ACT), valid for watched networks. The other bits are coverage's: for a
+    /// contact, bit 1 + (2·value + accumulator) for each pair it met; for an output, bits 1
+    /// and 2 whether its ACT was seen 0 and 1, and for a compare bits 3 to 5 the results it
+    /// took.
     pub fn trace(&self) -> &[u8] {
         &self.trace
     }
