@@ -673,7 +673,7 @@ fn a_scenario_applies_from_the_plc_menu_and_its_release_restores_memory() {
     assert_eq!((value(&h, "R0010"), value(&h, "R0500.0")), (7, 1));
     assert_eq!(h.state().checked(Command::Scenario(0)), Some(true));
     assert!(
-        output(&h).contains("Applied scenario `lube-low`"),
+        output(&h).contains("Apply scenario `lube-low`"),
         "{}",
         output(&h)
     );
@@ -685,5 +685,49 @@ fn a_scenario_applies_from_the_plc_menu_and_its_release_restores_memory() {
             .feature::<OnlineState>()
             .forced_addresses()
             .is_empty()
+    );
+}
+
+#[test]
+fn a_click_on_a_table_or_scenario_warning_opens_its_page_at_its_row() {
+    let mut p = ladder_engine::file::load(&lathe()).unwrap();
+    p.scenarios[1].lines.push("frce X0002.1 1".into());
+    // Alarm 1009 on A0001.3, which nothing sets (W018).
+    p.messages.rows[11].number = Some(1009);
+    let path = tempfile_dir().join("warn.ldp");
+    ladder_engine::file::save(&p, &path).unwrap();
+    let mut h = harness(Some(path), Lang::En);
+    h.run();
+    h.key_press(egui::Key::F9);
+    h.run();
+    h.get_by_label_contains("scenario `station-3-broken`, line 2: `frce`")
+        .click();
+    h.run();
+    h.run();
+    assert_eq!(h.state().view(), ladder_studio::gui::place::View::Scenarios);
+    // The page shows that scenario, with the line's reason (and the output window still has it).
+    assert_eq!(
+        h.state()
+            .feature::<ladder_studio::gui::tables::TableState>()
+            .scenario,
+        1
+    );
+    assert_eq!(
+        h.query_all_by_label_contains("2: `frce` cannot be part of a scenario")
+            .count(),
+        2
+    );
+    h.get_by_label_contains("A0001.3: alarm 1009 has a message")
+        .click();
+    h.run();
+    h.run();
+    assert_eq!(h.state().view(), ladder_studio::gui::place::View::Messages);
+    let sheet = ladder_studio::gui::tables::Sheet::Messages;
+    assert_eq!(
+        h.state()
+            .feature::<ladder_studio::gui::tables::TableState>()
+            .selected
+            .get(&sheet),
+        Some(&11)
     );
 }

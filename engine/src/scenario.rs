@@ -70,10 +70,54 @@ pub struct ForceState {
 pub enum Undo {
     /// Write this value back.
     Write(Target, i64),
+    /// Put a knob's bits of its byte back (the byte's other bits are left as they are).
+    Knob {
+        /// The X byte.
+        input: Address,
+        /// The knob's bits.
+        mask: u8,
+        /// The byte as it was.
+        old: i64,
+    },
     /// Put the forces of this address back as they were, then its value.
     Force(Address, ForceState, Target, i64),
-    /// Put the device's fault back (`None`: no fault).
-    Fault(usize, Option<Fault>),
+    /// Put the device's fault back (`None`: no fault), by the device's name: the model may
+    /// have been edited online in between.
+    Fault(String, Option<Fault>),
+}
+
+impl Undo {
+    /// Whether undoing this and undoing `other` act on the same thing (a byte of memory, a
+    /// device), so their order matters.
+    pub fn overlaps(&self, other: &Undo) -> bool {
+        match (self.place(), other.place()) {
+            (Place::Bytes(a, x0, x1), Place::Bytes(b, y0, y1)) => a == b && x0 < y1 && y0 < x1,
+            (Place::Device(a), Place::Device(b)) => a.eq_ignore_ascii_case(b),
+            _ => false,
+        }
+    }
+
+    fn place(&self) -> Place<'_> {
+        let bytes = |a: &Address, n: u32| {
+            let first = u32::from(a.number);
+            Place::Bytes(a.area, first, first + n.max(1))
+        };
+        match self {
+            Undo::Write(t, _) => bytes(
+                &t.address,
+                if t.address.bit.is_some() { 1 } else { t.bytes },
+            ),
+            Undo::Knob { input, .. } => bytes(input, 1),
+            Undo::Force(a, ..) => bytes(a, 1),
+            Undo::Fault(name, _) => Place::Device(name),
+        }
+    }
+}
+
+/// What an undo acts on: an area's elements `[from, to)`, or a device.
+enum Place<'a> {
+    Bytes(crate::address::Area, u32, u32),
+    Device(&'a str),
 }
 
 /// Why a scenario's name cannot be used, or `None`.

@@ -225,3 +225,64 @@ fn a_project_keeps_its_bytes_until_it_has_a_scenario_then_reads_back_as_version_
     let e = file::from_bytes(v4.as_bytes()).unwrap_err().to_string();
     assert!(e.contains("which version 5 introduced"), "{e}");
 }
+
+#[test]
+fn a_scenario_applied_twice_or_released_unapplied_is_a_refused_line() {
+    let mut p = lathe();
+    p.scenarios = vec![scenario("once", &["set R0001 1"])];
+    let script = "scenario once\nscenario once\nscenario once off\nscenario once off\n";
+    let profile = Profile::get(p.profile);
+    let parsed = Script::parse_with(script, profile, &options(&p, NO_FILES)).unwrap();
+    let mut m = Machine::new(&p, true).unwrap();
+    let out = sim::run(&mut m, &parsed, "s", false);
+    assert_eq!(
+        out.output,
+        [
+            "s:2: scenario: scenario `once` is already applied; release it first",
+            "s:4: scenario: scenario `once` is not applied"
+        ]
+    );
+    assert_eq!(out.failed, 2);
+}
+
+#[test]
+fn overlapping_scenarios_release_last_first_and_a_knob_gives_back_only_its_bits() {
+    let mut p = lathe();
+    p.scenarios = vec![
+        scenario("a", &["force X0003.1 1", "panel \"Rapid override\" 25%"]),
+        scenario("b", &["force X0003.1 0"]),
+        scenario("c", &["set R0020 3"]),
+    ];
+    let mut m = Machine::new(&p, true).unwrap();
+    m.apply(&MachineCommand::Tick(2)).unwrap();
+    let before = state(&m);
+    for s in &p.scenarios {
+        let applied = scenario::resolve(s, &p, &options(&p, NO_FILES)).unwrap();
+        m.apply(&MachineCommand::Scenario(Box::new(applied)))
+            .unwrap();
+    }
+    // `a` and `b` both force X0003.1: `b`, applied later, goes first.
+    let e = m.apply(&MachineCommand::Release("a".into())).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "scenario `a` changed what `b`, applied after it, changed too: release `b` first"
+    );
+    // `c` touches nothing of the others: released in any order.
+    m.apply(&MachineCommand::Release("c".into())).unwrap();
+    // A switch on the knob's byte flipped meanwhile keeps its new state after the release.
+    let x5 = ladder_engine::Address::parse("X0005.7").unwrap();
+    m.apply(&MachineCommand::Write(
+        ladder_engine::machine::Target::whole(x5),
+        1,
+    ))
+    .unwrap();
+    m.apply(&MachineCommand::Release("b".into())).unwrap();
+    m.apply(&MachineCommand::Release("a".into())).unwrap();
+    assert_eq!(m.plc().read(x5, 1), 1, "X5.7 is not the knob's");
+    m.apply(&MachineCommand::Write(
+        ladder_engine::machine::Target::whole(x5),
+        0,
+    ))
+    .unwrap();
+    assert_eq!(state(&m), before);
+}

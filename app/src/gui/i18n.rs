@@ -243,8 +243,9 @@ messages! {
     ScenarioApply => "应用", "Apply";
     ScenarioRelease => "解除", "Release";
     ScenarioApplied => "已应用", "applied";
-    ScenarioNowApplied => "已应用场景", "Applied scenario";
-    ScenarioNowReleased => "已解除场景", "Released scenario";
+    ScenarioNowApplied => "应用场景", "Apply scenario";
+    ScenarioRenameApplied => "请先解除该场景再改名（它以此名称应用）", "Release the scenario before renaming it (it is applied by this name)";
+    ScenarioNowReleased => "解除场景", "Release scenario";
     ScenarioOk => "每一行都可以应用", "Every line can be applied";
     Output => "信息输出", "Output";
     CopyLine => "复制这一行", "Copy this line";

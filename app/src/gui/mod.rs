@@ -296,6 +296,22 @@ impl LadderApp {
     /// Shows a cell (of a diagnostic, a find result, a reference): its block, scrolled to its
     /// network, with the cursor on it. A place that no longer exists is clamped.
     pub fn jump(&mut self, at: model::CellRef) {
+        // A table's, the machine model's or a scenario's diagnostic: its page, at its row.
+        if let Some((view, row)) = place::table_view(at) {
+            match view {
+                Some(v) => {
+                    if v == View::Scenarios {
+                        self.tables.scenario = at.network;
+                    }
+                    self.show_view(v);
+                    if let Some(r) = row {
+                        self.pending.push(command::Command::GoToRow(r));
+                    }
+                }
+                None => self.pending.push(command::Command::MachineModel),
+            }
+            return;
+        }
         self.view = View::Block(at.block);
         self.edit.jump_to = Some(at.network);
         self.selection = None;

@@ -32,6 +32,26 @@ pub enum View {
     Scenarios,
 }
 
+/// The view a diagnostic of a table, the machine model or the scenarios points at (its
+/// "block" is one of the compiler's pseudo-blocks), with the row to go to; `None` for a
+/// ladder block. The machine model is no view: `Some((None, _))`.
+pub fn table_view(at: CellRef) -> Option<(Option<View>, Option<usize>)> {
+    use ladder_engine::compiler::{machine::MACHINE, scenarios::SCENARIOS, tables};
+    let row = Some(at.row);
+    Some(match at.block {
+        tables::SYMBOLS => (Some(View::Symbols(at.network)), row),
+        tables::DATA => (Some(View::Data), None),
+        tables::MESSAGES => (Some(View::Messages), row),
+        tables::DIAGNOSIS => (Some(View::Diagnosis), row),
+        tables::PERMISSIONS => (Some(View::Permissions), row),
+        tables::MCODES => (Some(View::MCodes), row),
+        tables::VERSION => (Some(View::Version), None),
+        SCENARIOS => (Some(View::Scenarios), None),
+        MACHINE => (None, None),
+        _ => return None,
+    })
+}
+
 /// The cell cursor (UI state, never saved).
 pub type Cursor = CellRef;
 

@@ -67,26 +67,26 @@ const ESSENTIAL: [(Signal, &str, &str); 5] = [
     ),
     (
         g("MD1", 43, 0),
-        "the mode stays MDI: no memory, JOG or handwheel operation",
-        "方式始终为录入（MDI）：无法自动、手动或手轮操作",
+        "no EDIT, MEM (automatic), JOG, DNC or REF mode can be selected",
+        "无法选择编辑、自动、手动、DNC 或回零方式",
     ),
     (
         g("MD2", 43, 1),
-        "the mode stays MDI: no memory, JOG or handwheel operation",
-        "方式始终为录入（MDI）：无法自动、手动或手轮操作",
+        "the EDIT mode cannot be selected",
+        "无法选择编辑方式",
     ),
     (
         g("MD4", 43, 2),
-        "the mode stays MDI: no memory, JOG or handwheel operation",
-        "方式始终为录入（MDI）：无法自动、手动或手轮操作",
+        "no HANDLE, JOG or REF mode can be selected",
+        "无法选择手脉、手动或回零方式",
     ),
 ];
 
-/// F answers and the G request each confirms.
-const ANSWERS: [(Signal, Signal); 9] = [
+/// F answers and the G request each confirms. (MABSM F4.2 is the inverse of ABSM, so it
+/// reads 1 with ABSM never written: no pair.)
+const ANSWERS: [(Signal, Signal); 8] = [
     (f("MBDT1", 4, 0), g("BDT1", 44, 0)),
     (f("MMLK", 4, 1), g("MLK", 44, 1)),
-    (f("MABSM", 4, 2), g("ABSM", 6, 2)),
     (f("MSBK", 4, 3), g("SBK", 46, 1)),
     (f("MAFL", 4, 4), g("AFL", 5, 6)),
     (f("MREF", 4, 5), g("ZRN", 43, 7)),
@@ -179,18 +179,17 @@ fn finishes(program: &Program, flow: &Flow, sink: &mut Sink) {
     for s in FINISHES {
         let (name, a) = (s.0, address(s));
         let mut drivers: Vec<Place> = Vec::new();
-        let (mut set, mut rst) = (None, false);
+        let (mut set, mut rst_at) = (None, None);
         for (w, kind) in flow.writes_of(s.1) {
             match kind {
                 WriteKind::Set => set = set.or(Some(w.place)),
-                WriteKind::Rst => rst = true,
+                WriteKind::Rst => rst_at = rst_at.or(Some(w.place)),
                 _ if drivers.iter().any(|p| (p.0, p.1) == (w.place.0, w.place.1)) => {}
                 _ => drivers.push(w.place),
             }
         }
-        if drivers.len() > 1 || (!drivers.is_empty() && (set.is_some() || rst)) {
-            let place = drivers[drivers.len().min(2) - 1];
-            let origin = at(program, sink, place);
+        if drivers.len() > 1 {
+            let origin = at(program, sink, drivers[1]);
             sink.report(
                 origin,
                 Code::W013FinishWriters,
@@ -201,7 +200,19 @@ fn finishes(program: &Program, flow: &Flow, sink: &mut Sink) {
                     "{name} {a} 被多个梯级写入：以扫描中最后一次写入为准，完成信号可能丢失或一直保持；请把所有完成条件归并到一个梯级"
                 ),
             );
-        } else if let (Some(place), false) = (set, rst) {
+        } else if let (Some(_), Some(latch)) = (drivers.first(), set.or(rst_at)) {
+            let origin = at(program, sink, latch);
+            sink.report(
+                origin,
+                Code::W013FinishWriters,
+                format!(
+                    "{name} {a} is both driven by a coil or box and latched with SET/RST here: the coil rewrites it every scan, so the latch does nothing or fights it; use one or the other"
+                ),
+                format!(
+                    "{name} {a} 既由线圈或功能指令驱动，又在此处用 SET/RST 锁存：线圈每个扫描都会改写它，锁存无效或与之冲突；请只用其中一种"
+                ),
+            );
+        } else if let (Some(place), None) = (set, rst_at) {
             let origin = at(program, sink, place);
             sink.report(
                 origin,
@@ -288,8 +299,10 @@ fn decoded(program: &Program, flow: &Flow) -> BTreeMap<u32, Place> {
                         let Some(o) = out.address() else { continue };
                         for k in 0..8u8 {
                             let unit = bit(o.area, u32::from(o.number), k);
-                            if flow.first_read(unit).is_some() {
-                                codes.entry(*base as u32 + u32::from(k)).or_insert(place);
+                            // A base no M code reaches (negative, or past u32) decodes none.
+                            let code = u32::try_from(*base + i64::from(k));
+                            if let (Ok(code), Some(_)) = (code, flow.first_read(unit)) {
+                                codes.entry(code).or_insert(place);
                             }
                         }
                     }
@@ -380,9 +393,9 @@ fn alarms(project: &Project, program: &Program, flow: &Flow, sink: &mut Sink) {
                 origin,
                 Code::W017AlarmNoMessage,
                 format!(
-                    "{a} is set here but has no row in the message table: the CNC shows no alarm for it; give the row an alarm number and a text"
+                    "{a} is set here but its row in the message table has no alarm number: the CNC shows no alarm for it; give the row an alarm number and a text"
                 ),
-                format!("此处置位 {a}，但信息表中没有它的行：CNC 不会为它显示报警；请为该行填写报警号和文本"),
+                format!("此处置位 {a}，但信息表中它的行没有报警号：CNC 不会为它显示报警；请为该行填写报警号和文本"),
             );
         }
     }

@@ -114,6 +114,17 @@ fn fin_driven_from_two_rungs_or_latched_without_reset_is_reported() {
         [(Code::W013FinishWriters, Origin::Line(25))]
     );
     assert!(f[0].3.contains("latched with SET and never RST"));
+    // A coil and a latch on it: reported at the latch.
+    let both = format!("{GOOD}NETWORK\nLD   X0004.1\nSET  G0004.3\nEND\n");
+    let f = found(&both);
+    assert_eq!(
+        codes_and_lines(&f),
+        [(Code::W013FinishWriters, Origin::Line(28))]
+    );
+    assert!(
+        f[0].3.contains("both driven by a coil or box and latched"),
+        "{f:?}"
+    );
     // SET here, RST when the strobe drops: a latch, not two writers.
     let paired = format!("{latched}NETWORK\nLDI  F0007.0\nRST  G0004.3\nEND\n");
     assert_eq!(found(&paired), []);
@@ -255,7 +266,11 @@ fn alarm_bits_and_message_rows_must_match_once_the_table_is_kept() {
         ],
         "{f:?}"
     );
-    assert!(f[0].3.starts_with("A0000.2 is set here but has no row"));
+    assert!(
+        f[0].3.starts_with(
+            "A0000.2 is set here but its row in the message table has no alarm number"
+        )
+    );
     assert!(f[1].3.starts_with("A0000.3: alarm 1001 has a message"));
     // Every row set, every set bit with a row.
     let kept = text.replace("RST  A0000.4", "SET  A0000.4");

@@ -26,16 +26,23 @@ pub fn check_scenarios(project: &Project, sink: &mut Sink) {
         if let Some((en, zh)) = name_error(&s.name, &project.scenarios[..i], None) {
             sink.report(Origin::None, Code::W019ScenarioBroken, en, zh);
         }
-        if let Err(e) = resolve(s, project, &options) {
-            sink.report(
-                Origin::Cell {
-                    row: e.line as u32 - 1,
-                    col: 0,
-                },
-                Code::W019ScenarioBroken,
-                format!("scenario `{}`, line {}: {}", s.name, e.line, e.message),
-                format!("场景 `{}` 第 {} 行：{}", s.name, e.line, e.message_zh),
-            );
+        // Line by line, so every bad line is reported, not only the first.
+        for (k, line) in s.lines.iter().enumerate() {
+            let one = crate::scenario::Scenario {
+                lines: vec![line.clone()],
+                ..s.clone()
+            };
+            if let Err(e) = resolve(&one, project, &options) {
+                sink.report(
+                    Origin::Cell {
+                        row: k as u32,
+                        col: 0,
+                    },
+                    Code::W019ScenarioBroken,
+                    format!("scenario `{}`, line {}: {}", s.name, k + 1, e.message),
+                    format!("场景 `{}` 第 {} 行：{}", s.name, k + 1, e.message_zh),
+                );
+            }
         }
     }
 }

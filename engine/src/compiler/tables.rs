@@ -17,14 +17,21 @@ use crate::model::tables::{
 };
 use std::collections::HashMap;
 
-/// The "block" numbers of the tables, after every ladder block, in the tree's order.
-const SYMBOLS: usize = usize::MAX - 6;
-const DATA: usize = usize::MAX - 5;
-pub(super) const MESSAGES: usize = usize::MAX - 4;
-const DIAGNOSIS: usize = usize::MAX - 3;
-const PERMISSIONS: usize = usize::MAX - 2;
-pub(super) const MCODES: usize = usize::MAX - 1;
-const VERSION: usize = usize::MAX;
+/// The "block" numbers of the tables, after every ladder block, in the tree's order (a
+/// diagnostic's place names them; the editor turns them into the table's view).
+pub const SYMBOLS: usize = usize::MAX - 6;
+/// The data-setting tables.
+pub const DATA: usize = usize::MAX - 5;
+/// The display-message table.
+pub const MESSAGES: usize = usize::MAX - 4;
+/// The diagnosis table.
+pub const DIAGNOSIS: usize = usize::MAX - 3;
+/// The permission table.
+pub const PERMISSIONS: usize = usize::MAX - 2;
+/// The M-code comment table.
+pub const MCODES: usize = usize::MAX - 1;
+/// The version information.
+pub const VERSION: usize = usize::MAX;
 
 /// Reports every comment of a row longer than the CNC keeps (W007), each at its language's
 /// column: the tables show one comment column per language (`comments::LANGUAGES`, in that

@@ -61,23 +61,28 @@ impl Machine {
                 Undo::Force(*addr, state, t, old)
             }
             Action::Knob { input, mask, value } => {
-                let t = Target::whole(*input);
                 let old = self.plc.read(*input, 1);
-                let mask = i64::from(*mask);
-                self.plc
-                    .write(*input, 1, (old & 0xff & !mask) | (value & mask));
-                Undo::Write(t, old)
+                let m = i64::from(*mask);
+                self.plc.write(*input, 1, (old & 0xff & !m) | (value & m));
+                Undo::Knob {
+                    input: *input,
+                    mask: *mask,
+                    old,
+                }
             }
             Action::Fault(i, f) => {
                 let plant = self.plant.as_mut().expect("checked before acting");
                 let old = plant.fault(*i);
                 plant.set_fault(*i, Some(*f));
-                Undo::Fault(*i, old)
+                let name = plant.names().nth(*i).unwrap_or_default().to_string();
+                Undo::Fault(name, old)
             }
         }
     }
 
-    /// Releases an applied scenario: its actions are undone last first.
+    /// Releases an applied scenario: its actions are undone last first. A scenario applied
+    /// later that changed the same thing must be released first, or each release would put
+    /// back a state the other one made.
     pub(super) fn release_scenario(&mut self, name: &str) -> Result<(), Refusal> {
         let Some(k) = self.applied.iter().position(|(n, _)| n == name) else {
             return Err(Refusal::new(
@@ -85,18 +90,40 @@ impl Machine {
                 format!("场景 `{name}` 没有应用"),
             ));
         };
+        let later = self.applied[k + 1..].iter().find(|(_, theirs)| {
+            theirs
+                .iter()
+                .any(|t| self.applied[k].1.iter().any(|u| u.overlaps(t)))
+        });
+        if let Some((other, _)) = later {
+            return Err(Refusal::new(
+                format!(
+                    "scenario `{name}` changed what `{other}`, applied after it, changed too: release `{other}` first"
+                ),
+                format!(
+                    "场景 `{name}` 与其后应用的 `{other}` 改动了相同的对象：请先解除 `{other}`"
+                ),
+            ));
+        }
         let (_, undo) = self.applied.remove(k);
         for u in undo.into_iter().rev() {
             match u {
                 Undo::Write(t, v) => self.plc.write(t.address, t.bytes, v),
+                Undo::Knob { input, mask, old } => {
+                    let now = self.plc.read(input, 1);
+                    let m = i64::from(mask);
+                    self.plc.write(input, 1, (now & 0xff & !m) | (old & m));
+                }
                 Undo::Force(a, state, t, v) => {
                     // The value first: a force put back wins over it, as it did before.
                     self.plc.unforce(a);
                     self.plc.write(t.address, t.bytes, v);
                     self.plc.restore_force(a, state);
                 }
-                Undo::Fault(i, f) => {
-                    if let Some(p) = &mut self.plant {
+                Undo::Fault(device, f) => {
+                    if let Some(p) = &mut self.plant
+                        && let Some(i) = p.find(&device)
+                    {
                         p.set_fault(i, f);
                     }
                 }

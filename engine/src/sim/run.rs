@@ -173,10 +173,10 @@ pub fn run_with(
                     reported_halt = false;
                 }
                 if let Err(e) = machine.apply(c) {
-                    let who = if matches!(c, MachineCommand::Device(..)) {
-                        "device"
-                    } else {
-                        "cnc"
+                    let who = match c {
+                        MachineCommand::Device(..) => "device",
+                        MachineCommand::Scenario(..) | MachineCommand::Release(..) => "scenario",
+                        _ => "cnc",
                     };
                     out.output.push(format!("{name}:{line}: {who}: {e}"));
                     out.failed += 1;

@@ -41,7 +41,9 @@ fn fresh_name(list: &[Scenario]) -> String {
 }
 
 /// Every line of `lines` that does not read, as (line, message).
-fn line_errors(project: &Project, s: &Scenario, lang: Lang) -> Vec<(usize, String)> {
+/// Every line of the text being typed that would not apply, as (line of the text, from 1,
+/// and the reason); blank lines and comments are skipped, as when the scenario is applied.
+fn line_errors(project: &Project, s: &Scenario, text: &str, lang: Lang) -> Vec<(usize, String)> {
     let read_file = |p: &str| Err(format!("no file `{p}` is read by a scenario"));
     let options = Options {
         cnc: true,
@@ -51,9 +53,9 @@ fn line_errors(project: &Project, s: &Scenario, lang: Lang) -> Vec<(usize, Strin
     };
     // Checked line by line, so every bad line shows, not only the first.
     let mut errors = Vec::new();
-    for (k, line) in s.lines.iter().enumerate() {
+    for (k, line) in text.lines().enumerate() {
         let one = Scenario {
-            lines: vec![line.clone()],
+            lines: vec![line.to_string()],
             ..s.clone()
         };
         if let Err(e) = resolve(&one, project, &options) {
@@ -124,8 +126,12 @@ fn page_ui(
                 state.scenario_draft = None;
                 events.push(TableEvent::Apply(TableEdit::Scenarios(next)));
             }
+            // An applied scenario stays until it is released (the machine knows it by name).
             let delete = egui::Button::new(Msg::ScenarioDelete.text(lang));
-            if ui.add_enabled(!list.is_empty(), delete).clicked() {
+            if ui
+                .add_enabled(!list.is_empty() && !state.scenario_online.1, delete)
+                .clicked()
+            {
                 let mut next = list.clone();
                 next.remove(selected);
                 state.scenario_draft = None;
@@ -172,7 +178,16 @@ fn editor_ui(
             commit |= r.lost_focus();
             ui.end_row();
         });
-    let name_problem = name_error(draft.name.trim(), list, Some(index));
+    // An applied scenario is released by its name: it keeps it until it is released.
+    let renaming_applied = state.scenario_online.1 && draft.name.trim() != s.name;
+    let name_problem = if renaming_applied {
+        Some((
+            Msg::ScenarioRenameApplied.text(Lang::En).to_string(),
+            Msg::ScenarioRenameApplied.text(Lang::Zh).to_string(),
+        ))
+    } else {
+        name_error(draft.name.trim(), list, Some(index))
+    };
     if let Some((en, zh)) = &name_problem {
         let text = if lang == Lang::Zh { zh } else { en };
         ui.colored_label(ui.visuals().error_fg_color, text);
@@ -204,7 +219,7 @@ fn editor_ui(
         next[index] = edited.clone();
         events.push(TableEvent::Apply(TableEdit::Scenarios(next)));
     }
-    let errors = line_errors(project, &edited, lang);
+    let errors = line_errors(project, &edited, &draft.lines, lang);
     if errors.is_empty() {
         ui.label(egui::RichText::new(Msg::ScenarioOk.text(lang)).weak());
     }
