@@ -113,13 +113,7 @@ impl Vm {
         let g_base = self.layout.area_range(Area::G).start as u32;
         let d_range = self.layout.area_range(Area::D);
         let forcing = !self.forced_bytes.is_empty();
-        // Whether recording may start or stop at a network: recording, unless every network
-        // is recorded (coverage); not recording, when any network is watched.
-        let watching = if TRACE {
-            !self.covering
-        } else {
-            self.watch_count > 0
-        };
+        let watching = self.switching::<TRACE>();
         let mut r = Regs {
             pc,
             acc: 0,
@@ -239,10 +233,7 @@ impl Vm {
                     };
                     functions::exec(f, r.acc != 0, &mut states[f.state as usize], &mut cx);
                     if TRACE && r.acc != 0 {
-                        let o = functions::outcome(f, mem);
-                        if o < functions::NO_OUTCOME {
-                            trace[at as usize] |= 8 << o;
-                        }
+                        record_outcome(trace, at, functions::outcome(f, mem));
                     }
                     if forcing {
                         self.apply_forces();
@@ -275,6 +266,25 @@ impl Vm {
                 | VmOp::Mpp => unreachable!("the hot loop runs every other basic word"),
             }
         }
+    }
+}
+
+impl Vm {
+    /// Whether recording may start or stop at a network marker: recording, unless every
+    /// network is recorded (coverage); not recording, when any network is watched.
+    fn switching<const TRACE: bool>(&self) -> bool {
+        if TRACE {
+            !self.covering
+        } else {
+            self.watch_count > 0
+        }
+    }
+}
+
+/// Records a compare's result (bits 3 to 5) for coverage; nothing for [`functions::NO_OUTCOME`].
+fn record_outcome(trace: &mut [u8], at: u32, outcome: u8) {
+    if outcome < functions::NO_OUTCOME {
+        trace[at as usize] |= 8 << outcome;
     }
 }
 
