@@ -30,9 +30,9 @@ enum Exit {
 }
 
 impl Vm {
-    /// Runs a level from word `pc`. Returns where level 2 stopped for this tick (`None` when
-    /// it reached its end), or why the PLC halted.
-    pub(super) fn run(
+    /// Runs a level from word `pc` in the interpreter. Returns where level 2 stopped for this
+    /// tick (`None` when it reached its end), or why the PLC halted.
+    pub(super) fn run_interp(
         &mut self,
         pc: u32,
         level: Level,
@@ -66,7 +66,7 @@ impl Vm {
         result
     }
 
-    fn halt_at(&self, pc: u32, level: Level) -> Halt {
+    pub(super) fn halt_at(&self, pc: u32, level: Level) -> Halt {
         let net = self
             .code
             .networks
@@ -110,8 +110,6 @@ impl Vm {
             WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
         };
         let now = self.now_ms();
-        let g_base = self.layout.area_range(Area::G).start as u32;
-        let d_range = self.layout.area_range(Area::D);
         let forcing = !self.forced_bytes.is_empty();
         let watching = self.switching::<TRACE>();
         let mut r = Regs {
@@ -207,36 +205,14 @@ impl Vm {
                     }
                 }
                 VmOp::Fn => {
-                    let Vm {
-                        code,
-                        mem,
-                        states,
-                        window,
-                        latches,
-                        trace,
-                        ..
-                    } = self;
-                    let f = &code.fns[arg as usize];
                     if TRACE {
-                        record(trace, at, r.acc);
+                        record(&mut self.trace, at, r.acc);
                     }
-                    r.steps += u64::from(f.cost);
-                    let mut cx = Ctx {
-                        mem,
-                        consts: &code.consts,
-                        now,
-                        cnc: &mut *cnc,
-                        window,
-                        latch: &mut latches[f.state as usize],
-                        g_base,
-                        d_range: d_range.clone(),
-                    };
-                    functions::exec(f, r.acc != 0, &mut states[f.state as usize], &mut cx);
+                    r.steps += u64::from(self.code.fns[arg as usize].cost);
+                    self.exec_fn(arg, r.acc != 0, now, cnc);
                     if TRACE && r.acc != 0 {
-                        record_outcome(trace, at, functions::outcome(f, mem));
-                    }
-                    if forcing {
-                        self.apply_forces();
+                        let f = &self.code.fns[arg as usize];
+                        record_outcome(&mut self.trace, at, functions::outcome(f, &self.mem));
                     }
                 }
                 VmOp::Ret => match self.frames.pop() {
@@ -270,6 +246,36 @@ impl Vm {
 }
 
 impl Vm {
+    /// Runs function instruction `index` with ACT = `act`, then the forces: the one way both
+    /// engines run one.
+    pub(super) fn exec_fn(&mut self, index: u32, act: bool, now: u64, cnc: &mut dyn Cnc) {
+        let g_base = self.layout.area_range(Area::G).start as u32;
+        let d_range = self.layout.area_range(Area::D);
+        let Vm {
+            code,
+            mem,
+            states,
+            window,
+            latches,
+            ..
+        } = self;
+        let f = &code.fns[index as usize];
+        let mut cx = Ctx {
+            mem,
+            consts: &code.consts,
+            now,
+            cnc,
+            window,
+            latch: &mut latches[f.state as usize],
+            g_base,
+            d_range,
+        };
+        functions::exec(f, act, &mut states[f.state as usize], &mut cx);
+        if !self.forced_bytes.is_empty() {
+            self.apply_forces();
+        }
+    }
+
     /// Whether recording may start or stop at a network marker: recording, unless every
     /// network is recorded (coverage); not recording, when any network is watched.
     fn switching<const TRACE: bool>(&self) -> bool {

@@ -10,6 +10,8 @@ pub mod code;
 mod exec;
 pub(crate) use exec::decides;
 mod functions;
+pub mod native;
+pub use native::Engine;
 pub mod memory;
 pub mod monitor;
 pub mod swap;
@@ -128,6 +130,10 @@ pub struct Vm {
     trace: Vec<u8>,
     /// Whether coverage is being measured: the trace's seen bits since it was turned on.
     covering: bool,
+    /// The engine chosen for the scan.
+    engine: Engine,
+    /// The program's machine code, when generated (see [`native`]).
+    native: Option<native::Native>,
     profile: &'static Profile,
 }
 
@@ -164,7 +170,14 @@ impl Vm {
                 latches[f.state as usize] = vec![0; d.len() / 4];
             }
         }
+        let engine = Engine::default_for_build();
+        let native = match engine {
+            Engine::Interpreter => None,
+            Engine::Native | Engine::Checked => native::Native::new(&code),
+        };
         Ok(Vm {
+            engine,
+            native,
             latches,
             states: vec![InstState::default(); code.states as usize],
             frames: Vec::with_capacity(program.blocks.len() + 1),

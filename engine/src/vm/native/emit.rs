@@ -1,0 +1,314 @@
+//! Code generation: the checked words of a [`Code`] to x86-64, word by word, in one pass.
+//!
+//! Bit logic is straight-line code on the image, addressed directly (`[rbx + byte]`): a
+//! contact is a `test` and a `setcc`, a coil two or four read-modify-writes, a block or
+//! branch push one `lea`. Steps are counted at generation time and added to `r14` only
+//! where a run can leave or join the straight line (a jump, call, return, label, or level
+//! 2's quota check), so a run counts exactly what the interpreter counts. Function
+//! instructions call one helper with their index and the accumulator; CALL is a native call
+//! with the caller's logic state pushed; RET a native return.
+//!
+//! Level 2's own code is generated twice: with a quota check at every network (a divided
+//! level 2, which suspends there) and without (division 1, the usual case). Subprograms and
+//! level 1 never check.
+
+use super::super::IMAGE_BYTES;
+use super::super::code::{C_INVERT, C_LOAD_OR, C_OR, C_PUSH, C_START, CONTACT_END, Code, VmOp};
+use super::asm::{Asm, Cond};
+use super::{CTX_BUDGET, CTX_EXIT_KIND, CTX_EXIT_PC, CTX_QUOTA, CTX_STEPS, ExitKind};
+
+/// Where a rel32 field must point once everything is placed.
+enum Target {
+    /// A word's code in the main pass.
+    Word(u32),
+    /// A word's code in level 2's unchecked copy (a jump inside it).
+    Whole(u32),
+}
+
+/// The generated code and where to enter it.
+pub(super) struct Generated {
+    /// Machine code, entry function first.
+    pub bytes: Vec<u8>,
+    /// Byte offset of each word's code in the main pass (level 2 with its quota checks).
+    pub offsets: Vec<u32>,
+    /// Byte offset of level 2's entry in its unchecked copy.
+    pub whole_level2: u32,
+}
+
+struct Gen<'a> {
+    asm: Asm,
+    code: &'a Code,
+    helper: u64,
+    /// Steps executed since the last point where `r14` was brought up to date.
+    pending: u32,
+    /// Whether the stacks may hold something (so a rung's start must empty them).
+    dirty: bool,
+    /// Whether word indices are jump or call targets (join points).
+    targets: Vec<bool>,
+    fixups: Vec<(usize, Target)>,
+    stubs: Vec<(ExitKind, u32, usize)>,
+}
+
+/// Generates code for `code`, whose function instructions call `helper`.
+pub(super) fn generate(code: &Code, helper: u64) -> Generated {
+    let words = code.words();
+    let mut targets = vec![false; words.len()];
+    for &w in words {
+        if matches!(VmOp::decode(w), Some(VmOp::Jmpb | VmOp::Call | VmOp::Callu)) {
+            targets[(w >> 8) as usize] = true;
+        }
+    }
+    let mut g = Gen {
+        asm: Asm::default(),
+        code,
+        helper,
+        pending: 0,
+        dirty: true,
+        targets,
+        fixups: Vec::new(),
+        stubs: Vec::new(),
+    };
+    g.asm.prologue(CTX_STEPS, CTX_EXIT_KIND);
+    let exit = g.asm.here();
+    g.asm.epilogue(CTX_STEPS);
+    // Level 2's own words: from its entry to the first RET.
+    let l2 = code.level2 as usize;
+    let l2_end = l2
+        + words[l2..]
+            .iter()
+            .position(|&w| VmOp::decode(w) == Some(VmOp::Ret))
+            .expect("every block ends with RET");
+    let mut offsets = vec![0u32; words.len()];
+    for (at, offset) in offsets.iter_mut().enumerate() {
+        let checked = (l2..l2_end).contains(&at);
+        g.join(at, checked);
+        *offset = g.asm.here() as u32;
+        g.word(at as u32, checked, false);
+    }
+    let mut whole = vec![0u32; l2_end + 1 - l2];
+    g.pending = 0;
+    g.dirty = true;
+    for (i, offset) in whole.iter_mut().enumerate() {
+        g.join(l2 + i, false);
+        *offset = g.asm.here() as u32;
+        g.word((l2 + i) as u32, false, true);
+    }
+    for (kind, pc, at) in std::mem::take(&mut g.stubs) {
+        let stub = g.asm.here();
+        g.asm.patch_rel32(at, stub);
+        g.asm.store_ctx32(CTX_EXIT_PC, pc);
+        g.asm.store_ctx32(CTX_EXIT_KIND, kind as u32);
+        let j = g.asm.jmp();
+        g.asm.patch_rel32(j, exit);
+    }
+    for (at, target) in std::mem::take(&mut g.fixups) {
+        let to = match target {
+            Target::Word(w) => offsets[w as usize],
+            Target::Whole(w) => whole[w as usize - l2],
+        };
+        g.asm.patch_rel32(at, to as usize);
+    }
+    Generated {
+        bytes: g.asm.bytes,
+        offsets,
+        whole_level2: whole[0],
+    }
+}
+
+impl Gen<'_> {
+    /// Brings `r14` up to date.
+    fn flush(&mut self) {
+        self.asm.add_steps(self.pending);
+        self.pending = 0;
+    }
+
+    /// Before word `at`: where a run may enter (a jump or call target, and level 2's
+    /// network markers where a divided level 2 resumes), `r14` is up to date and the
+    /// stacks' contents unknown.
+    fn join(&mut self, at: usize, checked: bool) {
+        let resume = checked && VmOp::decode(self.code.words()[at]) == Some(VmOp::Net);
+        if self.targets[at] || resume {
+            self.flush();
+            self.dirty = true;
+        }
+    }
+
+    fn stub(&mut self, at: usize, kind: ExitKind, pc: u32) {
+        self.stubs.push((kind, pc, at));
+    }
+
+    /// Generates word `at`. `checked`: a network marker checks level 2's quota. `whole`: the
+    /// word is in level 2's unchecked copy, so its jumps stay in that copy.
+    fn word(&mut self, at: u32, checked: bool, whole: bool) {
+        let w = self.code.words()[at as usize];
+        let arg = w >> 8;
+        let op = w & 0xFF;
+        let disp = (arg >> 3) & (IMAGE_BYTES as u32 - 1);
+        let mask = 1u8 << (arg & 7);
+        if op < CONTACT_END {
+            self.contact(op, disp, mask);
+            self.pending += 1;
+            return;
+        }
+        let Some(vm_op) = VmOp::decode(w) else {
+            unreachable!("Code::checked refused every word without an opcode");
+        };
+        let a = &mut self.asm;
+        match vm_op {
+            VmOp::Orb | VmOp::Anb => {
+                a.pop_blocks();
+                a.setcc_cl(Cond::Carry);
+                if vm_op == VmOp::Orb {
+                    a.or_al_cl();
+                } else {
+                    a.and_al_cl();
+                }
+                self.pending += 1;
+            }
+            VmOp::Mps => {
+                a.push_branches();
+                self.dirty = true;
+                self.pending += 1;
+            }
+            VmOp::Mrd => {
+                a.read_branch();
+                self.pending += 1;
+            }
+            VmOp::Mpp => {
+                a.pop_branches();
+                a.setcc_al(Cond::Carry);
+                self.pending += 1;
+            }
+            VmOp::Out | VmOp::Outn => {
+                let shift = arg as u8 & 7;
+                if vm_op == VmOp::Out && shift == 0 {
+                    a.and_mem_imm(disp, !mask);
+                    a.or_mem_reg(disp, true);
+                } else {
+                    a.mov_ecx_eax();
+                    if vm_op == VmOp::Outn {
+                        a.xor_ecx_1();
+                    }
+                    a.shl_ecx(shift);
+                    a.and_mem_imm(disp, !mask);
+                    a.or_mem_reg(disp, false);
+                }
+                self.pending += 1;
+            }
+            VmOp::Set => {
+                let shift = arg as u8 & 7;
+                if shift == 0 {
+                    a.or_mem_reg(disp, true);
+                } else {
+                    a.mov_ecx_eax();
+                    a.shl_ecx(shift);
+                    a.or_mem_reg(disp, false);
+                }
+                self.pending += 2;
+            }
+            VmOp::Rst => {
+                // ecx = acc − 1 (all ones when off) | !mask: !mask when on, 0xFF when off.
+                a.ecx_acc_minus_one();
+                a.or_ecx_imm8(!mask);
+                a.and_mem_cl(disp);
+                self.pending += 2;
+            }
+            VmOp::Lbl => self.pending += 2,
+            VmOp::Jmpb => self.jump(at, arg, whole),
+            VmOp::Call | VmOp::Callu => {
+                self.pending += 2;
+                self.flush();
+                let a = &mut self.asm;
+                if vm_op == VmOp::Call {
+                    a.test_acc();
+                    // Over the save (5 bytes), the call (5) and the restore (5).
+                    a.jz_short(15);
+                }
+                a.save_logic();
+                let c = a.call();
+                a.restore_logic();
+                self.fixups.push((c, Target::Word(arg)));
+            }
+            VmOp::Net => {
+                if checked {
+                    // `join` brought r14 up to date: a resumed run enters here.
+                    self.asm.cmp_steps_ctx(CTX_QUOTA);
+                    let j = self.asm.jcc(Cond::AboveEq);
+                    self.stub(j, ExitKind::Suspend, at);
+                }
+            }
+            VmOp::Fn => {
+                let f = &self.code.fns[arg as usize];
+                self.pending += f.cost;
+                self.asm.call_helper(self.helper, arg);
+                self.asm.test_ecx();
+                let j = self.asm.jcc(Cond::NotZero);
+                self.stub(j, ExitKind::Panic, at);
+            }
+            VmOp::Ret => {
+                self.flush();
+                self.asm.ret();
+                self.dirty = true;
+            }
+            _ => unreachable!("contacts are handled above"),
+        }
+    }
+
+    /// A contact: `test` its bit, then load, and or or it into the accumulator.
+    fn contact(&mut self, op: u32, disp: u32, mask: u8) {
+        let a = &mut self.asm;
+        let on = if op & C_INVERT != 0 {
+            Cond::Zero
+        } else {
+            Cond::NotZero
+        };
+        if op & C_START != 0 && self.dirty {
+            a.clear_stacks();
+            self.dirty = false;
+        }
+        if op & C_PUSH != 0 {
+            a.push_blocks();
+            self.dirty = true;
+        }
+        a.test_mem(disp, mask);
+        match (op & C_OR != 0, op & C_LOAD_OR != 0) {
+            // LD: the value itself.
+            (false, true) => a.setcc_al(on),
+            // AND
+            (false, false) => {
+                a.setcc_cl(on);
+                a.and_al_cl();
+            }
+            // OR
+            (true, _) => {
+                a.setcc_cl(on);
+                a.or_al_cl();
+            }
+        }
+    }
+
+    /// JMPB: taken while the accumulator is 1; a backward jump first checks the watchdog.
+    fn jump(&mut self, at: u32, target: u32, whole: bool) {
+        self.pending += 2;
+        self.flush();
+        let a = &mut self.asm;
+        a.test_acc();
+        let skip = a.jcc(Cond::Zero);
+        if target <= at {
+            a.cmp_steps_ctx(CTX_BUDGET);
+            let j = a.jcc(Cond::Above);
+            self.stub(j, ExitKind::Watchdog, at);
+        }
+        let j = self.asm.jmp();
+        self.fixups.push((
+            j,
+            if whole {
+                Target::Whole(target)
+            } else {
+                Target::Word(target)
+            },
+        ));
+        let here = self.asm.here();
+        self.asm.patch_rel32(skip, here);
+    }
+}
