@@ -260,7 +260,7 @@ fn bench_prints_its_figures_last() {
         .collect();
     assert_eq!(
         keys,
-        ["steps", "scans", "ns_per_scan", "ns_per_step"],
+        ["steps", "scans", "ns_per_scan", "ns_per_step", "engine"],
         "{last}"
     );
     assert!(

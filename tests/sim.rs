@@ -8,13 +8,18 @@ use ladder_engine::catalog::InstrClass;
 use ladder_tests::{here, read, run_scripts, scripts};
 use std::collections::BTreeSet;
 
+/// On each engine: the interpreter, the native code, and both checked against each other
+/// after every level of every tick.
 #[test]
-fn every_manual_example_script_passes() {
+fn every_manual_example_script_passes_on_every_engine() {
     let scripts = scripts(&here().join("sim"));
     assert!(scripts.len() >= 40, "only {} scripts", scripts.len());
-    let (failures, expects) = run_scripts(&scripts, |s| s.with_extension("il"), &[]);
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
-    assert!(expects > 500, "only {expects} expectations ran");
+    for engine in ["interp", "native", "checked"] {
+        let (failures, expects) =
+            run_scripts(&scripts, |s| s.with_extension("il"), &["--engine", engine]);
+        assert!(failures.is_empty(), "{engine}: {}", failures.join("\n"));
+        assert!(expects > 500, "{engine}: only {expects} expectations ran");
+    }
 }
 
 /// The mnemonics written as instructions in the programs of the scripts in `folder`: the

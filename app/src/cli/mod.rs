@@ -2,6 +2,7 @@
 //! input that fails (compile errors), 2 unusable input (missing, unreadable or corrupt file, bad
 //! arguments).
 
+mod callgrind;
 mod coverage;
 mod print;
 mod running;
@@ -16,6 +17,7 @@ use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
 use ladder_engine::model::Project;
 use ladder_engine::sim;
+use ladder_engine::vm::Engine;
 use ladder_engine::{file, il};
 use std::ffi::OsString;
 use std::io::Write;
@@ -92,6 +94,9 @@ pub enum Command {
     Sim {
         /// A project (.ldp) or an instruction list (.il).
         path: PathBuf,
+        /// The scan engine (default: native where available, checked in a debug build).
+        #[arg(long, value_enum)]
+        engine: Option<EngineArg>,
         /// The stimulus script.
         #[arg(long)]
         script: PathBuf,
@@ -116,6 +121,9 @@ pub enum Command {
     Test {
         /// A project (.ldp) or an instruction list (.il).
         path: PathBuf,
+        /// The scan engine (default: native where available, checked in a debug build).
+        #[arg(long, value_enum)]
+        engine: Option<EngineArg>,
         /// Also write the results as JUnit XML, for a CI server.
         #[arg(long, value_name = "OUT.xml")]
         junit: Option<PathBuf>,
@@ -133,6 +141,13 @@ pub enum Command {
     Bench {
         /// A project (.ldp) or an instruction list (.il).
         path: PathBuf,
+        /// The scan engine (default: native where available, checked in a debug build).
+        #[arg(long, value_enum)]
+        engine: Option<EngineArg>,
+        /// Also count machine instructions per scan and per step with valgrind's callgrind
+        /// (steady on a busy machine, where the clock is not).
+        #[arg(long)]
+        instructions: bool,
         /// Scans to time, 1 to 100000000.
         #[arg(long, default_value_t = 10_000,
               value_parser = clap::value_parser!(u64).range(1..=sim::MAX_TICKS))]
@@ -213,6 +228,7 @@ where
         Some(Command::ImportIl { il, output }) => import_il(&il, &output, say, err),
         Some(Command::Sim {
             path,
+            engine,
             script,
             trace,
             cnc,
@@ -229,13 +245,14 @@ where
                     html: coverage_html.as_deref(),
                 },
             ),
-            (cnc, !no_machine),
+            (cnc, !no_machine, engine.map(EngineArg::engine)),
             say,
             out,
             err,
         ),
         Some(Command::Test {
             path,
+            engine,
             junit,
             jobs,
             coverage,
@@ -249,12 +266,14 @@ where
                     html: coverage_html.as_deref(),
                 },
             ),
-            jobs.map(usize::from),
+            (jobs.map(usize::from), engine.map(EngineArg::engine)),
             say,
             out,
         ),
         Some(Command::Bench {
             path,
+            engine,
+            instructions,
             scans,
             cnc,
             script,
@@ -262,7 +281,7 @@ where
             coverage,
         }) => running::bench(
             &path,
-            scans,
+            (scans, engine.map(EngineArg::engine), instructions),
             (cnc, !no_machine, coverage),
             script.as_deref(),
             say,
@@ -476,9 +495,53 @@ fn program_of(path: &Path, say: Say) -> anyhow::Result<ladder_engine::compiler::
     })
 }
 
+/// `--engine`: the scan engines by their command-line names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum EngineArg {
+    /// The interpreter, the reference.
+    Interp,
+    /// Generated machine code.
+    Native,
+    /// Both, checked against each other at every tick.
+    Checked,
+}
+
+impl EngineArg {
+    fn engine(self) -> Engine {
+        match self {
+            EngineArg::Interp => Engine::Interpreter,
+            EngineArg::Native => Engine::Native,
+            EngineArg::Checked => Engine::Checked,
+        }
+    }
+}
+
 /// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the
 /// program cannot run (exit 1).
 fn machine(
+    path: &Path,
+    (cnc, engine): (bool, Option<Engine>),
+    say: Say,
+    err: &mut dyn Write,
+) -> anyhow::Result<Result<Machine, i32>> {
+    let mut built = machine_of(path, cnc, say, err)?;
+    if let (Ok(m), Some(engine)) = (&mut built, engine)
+        && m.plc_mut().set_engine(engine) != engine
+    {
+        let _ = writeln!(
+            err,
+            "{}",
+            say.pick(
+                "native code is unavailable on this machine: the interpreter runs the scan",
+                "本机无法生成本机代码：扫描由解释器执行"
+            )
+        );
+    }
+    Ok(built)
+}
+
+/// Builds the machine that runs `path`, on the engine a new PLC starts with.
+fn machine_of(
     path: &Path,
     cnc: bool,
     say: Say,

@@ -6,6 +6,7 @@ use super::{Say, machine};
 use ladder_engine::coverage::Coverage;
 use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Control, Progress, Script};
+use ladder_engine::vm::Engine;
 use ladder_engine::vm::cnc::Cnc;
 use std::io::Write;
 use std::path::Path;
@@ -111,7 +112,7 @@ pub(super) fn read_script(
 pub(super) fn sim(
     path: &Path,
     (script_path, trace, coverage): (&Path, Option<&Path>, super::coverage::Outputs<'_>),
-    (cnc, devices): (bool, bool),
+    (cnc, devices, engine): (bool, bool, Option<Engine>),
     say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
@@ -119,7 +120,7 @@ pub(super) fn sim(
     if !script_path.exists() {
         anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
     }
-    let mut machine = match machine(path, cnc, say, err)? {
+    let mut machine = match machine(path, (cnc, engine), say, err)? {
         Ok(m) if devices => m,
         Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
@@ -214,14 +215,14 @@ pub(super) fn sim(
 /// early and the figures cover the scans timed.
 pub(super) fn bench(
     path: &Path,
-    scans: u64,
+    (scans, engine, instructions): (u64, Option<Engine>, bool),
     (cnc, devices, coverage): (bool, bool, bool),
     setup: Option<&Path>,
     say: Say,
     out: &mut dyn Write,
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
-    let mut machine = match machine(path, cnc, say, err)? {
+    let mut machine = match machine(path, (cnc, engine), say, err)? {
         Ok(m) if devices => m,
         Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
@@ -341,12 +342,43 @@ pub(super) fn bench(
             100.0 * per / ns_per_scan.max(1.0)
         );
     }
+    let engine = machine.plc().engine();
+    if instructions && !stopped {
+        let mut args: Vec<std::ffi::OsString> = vec![path.into(), "--engine".into()];
+        args.push(engine.name().into());
+        for (on, flag) in [
+            (cnc, "--cnc"),
+            (!devices, "--no-machine"),
+            (coverage, "--coverage"),
+        ] {
+            if on {
+                args.push(flag.into());
+            }
+        }
+        if let Some(s) = setup {
+            args.extend(["--script".into(), s.into()]);
+        }
+        match super::callgrind::per_scan(&args, scans) {
+            Ok(per) => {
+                let _ = writeln!(
+                    out,
+                    "instructions_per_scan={per:.0} instructions_per_step={:.2}",
+                    per / steps.max(1.0)
+                );
+            }
+            Err(e) => {
+                let _ = writeln!(err, "{}", e.text(say.zh));
+                return Ok(1);
+            }
+        }
+    }
     let _ = writeln!(
         out,
-        "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3}",
+        "steps={} scans={scans} ns_per_scan={:.1} ns_per_step={:.3} engine={}",
         steps.round() as u64,
         ns_per_scan,
-        ns_per_scan / steps.max(1.0)
+        ns_per_scan / steps.max(1.0),
+        engine.name()
     );
     Ok(if stopped { STOPPED } else { 0 })
 }

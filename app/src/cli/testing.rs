@@ -12,6 +12,7 @@ use super::running::{STOPPED, read_script, stop_on_ctrl_c};
 use ladder_engine::compiler::Program;
 use ladder_engine::coverage::Coverage;
 use ladder_engine::sim::{self, Control};
+use ladder_engine::vm::Engine;
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -121,13 +122,13 @@ pub fn cases(folder: &Path) -> std::io::Result<Vec<Case>> {
 fn run_case(
     project: &Path,
     case: &Case,
-    (stop, program): (&AtomicBool, Option<&Program>),
+    (stop, program, engine): (&AtomicBool, Option<&Program>, Option<Engine>),
     say: Say,
 ) -> Ran {
     let start = Instant::now();
     let mut said = Vec::new();
     let mut ran = Ran::default();
-    let machine = match super::machine(project, case.cnc, say, &mut said) {
+    let machine = match super::machine(project, (case.cnc, engine), say, &mut said) {
         Ok(Ok(m)) if case.devices => Some(m),
         Ok(Ok(m)) => Some(m.without_devices()),
         Ok(Err(_)) => None,
@@ -180,7 +181,7 @@ fn run_case(
 fn run_all(
     project: &Path,
     cases: &[Case],
-    (jobs, stop, program): (usize, &AtomicBool, Option<&Program>),
+    (jobs, stop, program, engine): (usize, &AtomicBool, Option<&Program>, Option<Engine>),
     say: Say,
 ) -> Vec<Ran> {
     let next = AtomicUsize::new(0);
@@ -197,7 +198,7 @@ fn run_all(
                         if stop.load(Ordering::SeqCst) {
                             break;
                         }
-                        let ran = run_case(project, case, (stop, program), say);
+                        let ran = run_case(project, case, (stop, program, engine), say);
                         if let Ok(mut r) = results.lock() {
                             r[i] = Some(ran);
                         }
@@ -221,7 +222,7 @@ fn run_all(
                 stopped: true,
                 ..Ran::default()
             },
-            None => run_case(project, case, (stop, program), say),
+            None => run_case(project, case, (stop, program, engine), say),
         })
         .collect()
 }
@@ -278,7 +279,7 @@ fn junit(project: &Path, cases: &[Case], results: &[Ran]) -> String {
 pub(super) fn test(
     project: &Path,
     (junit_out, coverage_out): (Option<&Path>, super::coverage::Outputs<'_>),
-    jobs: Option<usize>,
+    (jobs, engine): (Option<usize>, Option<Engine>),
     say: Say,
     out: &mut dyn Write,
 ) -> anyhow::Result<i32> {
@@ -321,7 +322,7 @@ pub(super) fn test(
     let results = run_all(
         project,
         &cases,
-        (jobs, stop_on_ctrl_c(), program.as_ref()),
+        (jobs, stop_on_ctrl_c(), program.as_ref(), engine),
         say,
     );
     let mut failed = 0;

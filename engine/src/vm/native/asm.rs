@@ -6,14 +6,14 @@
 //! the caller-saved registers are scratch. Every encoding here is written out with its
 //! operands named, so a reader can check it against the Intel manual's opcode tables.
 
-/// A condition for [`Asm::setcc_al`], [`Asm::setcc_cl`] and [`Asm::jcc`]: the low nibble
+/// A condition for [`Asm::setcc_al`], the `cmov`s and [`Asm::jcc`]: the low nibble
 /// of the `0F 9x` / `0F 8x` opcodes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Cond {
     /// Carry set (a bit shifted out was 1).
     Carry = 0x2,
-    /// Above or equal, unsigned (no carry).
-    AboveEq = 0x3,
+    /// Carry clear.
+    NoCarry = 0x3,
     /// Zero.
     Zero = 0x4,
     /// Not zero.
@@ -68,43 +68,41 @@ impl Asm {
         self.put(&[mask]);
     }
 
-    /// `and byte [rbx + disp], imm`
-    pub fn and_mem_imm(&mut self, disp: u32, imm: u8) {
-        self.put(&[0x80]);
-        self.rbx_disp(4, disp);
-        self.put(&[imm]);
+    /// `movzx edx, byte [rbx + disp]`: a coil byte into the register that holds it.
+    pub fn load_dl(&mut self, disp: u32) {
+        self.put(&[0x0F, 0xB6]);
+        self.rbx_disp(2, disp);
     }
 
-    /// `or byte [rbx + disp], cl` (or `al` when `al`).
-    pub fn or_mem_reg(&mut self, disp: u32, al: bool) {
-        self.put(&[0x08]);
-        self.rbx_disp(if al { 0 } else { 1 }, disp);
+    /// `mov byte [rbx + disp], dl`
+    pub fn store_dl(&mut self, disp: u32) {
+        self.put(&[0x88]);
+        self.rbx_disp(2, disp);
     }
 
-    /// `and byte [rbx + disp], cl`
-    pub fn and_mem_cl(&mut self, disp: u32) {
-        self.put(&[0x20]);
-        self.rbx_disp(1, disp);
+    /// `test dl, mask`
+    pub fn test_dl(&mut self, mask: u8) {
+        self.put(&[0xF6, 0xC2, mask]);
+    }
+
+    /// `and dl, imm`
+    pub fn and_dl_imm(&mut self, imm: u8) {
+        self.put(&[0x80, 0xE2, imm]);
+    }
+
+    /// `or dl, cl` (or `al` when `al`).
+    pub fn or_dl_reg(&mut self, al: bool) {
+        self.put(&[0x08, if al { 0xC2 } else { 0xCA }]);
+    }
+
+    /// `and dl, cl`
+    pub fn and_dl_cl(&mut self) {
+        self.put(&[0x20, 0xCA]);
     }
 
     /// `setCC al`
     pub fn setcc_al(&mut self, c: Cond) {
         self.put(&[0x0F, 0x90 | c as u8, 0xC0]);
-    }
-
-    /// `setCC cl`
-    pub fn setcc_cl(&mut self, c: Cond) {
-        self.put(&[0x0F, 0x90 | c as u8, 0xC1]);
-    }
-
-    /// `and al, cl`
-    pub fn and_al_cl(&mut self) {
-        self.put(&[0x20, 0xC8]);
-    }
-
-    /// `or al, cl`
-    pub fn or_al_cl(&mut self) {
-        self.put(&[0x08, 0xC8]);
     }
 
     /// `lea r12, [rax + r12*2]`: push the accumulator on the block stack.
@@ -164,20 +162,30 @@ impl Asm {
         }
     }
 
-    /// `add r14, n` (nothing for 0).
-    pub fn add_steps(&mut self, n: u32) {
+    /// `add qword [r15 + steps], n` (nothing for 0).
+    pub fn add_steps(&mut self, steps: u8, n: u32) {
         if n == 0 {
         } else if n < 0x80 {
-            self.put(&[0x49, 0x83, 0xC6, n as u8]);
+            self.put(&[0x49, 0x83, 0x47, steps, n as u8]);
         } else {
-            self.put(&[0x49, 0x81, 0xC6]);
+            self.put(&[0x49, 0x81, 0x47, steps]);
             self.put32(n);
         }
     }
 
-    /// `cmp r14, [r15 + disp8]`
-    pub fn cmp_steps_ctx(&mut self, disp: u8) {
-        self.put(&[0x4D, 0x3B, 0x77, disp]);
+    /// `mov rcx, [r15 + steps]; cmp rcx, [r15 + disp8]`
+    pub fn cmp_steps_ctx(&mut self, steps: u8, disp: u8) {
+        self.put(&[0x49, 0x8B, 0x4F, steps, 0x49, 0x3B, 0x4F, disp]);
+    }
+
+    /// `cmovCC eax, ebp`: the accumulator := 0 on the condition (`ebp` is always 0).
+    pub fn acc_zero_if(&mut self, c: Cond) {
+        self.put(&[0x0F, 0x40 | c as u8, 0xC5]);
+    }
+
+    /// `cmovCC eax, r14d`: the accumulator := 1 on the condition (`r14d` is always 1).
+    pub fn acc_one_if(&mut self, c: Cond) {
+        self.put(&[0x41, 0x0F, 0x40 | c as u8, 0xC6]);
     }
 
     /// `test eax, eax`
@@ -263,16 +271,16 @@ impl Asm {
     }
 
     /// The entry, called as `extern "C" fn(ctx, mem, target)`: saves the callee-saved
-    /// registers, keeps `rsp` in `ctx[0]` for the exits, loads the step count from
-    /// `ctx[steps]`, empties the logic state and calls `target`. When the code returns, the
+    /// registers, keeps `rsp` in `ctx[0]` for the exits, sets the constants `ebp` = 0 and
+    /// `r14d` = 1, empties the logic state and calls `target`. When the code returns, the
     /// exit kind is 0 (done); the common exit follows.
-    pub fn prologue(&mut self, steps: u8, kind: u8) {
+    pub fn prologue(&mut self, kind: u8) {
         // push rbx, rbp, r12, r13, r14, r15; sub rsp, 8 (16-byte alignment at the call)
         self.put(&[0x53, 0x55, 0x41, 0x54, 0x41, 0x55, 0x41, 0x56, 0x41, 0x57]);
         self.put(&[0x48, 0x83, 0xEC, 0x08]);
-        // mov r15, rdi; mov rbx, rsi; mov [r15], rsp; mov r14, [r15 + steps]
+        // mov r15, rdi; mov rbx, rsi; mov [r15], rsp; xor ebp, ebp; mov r14d, 1
         self.put(&[0x49, 0x89, 0xFF, 0x48, 0x89, 0xF3, 0x49, 0x89, 0x27]);
-        self.put(&[0x4D, 0x8B, 0x77, steps]);
+        self.put(&[0x31, 0xED, 0x41, 0xBE, 1, 0, 0, 0]);
         // xor eax, eax; empty stacks; call rdx
         self.put(&[0x31, 0xC0]);
         self.clear_stacks();
@@ -280,13 +288,11 @@ impl Asm {
         self.store_ctx32(kind, 0);
     }
 
-    /// The common exit, at [`Asm::here`] when called: stores the step count, restores `rsp`
-    /// from `ctx[0]` and the callee-saved registers, and returns to the caller of the entry.
-    pub fn epilogue(&mut self, steps: u8) {
-        // mov [r15 + steps], r14; mov rsp, [r15]; add rsp, 8
-        self.put(&[
-            0x4D, 0x89, 0x77, steps, 0x49, 0x8B, 0x27, 0x48, 0x83, 0xC4, 0x08,
-        ]);
+    /// The common exit, at [`Asm::here`] when called: restores `rsp` from `ctx[0]` and the
+    /// callee-saved registers, and returns to the caller of the entry.
+    pub fn epilogue(&mut self) {
+        // mov rsp, [r15]; add rsp, 8
+        self.put(&[0x49, 0x8B, 0x27, 0x48, 0x83, 0xC4, 0x08]);
         // pop r15, r14, r13, r12, rbp, rbx; ret
         self.put(&[
             0x41, 0x5F, 0x41, 0x5E, 0x41, 0x5D, 0x41, 0x5C, 0x5D, 0x5B, 0xC3,
@@ -307,8 +313,8 @@ mod tests {
         a.test_mem(0x1234, 0x80);
         assert_eq!(a.bytes, [0xF6, 0x83, 0x34, 0x12, 0, 0, 0x80]);
         let mut a = Asm::default();
-        a.or_mem_reg(0x200, false);
-        assert_eq!(a.bytes, [0x08, 0x8B, 0, 2, 0, 0]);
+        a.store_dl(0x200);
+        assert_eq!(a.bytes, [0x88, 0x93, 0, 2, 0, 0]);
     }
 
     #[test]

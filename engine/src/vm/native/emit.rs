@@ -43,6 +43,9 @@ struct Gen<'a> {
     pending: u32,
     /// Whether the stacks may hold something (so a rung's start must empty them).
     dirty: bool,
+    /// The image byte `dl` holds, changed, for coils in a row that write one byte: written
+    /// back before anything may leave the straight line or read the image otherwise.
+    cached: Option<u32>,
     /// Whether word indices are jump or call targets (join points).
     targets: Vec<bool>,
     fixups: Vec<(usize, Target)>,
@@ -64,13 +67,14 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
         helper,
         pending: 0,
         dirty: true,
+        cached: None,
         targets,
         fixups: Vec::new(),
         stubs: Vec::new(),
     };
-    g.asm.prologue(CTX_STEPS, CTX_EXIT_KIND);
+    g.asm.prologue(CTX_EXIT_KIND);
     let exit = g.asm.here();
-    g.asm.epilogue(CTX_STEPS);
+    g.asm.epilogue();
     // Level 2's own words: from its entry to the first RET.
     let l2 = code.level2 as usize;
     let l2_end = l2
@@ -87,6 +91,7 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
     }
     let mut whole = vec![0u32; l2_end + 1 - l2];
     g.pending = 0;
+    g.cached = None;
     g.dirty = true;
     for (i, offset) in whole.iter_mut().enumerate() {
         g.join(l2 + i, false);
@@ -118,7 +123,7 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
 impl Gen<'_> {
     /// Brings `r14` up to date.
     fn flush(&mut self) {
-        self.asm.add_steps(self.pending);
+        self.asm.add_steps(CTX_STEPS, self.pending);
         self.pending = 0;
     }
 
@@ -128,8 +133,26 @@ impl Gen<'_> {
     fn join(&mut self, at: usize, checked: bool) {
         let resume = checked && VmOp::decode(self.code.words()[at]) == Some(VmOp::Net);
         if self.targets[at] || resume {
+            self.spill();
             self.flush();
             self.dirty = true;
+        }
+    }
+
+    /// Makes `dl` hold the image byte at `disp` (a coil's byte), writing back the byte it
+    /// held before.
+    fn own(&mut self, disp: u32) {
+        if self.cached != Some(disp) {
+            self.spill();
+            self.asm.load_dl(disp);
+            self.cached = Some(disp);
+        }
+    }
+
+    /// Writes the byte `dl` holds back to the image.
+    fn spill(&mut self) {
+        if let Some(disp) = self.cached.take() {
+            self.asm.store_dl(disp);
         }
     }
 
@@ -153,15 +176,22 @@ impl Gen<'_> {
         let Some(vm_op) = VmOp::decode(w) else {
             unreachable!("Code::checked refused every word without an opcode");
         };
+        if matches!(
+            vm_op,
+            VmOp::Jmpb | VmOp::Call | VmOp::Callu | VmOp::Fn | VmOp::Ret
+        ) || (vm_op == VmOp::Net && checked)
+        {
+            // The run may leave the straight line here: the image must be whole.
+            self.spill();
+        }
         let a = &mut self.asm;
         match vm_op {
             VmOp::Orb | VmOp::Anb => {
                 a.pop_blocks();
-                a.setcc_cl(Cond::Carry);
                 if vm_op == VmOp::Orb {
-                    a.or_al_cl();
+                    a.acc_one_if(Cond::Carry);
                 } else {
-                    a.and_al_cl();
+                    a.acc_zero_if(Cond::NoCarry);
                 }
                 self.pending += 1;
             }
@@ -181,36 +211,41 @@ impl Gen<'_> {
             }
             VmOp::Out | VmOp::Outn => {
                 let shift = arg as u8 & 7;
+                self.own(disp);
+                let a = &mut self.asm;
+                a.and_dl_imm(!mask);
                 if vm_op == VmOp::Out && shift == 0 {
-                    a.and_mem_imm(disp, !mask);
-                    a.or_mem_reg(disp, true);
+                    a.or_dl_reg(true);
                 } else {
                     a.mov_ecx_eax();
                     if vm_op == VmOp::Outn {
                         a.xor_ecx_1();
                     }
                     a.shl_ecx(shift);
-                    a.and_mem_imm(disp, !mask);
-                    a.or_mem_reg(disp, false);
+                    a.or_dl_reg(false);
                 }
                 self.pending += 1;
             }
             VmOp::Set => {
                 let shift = arg as u8 & 7;
+                self.own(disp);
+                let a = &mut self.asm;
                 if shift == 0 {
-                    a.or_mem_reg(disp, true);
+                    a.or_dl_reg(true);
                 } else {
                     a.mov_ecx_eax();
                     a.shl_ecx(shift);
-                    a.or_mem_reg(disp, false);
+                    a.or_dl_reg(false);
                 }
                 self.pending += 2;
             }
             VmOp::Rst => {
+                self.own(disp);
                 // ecx = acc − 1 (all ones when off) | !mask: !mask when on, 0xFF when off.
+                let a = &mut self.asm;
                 a.ecx_acc_minus_one();
                 a.or_ecx_imm8(!mask);
-                a.and_mem_cl(disp);
+                a.and_dl_cl();
                 self.pending += 2;
             }
             VmOp::Lbl => self.pending += 2,
@@ -232,8 +267,8 @@ impl Gen<'_> {
             VmOp::Net => {
                 if checked {
                     // `join` brought r14 up to date: a resumed run enters here.
-                    self.asm.cmp_steps_ctx(CTX_QUOTA);
-                    let j = self.asm.jcc(Cond::AboveEq);
+                    self.asm.cmp_steps_ctx(CTX_STEPS, CTX_QUOTA);
+                    let j = self.asm.jcc(Cond::NoCarry);
                     self.stub(j, ExitKind::Suspend, at);
                 }
             }
@@ -270,20 +305,23 @@ impl Gen<'_> {
             a.push_blocks();
             self.dirty = true;
         }
-        a.test_mem(disp, mask);
+        if self.cached == Some(disp) {
+            a.test_dl(mask);
+        } else {
+            a.test_mem(disp, mask);
+        }
+        let off = if op & C_INVERT != 0 {
+            Cond::NotZero
+        } else {
+            Cond::Zero
+        };
         match (op & C_OR != 0, op & C_LOAD_OR != 0) {
             // LD: the value itself.
             (false, true) => a.setcc_al(on),
-            // AND
-            (false, false) => {
-                a.setcc_cl(on);
-                a.and_al_cl();
-            }
-            // OR
-            (true, _) => {
-                a.setcc_cl(on);
-                a.or_al_cl();
-            }
+            // AND: off clears the accumulator.
+            (false, false) => a.acc_zero_if(off),
+            // OR: on sets it.
+            (true, _) => a.acc_one_if(on),
         }
     }
 
@@ -295,7 +333,7 @@ impl Gen<'_> {
         a.test_acc();
         let skip = a.jcc(Cond::Zero);
         if target <= at {
-            a.cmp_steps_ctx(CTX_BUDGET);
+            a.cmp_steps_ctx(CTX_STEPS, CTX_BUDGET);
             let j = a.jcc(Cond::Above);
             self.stub(j, ExitKind::Watchdog, at);
         }
