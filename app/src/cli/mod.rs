@@ -148,6 +148,10 @@ pub enum Command {
         /// (steady on a busy machine, where the clock is not).
         #[arg(long)]
         instructions: bool,
+        /// Time the ticks only, without the exchange's and the machine model's own timings
+        /// (what `--instructions` counts).
+        #[arg(long, hide = true)]
+        ticks_only: bool,
         /// Scans to time, 1 to 100000000.
         #[arg(long, default_value_t = 10_000,
               value_parser = clap::value_parser!(u64).range(1..=sim::MAX_TICKS))]
@@ -274,6 +278,7 @@ where
             path,
             engine,
             instructions,
+            ticks_only,
             scans,
             cnc,
             script,
@@ -282,7 +287,7 @@ where
         }) => running::bench(
             &path,
             (scans, engine.map(EngineArg::engine), instructions),
-            (cnc, !no_machine, coverage),
+            (cnc, !no_machine, coverage, ticks_only),
             script.as_deref(),
             say,
             out,

@@ -216,7 +216,7 @@ pub(super) fn sim(
 pub(super) fn bench(
     path: &Path,
     (scans, engine, instructions): (u64, Option<Engine>, bool),
-    (cnc, devices, coverage): (bool, bool, bool),
+    (cnc, devices, coverage, ticks_only): (bool, bool, bool, bool),
     setup: Option<&Path>,
     say: Say,
     out: &mut dyn Write,
@@ -315,7 +315,10 @@ pub(super) fn bench(
     let scans = timed.max(1);
     let steps = (machine.plc().executed_steps() - before) as f64 / scans as f64;
     let ns_per_scan = elapsed / scans as f64;
-    if !stopped && let (plc, Some(cnc)) = machine.parts_mut() {
+    if !stopped
+        && !ticks_only
+        && let (plc, Some(cnc)) = machine.parts_mut()
+    {
         // The exchange alone, timed inside the same kind of run (the clock read adds a few
         // tens of ns to each figure).
         let mut timed = TimedCnc { cnc, nanos: 0 };
@@ -329,7 +332,10 @@ pub(super) fn bench(
             "cnc_ns_per_exchange={per:.1} machine_ns_per_tick={ns_per_scan:.1} one_hour_s={hour:.3}"
         );
     }
-    if !stopped && let Some(count) = machine.plant().map(|p| p.names().count()) {
+    if !stopped
+        && !ticks_only
+        && let Some(count) = machine.plant().map(|p| p.names().count())
+    {
         // The machine model alone, stepped as often as the ticks timed.
         let start = Instant::now();
         for _ in 0..scans {
@@ -344,7 +350,8 @@ pub(super) fn bench(
     }
     let engine = machine.plc().engine();
     if instructions && !stopped {
-        let mut args: Vec<std::ffi::OsString> = vec![path.into(), "--engine".into()];
+        let mut args: Vec<std::ffi::OsString> =
+            vec![path.into(), "--ticks-only".into(), "--engine".into()];
         args.push(engine.name().into());
         for (on, flag) in [
             (cnc, "--cnc"),

@@ -206,6 +206,19 @@ impl Asm {
         self.put(&[0x74, len]);
     }
 
+    /// `jz rel8` to a place not yet known; returns where the rel8 field is.
+    pub fn jz_short_forward(&mut self) -> usize {
+        self.put(&[0x74, 0]);
+        self.here() - 1
+    }
+
+    /// Points the rel8 field at `at` to [`Asm::here`].
+    pub fn patch_rel8_here(&mut self, at: usize) {
+        let rel = u8::try_from(self.here() - (at + 1)).expect("a short jump spans < 128 bytes");
+        assert!(rel < 0x80, "a short jump spans < 128 bytes");
+        self.bytes[at] = rel;
+    }
+
     /// `jmp rel32`; returns where the rel32 field is.
     pub fn jmp(&mut self) -> usize {
         self.put(&[0xE9]);

@@ -16,6 +16,34 @@ use super::super::IMAGE_BYTES;
 use super::super::code::{C_INVERT, C_LOAD_OR, C_OR, C_PUSH, C_START, CONTACT_END, Code, VmOp};
 use super::asm::{Asm, Cond};
 use super::{CTX_BUDGET, CTX_EXIT_KIND, CTX_EXIT_PC, CTX_QUOTA, CTX_STEPS, ExitKind};
+use crate::catalog::FnOp;
+
+/// Whether a function instruction does nothing at all while ACT = 0: no image byte, no
+/// instruction memory and no CNC question (each is an `if act { … }` and nothing else in
+/// `functions::exec`). The generated code calls these only with ACT = 1; the checked engine
+/// and `engine/tests/engines.rs` hold it to the interpreter, which always calls.
+pub fn idle_without_act(op: FnOp) -> bool {
+    matches!(
+        op,
+        FnOp::Cmp
+            | FnOp::Cmpr
+            | FnOp::Movn
+            | FnOp::Movr
+            | FnOp::Codb
+            | FnOp::Rotb
+            | FnOp::Move
+            | FnOp::Wand
+            | FnOp::Wor
+            | FnOp::Wxor
+            | FnOp::Winv
+            | FnOp::Wshl
+            | FnOp::Wshr
+            | FnOp::Dschb
+            | FnOp::Psgnl
+            | FnOp::Psgn2
+            | FnOp::Zcp
+    )
+}
 
 /// Where a rel32 field must point once everything is placed.
 enum Target {
@@ -275,10 +303,17 @@ impl Gen<'_> {
             VmOp::Fn => {
                 let f = &self.code.fns[arg as usize];
                 self.pending += f.cost;
+                let skip = idle_without_act(f.op).then(|| {
+                    self.asm.test_acc();
+                    self.asm.jz_short_forward()
+                });
                 self.asm.call_helper(self.helper, arg);
                 self.asm.test_ecx();
                 let j = self.asm.jcc(Cond::NotZero);
                 self.stub(j, ExitKind::Panic, at);
+                if let Some(skip) = skip {
+                    self.asm.patch_rel8_here(skip);
+                }
             }
             VmOp::Ret => {
                 self.flush();

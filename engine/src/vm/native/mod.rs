@@ -21,7 +21,9 @@ mod emit;
 use super::cnc::Cnc;
 use super::code::Code;
 use super::exec::Level;
+use super::functions::{self, Ctx};
 use super::{Halt, Vm, WATCHDOG_STEPS};
+use crate::address::Area;
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
 
@@ -104,9 +106,9 @@ pub(super) struct RunCtx<'a> {
     budget: u64,
     exit_kind: u32,
     exit_pc: u32,
-    vm: *mut Vm,
     cnc: *mut (dyn Cnc + 'a),
     now: u64,
+    parts: Parts,
     panic: Option<Box<dyn Any + Send>>,
 }
 
@@ -196,18 +198,71 @@ impl Native {
 /// `index` with ACT = `acc`. Returns 0, or 1 when it panicked (the payload is kept in the
 /// context and raised again once the generated code has returned).
 extern "C" fn call_function(ctx: *mut RunCtx<'_>, index: u32, acc: u32) -> u32 {
-    // SAFETY: the generated code passes the context `Vm::run_native` gave it, which holds
-    // the only live pointers to the PLC and the CNC for the length of the run; the native
-    // code itself keeps no reference, only the image's address, which this call does not
-    // move (the image is never resized).
+    // SAFETY: the generated code passes the context `Vm::run_native` made for this run. Its
+    // pointers are the PLC's parts, taken once from one `&mut Vm` that nothing else uses
+    // while the native code runs; `index` is a function-instruction word's argument, which
+    // `Code::checked` bounded by the table, and each instance's state index is below the
+    // state and latch counts the tables were sized with (`Vm::from_program`). The native
+    // code holds only the image's address, and this call does not move the image.
     let ctx = unsafe { &mut *ctx };
-    let (vm, cnc) = unsafe { (&mut *ctx.vm, &mut *ctx.cnc) };
-    let now = ctx.now;
-    match catch_unwind(AssertUnwindSafe(|| vm.exec_fn(index, acc != 0, now, cnc))) {
+    let parts = &ctx.parts;
+    let (f, st, mut cx) = unsafe {
+        let f = &*parts.fns.add(index as usize);
+        let state = f.state as usize;
+        let cx = Ctx {
+            mem: std::slice::from_raw_parts_mut(parts.mem, parts.mem_len),
+            consts: std::slice::from_raw_parts(parts.consts, parts.consts_len),
+            now: ctx.now,
+            cnc: &mut *ctx.cnc,
+            window: std::slice::from_raw_parts_mut(parts.window, parts.window_len),
+            latch: &mut *parts.latches.add(state),
+            g_base: parts.g_base,
+            d_range: parts.d_range.clone(),
+        };
+        (f, &mut *parts.states.add(state), cx)
+    };
+    // As `Vm::exec_fn`, without the forces, which a native run never has.
+    match catch_unwind(AssertUnwindSafe(|| {
+        functions::exec(f, acc != 0, st, &mut cx)
+    })) {
         Ok(()) => 0,
         Err(payload) => {
             ctx.panic = Some(payload);
             1
+        }
+    }
+}
+
+/// The PLC's parts a function instruction works on, as raw parts taken once a run, so that
+/// each call builds its [`Ctx`] without going through the `Vm` again.
+struct Parts {
+    fns: *const super::code::FnCall,
+    states: *mut super::InstState,
+    latches: *mut Vec<i32>,
+    mem: *mut u8,
+    mem_len: usize,
+    consts: *const i32,
+    consts_len: usize,
+    window: *mut i32,
+    window_len: usize,
+    g_base: u32,
+    d_range: std::ops::Range<usize>,
+}
+
+impl Parts {
+    fn of(vm: &mut Vm) -> Parts {
+        Parts {
+            fns: vm.code.fns.as_ptr(),
+            states: vm.states.as_mut_ptr(),
+            latches: vm.latches.as_mut_ptr(),
+            mem: vm.mem.as_mut_ptr(),
+            mem_len: vm.mem.len(),
+            consts: vm.code.consts.as_ptr(),
+            consts_len: vm.code.consts.len(),
+            window: vm.window.as_mut_ptr(),
+            window_len: vm.window.len(),
+            g_base: vm.layout.area_range(Area::G).start as u32,
+            d_range: vm.layout.area_range(Area::D),
         }
     }
 }
@@ -246,7 +301,8 @@ impl Vm {
             WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
         };
         let now = self.now_ms();
-        let mem = self.mem.as_mut_ptr();
+        let parts = Parts::of(self);
+        let mem = parts.mem;
         let native: *const Native = self.native.as_ref().expect("checked by the caller");
         let mut ctx = RunCtx {
             saved_rsp: 0,
@@ -255,9 +311,9 @@ impl Vm {
             budget,
             exit_kind: ExitKind::Done as u32,
             exit_pc: 0,
-            vm: self,
             cnc,
             now,
+            parts,
             panic: None,
         };
         // Level 2 undivided never suspends: its copy without quota checks runs.
