@@ -731,3 +731,55 @@ fn a_click_on_a_table_or_scenario_warning_opens_its_page_at_its_row() {
         Some(&11)
     );
 }
+
+#[test]
+fn the_scan_engine_is_chosen_online_and_stays_through_an_online_edit() {
+    use ladder_engine::vm::{Engine, native};
+    let mut h = harness(Some(il_project(RUNG)), Lang::En);
+    h.run();
+    command(&mut h, Command::Run);
+    let engine = |h: &Harness<'static, LadderApp>| {
+        let online = h.state().feature::<OnlineState>();
+        online.session.as_ref().and_then(|s| s.published.engine)
+    };
+    command(&mut h, Command::ScanEngine(Engine::Interpreter));
+    ticks(&mut h, 3);
+    assert_eq!(engine(&h), Some(Engine::Interpreter));
+    assert_eq!(
+        h.state().checked(Command::ScanEngine(Engine::Interpreter)),
+        Some(true)
+    );
+    if !native::AVAILABLE {
+        assert!(!h.state().enabled(Command::ScanEngine(Engine::Native)));
+        return;
+    }
+    command(&mut h, Command::ScanEngine(Engine::Native));
+    ticks(&mut h, 3);
+    assert_eq!(engine(&h), Some(Engine::Native));
+    assert_eq!(
+        h.state().checked(Command::ScanEngine(Engine::Interpreter)),
+        Some(false)
+    );
+    // An online edit swaps a new program in: it runs on the engine chosen.
+    set_cell(
+        &mut h,
+        0,
+        1,
+        Cell::Contact {
+            negated: true,
+            operand: Operand::parse("X0010.0").unwrap(),
+        },
+    );
+    ticks(&mut h, 3);
+    let program = h
+        .state()
+        .feature::<OnlineState>()
+        .session
+        .as_ref()
+        .map(|s| s.published.program);
+    assert!(
+        program > Some(0),
+        "the edit swapped a program in: {program:?}"
+    );
+    assert_eq!(engine(&h), Some(Engine::Native));
+}

@@ -88,6 +88,8 @@ macro_rules! commands {
             Extend(Dir),
             /// The online pace.
             Speed(ladder_engine::runner::Speed),
+            /// The scan engine online: native code, the interpreter, or both checked.
+            ScanEngine(ladder_engine::vm::Engine),
             /// Apply saved scenario `0` (index in the project), or release it when applied.
             Scenario(usize),
         }
@@ -460,6 +462,9 @@ impl Command {
             Command::Speed(ladder_engine::runner::Speed::Times10) => Msg::Speed10,
             Command::Speed(ladder_engine::runner::Speed::Times100) => Msg::Speed100,
             Command::Speed(ladder_engine::runner::Speed::Max) => Msg::SpeedMax,
+            Command::ScanEngine(ladder_engine::vm::Engine::Native) => Msg::EngineNative,
+            Command::ScanEngine(ladder_engine::vm::Engine::Interpreter) => Msg::EngineInterp,
+            Command::ScanEngine(ladder_engine::vm::Engine::Checked) => Msg::EngineChecked,
             Command::Scenario(_) => Msg::Scenarios,
             _ => Msg::Untitled,
         }

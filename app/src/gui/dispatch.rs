@@ -94,6 +94,9 @@ impl LadderApp {
             Command::Why => self.online.is_online() && in_ladder,
             Command::LiveView => self.online.scrubbing(),
             Command::Speed(_) | Command::ToggleOnline | Command::DetachOnline => true,
+            Command::ScanEngine(e) => {
+                e == ladder_engine::vm::Engine::Interpreter || ladder_engine::vm::native::AVAILABLE
+            }
             Command::MachineModel => doc.is_some(),
             Command::Scenario(i) => {
                 self.online.is_online()
@@ -124,6 +127,7 @@ impl LadderApp {
             Command::ToggleOnline => s.show_online,
             Command::DetachOnline => s.online_window,
             Command::Speed(sp) => self.online.speed == sp,
+            Command::ScanEngine(e) => self.online.engine_in_force() == e,
             Command::Display(m) => s.display == m,
             Command::Language(l) => s.lang == l,
             Command::Scenario(i) => self.doc.as_ref().is_some_and(|d| {
@@ -320,7 +324,10 @@ impl LadderApp {
             | Command::UnforceAll
             | Command::Why
             | Command::LiveView
-            | Command::Speed(_) => self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c)),
+            | Command::Speed(_)
+            | Command::ScanEngine(_) => {
+                self.with(|o: &mut OnlineState, cx| o.execute_online(cx, c))
+            }
             Command::ConfirmForces(yes) => {
                 self.with(|o: &mut OnlineState, cx| o.confirm_forces(cx, yes))
             }

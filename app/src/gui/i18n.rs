@@ -205,6 +205,10 @@ messages! {
     ShowComments => "显示网络注释", "Show network comments";
     ShowElementComments => "显示元件注释", "Show element comments";
     ShowCoverage => "显示覆盖率", "Show coverage";
+    ScanEngine => "扫描引擎", "Scan engine";
+    EngineNative => "本机代码（最快）", "Native code (fastest)";
+    EngineInterp => "解释器（参照）", "Interpreter (reference)";
+    EngineChecked => "两者对照检查", "Both, checked against each other";
     CoverageFile => "打开覆盖率文件…", "Coverage file…";
     Coverage => "覆盖率", "Coverage";
     CoverFull => "已覆盖", "covered";

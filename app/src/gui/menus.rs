@@ -15,6 +15,13 @@ use crate::gui::online::OnlineState;
 /// is one row with an overflow menu.
 const WIDE_TOOLBAR: f32 = 1250.0;
 
+/// The scan engines in the PLC menu, fastest first.
+const ENGINES: [ladder_engine::vm::Engine; 3] = [
+    ladder_engine::vm::Engine::Native,
+    ladder_engine::vm::Engine::Interpreter,
+    ladder_engine::vm::Engine::Checked,
+];
+
 /// The menus and tools as drawn this frame: they read the editor (what is enabled, checked,
 /// which view is shown) and only collect the commands clicked, which the editor queues.
 pub struct Menus<'a> {
@@ -53,7 +60,13 @@ impl<'a> Menus<'a> {
     fn entry_text(&mut self, ui: &mut egui::Ui, c: Command, text: String) {
         let enabled = self.enabled(c);
         let clicked = match (c, self.checked(c)) {
-            (Command::Display(_) | Command::Language(_) | Command::Speed(_), Some(on)) => ui
+            (
+                Command::Display(_)
+                | Command::Language(_)
+                | Command::Speed(_)
+                | Command::ScanEngine(_),
+                Some(on),
+            ) => ui
                 .add_enabled(enabled, egui::Button::selectable(on, text))
                 .clicked(),
             (_, Some(on)) => {
@@ -71,7 +84,12 @@ impl<'a> Menus<'a> {
         };
         if clicked {
             self.ask(c);
-            if self.checked(c).is_none() || matches!(c, Command::Language(_) | Command::Speed(_)) {
+            if self.checked(c).is_none()
+                || matches!(
+                    c,
+                    Command::Language(_) | Command::Speed(_) | Command::ScanEngine(_)
+                )
+            {
                 ui.close();
             }
         }
@@ -94,9 +112,17 @@ impl<'a> Menus<'a> {
                     }
                 }
                 ui.separator();
-                for s in ladder_engine::runner::Speed::ALL {
-                    self.entry(ui, Command::Speed(s));
-                }
+                // Pace and engine as submenus, so the menu fits a 600-pixel window.
+                ui.menu_button(Msg::SpeedLabel.text(lang), |ui| {
+                    for s in ladder_engine::runner::Speed::ALL {
+                        self.entry(ui, Command::Speed(s));
+                    }
+                });
+                ui.menu_button(Msg::ScanEngine.text(lang), |ui| {
+                    for e in ENGINES {
+                        self.entry(ui, Command::ScanEngine(e));
+                    }
+                });
                 ui.separator();
                 ui.menu_button(Msg::Scenarios.text(lang), |ui| self.scenarios_menu_ui(ui));
             });

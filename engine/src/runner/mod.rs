@@ -46,6 +46,9 @@ pub enum Request {
     /// Rung coverage measured from now on (from zero), or no longer ([`Vm::set_coverage`]);
     /// the published trace then carries what was seen.
     Coverage(bool),
+    /// The scan engine from the next tick on ([`Vm::set_engine`]); a program swapped in
+    /// later keeps it.
+    Engine(crate::vm::Engine),
 }
 
 /// What the machine answered to a request.
@@ -75,6 +78,8 @@ pub struct Published {
     pub program: u64,
     /// The pace.
     pub speed: Speed,
+    /// The scan engine in force (the interpreter where native code is unavailable).
+    pub engine: Option<crate::vm::Engine>,
     /// How late ticks were at real time.
     pub lateness: Lateness,
     /// Replies not yet taken.
@@ -188,6 +193,7 @@ impl Runner {
         into.handled = s.handled;
         into.program = s.program;
         into.speed = s.speed;
+        into.engine = s.engine;
         into.lateness = s.lateness;
         into.stopped = s.stopped;
         into.replies = replies;
@@ -370,6 +376,9 @@ impl Worker {
                 self.covering = on;
                 self.machine.plc_mut().set_coverage(on);
             }
+            Request::Engine(engine) => {
+                self.machine.plc_mut().set_engine(engine);
+            }
         }
     }
 
@@ -399,6 +408,7 @@ impl Worker {
             s.handled = self.handled;
             s.program = self.program;
             s.speed = self.clock.speed();
+            s.engine = Some(self.machine.plc().engine());
             s.lateness = self.clock.lateness();
             s.replies.append(&mut self.replies);
             self.journaler.hand_over(&mut s.journal);

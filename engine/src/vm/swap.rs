@@ -64,6 +64,9 @@ impl Vm {
         self.ticks = old.ticks;
         self.executed = old.executed;
         self.division = old.division;
+        // The engine chosen online stays; the new program's code is generated here, before
+        // the tick it takes over at.
+        self.set_engine(old.engine);
         // Old instances by instruction and operands; each is taken once, in program order, so
         // two identical instructions keep their own memories as long as their order holds.
         let mut by_key: HashMap<String, Vec<u32>> = HashMap::new();

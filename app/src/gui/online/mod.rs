@@ -89,6 +89,8 @@ pub struct OnlineState {
     pub session: Option<Session>,
     /// The pace asked for.
     pub speed: Speed,
+    /// The scan engine asked for (`None`: the build's default, see `vm::Engine`).
+    pub engine: Option<ladder_engine::vm::Engine>,
     /// The online panel's page.
     pub tab: OnlineTab,
     /// The last "why?".
@@ -180,6 +182,9 @@ impl OnlineState {
         match Session::start(doc.project(), doc.generation(), wake) {
             Ok(mut s) => {
                 s.set_speed(self.speed);
+                if let Some(e) = self.engine {
+                    s.set_engine(e);
+                }
                 // The online window narrows the ladder: keep its coils and boxes in sight.
                 cx.settings.fit_width = true;
                 self.session = Some(s);
@@ -341,7 +346,25 @@ impl OnlineState {
                     session.set_speed(s);
                 }
             }
+            Command::ScanEngine(e) => {
+                self.engine = Some(e);
+                if let Some(session) = self.session.as_mut() {
+                    session.set_engine(e);
+                }
+            }
             _ => {}
+        }
+    }
+
+    /// The engine that runs (or will run) the scan: the one asked for, else the build's
+    /// default; the interpreter where native code is unavailable.
+    pub fn engine_in_force(&self) -> ladder_engine::vm::Engine {
+        use ladder_engine::vm::{Engine, native};
+        let asked = self.engine.unwrap_or_else(Engine::default_for_build);
+        if native::AVAILABLE {
+            asked
+        } else {
+            Engine::Interpreter
         }
     }
 

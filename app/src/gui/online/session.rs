@@ -143,6 +143,7 @@ pub fn changes_machine(r: &Request) -> bool {
         r,
         Request::Speed(_)
             | Request::Coverage(_)
+            | Request::Engine(_)
             | Request::Command(MachineCommand::Watch(_) | MachineCommand::WatchNetwork(..))
     )
 }
@@ -297,6 +298,11 @@ impl Session {
     /// The pace.
     pub fn set_speed(&mut self, s: Speed) {
         self.send(Request::Speed(s));
+    }
+
+    /// The scan engine.
+    pub fn set_engine(&mut self, e: ladder_engine::vm::Engine) {
+        self.send(Request::Engine(e));
     }
 
     /// Shows tick `t` from the recorder instead of the present (`None`: back to live).
