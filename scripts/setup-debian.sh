@@ -5,15 +5,20 @@
 #   scripts/setup-debian.sh --build  build tools only (enough for the tests, which need no display)
 #   scripts/setup-debian.sh --xvfb   the window libraries plus a virtual X server and the tools
 #                                    scripts/screenshot.sh uses (a real window, no screen)
+#   scripts/setup-debian.sh --bench  build tools plus valgrind, for instruction counts
+#                                    (`bench --instructions`, `cargo bench --bench native`)
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 # A C compiler and pkg-config for crates that build C code.
 PACKAGES="build-essential pkg-config"
-if [ "${1:-}" != "--build" ]; then
+if [ "${1:-}" != "--build" ] && [ "${1:-}" != "--bench" ]; then
   # The window: OpenGL/Vulkan through Mesa (software rendering works too), X11 and Wayland
   # input, and fontconfig.
   PACKAGES="$PACKAGES libgl1-mesa-dri libegl1 libxkbcommon-x11-0 libxcursor1 libxrandr2 libxi6 libx11-xcb1 libwayland-client0 fontconfig"
+fi
+if [ "${1:-}" = "--bench" ]; then
+  PACKAGES="$PACKAGES valgrind"
 fi
 if [ "${1:-}" = "--xvfb" ]; then
   # Software rendering in a virtual X server, and the tools to drive and capture it.
