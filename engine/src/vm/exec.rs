@@ -27,6 +27,21 @@ enum Exit {
     Switch(u32),
     /// The watchdog stopped the PLC at this word.
     Watchdog(u32),
+    /// An unwatched network of the level itself starts at this word: native code may run it
+    /// (only while [`Vm::run_watched`] runs).
+    Native(u32),
+}
+
+/// How the interpreter's part of a native run ended ([`Vm::run_watched`]).
+pub(super) enum Handback {
+    /// Native code goes on at this network marker.
+    Native(u32),
+    /// The level's code ended.
+    Done,
+    /// Level 2 reached its quota at this word.
+    Suspend(u32),
+    /// The watchdog stopped the PLC at this word.
+    Watchdog(u32),
 }
 
 impl Vm {
@@ -56,6 +71,7 @@ impl Vm {
                 Exit::Done => break Ok(None),
                 Exit::Suspend(p) => break Ok(Some(p)),
                 Exit::Watchdog(at) => break Err(self.halt_at(at, level)),
+                Exit::Native(_) => unreachable!("only `run_watched` hands back"),
             }
         };
         if level == Level::Two {
@@ -64,6 +80,41 @@ impl Vm {
         self.executed += steps;
         self.frames.clear();
         result
+    }
+
+    /// Runs the watched network at word `pc` and on in the interpreter, recording for the
+    /// monitor, until the level reaches an unwatched network of its own (outside any call),
+    /// where native code takes over again; `steps` counts on.
+    pub(super) fn run_watched(
+        &mut self,
+        pc: u32,
+        level: Level,
+        quota: u64,
+        steps: &mut u64,
+        cnc: &mut dyn Cnc,
+    ) -> Handback {
+        self.handing_back = true;
+        let mut pc = pc;
+        let mut tracing = true;
+        let handback = loop {
+            let exit = if tracing {
+                self.exec::<true>(pc, level, quota, steps, cnc)
+            } else {
+                self.exec::<false>(pc, level, quota, steps, cnc)
+            };
+            match exit {
+                Exit::Switch(p) => {
+                    pc = p;
+                    tracing = !tracing;
+                }
+                Exit::Native(p) => break Handback::Native(p),
+                Exit::Done => break Handback::Done,
+                Exit::Suspend(p) => break Handback::Suspend(p),
+                Exit::Watchdog(p) => break Handback::Watchdog(p),
+            }
+        };
+        self.handing_back = false;
+        handback
     }
 
     pub(super) fn halt_at(&self, pc: u32, level: Level) -> Halt {
@@ -135,6 +186,7 @@ impl Vm {
                     watching,
                     watched: &self.watched,
                     forcing,
+                    every_net: self.handing_back,
                 },
             );
             let w = self.code.words()[at as usize];
@@ -148,6 +200,10 @@ impl Vm {
                     if level == Level::Two && self.frames.is_empty() && r.steps >= quota {
                         *steps_out = r.steps;
                         return Exit::Suspend(at);
+                    }
+                    if self.handing_back && self.frames.is_empty() && !self.watched[arg as usize] {
+                        *steps_out = r.steps;
+                        return Exit::Native(at);
                     }
                     if watching && self.watched[arg as usize] != TRACE {
                         *steps_out = r.steps;
@@ -352,6 +408,8 @@ struct Stops<'a> {
     watched: &'a [bool],
     /// Whether forces are active (coil writes then go through the outer loop).
     forcing: bool,
+    /// Stop at every network marker (while native code waits to take over again).
+    every_net: bool,
 }
 
 /// The logic registers.
@@ -378,6 +436,7 @@ fn hot<const TRACE: bool>(
         watching,
         watched,
         forcing,
+        every_net,
     } = *stops;
     // As long as the code (one trace byte per word): an index that reads a word needs no
     // second bounds check to record it. Untouched when nothing records.
@@ -457,7 +516,7 @@ fn hot<const TRACE: bool>(
             }
             byte::NET => {
                 // Leave only to suspend level 2, or where recording starts or stops.
-                if steps >= quota || (watching && watched[arg as usize] != TRACE) {
+                if steps >= quota || every_net || (watching && watched[arg as usize] != TRACE) {
                     break at;
                 }
                 continue;

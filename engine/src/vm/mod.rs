@@ -125,6 +125,11 @@ pub struct Vm {
     halt: Option<Halt>,
     watched: Vec<bool>,
     watch_count: usize,
+    /// How many of the watched networks are in subprograms (the level then runs interpreted).
+    watched_in_subs: usize,
+    /// While the interpreter runs watched networks for the native engine: stop at the first
+    /// unwatched network of the level itself.
+    handing_back: bool,
     /// Per word of code: the value a contact read or the power an output received, for
     /// watched networks (0/1), written only while tracing.
     trace: Vec<u8>,
@@ -186,6 +191,8 @@ impl Vm {
             trace: vec![0; code.words().len()],
             covering: false,
             watch_count: 0,
+            watched_in_subs: 0,
+            handing_back: false,
             mem: vec![0; size],
             force_mask: vec![0; size],
             force_value: vec![0; size],
@@ -493,10 +500,14 @@ impl Vm {
             && *w != on
         {
             *w = on;
+            // Blocks 0 and 1 are the levels; the rest are subprograms.
+            let in_sub = usize::from(self.code.networks[network].block >= 2);
             if on {
                 self.watch_count += 1;
+                self.watched_in_subs += in_sub;
             } else {
                 self.watch_count -= 1;
+                self.watched_in_subs -= in_sub;
             }
         }
     }

@@ -178,6 +178,14 @@ impl Asm {
         self.put(&[0x49, 0x8B, 0x4F, steps, 0x49, 0x3B, 0x4F, disp]);
     }
 
+    /// `mov rcx, [r15 + watched]; cmp byte [rcx + network], 0`: whether the monitor watches
+    /// the network (the flags say not zero when it does).
+    pub fn test_watched(&mut self, watched: u8, network: u32) {
+        self.put(&[0x49, 0x8B, 0x4F, watched, 0x80, 0xB9]);
+        self.put32(network);
+        self.put(&[0]);
+    }
+
     /// `cmovCC eax, ebp`: the accumulator := 0 on the condition (`ebp` is always 0).
     pub fn acc_zero_if(&mut self, c: Cond) {
         self.put(&[0x0F, 0x40 | c as u8, 0xC5]);

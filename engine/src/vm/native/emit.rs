@@ -8,14 +8,18 @@
 //! instructions call one helper with their index and the accumulator; CALL is a native call
 //! with the caller's logic state pushed; RET a native return.
 //!
-//! Level 2's own code is generated twice: with a quota check at every network (a divided
-//! level 2, which suspends there) and without (division 1, the usual case). Subprograms and
-//! level 1 never check.
+//! A level's own words are generated in more than one copy ([`Copy`]): level 2 with a quota
+//! check at every network (a divided level 2, which suspends there) and without (division 1,
+//! the usual case); and both levels with a check at every network of whether the monitor
+//! watches it, where the run leaves for the interpreter (while something is watched).
+//! Subprograms have one copy and never check.
 
 use super::super::IMAGE_BYTES;
 use super::super::code::{C_INVERT, C_LOAD_OR, C_OR, C_PUSH, C_START, CONTACT_END, Code, VmOp};
 use super::asm::{Asm, Cond};
-use super::{CTX_BUDGET, CTX_EXIT_KIND, CTX_EXIT_PC, CTX_QUOTA, CTX_STEPS, ExitKind};
+use super::{
+    CTX_BUDGET, CTX_EXIT_KIND, CTX_EXIT_PC, CTX_QUOTA, CTX_STEPS, CTX_WATCHED, Copy, ExitKind,
+};
 use crate::catalog::FnOp;
 
 /// Whether a function instruction does nothing at all while ACT = 0: no image byte, no
@@ -45,22 +49,27 @@ pub fn idle_without_act(op: FnOp) -> bool {
     )
 }
 
-/// Where a rel32 field must point once everything is placed.
-enum Target {
-    /// A word's code in the main pass.
-    Word(u32),
-    /// A word's code in level 2's unchecked copy (a jump inside it).
-    Whole(u32),
+/// What a network marker checks in a copy.
+#[derive(Clone, Copy, Default)]
+struct Checks {
+    /// Level 2's quota (suspend when reached).
+    quota: bool,
+    /// Whether the monitor watches the network (leave for the interpreter).
+    watch: bool,
+}
+
+impl Checks {
+    fn any(self) -> bool {
+        self.quota || self.watch
+    }
 }
 
 /// The generated code and where to enter it.
 pub(super) struct Generated {
     /// Machine code, entry function first.
     pub bytes: Vec<u8>,
-    /// Byte offset of each word's code in the main pass (level 2 with its quota checks).
-    pub offsets: Vec<u32>,
-    /// Byte offset of level 2's entry in its unchecked copy.
-    pub whole_level2: u32,
+    /// Per [`Copy`], the byte offset of each word's code in it (`u32::MAX`: not in that copy).
+    pub offsets: [Vec<u32>; 3],
 }
 
 struct Gen<'a> {
@@ -76,7 +85,8 @@ struct Gen<'a> {
     cached: Option<u32>,
     /// Whether word indices are jump or call targets (join points).
     targets: Vec<bool>,
-    fixups: Vec<(usize, Target)>,
+    /// rel32 fields to point at a word's code in a copy.
+    fixups: Vec<(usize, Copy, u32)>,
     stubs: Vec<(ExitKind, u32, usize)>,
 }
 
@@ -103,29 +113,59 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
     g.asm.prologue(CTX_EXIT_KIND);
     let exit = g.asm.here();
     g.asm.epilogue();
-    // Level 2's own words: from its entry to the first RET.
-    let l2 = code.level2 as usize;
-    let l2_end = l2
-        + words[l2..]
-            .iter()
-            .position(|&w| VmOp::decode(w) == Some(VmOp::Ret))
-            .expect("every block ends with RET");
-    let mut offsets = vec![0u32; words.len()];
-    for (at, offset) in offsets.iter_mut().enumerate() {
-        let checked = (l2..l2_end).contains(&at);
-        g.join(at, checked);
-        *offset = g.asm.here() as u32;
-        g.word(at as u32, checked, false);
-    }
-    let mut whole = vec![0u32; l2_end + 1 - l2];
-    g.pending = 0;
-    g.cached = None;
-    g.dirty = true;
-    for (i, offset) in whole.iter_mut().enumerate() {
-        g.join(l2 + i, false);
-        *offset = g.asm.here() as u32;
-        g.word((l2 + i) as u32, false, true);
-    }
+    // Each level's own words: from its entry to the first RET.
+    let own = |entry: u32| {
+        let start = entry as usize;
+        let end = start
+            + words[start..]
+                .iter()
+                .position(|&w| VmOp::decode(w) == Some(VmOp::Ret))
+                .expect("every block ends with RET");
+        start..end + 1
+    };
+    let (l1, l2) = (own(code.level1), own(code.level2));
+    let none = Checks::default();
+    let mut offsets = [0, 1, 2].map(|_| vec![u32::MAX; words.len()]);
+    // The main copy: every word; level 2 checks its quota.
+    let main: Vec<(usize, Checks)> = (0..words.len())
+        .map(|at| {
+            let quota = l2.contains(&at);
+            (
+                at,
+                Checks {
+                    quota,
+                    watch: false,
+                },
+            )
+        })
+        .collect();
+    g.copy(Copy::Main, &main, &mut offsets);
+    // Level 2 undivided.
+    let whole: Vec<(usize, Checks)> = l2.clone().map(|at| (at, none)).collect();
+    g.copy(Copy::Whole, &whole, &mut offsets);
+    // Both levels, watched.
+    let observed: Vec<(usize, Checks)> = l1
+        .clone()
+        .map(|at| {
+            (
+                at,
+                Checks {
+                    quota: false,
+                    watch: true,
+                },
+            )
+        })
+        .chain(l2.clone().map(|at| {
+            (
+                at,
+                Checks {
+                    quota: true,
+                    watch: true,
+                },
+            )
+        }))
+        .collect();
+    g.copy(Copy::Observed, &observed, &mut offsets);
     for (kind, pc, at) in std::mem::take(&mut g.stubs) {
         let stub = g.asm.here();
         g.asm.patch_rel32(at, stub);
@@ -134,32 +174,42 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
         let j = g.asm.jmp();
         g.asm.patch_rel32(j, exit);
     }
-    for (at, target) in std::mem::take(&mut g.fixups) {
-        let to = match target {
-            Target::Word(w) => offsets[w as usize],
-            Target::Whole(w) => whole[w as usize - l2],
-        };
+    for (at, copy, word) in std::mem::take(&mut g.fixups) {
+        let to = offsets[copy as usize][word as usize];
+        debug_assert_ne!(to, u32::MAX, "a jump stays in its copy");
         g.asm.patch_rel32(at, to as usize);
     }
     Generated {
         bytes: g.asm.bytes,
         offsets,
-        whole_level2: whole[0],
     }
 }
 
 impl Gen<'_> {
-    /// Brings `r14` up to date.
+    /// Generates one copy of `words` (with what each network marker checks), contiguous runs
+    /// of words, into `offsets[copy]`.
+    fn copy(&mut self, copy: Copy, words: &[(usize, Checks)], offsets: &mut [Vec<u32>; 3]) {
+        self.pending = 0;
+        self.cached = None;
+        self.dirty = true;
+        for &(at, checks) in words {
+            self.join(at, checks);
+            offsets[copy as usize][at] = self.asm.here() as u32;
+            self.word(at as u32, checks, copy);
+        }
+    }
+
+    /// Brings the step count up to date.
     fn flush(&mut self) {
         self.asm.add_steps(CTX_STEPS, self.pending);
         self.pending = 0;
     }
 
-    /// Before word `at`: where a run may enter (a jump or call target, and level 2's
-    /// network markers where a divided level 2 resumes), `r14` is up to date and the
-    /// stacks' contents unknown.
-    fn join(&mut self, at: usize, checked: bool) {
-        let resume = checked && VmOp::decode(self.code.words()[at]) == Some(VmOp::Net);
+    /// Before word `at`: where a run may enter (a jump or call target, and the network
+    /// markers that check something, where a run resumes or comes back from the
+    /// interpreter), the step count is up to date and the stacks' contents unknown.
+    fn join(&mut self, at: usize, checks: Checks) {
+        let resume = checks.any() && VmOp::decode(self.code.words()[at]) == Some(VmOp::Net);
         if self.targets[at] || resume {
             self.spill();
             self.flush();
@@ -188,9 +238,9 @@ impl Gen<'_> {
         self.stubs.push((kind, pc, at));
     }
 
-    /// Generates word `at`. `checked`: a network marker checks level 2's quota. `whole`: the
-    /// word is in level 2's unchecked copy, so its jumps stay in that copy.
-    fn word(&mut self, at: u32, checked: bool, whole: bool) {
+    /// Generates word `at` of copy `copy`, whose jumps stay in it; a network marker checks
+    /// what `checks` says.
+    fn word(&mut self, at: u32, checks: Checks, copy: Copy) {
         let w = self.code.words()[at as usize];
         let arg = w >> 8;
         let op = w & 0xFF;
@@ -207,7 +257,7 @@ impl Gen<'_> {
         if matches!(
             vm_op,
             VmOp::Jmpb | VmOp::Call | VmOp::Callu | VmOp::Fn | VmOp::Ret
-        ) || (vm_op == VmOp::Net && checked)
+        ) || (vm_op == VmOp::Net && checks.any())
         {
             // The run may leave the straight line here: the image must be whole.
             self.spill();
@@ -277,7 +327,7 @@ impl Gen<'_> {
                 self.pending += 2;
             }
             VmOp::Lbl => self.pending += 2,
-            VmOp::Jmpb => self.jump(at, arg, whole),
+            VmOp::Jmpb => self.jump(at, arg, copy),
             VmOp::Call | VmOp::Callu => {
                 self.pending += 2;
                 self.flush();
@@ -290,14 +340,21 @@ impl Gen<'_> {
                 a.save_logic();
                 let c = a.call();
                 a.restore_logic();
-                self.fixups.push((c, Target::Word(arg)));
+                // Subprograms have one copy.
+                self.fixups.push((c, Copy::Main, arg));
             }
             VmOp::Net => {
-                if checked {
-                    // `join` brought r14 up to date: a resumed run enters here.
+                // `join` brought the step count up to date: a resumed run enters here. The
+                // interpreter's order: the quota first, then the monitor.
+                if checks.quota {
                     self.asm.cmp_steps_ctx(CTX_STEPS, CTX_QUOTA);
                     let j = self.asm.jcc(Cond::NoCarry);
                     self.stub(j, ExitKind::Suspend, at);
+                }
+                if checks.watch {
+                    self.asm.test_watched(CTX_WATCHED, arg);
+                    let j = self.asm.jcc(Cond::NotZero);
+                    self.stub(j, ExitKind::Watched, at);
                 }
             }
             VmOp::Fn => {
@@ -361,7 +418,7 @@ impl Gen<'_> {
     }
 
     /// JMPB: taken while the accumulator is 1; a backward jump first checks the watchdog.
-    fn jump(&mut self, at: u32, target: u32, whole: bool) {
+    fn jump(&mut self, at: u32, target: u32, copy: Copy) {
         self.pending += 2;
         self.flush();
         let a = &mut self.asm;
@@ -373,14 +430,7 @@ impl Gen<'_> {
             self.stub(j, ExitKind::Watchdog, at);
         }
         let j = self.asm.jmp();
-        self.fixups.push((
-            j,
-            if whole {
-                Target::Whole(target)
-            } else {
-                Target::Word(target)
-            },
-        ));
+        self.fixups.push((j, copy, target));
         let here = self.asm.here();
         self.asm.patch_rel32(skip, here);
     }

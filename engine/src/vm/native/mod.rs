@@ -20,7 +20,7 @@ mod emit;
 
 use super::cnc::Cnc;
 use super::code::Code;
-use super::exec::Level;
+use super::exec::{Handback, Level};
 use super::functions::{self, Ctx};
 use super::{Halt, Vm, WATCHDOG_STEPS};
 use crate::address::Area;
@@ -91,6 +91,19 @@ pub(super) enum ExitKind {
     Watchdog = 2,
     /// A function instruction panicked; the payload is in [`RunCtx::panic`].
     Panic = 3,
+    /// The network at `exit_pc` is watched: the interpreter runs it.
+    Watched = 4,
+}
+
+/// The copies of a level's own code (see `emit.rs`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Copy {
+    /// Every word; level 2 checks its quota at each network.
+    Main = 0,
+    /// Level 2 undivided: no checks.
+    Whole = 1,
+    /// Both levels, each network checked for the monitor (and level 2 for its quota).
+    Observed = 2,
 }
 
 /// What the generated code and its helper share, at fixed offsets (checked below).
@@ -106,6 +119,8 @@ pub(super) struct RunCtx<'a> {
     budget: u64,
     exit_kind: u32,
     exit_pc: u32,
+    /// One byte per network: watched (1) or not (0).
+    watched: *const bool,
     cnc: *mut (dyn Cnc + 'a),
     now: u64,
     parts: Parts,
@@ -117,6 +132,7 @@ pub(super) const CTX_QUOTA: u8 = 16;
 pub(super) const CTX_BUDGET: u8 = 24;
 pub(super) const CTX_EXIT_KIND: u8 = 32;
 pub(super) const CTX_EXIT_PC: u8 = 36;
+pub(super) const CTX_WATCHED: u8 = 40;
 const _: () = {
     assert!(std::mem::offset_of!(RunCtx<'static>, saved_rsp) == 0);
     assert!(std::mem::offset_of!(RunCtx<'static>, steps) == CTX_STEPS as usize);
@@ -124,6 +140,8 @@ const _: () = {
     assert!(std::mem::offset_of!(RunCtx<'static>, budget) == CTX_BUDGET as usize);
     assert!(std::mem::offset_of!(RunCtx<'static>, exit_kind) == CTX_EXIT_KIND as usize);
     assert!(std::mem::offset_of!(RunCtx<'static>, exit_pc) == CTX_EXIT_PC as usize);
+    assert!(std::mem::offset_of!(RunCtx<'static>, watched) == CTX_WATCHED as usize);
+    assert!(std::mem::size_of::<bool>() == 1);
 };
 
 /// The entry's signature: context, memory image, code address to call.
@@ -132,9 +150,8 @@ type EntryFn = unsafe extern "C" fn(*mut RunCtx<'_>, *mut u8, *const u8);
 /// A program's machine code, mapped executable, and where each word's code starts.
 pub struct Native {
     map: memmap2::Mmap,
-    offsets: Vec<u32>,
-    whole_level2: u32,
-    level2: u32,
+    /// Per [`Copy`], where each word's code starts (`u32::MAX`: not in that copy).
+    offsets: [Vec<u32>; 3],
 }
 
 impl std::fmt::Debug for Native {
@@ -158,8 +175,6 @@ impl Native {
         Some(Native {
             map,
             offsets: generated.offsets,
-            whole_level2: generated.whole_level2,
-            level2: code.level2,
         })
     }
 
@@ -173,14 +188,12 @@ impl Native {
         self.map.is_empty()
     }
 
-    /// Runs from word `pc` (a level's entry, or a level-2 network marker where a divided
-    /// level 2 resumes) until the level ends, suspends or trips the watchdog.
-    fn enter(&self, ctx: &mut RunCtx<'_>, mem: *mut u8, pc: u32, whole: bool) {
-        let offset = if whole && pc == self.level2 {
-            self.whole_level2
-        } else {
-            self.offsets[pc as usize]
-        };
+    /// Runs copy `copy` from word `pc` (a level's entry, or a network marker where a divided
+    /// level 2 resumes or a run comes back from the interpreter) until the level ends,
+    /// suspends, trips the watchdog or meets a watched network.
+    fn enter(&self, ctx: &mut RunCtx<'_>, mem: *mut u8, pc: u32, copy: Copy) {
+        let offset = self.offsets[copy as usize][pc as usize];
+        assert_ne!(offset, u32::MAX, "word {pc} is not in the {copy:?} copy");
         let base = self.map.as_ptr();
         // SAFETY: the map holds code made by `emit::generate` for this program, whose entry
         // is at offset 0 with the `EntryFn` signature (asm::prologue). `offset` is the code of
@@ -268,7 +281,10 @@ impl Parts {
 }
 
 impl Vm {
-    /// Runs a level on the engine in force: see [`Engine`].
+    /// Runs a level on the engine in force: see [`Engine`]. Native code runs unless coverage
+    /// is measured, a byte is forced or a watched network lies in a subprogram: then the
+    /// interpreter runs the level, since each of these must see every step (a subprogram's
+    /// network runs inside a call, where the native code cannot hand over).
     pub(super) fn run(
         &mut self,
         pc: u32,
@@ -276,18 +292,23 @@ impl Vm {
         quota: u64,
         cnc: &mut dyn Cnc,
     ) -> Result<Option<u32>, Halt> {
-        let observed = self.watch_count > 0 || self.covering || !self.forced_bytes.is_empty();
-        if observed || self.native.is_none() {
+        let interpreted = self.native.is_none()
+            || self.engine == Engine::Interpreter
+            || self.covering
+            || !self.forced_bytes.is_empty()
+            || self.watched_in_subs > 0;
+        if interpreted {
             return self.run_interp(pc, level, quota, cnc);
         }
-        match self.engine {
-            Engine::Interpreter => self.run_interp(pc, level, quota, cnc),
-            Engine::Native => self.run_native(pc, level, quota, cnc),
-            Engine::Checked => self.run_checked(pc, level, quota, cnc),
+        if self.engine == Engine::Checked {
+            self.run_checked(pc, level, quota, cnc)
+        } else {
+            self.run_native(pc, level, quota, cnc)
         }
     }
 
-    /// Runs a level in native code (the caller checked that there is some).
+    /// Runs a level in native code, and its watched networks in the interpreter, which
+    /// records them for the monitor (the caller checked that there is native code).
     fn run_native(
         &mut self,
         pc: u32,
@@ -295,6 +316,48 @@ impl Vm {
         quota: u64,
         cnc: &mut dyn Cnc,
     ) -> Result<Option<u32>, Halt> {
+        let copy = if self.watch_count > 0 {
+            Copy::Observed
+        } else if level == Level::Two && quota == u64::MAX {
+            // Level 2 undivided never suspends: its copy without quota checks runs.
+            Copy::Whole
+        } else {
+            Copy::Main
+        };
+        let mut steps = 0;
+        let mut pc = pc;
+        let result = loop {
+            let (kind, at) = self.native_segment(pc, (level, quota, copy), &mut steps, cnc);
+            match kind {
+                ExitKind::Done => break Ok(None),
+                ExitKind::Suspend => break Ok(Some(at)),
+                ExitKind::Watchdog => break Err(self.halt_at(at, level)),
+                ExitKind::Watched => match self.run_watched(at, level, quota, &mut steps, cnc) {
+                    Handback::Native(p) => pc = p,
+                    Handback::Done => break Ok(None),
+                    Handback::Suspend(p) => break Ok(Some(p)),
+                    Handback::Watchdog(p) => break Err(self.halt_at(p, level)),
+                },
+                ExitKind::Panic => unreachable!("a panic goes on as a panic"),
+            }
+        };
+        if level == Level::Two {
+            self.level2.cycle_steps += steps;
+        }
+        self.executed += steps;
+        self.frames.clear();
+        result
+    }
+
+    /// Native code from word `pc` of copy `copy` until it stops; `steps` counts on. Returns
+    /// how it stopped and where.
+    fn native_segment(
+        &mut self,
+        pc: u32,
+        (level, quota, copy): (Level, u64, Copy),
+        steps: &mut u64,
+        cnc: &mut dyn Cnc,
+    ) -> (ExitKind, u32) {
         let budget = if level == Level::One {
             WATCHDOG_STEPS
         } else {
@@ -306,35 +369,36 @@ impl Vm {
         let native: *const Native = self.native.as_ref().expect("checked by the caller");
         let mut ctx = RunCtx {
             saved_rsp: 0,
-            steps: 0,
+            steps: *steps,
             quota,
             budget,
             exit_kind: ExitKind::Done as u32,
             exit_pc: 0,
+            watched: self.watched.as_ptr(),
             cnc,
             now,
             parts,
             panic: None,
         };
-        // Level 2 undivided never suspends: its copy without quota checks runs.
-        let whole = level == Level::Two && quota == u64::MAX;
         // SAFETY: `native` points into `self.native`, which nothing in a run replaces (the
-        // helper runs function instructions only); see `Native::enter`.
-        unsafe { (*native).enter(&mut ctx, mem, pc, whole) };
+        // helper runs function instructions only), and `watched` into `self.watched`, which
+        // only `Vm::watch` changes, between ticks; see `Native::enter`.
+        unsafe { (*native).enter(&mut ctx, mem, pc, copy) };
         if let Some(payload) = ctx.panic.take() {
             resume_unwind(payload);
         }
-        let steps = ctx.steps;
-        if level == Level::Two {
-            self.level2.cycle_steps += steps;
-        }
-        self.executed += steps;
-        self.frames.clear();
-        match ctx.exit_kind {
-            k if k == ExitKind::Done as u32 => Ok(None),
-            k if k == ExitKind::Suspend as u32 => Ok(Some(ctx.exit_pc)),
-            _ => Err(self.halt_at(ctx.exit_pc, level)),
-        }
+        *steps = ctx.steps;
+        let kind = [
+            ExitKind::Done,
+            ExitKind::Suspend,
+            ExitKind::Watchdog,
+            ExitKind::Panic,
+            ExitKind::Watched,
+        ]
+        .into_iter()
+        .find(|k| *k as u32 == ctx.exit_kind)
+        .expect("the generated code stores an exit kind");
+        (kind, ctx.exit_pc)
     }
 
     /// The engine that runs the scan when nothing observes it.
