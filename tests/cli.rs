@@ -528,3 +528,33 @@ fn lang_zh_speaks_chinese_in_the_same_line_shapes() {
     // An unknown language is refused like any bad argument.
     assert_eq!(run(&["--lang", "fr", "check", &path]).code, 2);
 }
+
+#[test]
+fn bench_runs_on_the_engine_asked_for_and_refuses_an_unknown_one() {
+    for engine in ["interp", "native", "checked"] {
+        let r = run(&[
+            "bench",
+            &il_path("valid/functions.il"),
+            "--scans",
+            "20",
+            "--engine",
+            engine,
+        ]);
+        assert_eq!(r.code, 0, "{r:?}");
+        let last = r.stdout.lines().last().unwrap();
+        let expected = if ladder_engine::vm::native::AVAILABLE {
+            engine
+        } else {
+            "interp"
+        };
+        assert!(last.ends_with(&format!(" engine={expected}")), "{last}");
+    }
+    let r = run(&["bench", &il_path("valid/functions.il"), "--engine", "jit"]);
+    assert_eq!(r.code, 2, "{r:?}");
+    assert!(
+        r.stderr
+            .contains("possible values: interp, native, checked"),
+        "{}",
+        r.stderr
+    );
+}
