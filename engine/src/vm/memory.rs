@@ -124,20 +124,22 @@ pub fn sign_extend(v: u32, bytes: u32) -> i32 {
 #[inline]
 pub fn read(mem: &[u8], loc: Loc, bytes: u32) -> i32 {
     let o = loc.off as usize;
-    if loc.wide {
-        let Some(b) = mem.get(o..o + 4) else { return 0 };
-        let v = u32::from_le_bytes([b[0], b[1], b[2], b[3]]);
-        sign_extend(v, bytes)
-    } else {
-        let Some(b) = mem.get(o..o + bytes as usize) else {
-            return 0;
-        };
-        let mut v = 0u32;
-        for (k, byte) in b.iter().enumerate() {
-            v |= u32::from(*byte) << (8 * k);
-        }
-        sign_extend(v, bytes)
-    }
+    // A wide element is always 4 bytes, read whole, then taken at the width asked.
+    let n = if loc.wide { 4 } else { bytes as usize };
+    let Some(b) = mem.get(o..o + n) else {
+        return 0;
+    };
+    // The widths instructions use, each as one load; any other as bytes in a row.
+    let v = match *b {
+        [b0] => u32::from(b0),
+        [b0, b1] => u32::from(u16::from_le_bytes([b0, b1])),
+        [b0, b1, b2, b3] => u32::from_le_bytes([b0, b1, b2, b3]),
+        _ => b
+            .iter()
+            .enumerate()
+            .fold(0, |v, (k, byte)| v | u32::from(*byte) << (8 * k)),
+    };
+    sign_extend(v, bytes)
 }
 
 /// Reads unsigned: the same bits as [`read`], zero-extended.

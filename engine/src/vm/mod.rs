@@ -35,8 +35,10 @@ pub const TICK_MS: u64 = 8;
 /// Executed steps after which a level is stopped (per tick for level 1, per cycle for level 2).
 pub const WATCHDOG_STEPS: u64 = 200_000;
 
-/// Per-instance memory of an instruction: edges, timers, window phases.
+/// Per-instance memory of an instruction: edges, timers, window phases. Laid out as in C,
+/// since the native engine's timers read and write it (`vm/native/timer.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[repr(C)]
 pub struct InstState {
     /// ACT at the previous execution.
     pub prev_act: bool,

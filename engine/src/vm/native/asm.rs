@@ -20,6 +20,8 @@ pub(super) enum Cond {
     NotZero = 0x5,
     /// Above, unsigned.
     Above = 0x7,
+    /// Greater or equal, signed.
+    GreaterEq = 0xD,
 }
 
 /// Machine code being written, and where it will need patching.
@@ -30,6 +32,24 @@ pub(super) struct Asm {
 }
 
 impl Asm {
+    /// Puts raw bytes: encodings written out at their one place of use, each with its
+    /// assembly in a comment there.
+    pub fn raw(&mut self, bytes: &[u8]) {
+        self.put(bytes);
+    }
+
+    /// Puts a four-byte little-endian value (an immediate or displacement).
+    pub fn raw32(&mut self, v: u32) {
+        self.put32(v);
+    }
+
+    /// An instruction `opcode` with `[rbx + disp]` as its memory operand and `reg` in the
+    /// ModRM reg field (a register or an opcode extension).
+    pub fn rbx_op(&mut self, opcode: &[u8], reg: u8, disp: u32) {
+        self.put(opcode);
+        self.rbx_disp(reg, disp);
+    }
+
     /// Where the next byte goes.
     pub fn here(&self) -> usize {
         self.bytes.len()

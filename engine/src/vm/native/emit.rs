@@ -360,6 +360,9 @@ impl Gen<'_> {
             VmOp::Fn => {
                 let f = &self.code.fns[arg as usize];
                 self.pending += f.cost;
+                if super::timer::tmrb(&mut self.asm, f) {
+                    return;
+                }
                 let skip = idle_without_act(f.op).then(|| {
                     self.asm.test_acc();
                     self.asm.jz_short_forward()

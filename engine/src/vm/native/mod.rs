@@ -17,6 +17,7 @@
 mod asm;
 mod check;
 mod emit;
+mod timer;
 
 use super::cnc::Cnc;
 use super::code::Code;
@@ -121,8 +122,10 @@ pub(super) struct RunCtx<'a> {
     exit_pc: u32,
     /// One byte per network: watched (1) or not (0).
     watched: *const bool,
-    cnc: *mut (dyn Cnc + 'a),
+    /// The instruction memories (for the timers the generated code runs itself).
+    states: *mut super::InstState,
     now: u64,
+    cnc: *mut (dyn Cnc + 'a),
     parts: Parts,
     panic: Option<Box<dyn Any + Send>>,
 }
@@ -133,6 +136,8 @@ pub(super) const CTX_BUDGET: u8 = 24;
 pub(super) const CTX_EXIT_KIND: u8 = 32;
 pub(super) const CTX_EXIT_PC: u8 = 36;
 pub(super) const CTX_WATCHED: u8 = 40;
+pub(super) const CTX_STATES: u8 = 48;
+pub(super) const CTX_NOW: u8 = 56;
 const _: () = {
     assert!(std::mem::offset_of!(RunCtx<'static>, saved_rsp) == 0);
     assert!(std::mem::offset_of!(RunCtx<'static>, steps) == CTX_STEPS as usize);
@@ -141,6 +146,8 @@ const _: () = {
     assert!(std::mem::offset_of!(RunCtx<'static>, exit_kind) == CTX_EXIT_KIND as usize);
     assert!(std::mem::offset_of!(RunCtx<'static>, exit_pc) == CTX_EXIT_PC as usize);
     assert!(std::mem::offset_of!(RunCtx<'static>, watched) == CTX_WATCHED as usize);
+    assert!(std::mem::offset_of!(RunCtx<'static>, states) == CTX_STATES as usize);
+    assert!(std::mem::offset_of!(RunCtx<'static>, now) == CTX_NOW as usize);
     assert!(std::mem::size_of::<bool>() == 1);
 };
 
@@ -375,8 +382,9 @@ impl Vm {
             exit_kind: ExitKind::Done as u32,
             exit_pc: 0,
             watched: self.watched.as_ptr(),
-            cnc,
+            states: parts.states,
             now,
+            cnc,
             parts,
             panic: None,
         };
