@@ -182,11 +182,11 @@ impl Vm {
                 &mut self.trace,
                 &mut r,
                 &Stops {
-                    quota,
+                    // While handing back, stop at every network marker: the check is here.
+                    quota: if self.handing_back { 0 } else { quota },
                     watching,
                     watched: &self.watched,
                     forcing,
-                    every_net: self.handing_back,
                 },
             );
             let w = self.code.words()[at as usize];
@@ -400,7 +400,7 @@ pub(super) const SEEN: u8 = 0b11_1110;
 /// What the hot loop needs to know besides code, memory and registers.
 #[derive(Clone, Copy)]
 struct Stops<'a> {
-    /// Level 2's quota for this slice (`u64::MAX`: never stop at a network).
+    /// Level 2's quota for this slice (`u64::MAX`: never stop at a network; 0: at every one).
     quota: u64,
     /// Whether recording may start or stop at a network marker (see `Vm::exec`).
     watching: bool,
@@ -408,8 +408,6 @@ struct Stops<'a> {
     watched: &'a [bool],
     /// Whether forces are active (coil writes then go through the outer loop).
     forcing: bool,
-    /// Stop at every network marker (while native code waits to take over again).
-    every_net: bool,
 }
 
 /// The logic registers.
@@ -436,7 +434,6 @@ fn hot<const TRACE: bool>(
         watching,
         watched,
         forcing,
-        every_net,
     } = *stops;
     // As long as the code (one trace byte per word): an index that reads a word needs no
     // second bounds check to record it. Untouched when nothing records.
@@ -516,7 +513,7 @@ fn hot<const TRACE: bool>(
             }
             byte::NET => {
                 // Leave only to suspend level 2, or where recording starts or stops.
-                if steps >= quota || every_net || (watching && watched[arg as usize] != TRACE) {
+                if steps >= quota || (watching && watched[arg as usize] != TRACE) {
                     break at;
                 }
                 continue;
