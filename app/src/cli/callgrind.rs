@@ -35,6 +35,34 @@ impl CountError {
     }
 }
 
+/// The arguments of a `bench` that runs as this one does (`--ticks-only`, so that only the
+/// ticks are counted): its path, engine, `--cnc`, `--no-machine`, `--coverage` and set-up
+/// script.
+pub(super) fn bench_args(
+    (path, engine, (cnc, devices, coverage), setup): (
+        &Path,
+        ladder_engine::vm::Engine,
+        (bool, bool, bool),
+        Option<&Path>,
+    ),
+) -> Vec<OsString> {
+    let mut args: Vec<OsString> = vec![path.into(), "--ticks-only".into(), "--engine".into()];
+    args.push(engine.name().into());
+    for (on, flag) in [
+        (cnc, "--cnc"),
+        (!devices, "--no-machine"),
+        (coverage, "--coverage"),
+    ] {
+        if on {
+            args.push(flag.into());
+        }
+    }
+    if let Some(s) = setup {
+        args.extend(["--script".into(), s.into()]);
+    }
+    args
+}
+
 /// Instructions per scan of `bench ARGS` (without `--scans`), from runs of `scans` and
 /// `2 × scans` scans of this very program under callgrind.
 pub(super) fn per_scan(args: &[OsString], scans: u64) -> Result<f64, CountError> {

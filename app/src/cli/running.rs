@@ -227,27 +227,10 @@ pub(super) fn bench(
         Ok(m) => m.without_devices(),
         Err(code) => return Ok(code),
     };
-    if let Some(script_path) = setup {
-        let script = match read_script((path, script_path), &machine, cnc, say, err)? {
-            Ok(s) => s,
-            Err(code) => return Ok(code),
-        };
-        let name = script_path.display().to_string();
-        let outcome = sim::run(&mut machine, &script, &name, false);
-        if outcome.failed > 0 {
-            for line in &outcome.output {
-                let _ = writeln!(err, "{line}");
-            }
-            let _ = writeln!(
-                err,
-                "{}",
-                say.pick(
-                    "the set-up script failed; nothing was timed",
-                    "准备脚本失败；未计时"
-                )
-            );
-            return Ok(1);
-        }
+    if let Some(script_path) = setup
+        && let Some(code) = set_up(&mut machine, (path, script_path), cnc, say, err)?
+    {
+        return Ok(code);
     }
     // Timed with coverage measured, for its cost against the plain scan.
     machine.plc_mut().set_coverage(coverage);
@@ -350,22 +333,8 @@ pub(super) fn bench(
     }
     let engine = machine.plc().engine();
     if instructions && !stopped {
-        let mut args: Vec<std::ffi::OsString> =
-            vec![path.into(), "--ticks-only".into(), "--engine".into()];
-        args.push(engine.name().into());
-        for (on, flag) in [
-            (cnc, "--cnc"),
-            (!devices, "--no-machine"),
-            (coverage, "--coverage"),
-        ] {
-            if on {
-                args.push(flag.into());
-            }
-        }
-        if let Some(s) = setup {
-            args.extend(["--script".into(), s.into()]);
-        }
-        match super::callgrind::per_scan(&args, scans) {
+        let same = (path, engine, (cnc, devices, coverage), setup);
+        match super::callgrind::per_scan(&super::callgrind::bench_args(same), scans) {
             Ok(per) => {
                 let _ = writeln!(
                     out,
@@ -388,6 +357,37 @@ pub(super) fn bench(
         engine.name()
     );
     Ok(if stopped { STOPPED } else { 0 })
+}
+
+/// Runs `bench`'s set-up script, untimed; the exit code when it cannot run or fails.
+fn set_up(
+    machine: &mut Machine,
+    (path, script_path): (&Path, &Path),
+    cnc: bool,
+    say: Say,
+    err: &mut dyn Write,
+) -> anyhow::Result<Option<i32>> {
+    let script = match read_script((path, script_path), machine, cnc, say, err)? {
+        Ok(s) => s,
+        Err(code) => return Ok(Some(code)),
+    };
+    let name = script_path.display().to_string();
+    let outcome = sim::run(machine, &script, &name, false);
+    if outcome.failed == 0 {
+        return Ok(None);
+    }
+    for line in &outcome.output {
+        let _ = writeln!(err, "{line}");
+    }
+    let _ = writeln!(
+        err,
+        "{}",
+        say.pick(
+            "the set-up script failed; nothing was timed",
+            "准备脚本失败；未计时"
+        )
+    );
+    Ok(Some(1))
 }
 
 /// The simulated CNC with a stopwatch on its exchange, for `bench --cnc`.

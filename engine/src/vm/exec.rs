@@ -267,8 +267,7 @@ impl Vm {
                     r.steps += u64::from(self.code.fns[arg as usize].cost);
                     self.exec_fn(arg, r.acc != 0, now, cnc);
                     if TRACE && r.acc != 0 {
-                        let f = &self.code.fns[arg as usize];
-                        record_outcome(&mut self.trace, at, functions::outcome(f, &self.mem));
+                        self.record_outcome(at, arg);
                     }
                 }
                 VmOp::Ret => match self.frames.pop() {
@@ -340,6 +339,14 @@ impl Vm {
         } else {
             self.watch_count > 0
         }
+    }
+}
+
+impl Vm {
+    /// Records the result the compare of function instruction `index` at word `at` took.
+    fn record_outcome(&mut self, at: u32, index: u32) {
+        let outcome = functions::outcome(&self.code.fns[index as usize], &self.mem);
+        record_outcome(&mut self.trace, at, outcome);
     }
 }
 
