@@ -2,8 +2,9 @@
 //!
 //! Register roles are fixed for the whole generated code (see `emit.rs`): the accumulator in
 //! `eax` (always 0 or 1), the memory image's base in `rbx`, the block stack in `r12`, the
-//! branch stack in `r13`, the step count in `r14` and the run's context in `r15`; `ecx` and
-//! the caller-saved registers are scratch. Every encoding here is written out with its
+//! branch stack in `r13`, the constants 0 in `ebp` and 1 in `r14d`, the run's context in
+//! `r15` (the step count lives there, at `CTX_STEPS`); `dl` holds a coil byte being written;
+//! `ecx` and the other caller-saved registers are scratch. Every encoding here is written out with its
 //! operands named, so a reader can check it against the Intel manual's opcode tables.
 
 /// A condition for [`Asm::setcc_al`], the `cmov`s and [`Asm::jcc`]: the low nibble
@@ -24,7 +25,7 @@ pub(super) enum Cond {
     GreaterEq = 0xD,
 }
 
-/// Machine code being written, and where it will need patching.
+/// Machine code being written (the emitter keeps the places to patch).
 #[derive(Default)]
 pub(super) struct Asm {
     /// The bytes so far.
@@ -184,6 +185,9 @@ impl Asm {
 
     /// `add qword [r15 + steps], n` (nothing for 0).
     pub fn add_steps(&mut self, steps: u8, n: u32) {
+        // The immediate is sign-extended: a count this large cannot come from a program the
+        // profiles' step limits allow.
+        assert!(n < 1 << 31, "{n} steps between two joins");
         if n == 0 {
         } else if n < 0x80 {
             self.put(&[0x49, 0x83, 0x47, steps, n as u8]);
@@ -315,7 +319,7 @@ impl Asm {
     /// registers, keeps `rsp` in `ctx[0]` for the exits, sets the constants `ebp` = 0 and
     /// `r14d` = 1, empties the logic state and calls `target`. When the code returns, the
     /// exit kind is 0 (done); the common exit follows.
-    pub fn prologue(&mut self, kind: u8) {
+    pub fn prologue(&mut self, exit_kind_at: u8) {
         // push rbx, rbp, r12, r13, r14, r15; sub rsp, 8 (16-byte alignment at the call)
         self.put(&[0x53, 0x55, 0x41, 0x54, 0x41, 0x55, 0x41, 0x56, 0x41, 0x57]);
         self.put(&[0x48, 0x83, 0xEC, 0x08]);
@@ -326,7 +330,7 @@ impl Asm {
         self.put(&[0x31, 0xC0]);
         self.clear_stacks();
         self.put(&[0xFF, 0xD2]);
-        self.store_ctx32(kind, 0);
+        self.store_ctx32(exit_kind_at, 0);
     }
 
     /// The common exit, at [`Asm::here`] when called: restores `rsp` from `ctx[0]` and the

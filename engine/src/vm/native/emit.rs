@@ -1,9 +1,9 @@
 //! Code generation: the checked words of a [`Code`] to x86-64, word by word, in one pass.
 //!
 //! Bit logic is straight-line code on the image, addressed directly (`[rbx + byte]`): a
-//! contact is a `test` and a `setcc`, a coil two or four read-modify-writes, a block or
-//! branch push one `lea`. Steps are counted at generation time and added to `r14` only
-//! where a run can leave or join the straight line (a jump, call, return, label, or level
+//! contact is a `test` and a `setcc` or `cmov`, a coil a masked write into `dl`, a block or
+//! branch push one `lea`. Steps are counted at generation time and added to the context's
+//! count only where a run can leave or join the straight line (a jump, call, return, label, or level
 //! 2's quota check), so a run counts exactly what the interpreter counts. Function
 //! instructions call one helper with their index and the accumulator; CALL is a native call
 //! with the caller's logic state pushed; RET a native return.
@@ -176,7 +176,7 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
     }
     for (at, copy, word) in std::mem::take(&mut g.fixups) {
         let to = offsets[copy as usize][word as usize];
-        debug_assert_ne!(to, u32::MAX, "a jump stays in its copy");
+        assert_ne!(to, u32::MAX, "a jump to word {word} left its copy {copy:?}");
         g.asm.patch_rel32(at, to as usize);
     }
     Generated {

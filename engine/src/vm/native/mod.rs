@@ -198,15 +198,24 @@ impl Native {
     /// Runs copy `copy` from word `pc` (a level's entry, or a network marker where a divided
     /// level 2 resumes or a run comes back from the interpreter) until the level ends,
     /// suspends, trips the watchdog or meets a watched network.
-    fn enter(&self, ctx: &mut RunCtx<'_>, mem: *mut u8, pc: u32, copy: Copy) {
+    ///
+    /// # Safety
+    ///
+    /// `mem` points to an image of [`IMAGE_BYTES`](super::IMAGE_BYTES) bytes that nothing
+    /// else uses during the call; `ctx` holds the parts of the PLC this code was generated
+    /// for (its `watched` pointer one byte per network of the program, its `states` one
+    /// memory per instance), as `Vm::native_segment` makes it.
+    unsafe fn enter(&self, ctx: &mut RunCtx<'_>, mem: *mut u8, pc: u32, copy: Copy) {
         let offset = self.offsets[copy as usize][pc as usize];
         assert_ne!(offset, u32::MAX, "word {pc} is not in the {copy:?} copy");
         let base = self.map.as_ptr();
         // SAFETY: the map holds code made by `emit::generate` for this program, whose entry
         // is at offset 0 with the `EntryFn` signature (asm::prologue). `offset` is the code of
-        // a level entry or a level-2 network marker, the only places a run starts. The code
-        // reads and writes `mem` only inside IMAGE_BYTES (displacements are masked), which
-        // the caller's image is, and calls only `call_function` with `ctx`.
+        // a level's entry or of a network marker of a level, the only places a run starts
+        // (checked above against the copy). The code reads and writes `mem` only inside
+        // IMAGE_BYTES (displacements are masked or bounded when generated), reads the
+        // context's `watched` and `states` inside their lengths (the caller's contract), and
+        // calls only `call_function` with `ctx`.
         unsafe {
             let entry: EntryFn = std::mem::transmute::<*const u8, EntryFn>(base);
             entry(ctx, mem, base.add(offset as usize));
@@ -304,6 +313,8 @@ impl Vm {
             || self.covering
             || !self.forced_bytes.is_empty()
             || self.watched_in_subs > 0;
+        // Left set only by a panic that unwound out of a hand-over.
+        self.handing_back = false;
         if interpreted {
             return self.run_interp(pc, level, quota, cnc);
         }
@@ -372,6 +383,10 @@ impl Vm {
         };
         let now = self.now_ms();
         let parts = Parts::of(self);
+        // What `Native::enter` relies on.
+        assert_eq!(parts.mem_len, super::IMAGE_BYTES);
+        assert_eq!(self.watched.len(), self.code.networks.len());
+        assert_eq!(self.states.len(), self.code.states as usize);
         let mem = parts.mem;
         let native: *const Native = self.native.as_ref().expect("checked by the caller");
         let mut ctx = RunCtx {
@@ -390,7 +405,8 @@ impl Vm {
         };
         // SAFETY: `native` points into `self.native`, which nothing in a run replaces (the
         // helper runs function instructions only), and `watched` into `self.watched`, which
-        // only `Vm::watch` changes, between ticks; see `Native::enter`.
+        // only `Vm::watch` changes, between ticks; the image, the watched flags and the
+        // states have the lengths `Native::enter` needs (asserted above).
         unsafe { (*native).enter(&mut ctx, mem, pc, copy) };
         if let Some(payload) = ctx.panic.take() {
             resume_unwind(payload);

@@ -63,10 +63,14 @@ pub(super) fn tmrb(a: &mut Asm, f: &FnCall) -> bool {
     let Some((t, preset, out)) = operands(f) else {
         return false;
     };
+    // The instance's offset is a sign-extended immediate.
+    let Some(state_at) = f.state.checked_mul(STATE_BYTES).filter(|&o| o < 1 << 31) else {
+        return false;
+    };
     let (out_byte, out_bit) = (out >> 3, (out & 7) as u8);
     // mov rsi, [r15 + states]; add rsi, state × size: this instance's memory.
     a.raw(&[0x49, 0x8B, 0x77, CTX_STATES, 0x48, 0x81, 0xC6]);
-    a.raw32(f.state * STATE_BYTES);
+    a.raw32(state_at);
     // mov rdi, [r15 + now]
     a.raw(&[0x49, 0x8B, 0x7F, CTX_NOW]);
     a.test_acc();
