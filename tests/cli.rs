@@ -558,3 +558,21 @@ fn bench_runs_on_the_engine_asked_for_and_refuses_an_unknown_one() {
         r.stderr
     );
 }
+
+#[test]
+fn an_endless_input_is_refused_past_the_size_limit_before_it_fills_the_memory() {
+    if !std::path::Path::new("/dev/zero").exists() {
+        return;
+    }
+    let r = run(&["check", "/dev/zero"]);
+    assert_ne!(r.code, 0, "{r:?}");
+    assert!(r.stderr.contains("larger than 64 MiB"), "{}", r.stderr);
+    let r = run(&[
+        "sim",
+        &il_path("valid/functions.il"),
+        "--script",
+        "/dev/zero",
+    ]);
+    assert_ne!(r.code, 0, "{r:?}");
+    assert!(r.stderr.contains("larger than 64 MiB"), "{}", r.stderr);
+}

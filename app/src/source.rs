@@ -24,7 +24,7 @@ impl Source {
     /// Reads a `.ldp` project or an `.il` text; the content decides, not the extension.
     /// Errors are said in `say`'s language.
     pub fn read(path: &Path, say: Say) -> Result<Source> {
-        let bytes = std::fs::read(path).map_err(|e| anyhow!(say.cannot_read(path, e)))?;
+        let bytes = file::read_input(path).map_err(|e| anyhow!(say.cannot_read(path, e)))?;
         if file::is_project_text(&bytes) {
             let project =
                 file::from_bytes(&bytes).map_err(|e| anyhow!(say.cannot_open(path, &e)))?;

@@ -420,9 +420,58 @@ mod v1 {
     }
 }
 
+/// The largest input file read whole (a project, an instruction list, a script, a comments
+/// CSV, a coverage report): 64 MiB, far past any real one, so that a wrong path (a device,
+/// a disk image) is refused before it fills the memory.
+pub const INPUT_MAX: u64 = 64 << 20;
+
+/// Reads a whole input file of at most `limit` bytes. A larger one, and a device that never
+/// ends (`/dev/zero`), is refused with [`std::io::ErrorKind::FileTooLarge`] once `limit + 1`
+/// bytes were seen (a regular file's size is checked before anything is read).
+pub fn read_limited(path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let too_large = || {
+        std::io::Error::new(
+            std::io::ErrorKind::FileTooLarge,
+            format!(
+                "the file is larger than {} MiB, the most Ladder Studio reads",
+                limit >> 20
+            ),
+        )
+    };
+    let file = fs::File::open(path)?;
+    if file
+        .metadata()
+        .is_ok_and(|m| m.is_file() && m.len() > limit)
+    {
+        return Err(too_large());
+    }
+    let mut bytes = Vec::new();
+    file.take(limit + 1).read_to_end(&mut bytes)?;
+    if bytes.len() as u64 > limit {
+        return Err(too_large());
+    }
+    Ok(bytes)
+}
+
+/// Reads a whole input file of at most [`INPUT_MAX`] bytes ([`read_limited`]).
+pub fn read_input(path: &Path) -> std::io::Result<Vec<u8>> {
+    read_limited(path, INPUT_MAX)
+}
+
+/// [`read_input`] as UTF-8 text (`InvalidData` otherwise, as `fs::read_to_string` says it).
+pub fn read_input_text(path: &Path) -> std::io::Result<String> {
+    String::from_utf8(read_input(path)?).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        )
+    })
+}
+
 /// Reads and verifies a project file.
 pub fn load(path: &Path) -> Result<Project, FileError> {
-    let bytes = fs::read(path).map_err(|source| FileError::Io {
+    let bytes = read_input(path).map_err(|source| FileError::Io {
         path: path.to_path_buf(),
         source,
     })?;

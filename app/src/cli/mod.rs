@@ -644,7 +644,7 @@ fn import_comments(
 ) -> anyhow::Result<i32> {
     let mut project =
         file::load(project_path).map_err(|e| anyhow::anyhow!(say.cannot_open(project_path, &e)))?;
-    let text = std::fs::read_to_string(csv_path)
+    let text = file::read_input_text(csv_path)
         .map_err(|e| anyhow::anyhow!(say.cannot_read(csv_path, e)))?;
     match ladder_engine::comments::import(&mut project, &text, lang) {
         Ok(n) => {

@@ -75,7 +75,7 @@ pub(super) fn read_script(
     say: Say,
     err: &mut dyn Write,
 ) -> anyhow::Result<Result<Script, i32>> {
-    let text = std::fs::read_to_string(script_path)
+    let text = ladder_engine::file::read_input_text(script_path)
         .map_err(|e| anyhow::anyhow!(say.cannot_read(script_path, e)))?;
     let folder = script_path
         .parent()

@@ -39,7 +39,7 @@ impl CoverageView {
     /// covered (a click goes there). A file that is not one is said in the output window.
     pub fn open(&mut self, cx: &mut Context<'_>, path: &Path) {
         let lang = cx.settings.lang;
-        let read = std::fs::read_to_string(path)
+        let read = ladder_engine::file::read_input_text(path)
             .map_err(|e| e.to_string())
             .and_then(|t| Coverage::from_json(&t).map_err(|e| e.to_string()));
         let report = match read {

@@ -49,7 +49,14 @@ pub fn read_program_file(path: &std::path::Path) -> Result<String, ProgramFileEr
     if size > FILE_MAX {
         return Err(ProgramFileError::TooLarge(size));
     }
-    let bytes = std::fs::read(path).map_err(|e| ProgramFileError::Io(e.to_string()))?;
+    // Bounded as it reads too: a device reports no size (`/dev/zero`).
+    let bytes = crate::file::read_limited(path, FILE_MAX).map_err(|e| {
+        if e.kind() == std::io::ErrorKind::FileTooLarge {
+            ProgramFileError::TooLarge(FILE_MAX + 1)
+        } else {
+            ProgramFileError::Io(e.to_string())
+        }
+    })?;
     Ok(String::from_utf8_lossy(&bytes).into_owned())
 }
 

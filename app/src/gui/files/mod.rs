@@ -237,7 +237,7 @@ impl FileState {
     pub fn open_recovered(&mut self, cx: &mut Context<'_>, path: &Path) -> bool {
         let path = &canonical(path);
         let lang = cx.settings.lang;
-        let result = std::fs::read(path)
+        let result = file::read_input(path)
             .map_err(|e| e.to_string())
             .and_then(|b| file::recover(&b).map_err(|e| crate::gui::errors::file_error(&e, lang)));
         match result {
@@ -365,7 +365,7 @@ impl FileState {
             cx.output.say(Msg::ReadOnly.text(lang).into(), true);
             return;
         }
-        let text = match std::fs::read_to_string(path) {
+        let text = match file::read_input_text(path) {
             Ok(t) => t,
             Err(e) => {
                 cx.output.say(format!("{}: {e}", path.display()), true);
