@@ -492,6 +492,33 @@ pub enum Interrupt {
     MidBackup,
 }
 
+/// The file a write to `path` must replace: `path` itself, or, where `path` is a symbolic
+/// link (a chain of them), the file it leads to, so that the link stays a link and the file
+/// it names changes. Every writer of the project writes through this (and [`keep_mode`]).
+pub fn write_target(path: &Path) -> std::path::PathBuf {
+    let mut target = path.to_path_buf();
+    // A loop of links ends here too: the write then fails at the link, as the system says.
+    for _ in 0..40 {
+        let Ok(link) = fs::read_link(&target) else {
+            break;
+        };
+        target = match target.parent() {
+            Some(dir) if link.is_relative() => dir.join(link),
+            _ => link,
+        };
+    }
+    target
+}
+
+/// Gives `new` (a temporary file about to replace `old`) the permissions of `old`, where
+/// `old` exists: a project kept at 0640 stays 0640 after a save, its backup too.
+pub fn keep_mode(old: &Path, new: &Path) -> std::io::Result<()> {
+    match fs::metadata(old) {
+        Ok(m) => fs::set_permissions(new, m.permissions()),
+        Err(_) => Ok(()),
+    }
+}
+
 /// Saves atomically: writes a temporary file in the same folder, flushes it to disk, keeps the
 /// previous file as `NAME.ldp.bak` (itself written to a temporary file and renamed, so a crash
 /// never leaves a truncated backup in place of the last good one), then renames the new one
@@ -519,6 +546,8 @@ pub fn save_interruptible(
         .check_structure()
         .map_err(FileError::Structure)?;
     let text = to_string(project);
+    let target = write_target(path);
+    let path = target.as_path();
     let dir = path
         .parent()
         .filter(|p| !p.as_os_str().is_empty())
@@ -538,6 +567,7 @@ pub fn save_interruptible(
         }
         f.write_all(text.as_bytes())?;
         f.sync_all()?;
+        keep_mode(path, &tmp)?;
         if interrupt == Interrupt::BeforeRename {
             return Err(std::io::Error::other("interrupted"));
         }
@@ -550,6 +580,7 @@ pub fn save_interruptible(
             }
             b.write_all(&old)?;
             b.sync_all()?;
+            keep_mode(path, &bak_tmp)?;
             fs::rename(&bak_tmp, dir.join(format!("{name}.bak")))?;
         }
         fs::rename(&tmp, path)

@@ -340,3 +340,34 @@ fn the_ladder_checksum_is_the_crc_of_the_saved_file_without_its_digits() {
     );
     assert_eq!(file::ladder_checksum(b"LD X1.0\n"), None);
 }
+
+/// A save through a symbolic link writes the file the link names, the link stays a link, and
+/// the file and its backup keep their permissions.
+#[cfg(unix)]
+#[test]
+fn a_save_through_a_link_writes_the_real_file_and_keeps_its_mode() {
+    use std::os::unix::fs::{PermissionsExt, symlink};
+    let dir = tempfile::tempdir().unwrap();
+    let real_dir = dir.path().join("projects");
+    std::fs::create_dir(&real_dir).unwrap();
+    let real = real_dir.join("cell.ldp");
+    let mut project = full_project();
+    file::save(&project, &real).unwrap();
+    std::fs::set_permissions(&real, std::fs::Permissions::from_mode(0o640)).unwrap();
+    let link = dir.path().join("current.ldp");
+    symlink("projects/cell.ldp", &link).unwrap();
+    project.level2_division = 3;
+    file::save(&project, &link).unwrap();
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(file::load(&real).unwrap().level2_division, 3);
+    let mode = |p: &std::path::Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode(&real), 0o640);
+    let bak = real_dir.join("cell.ldp.bak");
+    assert_eq!(mode(&bak), 0o640, "the backup beside the real file");
+    assert!(!dir.path().join("current.ldp.bak").exists());
+}
