@@ -74,12 +74,27 @@ impl Vm {
                 Exit::Native(_) => unreachable!("only `run_watched` hands back"),
             }
         };
+        self.end_run(level, steps);
+        result
+    }
+
+    /// After a level's run on either engine: its steps counted, no caller left.
+    pub(super) fn end_run(&mut self, level: Level, steps: u64) {
         if level == Level::Two {
             self.level2.cycle_steps += steps;
         }
         self.executed += steps;
         self.frames.clear();
-        result
+    }
+
+    /// The watchdog's budget for a run of `level`: a level-1 scan's limit, or what is left
+    /// of level 2's for its cycle.
+    pub(super) fn watchdog_budget(&self, level: Level) -> u64 {
+        if level == Level::One {
+            WATCHDOG_STEPS
+        } else {
+            WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
+        }
     }
 
     /// Runs the watched network at word `pc` and on in the interpreter, recording for the
@@ -155,11 +170,7 @@ impl Vm {
         steps_out: &mut u64,
         cnc: &mut dyn Cnc,
     ) -> Exit {
-        let budget = if level == Level::One {
-            WATCHDOG_STEPS
-        } else {
-            WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
-        };
+        let budget = self.watchdog_budget(level);
         let now = self.now_ms();
         let forcing = !self.forced_bytes.is_empty();
         let watching = self.switching::<TRACE>();

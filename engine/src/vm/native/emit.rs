@@ -124,48 +124,30 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
         start..end + 1
     };
     let (l1, l2) = (own(code.level1), own(code.level2));
-    let none = Checks::default();
     let mut offsets = [0, 1, 2].map(|_| vec![u32::MAX; words.len()]);
-    // The main copy: every word; level 2 checks its quota.
-    let main: Vec<(usize, Checks)> = (0..words.len())
-        .map(|at| {
-            let quota = l2.contains(&at);
-            (
-                at,
-                Checks {
-                    quota,
+    for copy in [Copy::Main, Copy::Whole, Copy::Observed] {
+        // Which words each copy holds, and what its network markers check.
+        let of_copy = (0..words.len()).filter_map(|at| {
+            let (one, two) = (l1.contains(&at), l2.contains(&at));
+            let checks = match copy {
+                // Every word; level 2 checks its quota.
+                Copy::Main => Checks {
+                    quota: two,
                     watch: false,
                 },
-            )
-        })
-        .collect();
-    g.copy(Copy::Main, &main, &mut offsets);
-    // Level 2 undivided.
-    let whole: Vec<(usize, Checks)> = l2.clone().map(|at| (at, none)).collect();
-    g.copy(Copy::Whole, &whole, &mut offsets);
-    // Both levels, watched.
-    let observed: Vec<(usize, Checks)> = l1
-        .clone()
-        .map(|at| {
-            (
-                at,
-                Checks {
-                    quota: false,
+                // Level 2 undivided.
+                Copy::Whole if two => Checks::default(),
+                // Both levels, watched.
+                Copy::Observed if one || two => Checks {
+                    quota: two,
                     watch: true,
                 },
-            )
-        })
-        .chain(l2.clone().map(|at| {
-            (
-                at,
-                Checks {
-                    quota: true,
-                    watch: true,
-                },
-            )
-        }))
-        .collect();
-    g.copy(Copy::Observed, &observed, &mut offsets);
+                _ => return None,
+            };
+            Some((at, checks))
+        });
+        g.copy(copy, of_copy, &mut offsets);
+    }
     for (kind, pc, at) in std::mem::take(&mut g.stubs) {
         let stub = g.asm.here();
         g.asm.patch_rel32(at, stub);
@@ -188,11 +170,16 @@ pub(super) fn generate(code: &Code, helper: u64) -> Generated {
 impl Gen<'_> {
     /// Generates one copy of `words` (with what each network marker checks), contiguous runs
     /// of words, into `offsets[copy]`.
-    fn copy(&mut self, copy: Copy, words: &[(usize, Checks)], offsets: &mut [Vec<u32>; 3]) {
+    fn copy(
+        &mut self,
+        copy: Copy,
+        words: impl Iterator<Item = (usize, Checks)>,
+        offsets: &mut [Vec<u32>; 3],
+    ) {
         self.pending = 0;
         self.cached = None;
         self.dirty = true;
-        for &(at, checks) in words {
+        for (at, checks) in words {
             self.join(at, checks);
             offsets[copy as usize][at] = self.asm.here() as u32;
             self.word(at as u32, checks, copy);

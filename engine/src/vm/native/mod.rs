@@ -23,7 +23,7 @@ use super::cnc::Cnc;
 use super::code::Code;
 use super::exec::{Handback, Level};
 use super::functions::{self, Ctx};
-use super::{Halt, Vm, WATCHDOG_STEPS};
+use super::{Halt, Vm};
 use crate::address::Area;
 use std::any::Any;
 use std::panic::{AssertUnwindSafe, catch_unwind, resume_unwind};
@@ -359,11 +359,7 @@ impl Vm {
                 ExitKind::Panic => unreachable!("a panic goes on as a panic"),
             }
         };
-        if level == Level::Two {
-            self.level2.cycle_steps += steps;
-        }
-        self.executed += steps;
-        self.frames.clear();
+        self.end_run(level, steps);
         result
     }
 
@@ -376,11 +372,7 @@ impl Vm {
         steps: &mut u64,
         cnc: &mut dyn Cnc,
     ) -> (ExitKind, u32) {
-        let budget = if level == Level::One {
-            WATCHDOG_STEPS
-        } else {
-            WATCHDOG_STEPS.saturating_sub(self.level2.cycle_steps)
-        };
+        let budget = self.watchdog_budget(level);
         let now = self.now_ms();
         let parts = Parts::of(self);
         // What `Native::enter` relies on.
