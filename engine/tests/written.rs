@@ -129,13 +129,13 @@ impl Gen {
             }
             Expr::And(terms) => {
                 self.load(&terms[0]);
-                for t in &terms[1..] {
+                for t in terms.iter().skip(1) {
                     self.and_term(t, false);
                 }
             }
             Expr::Or(terms) => {
                 self.load(&terms[0]);
-                for t in &terms[1..] {
+                for t in terms.iter().skip(1) {
                     self.or_term(t);
                 }
             }
@@ -157,7 +157,7 @@ impl Gen {
             }
             Expr::And(terms) => {
                 self.and_term(&terms[0], no_load);
-                for t in &terms[1..] {
+                for t in terms.iter().skip(1) {
                     self.and_term(t, false);
                 }
             }

@@ -25,35 +25,58 @@ pub enum Expr {
         origin: Origin,
     },
     /// Terms in series, left to right.
-    And(Vec<Expr>),
+    And(Terms),
     /// Terms in parallel, top to bottom.
-    Or(Vec<Expr>),
+    Or(Terms),
 }
+
+/// The terms of a series or parallel expression. A deque, so that joining a term at either
+/// end is cheap (see [`or`]).
+pub type Terms = std::collections::VecDeque<Expr>;
 
 /// Series combination, flattening nested series.
 pub fn and(a: Expr, b: Expr) -> Expr {
-    let mut terms = match a {
-        Expr::And(v) => v,
-        other => vec![other],
-    };
-    match b {
-        Expr::And(v) => terms.extend(v),
-        other => terms.push(other),
-    }
-    Expr::And(terms)
+    Expr::And(join(a, b, |e| match e {
+        Expr::And(v) => Ok(v),
+        other => Err(other),
+    }))
 }
 
 /// Parallel combination, flattening nested parallels.
 pub fn or(a: Expr, b: Expr) -> Expr {
-    let mut terms = match a {
-        Expr::Or(v) => v,
-        other => vec![other],
-    };
-    match b {
-        Expr::Or(v) => terms.extend(v),
-        other => terms.push(other),
+    Expr::Or(join(a, b, |e| match e {
+        Expr::Or(v) => Ok(v),
+        other => Err(other),
+    }))
+}
+
+/// The terms of `a` then `b`, each opened into its terms when `open` says it is a list of the
+/// same kind. The longer list takes in the shorter one at its front or back, so a chain built
+/// from either end (`LD a … LD z` then `ORB`s, or `LD a / OR b / OR c …`) costs time linear in
+/// its length rather than copying the growing list at every step.
+fn join(a: Expr, b: Expr, open: impl Fn(Expr) -> Result<Terms, Expr>) -> Terms {
+    match (open(a), open(b)) {
+        (Ok(mut x), Ok(mut y)) => {
+            if x.len() >= y.len() {
+                x.append(&mut y);
+                x
+            } else {
+                while let Some(t) = x.pop_back() {
+                    y.push_front(t);
+                }
+                y
+            }
+        }
+        (Ok(mut x), Err(b)) => {
+            x.push_back(b);
+            x
+        }
+        (Err(a), Ok(mut y)) => {
+            y.push_front(a);
+            y
+        }
+        (Err(a), Err(b)) => Terms::from([a, b]),
     }
-    Expr::Or(terms)
 }
 
 /// An output instruction: a coil (OUT/OUTN) or a function box.
@@ -200,13 +223,13 @@ fn emit_load(e: &Expr, out: &mut Vec<Instr>) {
         )),
         Expr::And(terms) => {
             emit_load(&terms[0], out);
-            for t in &terms[1..] {
+            for t in terms.iter().skip(1) {
                 emit_and(t, out);
             }
         }
         Expr::Or(terms) => {
             emit_load(&terms[0], out);
-            for t in &terms[1..] {
+            for t in terms.iter().skip(1) {
                 emit_or(t, out);
             }
         }
