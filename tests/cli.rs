@@ -75,6 +75,25 @@ fn import_then_export_gives_the_list_back() {
     assert_eq!(r.stdout, read(std::path::Path::new(&source)));
 }
 
+#[cfg(unix)]
+#[test]
+fn an_output_through_a_link_is_written_to_the_file_it_names_with_its_mode() {
+    use std::os::unix::fs::{PermissionsExt, symlink};
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("plc.il");
+    std::fs::write(&real, "old").unwrap();
+    std::fs::set_permissions(&real, std::fs::Permissions::from_mode(0o640)).unwrap();
+    let link = dir.path().join("latest.il");
+    symlink(&real, &link).unwrap();
+    let source = il_path("valid/branches.il");
+    let r = run(&["export-il", &source, "-o", link.to_str().unwrap()]);
+    assert_eq!(r.code, 0, "{r:?}");
+    assert!(link.symlink_metadata().unwrap().file_type().is_symlink());
+    assert_eq!(read(&real), read(std::path::Path::new(&source)));
+    let mode = real.metadata().unwrap().permissions().mode() & 0o777;
+    assert_eq!(mode, 0o640, "the file keeps its permissions");
+}
+
 #[test]
 fn a_damaged_project_is_refused_with_exit_2() {
     let dir = tempfile::tempdir().unwrap();

@@ -6,8 +6,18 @@ use std::path::Path;
 
 /// Writes `bytes` to `path` atomically; a temporary file left by a failure is removed.
 /// Through a symbolic link to the file it names, keeping that file's permissions
-/// (`file::write_target`, `file::keep_mode`).
+/// (`file::write_target`, `file::keep_mode`). A target that is no regular file (a device such
+/// as `/dev/stdout`, a pipe) is written in place: it holds no old content to keep whole, and
+/// renaming over it would replace it.
 pub(crate) fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    // Asked of the name as given: the system follows `/dev/stdout` to a pipe that has no
+    // path of its own.
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        return std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .and_then(|mut f| f.write_all(bytes));
+    }
     let target = ladder_engine::file::write_target(path);
     let path = target.as_path();
     let name = path
@@ -90,5 +100,29 @@ mod tests {
         assert_eq!(std::fs::read_to_string(&real).unwrap(), "new");
         let mode = std::fs::metadata(&real).unwrap().permissions().mode() & 0o777;
         assert_eq!(mode, 0o640);
+    }
+
+    #[test]
+    fn an_output_to_a_device_is_written_in_place() {
+        // Renaming a temporary file over /dev/null would replace the device for every program.
+        write_atomic(std::path::Path::new("/dev/null"), b"gone").unwrap();
+        let null = std::fs::symlink_metadata("/dev/null").unwrap();
+        assert!(!null.is_file(), "/dev/null is still a device");
+    }
+
+    #[test]
+    fn a_failed_write_leaves_what_was_there_and_no_temporary() {
+        let dir = tempfile::tempdir().unwrap();
+        let taken = dir.path().join("out.il");
+        std::fs::create_dir(&taken).unwrap();
+        std::fs::write(taken.join("kept"), "old").unwrap();
+        // A folder under the name: the rename fails after the temporary was written.
+        assert!(write_atomic(&taken, b"new").is_err());
+        assert_eq!(std::fs::read_to_string(taken.join("kept")).unwrap(), "old");
+        let left: Vec<_> = std::fs::read_dir(dir.path())
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(left, ["out.il"], "no temporary left beside it");
     }
 }

@@ -1,6 +1,6 @@
 //! The Ladder Studio engine: addresses, the instruction catalogue, the ladder model, the
 //! compiler and instruction lists of the GSK PLC. It has no GUI dependency and does no I/O
-//! outside [`file`].
+//! outside [`mod@file`].
 
 pub mod address;
 pub mod catalog;

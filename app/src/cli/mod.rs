@@ -427,7 +427,8 @@ fn export_il(
     Ok(0)
 }
 
-/// Writes `text` to the `-o` file, or to standard output without one.
+/// Writes `text` to the `-o` file (whole or not at all, as every writer does), or to standard
+/// output without one.
 fn write_output(
     output: Option<&Path>,
     text: &str,
@@ -435,7 +436,8 @@ fn write_output(
     out: &mut dyn Write,
 ) -> anyhow::Result<()> {
     match output {
-        Some(o) => std::fs::write(o, text).map_err(|e| anyhow::anyhow!(say.cannot_write(o, e))),
+        Some(o) => crate::atomic::write_atomic(o, text.as_bytes())
+            .map_err(|e| anyhow::anyhow!(say.cannot_write(o, e))),
         None => {
             let _ = out.write_all(text.as_bytes());
             Ok(())

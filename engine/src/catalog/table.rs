@@ -176,7 +176,7 @@ catalog! {
             konst("SIZE2", 1, 256, "转换表数据个数 1–256", "Number of table entries, 1–256"),
             spec("IN", OperandKind::Byte, RELAYS_AND_D, Width::Bytes(1), Access::Read, "表内序号地址（1 字节，无符号）", "Table index address (1 byte, unsigned)"),
             byte_out("OUT", CODB_OUT, Width::SizeOf(0), "输出地址", "Output address"),
-        ] list? "二进制代码转换：OUT := 表[IN]" "Code conversion: OUT := table[IN]";
+        ] list? "二进制代码转换：OUT := 表中第 IN 项" "Code conversion: OUT := the table's entry number IN";
         Jmpb "JMPB" Function LabelJump [spec("L", OperandKind::Label, L_ONLY, Width::None, Access::Read, "跳转目标标号", "Target label")] list?
             "标号跳转：ACT=1 时跳到同一程序块内的 LBL" "Jump: while ACT = 1, go to the LBL in the same block";
         Lbl "LBL" Function LabelJump [spec("L", OperandKind::Label, L_ONLY, Width::None, Access::Read, "标号（每个工程内唯一）", "Label (unique in the project)")] list?

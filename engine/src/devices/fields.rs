@@ -1,6 +1,6 @@
 //! A device's parameters as a list of named fields, for the Machine page's form: each field's
 //! text, what it holds, its label in both languages, and the one parser that takes a typed
-//! text into the device or says why not. One list per kind ([`slots`]) drives reading and
+//! text into the device or says why not. One list per kind (`slots`) drives reading and
 //! writing, so the form and the model cannot disagree.
 
 use super::model::{DeviceKind, Encoding, TurretLock};

@@ -209,7 +209,7 @@ pub struct NetworkInfo {
     pub end: u32,
 }
 
-/// The executable program. Only lowering builds one, and [`Code::checked`] sees every word
+/// The executable program. Only lowering builds one, and `Code::checked` sees every word
 /// on the way out: the scan loop then takes each opcode and index as valid without testing it.
 #[derive(Clone, Debug)]
 pub struct Code {

@@ -1,7 +1,7 @@
 //! The scan engine: runs a compiled program the way the GSK PLC does (docs/plc.md).
 //!
 //! [`code`] lowers the compiled program once to compact words with addresses resolved;
-//! [`exec`] runs them (no allocation, hashing or string work in the loop); [`functions`]
+//! `exec` runs them (no allocation, hashing or string work in the loop); `functions`
 //! holds the function instructions' semantics; [`memory`] the image and its width rules;
 //! [`cnc`] the interface to the CNC.
 
