@@ -5,4 +5,3 @@
 mod atomic;
 pub mod cli;
 pub mod gui;
-pub mod source;

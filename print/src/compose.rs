@@ -5,35 +5,12 @@
 use crate::font::Metrics;
 use crate::ladder::{Grid, Names, Painter, comment_lines};
 use crate::options::Options;
-use crate::page::{Anchor, Document, Ink, Item, Page, Pt};
+use crate::page::{Anchor, Document, Ink, Item, Pt};
+use crate::pages::{Frame, MARGIN, Pages};
 use ladder_engine::model::{BlockKind, Project};
 
-/// Page margins.
-pub(crate) const MARGIN: Pt = 36.0;
-/// Room for the header above the content and the footer below it.
-const HEADER: Pt = 20.0;
-const FOOTER: Pt = 18.0;
 /// Space between two networks.
 const GAP: Pt = 6.0;
-
-/// Where the content of a page goes.
-pub(crate) struct Frame {
-    pub top: Pt,
-    pub bottom: Pt,
-    pub left: Pt,
-    pub right: Pt,
-}
-
-impl Frame {
-    pub(crate) fn new(width: Pt, height: Pt) -> Frame {
-        Frame {
-            top: MARGIN + HEADER,
-            bottom: height - MARGIN - FOOTER,
-            left: MARGIN,
-            right: width - MARGIN,
-        }
-    }
-}
 
 /// A block's name in the document's language.
 pub(crate) fn section_name(kind: &BlockKind, options: &Options) -> String {
@@ -48,42 +25,6 @@ pub(crate) fn section_name(kind: &BlockKind, options: &Options) -> String {
             } else {
                 format!("P{number:04}  {name}  {sub}")
             }
-        }
-    }
-}
-
-/// Pages being filled.
-pub(crate) struct Pages {
-    pub pages: Vec<Page>,
-    pub frame: Frame,
-    /// Where the next thing goes on the last page.
-    pub y: Pt,
-}
-
-impl Pages {
-    /// Starts a new page of `section`.
-    pub(crate) fn new_page(&mut self, section: &str) {
-        self.pages.push(Page {
-            items: Vec::new(),
-            section: section.to_string(),
-        });
-        self.y = self.frame.top;
-    }
-
-    /// Room left on the last page.
-    pub(crate) fn room(&self) -> Pt {
-        self.frame.bottom - self.y
-    }
-
-    /// Whether the last page holds nothing yet.
-    pub(crate) fn fresh(&self) -> bool {
-        self.pages.last().is_none_or(|p| p.items.is_empty())
-    }
-
-    /// Adds items to the last page.
-    pub(crate) fn put(&mut self, items: Vec<Item>) {
-        if let Some(p) = self.pages.last_mut() {
-            p.items.extend(items);
         }
     }
 }

@@ -8,6 +8,7 @@ mod font;
 mod ladder;
 pub mod options;
 pub mod page;
+mod pages;
 mod pdf;
 mod svg;
 mod tables;

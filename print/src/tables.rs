@@ -1,10 +1,10 @@
 //! The tables printed after the ladder: symbols, data settings, display messages and the
 //! cross-reference index, each with its header row repeated on every page.
 
-use crate::compose::Pages;
 use crate::font::Metrics;
 use crate::options::Options;
 use crate::page::{Anchor, Ink, Item, Pt, Seg};
+use crate::pages::Pages;
 use ladder_engine::model::Project;
 use ladder_engine::model::tables::Comments;
 

@@ -1,10 +1,10 @@
 //! The title page: the project, its controller, version information, date, step counts and
 //! the contents with page numbers.
 
-use crate::compose::Frame;
 use crate::font::Metrics;
 use crate::options::Options;
 use crate::page::{Anchor, Ink, Item, Pt};
+use crate::pages::Frame;
 use ladder_engine::model::Project;
 use ladder_engine::profile::Profile;
 

@@ -1,7 +1,7 @@
 //! Rung coverage on the command line: the summary lines, the JSON file and the HTML page
 //! (docs/scripts.md, "Coverage").
 
-use super::Say;
+use super::say::Say;
 use ladder_engine::coverage::{Coverage, State};
 use std::path::Path;
 

@@ -7,18 +7,16 @@ mod coverage;
 mod print;
 mod running;
 mod say;
+mod source;
 mod testing;
 
 pub use say::Say;
 
-use crate::source::Source;
 use clap::{Parser, Subcommand};
-use ladder_engine::compiler::{Compiled, compile};
-use ladder_engine::machine::Machine;
-use ladder_engine::model::Project;
+use ladder_engine::compiler::compile;
 use ladder_engine::sim;
-use ladder_engine::vm::Engine;
 use ladder_engine::{file, il};
+use source::{EngineArg, Source, print_diagnostics, project_of};
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -376,13 +374,6 @@ fn open_editor(cli: Cli, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
     crate::gui::run(start).map(|()| 0)
 }
 
-fn print_diagnostics(path: &Path, compiled: &Compiled, say: Say, w: &mut dyn Write) {
-    let shown = path.display().to_string();
-    for d in &compiled.diagnostics {
-        let _ = writeln!(w, "{}", say.diagnostic(d, &shown));
-    }
-}
-
 fn check(path: &Path, say: Say, out: &mut dyn Write) -> anyhow::Result<i32> {
     let source = Source::read(path, say)?;
     let compiled = source.compiled();
@@ -491,132 +482,6 @@ fn import_il(path: &Path, output: &Path, say: Say, err: &mut dyn Write) -> anyho
         );
     }
     Ok(i32::from(errors > 0))
-}
-
-/// The program a PATH runs, as [`machine`] builds it (for placing what the machine measured,
-/// such as coverage, back on its instructions).
-fn program_of(path: &Path, say: Say) -> anyhow::Result<ladder_engine::compiler::Program> {
-    Ok(match Source::read(path, say)? {
-        Source::Project(p) => compile(&p).program,
-        Source::Il { imported, .. } => imported.compiled.program,
-    })
-}
-
-/// `--engine`: the scan engines by their command-line names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum EngineArg {
-    /// The interpreter, the reference.
-    Interp,
-    /// Generated machine code.
-    Native,
-    /// Both, checked against each other at every tick.
-    Checked,
-}
-
-impl EngineArg {
-    fn engine(self) -> Engine {
-        match self {
-            EngineArg::Interp => Engine::Interpreter,
-            EngineArg::Native => Engine::Native,
-            EngineArg::Checked => Engine::Checked,
-        }
-    }
-}
-
-/// Builds the machine for a PATH (with the simulated CNC when `cnc`), or reports why the
-/// program cannot run (exit 1).
-fn machine(
-    path: &Path,
-    (cnc, engine): (bool, Option<Engine>),
-    say: Say,
-    err: &mut dyn Write,
-) -> anyhow::Result<Result<Machine, i32>> {
-    let mut built = machine_of(path, cnc, say, err)?;
-    if let (Ok(m), Some(engine)) = (&mut built, engine)
-        && m.plc_mut().set_engine(engine) != engine
-    {
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                "native code is unavailable on this machine: the interpreter runs the scan",
-                "本机无法生成本机代码：扫描由解释器执行"
-            )
-        );
-    }
-    Ok(built)
-}
-
-/// Builds the machine that runs `path`, on the engine a new PLC starts with.
-fn machine_of(
-    path: &Path,
-    cnc: bool,
-    say: Say,
-    err: &mut dyn Write,
-) -> anyhow::Result<Result<Machine, i32>> {
-    let source = Source::read(path, say)?;
-    let cannot_run = |compiled: &Compiled, err: &mut dyn Write| {
-        print_diagnostics(path, compiled, say, err);
-        let summary = say.summary(compiled);
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                format!("{summary}; the program cannot run"),
-                format!("{summary}；程序无法运行")
-            )
-        );
-    };
-    let project = match source {
-        Source::Project(p) => p,
-        // An instruction list runs exactly as written, drawable or not: its steps decide
-        // where each level-2 slice ends, and its diagnostics name its lines.
-        Source::Il { imported, .. } => {
-            if imported.compiled.errors() > 0 {
-                cannot_run(&imported.compiled, err);
-                return Ok(Err(1));
-            }
-            let base = Project::default();
-            let m = Machine::from_program(&base, &imported.compiled.program, cnc)
-                .map_err(|e| anyhow::anyhow!("{e}"))?;
-            return Ok(Ok(m));
-        }
-    };
-    let compiled = compile(&project);
-    if compiled.errors() > 0 {
-        cannot_run(&compiled, err);
-        return Ok(Err(1));
-    }
-    Ok(Ok(
-        Machine::new(&project, cnc).map_err(|e| anyhow::anyhow!("{e}"))?
-    ))
-}
-
-/// The project a PATH holds (an IL file drawn as a ladder), or the exit code when it has none.
-fn project_of(
-    path: &Path,
-    say: Say,
-    err: &mut dyn Write,
-) -> anyhow::Result<Result<ladder_engine::model::Project, i32>> {
-    Ok(match Source::read(path, say)? {
-        Source::Project(p) => Ok(p),
-        Source::Il { imported, .. } => match imported.project {
-            Some(p) => Ok(p),
-            None => {
-                print_diagnostics(path, &imported.compiled, say, err);
-                let summary = say.summary(&imported.compiled);
-                let _ = writeln!(
-                    err,
-                    "{}",
-                    say.pick(
-                        format!("{summary}; the instruction list cannot be drawn"),
-                        format!("{summary}；指令表无法画成梯形图")
-                    )
-                );
-                Err(1)
-            }
-        },
-    })
 }
 
 fn export_comments(

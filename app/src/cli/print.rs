@@ -1,6 +1,7 @@
 //! `print PATH -o OUT.pdf|OUT.svg`: the project as a printed document (docs/printing.md).
 
-use super::{Say, project_of};
+use super::say::Say;
+use super::source::project_of;
 use crate::atomic::write_atomic;
 use clap::ValueEnum;
 use ladder_print::{Blocks, Labels, Lang, Options, Paper};

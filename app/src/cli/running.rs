@@ -2,7 +2,8 @@
 //! run for a long time, so both show progress on standard error once a run takes more than a
 //! moment, and both stop cleanly on Ctrl+C with what they have (docs/scripts.md, "Long runs").
 
-use super::{Say, machine};
+use super::say::Say;
+use super::source::machine;
 use ladder_engine::coverage::Coverage;
 use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Control, Progress, Script};
@@ -87,9 +88,9 @@ pub(super) fn read_script(
             .map_err(|e| say.pick(e.message(&full, false), e.message(&full, true)))
     };
     // The project again, for its saved scenarios and operator panel (`scenario` lines).
-    let project = match crate::source::Source::read(project_path, say)? {
-        crate::source::Source::Project(p) => Some(p),
-        crate::source::Source::Il { .. } => None,
+    let project = match super::source::Source::read(project_path, say)? {
+        super::source::Source::Project(p) => Some(p),
+        super::source::Source::Il { .. } => None,
     };
     let options = sim::Options {
         cnc,
@@ -198,7 +199,7 @@ pub(super) fn sim(
         );
     }
     if coverage.wanted() {
-        let program = super::program_of(path, say)?;
+        let program = super::source::program_of(path, say)?;
         if let Some(measured) = Coverage::measure(machine.plc(), &program) {
             coverage.report(&measured, path, say, out)?;
         }

@@ -7,8 +7,8 @@
 //! line `# test: cnc` (the simulated CNC, as `sim --cnc`) and `# test: no-machine` (without
 //! the project's machine model, as `sim --no-machine`); words may share one line.
 
-use super::Say;
 use super::running::{STOPPED, read_script, stop_on_ctrl_c};
+use super::say::Say;
 use ladder_engine::compiler::Program;
 use ladder_engine::coverage::Coverage;
 use ladder_engine::sim::{self, Control};
@@ -128,7 +128,7 @@ fn run_case(
     let start = Instant::now();
     let mut said = Vec::new();
     let mut ran = Ran::default();
-    let machine = match super::machine(project, (case.cnc, engine), say, &mut said) {
+    let machine = match super::source::machine(project, (case.cnc, engine), say, &mut said) {
         Ok(Ok(m)) if case.devices => Some(m),
         Ok(Ok(m)) => Some(m.without_devices()),
         Ok(Err(_)) => None,
@@ -316,7 +316,7 @@ pub(super) fn test(
     }
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     let program = match coverage_out.wanted() {
-        true => Some(super::program_of(project, say)?),
+        true => Some(super::source::program_of(project, say)?),
         false => None,
     };
     let results = run_all(
