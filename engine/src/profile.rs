@@ -3,7 +3,7 @@
 //! Ranges are data, not code, so that a second controller (the GSK980 series) is a new table
 //! rather than new branches through the compiler and the VM.
 
-use crate::address::Area;
+use crate::area::Area;
 use serde::{Deserialize, Serialize};
 
 /// Which controller a project is written for.

@@ -3,11 +3,10 @@
 //! the output of a block's M/S/T functions, and program motion; `mst.rs` runs the
 //! handshake.
 
-use super::cycle::CycleMemory;
-use super::drill::DrillMemory;
 use super::frame::{Cursor, Frame, MDI};
 use super::macro_b::run::Flow;
 use super::macro_b::{Locals, MacroBlock, MacroCall};
+use super::modal::{Modal, RunState};
 use super::motion::Motion;
 use super::mst::{MF, MF2, MF3, Mst, SF, TF};
 use super::params::{P6711, P6712};
@@ -16,40 +15,6 @@ use super::program::{MDI_NUMBER, NcBlock, NcProgram};
 use super::ps;
 use super::word::{OneShot, Words, special_m};
 use super::{AXES, Mode, SimCnc};
-
-/// The automatic operation state.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum RunState {
-    /// Reset state, or the program has not started or has ended (rewound).
-    #[default]
-    Idle,
-    /// Cycle start state.
-    Run,
-    /// Feed hold state.
-    Hold,
-    /// Stopped inside the program (single block, M00, an alarm…).
-    Stop,
-}
-
-impl RunState {
-    /// The script and display name.
-    pub fn name(self) -> &'static str {
-        match self {
-            RunState::Idle => "IDLE",
-            RunState::Run => "RUN",
-            RunState::Hold => "HOLD",
-            RunState::Stop => "STOP",
-        }
-    }
-
-    /// Every state, for name look-ups.
-    pub const ALL: [RunState; 4] = [
-        RunState::Idle,
-        RunState::Run,
-        RunState::Hold,
-        RunState::Stop,
-    ];
-}
 
 /// Blocks skipped (or subprogram ends passed) in a row before P/S 0079 is raised.
 const PASS_LIMIT: u32 = 100_000;
@@ -109,31 +74,6 @@ impl Exec {
         self.motion
             .map_or(0, |m| m.target[n] - m.position_at(n, m.covered))
     }
-}
-
-/// Modal state of the program.
-#[derive(Clone, Copy, Debug, Default)]
-pub(super) struct Modal {
-    /// Group 01 G number: 0, 1, 2, 3, 32, 90, 92, 94.
-    pub motion: u8,
-    /// G99.
-    pub per_rev: bool,
-    /// G54 + work.
-    pub work: u8,
-    /// F in mm/min or mm/rev (0 = none).
-    pub feed: f64,
-    /// G20.
-    pub inch: bool,
-    /// G96.
-    pub css: bool,
-    /// G96's surface speed, m/min.
-    pub css_speed: f64,
-    /// G50 S: the highest spindle speed under G96, r/min (0: none).
-    pub s_max: u32,
-    /// The last single cycle's end point and taper.
-    pub cycle: CycleMemory,
-    /// The drilling cycle in effect and its data.
-    pub drill: DrillMemory,
 }
 
 /// Automatic operation.

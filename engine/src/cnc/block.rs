@@ -3,7 +3,7 @@
 //! whole block has been checked, so a block refused with a P/S alarm leaves no trace.
 
 use super::arc::{ArcPath, center_from_radius};
-use super::auto::Modal;
+use super::modal::Modal;
 use super::params::{P1240, P3401, P3410};
 use super::path::{Home, SegKind, Segment};
 use super::ps;

@@ -3,9 +3,9 @@
 //! nest, a return to a reference point not yet established, an axis the PLC holds; and the
 //! modal state a block leaves.
 
-use super::auto::Modal;
-use super::drill::DrillMemory;
 use super::macro_b::MacroBlock;
+use super::modal::DrillMemory;
+use super::modal::Modal;
 use super::path::SegKind;
 use super::program::NcBlock;
 use super::ps;

@@ -5,7 +5,7 @@
 //! own line, so it needs no change.
 
 use super::arc::center_from_radius;
-use super::auto::Modal;
+use super::modal::Modal;
 use super::path::{SegKind, Segment};
 use super::ps;
 use super::word::{Units, Words};

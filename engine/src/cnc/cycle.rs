@@ -3,23 +3,11 @@
 //! block's start point. The cycles are modal: a later block with only X/U or Z/W repeats the
 //! cycle with that value and the others kept.
 
-use super::auto::Modal;
+use super::modal::Modal;
 use super::params::P5130;
 use super::path::{SegKind, Segment};
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
-
-/// The remembered end point and taper of the modal single cycle (frame increments; X as the
-/// axis counts it, the taper as a radius).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(super) struct CycleMemory {
-    /// X of the cycle's end point.
-    pub x: i64,
-    /// Z of the cycle's end point.
-    pub z: i64,
-    /// Taper R (I for G90/G92, K for G94 in the FS15 form), radius increments.
-    pub r: i64,
-}
 
 impl SimCnc {
     /// Increments per mm of radius on X.

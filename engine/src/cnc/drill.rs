@@ -3,25 +3,10 @@
 //! G80 cancels. They are modal: every later block with a position word drills again with the
 //! R point, peck, dwell and bottom kept.
 
-use super::auto::Modal;
+use super::modal::Modal;
 use super::path::{SegKind, Segment, room};
 use super::word::{Num, Units, Words};
 use super::{AXES, SimCnc};
-
-/// The remembered data of the modal drilling cycle.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(super) struct DrillMemory {
-    /// The cycle: 0 or 80 none, else 83–89.
-    pub g: u8,
-    /// R: from the initial level to the R point along the drilling axis, increments.
-    pub r: i64,
-    /// Q: peck depth, increments (0: one feed to the bottom).
-    pub q: i64,
-    /// P: dwell at the bottom, ms.
-    pub p: u32,
-    /// The bottom (frame increments on the drilling axis), once given.
-    pub bottom: Option<i64>,
-}
 
 impl SimCnc {
     /// Plans one drilling cycle at the block's position, if it gives one.

@@ -31,6 +31,7 @@ mod frame;
 mod keys;
 pub mod macro_b;
 mod manual;
+mod modal;
 pub mod motion;
 mod mst;
 pub mod params;
@@ -60,7 +61,7 @@ use program::{NcProgram, parse_mdi, parse_programs};
 use signals::{FImage, GroupInputs, Inputs};
 use spindle::Spindle;
 
-pub use auto::RunState;
+pub use modal::RunState;
 pub use status::{CncStatus, MstStatus};
 
 /// Whether alarm `n` is a PLC alarm (1000–1999): the A area sets and clears it, not reset.

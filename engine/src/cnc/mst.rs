@@ -2,7 +2,7 @@
 //! their own finish signal, the sequence finishes when every finish signal is 0 again, and
 //! the F image of the strobes, codes, DEN and the decode signals.
 
-use super::auto::RunState;
+use super::modal::RunState;
 use super::signals::FImage;
 use super::{MstStatus, SimCnc};
 

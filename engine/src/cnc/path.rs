@@ -5,7 +5,7 @@
 //! starts at the exchange after the one its predecessor ended in; a segment that moves
 //! nothing is passed at once.
 
-use super::auto::RunState;
+use super::modal::RunState;
 use super::motion::{Motion, MotionKind};
 use super::params::{P1410, P1420, P1421};
 use super::{AXES, SimCnc};

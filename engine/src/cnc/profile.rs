@@ -3,7 +3,7 @@
 //! G00/G01/G02/G03 and X/Z/U/W/R/I/K; their F, S, T and M are for G70 and ignored here. The
 //! result is a chain of lines and arcs in the Z–X plane, in mm with X as a radius.
 
-use super::auto::Modal;
+use super::modal::Modal;
 use super::path::{SegKind, Segment};
 use super::program::find_sequence;
 use super::ps;

@@ -4,8 +4,8 @@
 //! G74–G76) sets the cycle's parameters #5130–#5143 as FANUC does; a block with D, K or I/K
 //! is the one-block form. Each cycle becomes segments from the block's start point.
 
-use super::auto::Modal;
 use super::block::Effects;
+use super::modal::Modal;
 use super::params::{P5130, P5132, P5133, P5135, P5136, P5137, P5139, P5140, P5141, P5142, P5143};
 use super::path::{SegKind, Segment, room};
 use super::profile::Profile;

@@ -7,7 +7,7 @@
 //! reports with its line.
 
 use super::SimCnc;
-use super::auto::RunState;
+use super::modal::RunState;
 use super::path::SegKind;
 use super::signals::Inputs;
 
