@@ -247,6 +247,37 @@ impl FromStr for Address {
     }
 }
 
+/// An address with a byte count, as scripts write it (`D0010:2`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Target {
+    /// The address.
+    pub address: Address,
+    /// Bytes: given with `:N`, else the area's natural width (1 for bits).
+    pub bytes: u32,
+    /// Whether `:N` was written.
+    pub explicit: bool,
+}
+
+impl Target {
+    /// An address as a whole: a bit, a byte, or a 4-byte value, at its own width.
+    pub fn whole(address: Address) -> Target {
+        Target {
+            address,
+            bytes: u32::from(address.area.element_bytes()).max(1),
+            explicit: false,
+        }
+    }
+
+    /// The address as printed in messages: canonical, with `:N` when it was given.
+    pub fn text(&self) -> String {
+        if self.explicit {
+            format!("{}:{}", self.address, self.bytes)
+        } else {
+            self.address.to_string()
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -16,8 +16,7 @@ use crate::model::{Operand, Project, is_symbol_name};
 use guard::{Target, Touch};
 use thiserror::Error;
 
-/// The languages exported when none is chosen.
-pub const LANGUAGES: [&str; 2] = ["zh", "en"];
+pub use crate::model::tables::LANGUAGES;
 
 /// Why a comments file could not be imported.
 #[derive(Debug, Error)]

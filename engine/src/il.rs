@@ -1,9 +1,10 @@
 //! Instruction-list text (docs/plc.md, "Instruction-list text"): parsing with line-numbered errors, printing in the
 //! canonical form, and building a project whose ladder is drawn from the IL.
 
-use crate::catalog::{InstrClass, Op, OperandKind};
+use crate::catalog::{InstrClass, Op};
 use crate::compiler::decompile::decompile;
 use crate::compiler::layout::{layout, width_needed};
+pub use crate::compiler::text::{instr_text, operand_text};
 use crate::compiler::{
     Code, Compiled, Instr, Origin, Program, ProgramBlock, ProgramNetwork, Sink, compile_program,
 };
@@ -356,31 +357,6 @@ fn escape(s: &str) -> String {
     s.replace('\\', "\\\\")
         .replace('"', "\\\"")
         .replace('\n', "\\n")
-}
-
-/// Formats an operand as IL writes it: canonical addresses, decimal integers, 4-digit groups.
-pub fn operand_text(op: Op, index: usize, operand: &Operand) -> String {
-    match (op.spec().operand(index).map(|s| s.kind), operand) {
-        (Some(OperandKind::Digits { .. }), Operand::Int(v)) if (0..=9999).contains(v) => {
-            format!("{v:04}")
-        }
-        _ => operand.to_string(),
-    }
-}
-
-/// One instruction as an IL line (without newline).
-pub fn instr_text(op: Op, operands: &[Operand]) -> String {
-    let mut s = String::new();
-    if operands.is_empty() {
-        s.push_str(op.name());
-    } else {
-        let _ = write!(s, "{:<4}", op.name());
-        for (i, o) in operands.iter().enumerate() {
-            s.push(' ');
-            s.push_str(&operand_text(op, i, o));
-        }
-    }
-    s
 }
 
 /// Prints a program as canonical IL text.

@@ -3,6 +3,7 @@
 //! [`MachineCommand`]; stimulus scripts are lists of them, so a script and the editor can
 //! never drift apart. [`Snapshot`] is what a monitor copies out between ticks.
 
+pub use crate::address::Target;
 use crate::address::{Address, Area};
 use crate::cnc::command::{CncCommand, CncKey, CncValue};
 use crate::cnc::{CncStatus, SimCnc};
@@ -15,37 +16,6 @@ use crate::vm::{BuildError, Halt, Vm};
 use std::fmt;
 
 mod scenarios;
-
-/// An address with a byte count, as scripts write it (`D0010:2`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Target {
-    /// The address.
-    pub address: Address,
-    /// Bytes: given with `:N`, else the area's natural width (1 for bits).
-    pub bytes: u32,
-    /// Whether `:N` was written.
-    pub explicit: bool,
-}
-
-impl Target {
-    /// An address as a whole: a bit, a byte, or a 4-byte value, at its own width.
-    pub fn whole(address: Address) -> Target {
-        Target {
-            address,
-            bytes: u32::from(address.area.element_bytes()).max(1),
-            explicit: false,
-        }
-    }
-
-    /// The address as printed in messages: canonical, with `:N` when it was given.
-    pub fn text(&self) -> String {
-        if self.explicit {
-            format!("{}:{}", self.address, self.bytes)
-        } else {
-            self.address.to_string()
-        }
-    }
-}
 
 /// Something a monitor or a script reads each tick: PLC memory or a CNC value.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -7,9 +7,8 @@
 //! it alike; [`crate::sim::scenario`] turns the lines into [`Action`]s against a project, and
 //! the machine ([`crate::machine::Machine`]) applies them and remembers how to undo each.
 
-use crate::address::Address;
+use crate::address::{Address, Target};
 use crate::devices::Fault;
-use crate::machine::Target;
 use serde::{Deserialize, Serialize};
 
 /// The longest scenario name.

@@ -1,8 +1,9 @@
 //! Instruction-level checks: operands against the catalogue, labels, calls, stacks, step
 //! limits, and the warnings about doubly driven coils and shared timers.
 
-use super::diag::{Code, Location, Origin, Sink};
+use super::diag::{Code, Sink};
 pub use super::operands::{Refusal, operand_error, operand_ok};
+use super::place::{Place, place_text, place_text_zh};
 use super::rung::Instr;
 use super::{Program, StepCounts};
 use crate::address::{Address, Area};
@@ -15,36 +16,6 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 pub const BLOCK_STACK_DEPTH: usize = 32;
 /// Branch (MPS) stack limit (docs/plc.md, "Basic instructions").
 pub const BRANCH_STACK_DEPTH: usize = 16;
-
-/// Where an instruction is: (block, network, origin).
-pub(super) type Place = (usize, usize, Origin);
-
-pub(super) fn place_text(program: &Program, p: Place) -> String {
-    let block = program.blocks[p.0].kind.label();
-    match p.2 {
-        Origin::Line(l) => format!("line {l}"),
-        Origin::Cell { row, col } => {
-            format!(
-                "{block} network {} row {} col {}",
-                p.1 + 1,
-                row + 1,
-                col + 1
-            )
-        }
-        Origin::None => format!("{block} network {}", p.1 + 1),
-    }
-}
-
-/// The place of `p` in Chinese, as a diagnostic's location reads.
-pub(super) fn place_text_zh(program: &Program, p: Place) -> String {
-    Location {
-        block: p.0,
-        block_label: program.blocks[p.0].kind.label(),
-        network: p.1,
-        origin: p.2,
-    }
-    .describe_zh()
-}
 
 /// Checks a whole program and resolves its symbols in place. Returns the step counts.
 pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) -> StepCounts {

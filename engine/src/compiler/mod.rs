@@ -18,10 +18,12 @@ pub mod layout;
 pub mod lower;
 pub mod machine;
 pub mod operands;
+mod place;
 pub mod presets;
 pub mod rung;
 pub mod scenarios;
 pub mod tables;
+pub mod text;
 #[cfg(test)]
 mod warn_tests;
 pub mod writes;

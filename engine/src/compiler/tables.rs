@@ -34,15 +34,15 @@ pub const MCODES: usize = usize::MAX - 1;
 pub const VERSION: usize = usize::MAX;
 
 /// Reports every comment of a row longer than the CNC keeps (W007), each at its language's
-/// column: the tables show one comment column per language (`comments::LANGUAGES`, in that
+/// column: the tables show one comment column per language (`model::tables::LANGUAGES`, in that
 /// order) from `origin`'s column on; another language counts after them.
 fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
     for (lang, text) in comments {
         if let Err(e) = check_comment(text) {
-            let shift = crate::comments::LANGUAGES
+            let shift = crate::model::tables::LANGUAGES
                 .iter()
                 .position(|l| l == lang)
-                .unwrap_or(crate::comments::LANGUAGES.len()) as u32;
+                .unwrap_or(crate::model::tables::LANGUAGES.len()) as u32;
             let origin = match origin {
                 Origin::Cell { row, col } => Origin::Cell {
                     row,

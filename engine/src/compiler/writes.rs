@@ -11,9 +11,9 @@
 //! other can look at the result.
 
 use super::Program;
-use super::check::{Place, place_text, place_text_zh};
 use super::diag::{Code, Sink};
 use super::operands::operand_error;
+use super::place::{Place, place_text, place_text_zh};
 use crate::address::{Address, Area};
 use crate::catalog::{Access, InstrClass, Op, OperandSpec, Role, Width};
 use crate::model::{BlockKind, Operand};

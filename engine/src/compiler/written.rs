@@ -41,7 +41,7 @@ pub fn lines_to_keep(instrs: &[Instr]) -> Vec<String> {
     }
     instrs
         .iter()
-        .map(|i| crate::il::instr_text(i.op, &i.operands))
+        .map(|i| super::text::instr_text(i.op, &i.operands))
         .collect()
 }
 

@@ -9,6 +9,10 @@ use std::collections::BTreeMap;
 /// Comments per language code (`zh`, `en`, …).
 pub type Comments = BTreeMap<String, String>;
 
+/// The comment languages, in the order the tables show their columns and a comments CSV
+/// writes them when none is chosen.
+pub const LANGUAGES: [&str; 2] = ["zh", "en"];
+
 /// Largest magnitude of a data-table value (§3.4.4.2).
 pub const VALUE_LIMIT: i64 = 2_147_483_647;
 

@@ -15,7 +15,7 @@ use crate::profile::Profile;
 use crate::vm::TICK_MS;
 use thiserror::Error;
 
-pub use crate::machine::Target;
+pub use crate::address::Target;
 pub use run::{Control, Outcome, Progress, Stopped, run, run_with};
 
 /// The most ticks one `scan` or `run` line may ask for: 100 000 000 ticks are 800 000 s

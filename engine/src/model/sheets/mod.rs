@@ -29,7 +29,7 @@ pub use rules::{
 use super::tables::{AddressRow, DataRow, DataTables, message_rows};
 use super::{Project, TableEdit};
 use crate::address::Area;
-use crate::comments::LANGUAGES;
+use crate::model::tables::LANGUAGES;
 
 // The per-language columns follow the comments CSV's language columns (zh, then en), so a
 // table reads like its export.

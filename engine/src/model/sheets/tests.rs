@@ -3,8 +3,8 @@
 
 use super::{Col, Sheet, TableError, cell_text, commit};
 use crate::address::{Address, Area};
-use crate::comments::LANGUAGES;
 use crate::model::Project;
+use crate::model::tables::LANGUAGES;
 use crate::model::tables::{AddressRow, Comments, DataRow, MCodeRow, RealRow, Symbol};
 
 /// Every row table that has per-language comments or texts.
