@@ -10,6 +10,7 @@ pub mod comments;
 pub mod compiler;
 pub mod coverage;
 pub mod devices;
+pub mod diagnose;
 pub mod file;
 pub mod find;
 pub mod generate;

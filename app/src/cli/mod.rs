@@ -13,7 +13,7 @@ mod testing;
 pub use say::Say;
 
 use clap::{Parser, Subcommand};
-use ladder_engine::compiler::compile;
+use ladder_engine::diagnose::diagnose;
 use ladder_engine::sim;
 use ladder_engine::{file, il};
 use source::{EngineArg, Source, print_diagnostics, project_of};
@@ -391,10 +391,10 @@ fn export_il(
 ) -> anyhow::Result<i32> {
     let source = Source::read(path, say)?;
     let compiled = match &source {
-        Source::Project(p) => compile(p),
+        Source::Project(p) => diagnose(p),
         Source::Il { imported, .. } => match &imported.project {
             // Through the drawing, so the export is what the ladder holds.
-            Some(p) => compile(p),
+            Some(p) => diagnose(p),
             None => imported.compiled.clone(),
         },
     };

@@ -48,10 +48,11 @@ impl Source {
         Ok(Source::Il { imported })
     }
 
-    /// The compile result: for a project, its ladder compiled; for IL, the IL checked.
+    /// The compile result: for a project, every diagnostic of it (`diagnose`); for IL, the IL
+    /// checked.
     pub fn compiled(&self) -> Compiled {
         match self {
-            Source::Project(p) => compile(p),
+            Source::Project(p) => ladder_engine::diagnose::diagnose(p),
             Source::Il { imported, .. } => imported.compiled.clone(),
         }
     }

@@ -6,7 +6,8 @@
 //! [`Document::begin_group`] … [`Document::end_group`] become one undo step) and counts the
 //! change, so views that cache what they derive from the project know to refresh.
 
-use ladder_engine::compiler::{Compiled, compile};
+use ladder_engine::compiler::Compiled;
+use ladder_engine::diagnose::diagnose;
 use ladder_engine::file;
 use ladder_engine::model::{CellRef, Change, EditError, History, Project};
 use std::path::{Path, PathBuf};
@@ -251,14 +252,14 @@ impl Document {
     /// Compiles and keeps the result; from now on changes are checked as they are made.
     pub fn compile(&mut self) -> &Compiled {
         self.checking = true;
-        self.compiled.insert(compile(&self.project))
+        self.compiled.insert(diagnose(&self.project))
     }
 
     /// Compiles again after a change, once the user has compiled (a drawing in progress is
     /// not marked with errors before it is first compiled).
     pub fn recheck(&mut self) {
         if self.checking && self.compiled.is_none() {
-            self.compiled = Some(compile(&self.project));
+            self.compiled = Some(diagnose(&self.project));
         }
     }
 

@@ -36,7 +36,8 @@ pub enum View {
 /// "block" is one of the compiler's pseudo-blocks), with the row to go to; `None` for a
 /// ladder block. The machine model is no view: `Some((None, _))`.
 pub fn table_view(at: CellRef) -> Option<(Option<View>, Option<usize>)> {
-    use ladder_engine::compiler::{machine::MACHINE, scenarios::SCENARIOS, tables};
+    use ladder_engine::compiler::{machine::MACHINE, tables};
+    use ladder_engine::diagnose::SCENARIOS;
     let row = Some(at.row);
     Some(match at.block {
         tables::SYMBOLS => (Some(View::Symbols(at.network)), row),

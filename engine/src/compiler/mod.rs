@@ -21,7 +21,6 @@ pub mod operands;
 mod place;
 pub mod presets;
 pub mod rung;
-pub mod scenarios;
 pub mod tables;
 pub mod text;
 #[cfg(test)]
@@ -107,6 +106,21 @@ pub struct Compiled {
 }
 
 impl Compiled {
+    /// The result with `more` diagnostics, all in the one order: IL diagnostics read best in
+    /// line order, ladder ones in block, network, cell order.
+    pub fn with(mut self, more: Vec<Diagnostic>) -> Compiled {
+        self.diagnostics.extend(more);
+        self.diagnostics.sort_by(|a, b| {
+            let key = |d: &Diagnostic| match d.location.origin {
+                Origin::Line(l) => (0, l, None),
+                _ => (1, 0, Some(d.location.clone())),
+            };
+            key(a).cmp(&key(b)).then(a.code.cmp(&b.code))
+        });
+        self.diagnostics.dedup();
+        self
+    }
+
     /// Number of errors.
     pub fn errors(&self) -> usize {
         self.diagnostics
@@ -153,7 +167,9 @@ pub fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
     program
 }
 
-/// Compiles a project's ladder: structure, operands, labels, calls, limits.
+/// Compiles a project's ladder: structure, operands, labels, calls, limits, the tables, the
+/// CNC-aware checks and the machine model. Saved scenarios are checked above the compiler,
+/// by `diagnose`, which the commands and the editor call for the whole list.
 pub fn compile(project: &Project) -> Compiled {
     let mut sink = Sink::default();
     let mut program = ladder_program(project, &mut sink);
@@ -162,7 +178,6 @@ pub fn compile(project: &Project) -> Compiled {
     cnc::check_cnc(project, &program, &mut sink);
     tables::check_tables(project, &mut sink);
     machine::check_machine(project, &program, &mut sink);
-    scenarios::check_scenarios(project, &mut sink);
     finish(program, sink, steps)
 }
 
@@ -174,19 +189,10 @@ pub fn compile_program(mut program: Program, project: &Project, mut sink: Sink) 
 }
 
 fn finish(program: Program, sink: Sink, steps: StepCounts) -> Compiled {
-    let mut diagnostics = sink.diagnostics;
-    // IL diagnostics read best in line order; ladder ones in block, network, cell order.
-    diagnostics.sort_by(|a, b| {
-        let key = |d: &Diagnostic| match d.location.origin {
-            Origin::Line(l) => (0, l, None),
-            _ => (1, 0, Some(d.location.clone())),
-        };
-        key(a).cmp(&key(b)).then(a.code.cmp(&b.code))
-    });
-    diagnostics.dedup();
     Compiled {
         program,
-        diagnostics,
+        diagnostics: Vec::new(),
         steps,
     }
+    .with(sink.diagnostics)
 }

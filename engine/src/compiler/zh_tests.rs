@@ -415,7 +415,7 @@ fn the_corpus_reaches_every_code() {
         TABLE_CODES,
         MACHINE_CODES,
         super::cnc_tests::CNC_CODES,
-        super::scenarios::tests::SCENARIO_CODES,
+        crate::diagnose::tests::SCENARIO_CODES,
     ]
     .concat()
     .into_iter()

@@ -1,18 +1,30 @@
-//! W019: a saved scenario that cannot be applied (docs/scenarios.md): a name a script line
-//! cannot carry or that another scenario has, or a line that does not read against the
-//! project. Reported like the tables: the "block" is `SCENARIOS`, the "network" the
-//! scenario (from 1), the row its line.
+//! The whole check of a project, as `check` and the editor's output list show it: the
+//! compiler's diagnostics ([`compile`]) and W019, a saved scenario that cannot be applied
+//! (docs/scenarios.md): a name a script line cannot carry or that another scenario has, or a
+//! line that does not read against the project. The scenario lines are read by the
+//! simulator's own script parser, which runs programs the compiler builds, so this check sits
+//! above both rather than inside the compiler. Reported like the tables: the "block" is
+//! `SCENARIOS`, the "network" the scenario (from 1), the row its line.
 
-use super::diag::{Code, Origin, Sink};
+use crate::compiler::diag::{Code, Origin, Sink};
+use crate::compiler::{Compiled, compile};
 use crate::model::Project;
 use crate::scenario::name_error;
 use crate::sim::{Options, scenario::resolve};
+
+/// Compiles `project` and checks what the compiler does not read: every diagnostic of the
+/// project, in the compiler's order.
+pub fn diagnose(project: &Project) -> Compiled {
+    let mut sink = Sink::default();
+    check_scenarios(project, &mut sink);
+    compile(project).with(sink.diagnostics)
+}
 
 /// The "block" number of the scenarios, before the machine model.
 pub const SCENARIOS: usize = usize::MAX - 8;
 
 /// Checks every scenario of a project.
-pub fn check_scenarios(project: &Project, sink: &mut Sink) {
+fn check_scenarios(project: &Project, sink: &mut Sink) {
     let read_file = |p: &str| Err(format!("no file `{p}` is read while checking"));
     let options = Options {
         cnc: true,
@@ -48,13 +60,12 @@ pub fn check_scenarios(project: &Project, sink: &mut Sink) {
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
-    use crate::compiler::compile;
     use crate::scenario::Scenario;
 
     /// The codes this module's tests reach (the Chinese-message corpus counts them).
-    pub(in crate::compiler) const SCENARIO_CODES: &[Code] = &[Code::W019ScenarioBroken];
+    pub(crate) const SCENARIO_CODES: &[Code] = &[Code::W019ScenarioBroken];
 
     fn scenario(name: &str, lines: &[&str]) -> Scenario {
         Scenario {
@@ -74,7 +85,7 @@ pub(super) mod tests {
             ],
             ..Project::default()
         };
-        let found: Vec<_> = compile(&p)
+        let found: Vec<_> = diagnose(&p)
             .diagnostics
             .into_iter()
             .filter(|d| d.code == Code::W019ScenarioBroken)
