@@ -193,7 +193,6 @@ impl CncCommand {
         profile: ProfileId,
         read_file: &dyn Fn(&str) -> Result<String, String>,
     ) -> Result<CncCommand, String> {
-        let usage = |u: &str| format!("usage: cnc {u}");
         let Some(&sub) = words.first() else {
             return Err(format!(
                 "`cnc` needs a subcommand ({})",
@@ -201,158 +200,32 @@ impl CncCommand {
             ));
         };
         let args = &words[1..];
-        let want = |n: usize, u: &str| {
-            if args.len() == n {
-                Ok(())
-            } else {
-                Err(usage(u))
-            }
-        };
         Ok(match sub.to_ascii_lowercase().as_str() {
             "program" => {
-                want(1, "program \"TEXT\"")?;
+                want(args, 1, "program \"TEXT\"")?;
                 CncCommand::Program(args[0].to_string())
             }
             "program-file" => {
-                want(1, "program-file PATH")?;
+                want(args, 1, "program-file PATH")?;
                 CncCommand::Program(read_file(args[0])?)
             }
             "mdi" => {
-                want(1, "mdi \"TEXT\"")?;
+                want(args, 1, "mdi \"TEXT\"")?;
                 CncCommand::Mdi(args[0].to_string())
             }
-            "param" => {
-                if !(2..=3).contains(&args.len()) {
-                    return Err(usage("param N [SEL] VALUE"));
-                }
-                let number = args[0]
-                    .parse::<u16>()
-                    .map_err(|_| format!("`{}` is not a parameter number", args[0]))?;
-                let selector =
-                    match args.len() {
-                        3 => Some(args[1].parse::<u8>().map_err(|_| {
-                            format!("`{}` is not an axis or spindle number", args[1])
-                        })?),
-                        _ => None,
-                    };
-                let value = int(args[args.len() - 1], "a parameter value")?;
-                check_param(profile, number, selector, value)?;
-                CncCommand::Param {
-                    number,
-                    selector,
-                    value,
-                }
-            }
-            "offset" => {
-                want(3, "offset N TYPE VALUE")?;
-                let range = offset_range(profile);
-                let number = args[0]
-                    .parse::<u8>()
-                    .ok()
-                    .filter(|n| range.contains(n))
-                    .ok_or_else(|| {
-                        format!(
-                            "`{}`: tool offsets are {}–{}",
-                            args[0],
-                            range.start(),
-                            range.end()
-                        )
-                    })?;
-                let kind = OffsetType::parse(args[1]).ok_or_else(|| {
-                    format!("`{}`: the type is X Z R Y, WX WZ WR WY or TIP", args[1])
-                })?;
-                let value = if kind == OffsetType::Tip {
-                    let v = int(args[2], "the tip direction 0–9")?;
-                    if !(0..=9).contains(&v) {
-                        return Err(format!("the tip direction is 0–9, not {v}"));
-                    }
-                    v
-                } else {
-                    mm(args[2])?
-                };
-                CncCommand::Offset {
-                    number,
-                    kind,
-                    value,
-                }
-            }
-            "workpiece" => {
-                want(3, "workpiece SYS AXIS VALUE")?;
-                let system = work_system(args[0]).ok_or_else(|| {
-                    format!("`{}`: the system is {}", args[0], WORK_SYSTEMS.join(", "))
-                })? as u8;
-                let axis = parse_axis(args[1])
-                    .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[1]))?;
-                CncCommand::Workpiece {
-                    system,
-                    axis,
-                    value: mm(args[2])?,
-                }
-            }
-            "macro" => {
-                want(2, "macro N VALUE")?;
-                let n = int(args[0], "a variable number")?;
-                if !writable_macro(n) {
-                    return Err(format!(
-                        "#{n} cannot be set: the variables are #1–#33 (the current level's locals), #100–#199, #500–#999 and #1100–#1131"
-                    ));
-                }
-                let value = if args[1].eq_ignore_ascii_case("vacant") {
-                    None
-                } else {
-                    Some(
-                        args[1]
-                            .parse::<f64>()
-                            .ok()
-                            .filter(|v| v.is_finite())
-                            .ok_or_else(|| {
-                                format!("`{}` is not a decimal number or `vacant`", args[1])
-                            })?,
-                    )
-                };
-                if matches!(MacroSlot::of(n), MacroSlot::Output(_))
-                    && !matches!(value, Some(v) if v == 0.0 || v == 1.0)
-                {
-                    return Err(format!("#{n} is a signal bit: 0 or 1"));
-                }
-                CncCommand::Macro {
-                    number: n as u16,
-                    value,
-                }
-            }
-            "position" => {
-                want(2, "position AXIS VALUE")?;
-                let axis = parse_axis(args[0])
-                    .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[0]))?;
-                CncCommand::Position {
-                    axis,
-                    value: mm(args[1])?,
-                }
-            }
-            "alarm" => {
-                want(1, "alarm N")?;
-                let n = int(args[0], "an alarm number")?;
-                if !(1..=999).contains(&n) || matches!(n, 500 | 501 | 506 | 507 | 950) {
-                    return Err(format!(
-                        "alarm {n} cannot be raised by a script: 1–999 except 500, 501, 506, 507 and 950 (those come from the machine)"
-                    ));
-                }
-                CncCommand::Alarm(n as u16)
-            }
+            "param" => Self::parse_param(args, profile)?,
+            "offset" => Self::parse_offset(args, profile)?,
+            "workpiece" => Self::parse_workpiece(args)?,
+            "macro" => Self::parse_macro(args)?,
+            "position" => Self::parse_position(args)?,
+            "alarm" => Self::parse_alarm(args)?,
             "reset" => {
-                want(0, "reset")?;
+                want(args, 0, "reset")?;
                 CncCommand::Reset
             }
-            "handwheel" => {
-                want(1, "handwheel COUNT")?;
-                let n = int(args[0], "pulses")?;
-                if !(-10_000..=10_000).contains(&n) {
-                    return Err(format!("{n} pulses: the count is −10000…10000"));
-                }
-                CncCommand::Handwheel(n)
-            }
+            "handwheel" => Self::parse_handwheel(args)?,
             "clock" => {
-                want(1, "clock YYYY-MM-DDTHH:MM:SS")?;
+                want(args, 1, "clock YYYY-MM-DDTHH:MM:SS")?;
                 CncCommand::Clock(parse_clock(args[0]).ok_or_else(|| {
                     format!("`{}` is not a date and time YYYY-MM-DDTHH:MM:SS", args[0])
                 })?)
@@ -364,6 +237,162 @@ impl CncCommand {
                 ));
             }
         })
+    }
+
+    /// `param N [SEL] VALUE`: the selector is optional, so the count is checked here rather
+    /// than by [`want`]; the value is checked against the profile's parameter table.
+    fn parse_param(args: &[&str], profile: ProfileId) -> Result<CncCommand, String> {
+        if !(2..=3).contains(&args.len()) {
+            return Err(usage("param N [SEL] VALUE"));
+        }
+        let number = args[0]
+            .parse::<u16>()
+            .map_err(|_| format!("`{}` is not a parameter number", args[0]))?;
+        let selector = match args.len() {
+            3 => Some(
+                args[1]
+                    .parse::<u8>()
+                    .map_err(|_| format!("`{}` is not an axis or spindle number", args[1]))?,
+            ),
+            _ => None,
+        };
+        let value = int(args[args.len() - 1], "a parameter value")?;
+        check_param(profile, number, selector, value)?;
+        Ok(CncCommand::Param {
+            number,
+            selector,
+            value,
+        })
+    }
+
+    /// `offset N TYPE VALUE`: N within the profile's offsets; TIP takes a direction 0–9, every
+    /// other type a length in mm.
+    fn parse_offset(args: &[&str], profile: ProfileId) -> Result<CncCommand, String> {
+        want(args, 3, "offset N TYPE VALUE")?;
+        let range = offset_range(profile);
+        let number = args[0]
+            .parse::<u8>()
+            .ok()
+            .filter(|n| range.contains(n))
+            .ok_or_else(|| {
+                format!(
+                    "`{}`: tool offsets are {}–{}",
+                    args[0],
+                    range.start(),
+                    range.end()
+                )
+            })?;
+        let kind = OffsetType::parse(args[1])
+            .ok_or_else(|| format!("`{}`: the type is X Z R Y, WX WZ WR WY or TIP", args[1]))?;
+        let value = if kind == OffsetType::Tip {
+            let v = int(args[2], "the tip direction 0–9")?;
+            if !(0..=9).contains(&v) {
+                return Err(format!("the tip direction is 0–9, not {v}"));
+            }
+            v
+        } else {
+            mm(args[2])?
+        };
+        Ok(CncCommand::Offset {
+            number,
+            kind,
+            value,
+        })
+    }
+
+    /// `workpiece SYS AXIS VALUE`: a work system by name, an axis, a value in mm.
+    fn parse_workpiece(args: &[&str]) -> Result<CncCommand, String> {
+        want(args, 3, "workpiece SYS AXIS VALUE")?;
+        let system = work_system(args[0])
+            .ok_or_else(|| format!("`{}`: the system is {}", args[0], WORK_SYSTEMS.join(", ")))?
+            as u8;
+        let axis = parse_axis(args[1])
+            .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[1]))?;
+        Ok(CncCommand::Workpiece {
+            system,
+            axis,
+            value: mm(args[2])?,
+        })
+    }
+
+    /// `macro N VALUE`: only the variables a script may write, `vacant` or a finite number,
+    /// and 0 or 1 for a signal bit.
+    fn parse_macro(args: &[&str]) -> Result<CncCommand, String> {
+        want(args, 2, "macro N VALUE")?;
+        let n = int(args[0], "a variable number")?;
+        if !writable_macro(n) {
+            return Err(format!(
+                "#{n} cannot be set: the variables are #1–#33 (the current level's locals), #100–#199, #500–#999 and #1100–#1131"
+            ));
+        }
+        let value = if args[1].eq_ignore_ascii_case("vacant") {
+            None
+        } else {
+            Some(
+                args[1]
+                    .parse::<f64>()
+                    .ok()
+                    .filter(|v| v.is_finite())
+                    .ok_or_else(|| format!("`{}` is not a decimal number or `vacant`", args[1]))?,
+            )
+        };
+        if matches!(MacroSlot::of(n), MacroSlot::Output(_))
+            && !matches!(value, Some(v) if v == 0.0 || v == 1.0)
+        {
+            return Err(format!("#{n} is a signal bit: 0 or 1"));
+        }
+        Ok(CncCommand::Macro {
+            number: n as u16,
+            value,
+        })
+    }
+
+    /// `position AXIS VALUE`: an axis and a machine position in mm.
+    fn parse_position(args: &[&str]) -> Result<CncCommand, String> {
+        want(args, 2, "position AXIS VALUE")?;
+        let axis = parse_axis(args[0])
+            .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[0]))?;
+        Ok(CncCommand::Position {
+            axis,
+            value: mm(args[1])?,
+        })
+    }
+
+    /// `alarm N`: the alarms the machine itself raises are refused, so a script cannot fake
+    /// them.
+    fn parse_alarm(args: &[&str]) -> Result<CncCommand, String> {
+        want(args, 1, "alarm N")?;
+        let n = int(args[0], "an alarm number")?;
+        if !(1..=999).contains(&n) || matches!(n, 500 | 501 | 506 | 507 | 950) {
+            return Err(format!(
+                "alarm {n} cannot be raised by a script: 1–999 except 500, 501, 506, 507 and 950 (those come from the machine)"
+            ));
+        }
+        Ok(CncCommand::Alarm(n as u16))
+    }
+
+    /// `handwheel COUNT`: at most 10000 pulses either way in one exchange.
+    fn parse_handwheel(args: &[&str]) -> Result<CncCommand, String> {
+        want(args, 1, "handwheel COUNT")?;
+        let n = int(args[0], "pulses")?;
+        if !(-10_000..=10_000).contains(&n) {
+            return Err(format!("{n} pulses: the count is −10000…10000"));
+        }
+        Ok(CncCommand::Handwheel(n))
+    }
+}
+
+/// The answer to a command given the wrong words: its usage line.
+fn usage(u: &str) -> String {
+    format!("usage: cnc {u}")
+}
+
+/// Checks that a command has exactly `n` words after its name; `u` is its usage.
+fn want(args: &[&str], n: usize, u: &str) -> Result<(), String> {
+    if args.len() == n {
+        Ok(())
+    } else {
+        Err(usage(u))
     }
 }
 
