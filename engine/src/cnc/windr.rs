@@ -149,98 +149,15 @@ impl SimCnc {
         let count = self.axis_count() as i64;
         match b[0] {
             0 => out(b, &[980, 1, 0, 100, count]),
-            13 | 14 => {
-                if b[0] == 14 && b[2] != 1 {
-                    return fail(b, 2);
-                }
-                let (no, ty) = (b[3], b[4]);
-                if !(0..=32).contains(&no) {
-                    return fail(b, 3);
-                }
-                let Some(t) = OffsetType::from_980(ty) else {
-                    return fail(b, 4);
-                };
-                // No.4 bit 4 = 1: X offsets are radii on the window.
-                let radius = self.params.word980(4) >> 4 & 1 == 1;
-                let x = matches!(t, Some(OffsetType::Geometry(0) | OffsetType::Wear(0)));
-                let o = &mut self.offsets[no as usize];
-                if b[0] == 13 {
-                    let v = t.map_or(0, |t| o.get(t));
-                    let v = if x && radius {
-                        (v as f64 / 2.0).round() as i64
-                    } else {
-                        v
-                    };
-                    out(b, &[v]);
-                } else {
-                    let v = i64::from(b[6]);
-                    if let Some(t) = t {
-                        if !offset_ok(t, v) {
-                            return fail(b, 6);
-                        }
-                        o.set(t, if x && radius { v * 2 } else { v });
-                    }
-                    written(b);
-                }
-            }
-            15 | 16 => {
-                let sys = b[3];
-                if !(0..=6).contains(&sys) {
-                    return fail(b, 3);
-                }
-                let Some(sel) = axis_selection(b[4], AXES, true) else {
-                    return fail(b, 4);
-                };
-                let sys = sys as usize;
-                if b[0] == 15 {
-                    out_n(b, sel.len(), |k| self.work[sys][sel.start + k]);
-                } else {
-                    let want = sel.len();
-                    if b[2] as usize != want || b.len() < 6 + want {
-                        return fail(b, 2);
-                    }
-                    for (k, n) in sel.enumerate() {
-                        self.work[sys][n] = i64::from(b[6 + k]);
-                    }
-                    written(b);
-                }
-            }
-            17 | 18 => {
-                let no = b[3];
-                if !(1..=params::GSK980_WORDS as i32).contains(&no) {
-                    return fail(b, 3);
-                }
-                if b[4] != 0 {
-                    return fail(b, 4);
-                }
-                if b[0] == 17 {
-                    let v = self.params.word980(no as usize);
-                    out(b, &[i64::from(v)]);
-                } else {
-                    if b[2] != 1 {
-                        return fail(b, 2);
-                    }
-                    self.params.set_word980(no as usize, b[6]);
-                    written(b);
-                }
-            }
+            13 | 14 => self.offset_980(b),
+            15 | 16 => self.workpiece_980(b),
+            17 | 18 => self.param_980(b),
             21 => self.macro_read(b),
             22 => self.macro_write(b),
             23 => {
                 out_n(b, self.alarms.len(), |k| i64::from(self.alarms[k]));
             }
-            24 => {
-                if !self.has_program() {
-                    return fail(b, 6);
-                }
-                let main = if self.auto.running_mdi() {
-                    MDI_NUMBER
-                } else {
-                    self.programs.first().map_or(0, |p| p.number)
-                };
-                let cur = self.current_program_number();
-                out(b, &[i64::from(cur), i64::from(main)]);
-            }
+            24 => self.program_numbers_980(b),
             25 => {
                 if self.auto.last_n == 0 {
                     return fail(b, 5);
@@ -248,68 +165,11 @@ impl SimCnc {
                 out(b, &[i64::from(self.auto.last_n)]);
             }
             26 => out(b, &[self.flags.path_speed.round() as i64]),
-            27 | 28 | 29 | 74 | 75 => {
-                let Some(sel) = axis_selection(b[4], AXES, true) else {
-                    return fail(b, 4);
-                };
-                if b[0] == 29 {
-                    return fail(b, 5);
-                }
-                let f = b[0];
-                let count = self.axis_count();
-                out_n(b, sel.len(), |k| {
-                    let n = sel.start + k;
-                    if n >= count { 0 } else { self.axis_value(f, n) }
-                });
-            }
-            32 => {
-                let m = &self.auto.modal;
-                out(
-                    b,
-                    &[
-                        i64::from(m.motion),
-                        if m.css { 96 } else { 97 },
-                        if m.per_rev { 99 } else { 98 },
-                        if m.inch { 20 } else { 21 },
-                        40,
-                        67,
-                        54 + i64::from(m.work),
-                        18,
-                        15,
-                        113,
-                    ],
-                );
-            }
+            27 | 28 | 29 | 74 | 75 => self.axis_values_980(b),
+            32 => self.modal_980(b),
             33 => fail(b, 3),
             50 => out(b, &[i64::from(self.spindle.s_out.min(65_535))]),
-            76 => {
-                let mode = match self.mode {
-                    Mode::Mdi => 0,
-                    Mode::Mem => 1,
-                    Mode::Dnc => 2,
-                    Mode::Edit => 3,
-                    Mode::Handle => 4,
-                    Mode::Jog => 5,
-                    Mode::Ref => 8,
-                };
-                let run = match self.auto.state {
-                    RunState::Idle | RunState::Stop => 1,
-                    RunState::Hold => 2,
-                    RunState::Run => 3,
-                };
-                let moving = self.axes.iter().any(|a| a.mv);
-                out(
-                    b,
-                    &[
-                        mode,
-                        run,
-                        i64::from(moving),
-                        i64::from(self.mst_open()),
-                        i64::from(self.alarm_active(ALARM_ESTOP)),
-                        i64::from(!self.alarms.is_empty()),
-                    ],
-                );
-            }
+            76 => self.status_980(b),
             151 => {
                 let c = self.clock();
                 match b[3] {
@@ -321,6 +181,176 @@ impl SimCnc {
             }
             _ => fail(b, 1),
         }
+    }
+
+    /// GSK980 functions 13 and 14: read or write one tool offset (0–32). With No.4 bit 4 set
+    /// the window shows X offsets as radii while the CNC keeps diameters, so both directions
+    /// convert.
+    fn offset_980(&mut self, b: &mut [i32]) {
+        if b[0] == 14 && b[2] != 1 {
+            return fail(b, 2);
+        }
+        let (no, ty) = (b[3], b[4]);
+        if !(0..=32).contains(&no) {
+            return fail(b, 3);
+        }
+        let Some(t) = OffsetType::from_980(ty) else {
+            return fail(b, 4);
+        };
+        // No.4 bit 4 = 1: X offsets are radii on the window.
+        let radius = self.params.word980(4) >> 4 & 1 == 1;
+        let x = matches!(t, Some(OffsetType::Geometry(0) | OffsetType::Wear(0)));
+        let o = &mut self.offsets[no as usize];
+        if b[0] == 13 {
+            let v = t.map_or(0, |t| o.get(t));
+            let v = if x && radius {
+                (v as f64 / 2.0).round() as i64
+            } else {
+                v
+            };
+            out(b, &[v]);
+        } else {
+            let v = i64::from(b[6]);
+            if let Some(t) = t {
+                if !offset_ok(t, v) {
+                    return fail(b, 6);
+                }
+                o.set(t, if x && radius { v * 2 } else { v });
+            }
+            written(b);
+        }
+    }
+
+    /// GSK980 functions 15 and 16: read or write a work system's (EXT, G54–G59) values for
+    /// the selected axes; a write must bring exactly one value per selected axis.
+    fn workpiece_980(&mut self, b: &mut [i32]) {
+        let sys = b[3];
+        if !(0..=6).contains(&sys) {
+            return fail(b, 3);
+        }
+        let Some(sel) = axis_selection(b[4], AXES, true) else {
+            return fail(b, 4);
+        };
+        let sys = sys as usize;
+        if b[0] == 15 {
+            out_n(b, sel.len(), |k| self.work[sys][sel.start + k]);
+        } else {
+            let want = sel.len();
+            if b[2] as usize != want || b.len() < 6 + want {
+                return fail(b, 2);
+            }
+            for (k, n) in sel.enumerate() {
+                self.work[sys][n] = i64::from(b[6 + k]);
+            }
+            written(b);
+        }
+    }
+
+    /// GSK980 functions 17 and 18: read or write one of the GSK980's parameter words, which
+    /// have no axis attribute.
+    fn param_980(&mut self, b: &mut [i32]) {
+        let no = b[3];
+        if !(1..=params::GSK980_WORDS as i32).contains(&no) {
+            return fail(b, 3);
+        }
+        if b[4] != 0 {
+            return fail(b, 4);
+        }
+        if b[0] == 17 {
+            let v = self.params.word980(no as usize);
+            out(b, &[i64::from(v)]);
+        } else {
+            if b[2] != 1 {
+                return fail(b, 2);
+            }
+            self.params.set_word980(no as usize, b[6]);
+            written(b);
+        }
+    }
+
+    /// GSK980 function 24: the running program's number and the main program's (the MDI
+    /// number while MDI runs); end code 6 without a program.
+    fn program_numbers_980(&self, b: &mut [i32]) {
+        if !self.has_program() {
+            return fail(b, 6);
+        }
+        let main = if self.auto.running_mdi() {
+            MDI_NUMBER
+        } else {
+            self.programs.first().map_or(0, |p| p.number)
+        };
+        let cur = self.current_program_number();
+        out(b, &[i64::from(cur), i64::from(main)]);
+    }
+
+    /// GSK980 functions 27, 28, 29, 74 and 75: a position or distance per selected axis, 0 for
+    /// a slot past the machine's axes; 29, the skip position, answers end code 5 as the
+    /// simulator keeps none.
+    fn axis_values_980(&self, b: &mut [i32]) {
+        let Some(sel) = axis_selection(b[4], AXES, true) else {
+            return fail(b, 4);
+        };
+        if b[0] == 29 {
+            return fail(b, 5);
+        }
+        let f = b[0];
+        let count = self.axis_count();
+        out_n(b, sel.len(), |k| {
+            let n = sel.start + k;
+            if n >= count { 0 } else { self.axis_value(f, n) }
+        });
+    }
+
+    /// GSK980 function 32: the modal G codes; the groups the simulator does not change answer
+    /// a fixed code.
+    fn modal_980(&self, b: &mut [i32]) {
+        let m = &self.auto.modal;
+        out(
+            b,
+            &[
+                i64::from(m.motion),
+                if m.css { 96 } else { 97 },
+                if m.per_rev { 99 } else { 98 },
+                if m.inch { 20 } else { 21 },
+                40,
+                67,
+                54 + i64::from(m.work),
+                18,
+                15,
+                113,
+            ],
+        );
+    }
+
+    /// GSK980 function 76: the status word, mode and run state in the 980's own numbering,
+    /// then motion, M/S/T in progress, emergency stop (alarm 0950) and any alarm.
+    fn status_980(&self, b: &mut [i32]) {
+        let mode = match self.mode {
+            Mode::Mdi => 0,
+            Mode::Mem => 1,
+            Mode::Dnc => 2,
+            Mode::Edit => 3,
+            Mode::Handle => 4,
+            Mode::Jog => 5,
+            Mode::Ref => 8,
+        };
+        let run = match self.auto.state {
+            RunState::Idle | RunState::Stop => 1,
+            RunState::Hold => 2,
+            RunState::Run => 3,
+        };
+        let moving = self.axes.iter().any(|a| a.mv);
+        out(
+            b,
+            &[
+                mode,
+                run,
+                i64::from(moving),
+                i64::from(self.mst_open()),
+                i64::from(self.alarm_active(ALARM_ESTOP)),
+                i64::from(!self.alarms.is_empty()),
+            ],
+        );
     }
 
     /// The clock: year, month, day, hour, minute, second.
