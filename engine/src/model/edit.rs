@@ -175,117 +175,29 @@ impl Ladder {
         self.apply_with(edit, false)
     }
 
+    /// What [`apply`](Self::apply) and [`restore`](Self::restore) share: one helper per kind
+    /// of edit, `strict` saying whether the column rules hold.
     fn apply_with(&mut self, edit: Edit, strict: bool) -> Result<Edit, EditError> {
         match edit {
-            Edit::SetCell { at, cell } => {
-                self.check_cell(at)?;
-                let output_col = at.col == self.width;
-                if !strict {
-                    // Bounds were checked; the column rule is not.
-                } else if output_col && !cell.is_output_kind() {
-                    return Err(EditError::WrongColumn(
-                        "contacts and wires go left of the output column",
-                    ));
-                }
-                if strict && !output_col && !cell.is_contact_kind() {
-                    return Err(EditError::WrongColumn(
-                        "coils and function boxes go in the output column at the right end",
-                    ));
-                }
-                let n = self.network_mut(at.block, at.network)?;
-                let old = std::mem::replace(&mut n.rows[at.row].cells[at.col], cell);
-                Ok(Edit::SetCell { at, cell: old })
-            }
-            Edit::SetLink { at, on } => {
-                self.check_cell(at)?;
-                let n = self.network_mut(at.block, at.network)?;
-                if at.col == 0 || at.row + 1 >= n.rows.len() {
-                    return Err(EditError::NoSuchPlace(
-                        "place for a vertical link (it joins a row to the next, right of the rail)",
-                    ));
-                }
-                let old = std::mem::replace(&mut n.rows[at.row].links[at.col], on);
-                Ok(Edit::SetLink { at, on: old })
-            }
+            Edit::SetCell { at, cell } => self.apply_set_cell(at, cell, strict),
+            Edit::SetLink { at, on } => self.apply_set_link(at, on),
             Edit::InsertRow {
                 block,
                 network,
                 row,
                 content,
-            } => {
-                let width = self.width;
-                let n = self.network_mut(block, network)?;
-                if row > n.rows.len() {
-                    return Err(EditError::NoSuchPlace("row"));
-                }
-                if content.cells.len() != width + 1 || content.links.len() != width + 1 {
-                    return Err(EditError::NoSuchPlace("row of this width"));
-                }
-                n.rows.insert(row, content);
-                Ok(Edit::DeleteRow {
-                    block,
-                    network,
-                    row,
-                })
-            }
+            } => self.apply_insert_row(block, network, row, content),
             Edit::DeleteRow {
                 block,
                 network,
                 row,
-            } => {
-                let n = self.network_mut(block, network)?;
-                if row >= n.rows.len() {
-                    return Err(EditError::NoSuchPlace("row"));
-                }
-                if n.rows.len() == 1 {
-                    return Err(EditError::LastRow);
-                }
-                let content = n.rows.remove(row);
-                Ok(Edit::InsertRow {
-                    block,
-                    network,
-                    row,
-                    content,
-                })
-            }
+            } => self.apply_delete_row(block, network, row),
             Edit::InsertNetwork {
                 block,
                 index,
                 network,
-            } => {
-                let width = self.width;
-                let b = self
-                    .blocks
-                    .get_mut(block)
-                    .ok_or(EditError::NoSuchPlace("block"))?;
-                if index > b.networks.len() {
-                    return Err(EditError::NoSuchPlace("network"));
-                }
-                network.check_width(width).map_err(EditError::WrongWidth)?;
-                // Ids stay unique whatever the caller built the network from.
-                let mut network = *network;
-                if self.find_network(network.id).is_some() {
-                    network.id = self.new_network_id();
-                }
-                let b = &mut self.blocks[block];
-                b.networks.insert(index, network);
-                Ok(Edit::DeleteNetwork { block, index })
-            }
-            Edit::DeleteNetwork { block, index } => {
-                let b = self
-                    .blocks
-                    .get_mut(block)
-                    .ok_or(EditError::NoSuchPlace("block"))?;
-                if index >= b.networks.len() {
-                    return Err(EditError::NoSuchPlace("network"));
-                }
-                let network = Box::new(b.networks.remove(index));
-                Ok(Edit::InsertNetwork {
-                    block,
-                    index,
-                    network,
-                })
-            }
+            } => self.apply_insert_network(block, index, *network),
+            Edit::DeleteNetwork { block, index } => self.apply_delete_network(block, index),
             Edit::SetNetworkText {
                 block,
                 network,
@@ -302,16 +214,7 @@ impl Ladder {
                     comment: old_comment,
                 })
             }
-            Edit::InsertBlock { index, block } => {
-                if index < 2 || index > self.blocks.len() || block.kind.sub_number().is_none() {
-                    return Err(EditError::FixedBlock);
-                }
-                for n in &block.networks {
-                    n.check_width(self.width).map_err(EditError::WrongWidth)?;
-                }
-                self.blocks.insert(index, *block);
-                Ok(Edit::DeleteBlock { index })
-            }
+            Edit::InsertBlock { index, block } => self.apply_insert_block(index, *block),
             Edit::DeleteBlock { index } => {
                 if index < 2 || index >= self.blocks.len() {
                     return Err(EditError::FixedBlock);
@@ -320,41 +223,196 @@ impl Ladder {
                 Ok(Edit::InsertBlock { index, block })
             }
             Edit::SetBlockHeader { index, kind, info } => {
-                let b = self
-                    .blocks
-                    .get_mut(index)
-                    .ok_or(EditError::NoSuchPlace("block"))?;
-                if b.kind.sub_number().is_none() != kind.sub_number().is_none()
-                    || (b.kind.sub_number().is_none() && b.kind != kind)
-                {
-                    return Err(EditError::FixedBlock);
-                }
-                let old_kind = std::mem::replace(&mut b.kind, kind);
-                let old_info = std::mem::replace(&mut b.info, info);
-                Ok(Edit::SetBlockHeader {
-                    index,
-                    kind: old_kind,
-                    info: old_info,
-                })
+                self.apply_set_block_header(index, kind, info)
             }
-            Edit::Batch(edits) => {
-                let mut inverses = Vec::with_capacity(edits.len());
-                for e in edits {
-                    match self.apply_with(e, strict) {
-                        Ok(inv) => inverses.push(inv),
-                        Err(err) => {
-                            // Roll back what was applied so a refused batch changes nothing.
-                            for inv in inverses.into_iter().rev() {
-                                let _ = self.apply_with(inv, false);
-                            }
-                            return Err(err);
-                        }
+            Edit::Batch(edits) => self.apply_batch(edits, strict),
+        }
+    }
+
+    /// [`Edit::SetCell`]: `strict` holds the column rule (contacts and wires left of the
+    /// output column, coils and boxes in it); an undo restores whatever was there.
+    fn apply_set_cell(&mut self, at: CellRef, cell: Cell, strict: bool) -> Result<Edit, EditError> {
+        self.check_cell(at)?;
+        let output_col = at.col == self.width;
+        if !strict {
+            // Bounds were checked; the column rule is not.
+        } else if output_col && !cell.is_output_kind() {
+            return Err(EditError::WrongColumn(
+                "contacts and wires go left of the output column",
+            ));
+        }
+        if strict && !output_col && !cell.is_contact_kind() {
+            return Err(EditError::WrongColumn(
+                "coils and function boxes go in the output column at the right end",
+            ));
+        }
+        let n = self.network_mut(at.block, at.network)?;
+        let old = std::mem::replace(&mut n.rows[at.row].cells[at.col], cell);
+        Ok(Edit::SetCell { at, cell: old })
+    }
+
+    /// [`Edit::SetLink`]: a link joins a row to the next, so the last row and the rail's
+    /// junction have none.
+    fn apply_set_link(&mut self, at: CellRef, on: bool) -> Result<Edit, EditError> {
+        self.check_cell(at)?;
+        let n = self.network_mut(at.block, at.network)?;
+        if at.col == 0 || at.row + 1 >= n.rows.len() {
+            return Err(EditError::NoSuchPlace(
+                "place for a vertical link (it joins a row to the next, right of the rail)",
+            ));
+        }
+        let old = std::mem::replace(&mut n.rows[at.row].links[at.col], on);
+        Ok(Edit::SetLink { at, on: old })
+    }
+
+    /// [`Edit::InsertRow`]: the row must have this ladder's width, as every row of a network
+    /// does.
+    fn apply_insert_row(
+        &mut self,
+        block: usize,
+        network: usize,
+        row: usize,
+        content: Row,
+    ) -> Result<Edit, EditError> {
+        let width = self.width;
+        let n = self.network_mut(block, network)?;
+        if row > n.rows.len() {
+            return Err(EditError::NoSuchPlace("row"));
+        }
+        if content.cells.len() != width + 1 || content.links.len() != width + 1 {
+            return Err(EditError::NoSuchPlace("row of this width"));
+        }
+        n.rows.insert(row, content);
+        Ok(Edit::DeleteRow {
+            block,
+            network,
+            row,
+        })
+    }
+
+    /// [`Edit::DeleteRow`]: a network keeps at least one row.
+    fn apply_delete_row(
+        &mut self,
+        block: usize,
+        network: usize,
+        row: usize,
+    ) -> Result<Edit, EditError> {
+        let n = self.network_mut(block, network)?;
+        if row >= n.rows.len() {
+            return Err(EditError::NoSuchPlace("row"));
+        }
+        if n.rows.len() == 1 {
+            return Err(EditError::LastRow);
+        }
+        let content = n.rows.remove(row);
+        Ok(Edit::InsertRow {
+            block,
+            network,
+            row,
+            content,
+        })
+    }
+
+    /// [`Edit::InsertNetwork`]: a network from elsewhere (the clipboard, another project) must
+    /// fit this ladder's width and gets a new id if its own is taken.
+    fn apply_insert_network(
+        &mut self,
+        block: usize,
+        index: usize,
+        mut network: Network,
+    ) -> Result<Edit, EditError> {
+        let width = self.width;
+        let b = self
+            .blocks
+            .get_mut(block)
+            .ok_or(EditError::NoSuchPlace("block"))?;
+        if index > b.networks.len() {
+            return Err(EditError::NoSuchPlace("network"));
+        }
+        network.check_width(width).map_err(EditError::WrongWidth)?;
+        // Ids stay unique whatever the caller built the network from.
+        if self.find_network(network.id).is_some() {
+            network.id = self.new_network_id();
+        }
+        let b = &mut self.blocks[block];
+        b.networks.insert(index, network);
+        Ok(Edit::DeleteNetwork { block, index })
+    }
+
+    /// [`Edit::DeleteNetwork`]: the inverse keeps the whole network, id included.
+    fn apply_delete_network(&mut self, block: usize, index: usize) -> Result<Edit, EditError> {
+        let b = self
+            .blocks
+            .get_mut(block)
+            .ok_or(EditError::NoSuchPlace("block"))?;
+        if index >= b.networks.len() {
+            return Err(EditError::NoSuchPlace("network"));
+        }
+        let network = Box::new(b.networks.remove(index));
+        Ok(Edit::InsertNetwork {
+            block,
+            index,
+            network,
+        })
+    }
+
+    /// [`Edit::InsertBlock`]: only subprograms are added, after level 1 and level 2, and
+    /// their networks must fit this ladder's width.
+    fn apply_insert_block(&mut self, index: usize, block: Block) -> Result<Edit, EditError> {
+        if index < 2 || index > self.blocks.len() || block.kind.sub_number().is_none() {
+            return Err(EditError::FixedBlock);
+        }
+        for n in &block.networks {
+            n.check_width(self.width).map_err(EditError::WrongWidth)?;
+        }
+        self.blocks.insert(index, block);
+        Ok(Edit::DeleteBlock { index })
+    }
+
+    /// [`Edit::SetBlockHeader`]: a subprogram stays a subprogram (its number and name may
+    /// change) and level 1 and level 2 keep their kind; any block's info may change.
+    fn apply_set_block_header(
+        &mut self,
+        index: usize,
+        kind: BlockKind,
+        info: String,
+    ) -> Result<Edit, EditError> {
+        let b = self
+            .blocks
+            .get_mut(index)
+            .ok_or(EditError::NoSuchPlace("block"))?;
+        if b.kind.sub_number().is_none() != kind.sub_number().is_none()
+            || (b.kind.sub_number().is_none() && b.kind != kind)
+        {
+            return Err(EditError::FixedBlock);
+        }
+        let old_kind = std::mem::replace(&mut b.kind, kind);
+        let old_info = std::mem::replace(&mut b.info, info);
+        Ok(Edit::SetBlockHeader {
+            index,
+            kind: old_kind,
+            info: old_info,
+        })
+    }
+
+    /// [`Edit::Batch`]: the edits in order, their inverses in reverse order; a refused edit
+    /// rolls back those already applied, so a refused batch changes nothing.
+    fn apply_batch(&mut self, edits: Vec<Edit>, strict: bool) -> Result<Edit, EditError> {
+        let mut inverses = Vec::with_capacity(edits.len());
+        for e in edits {
+            match self.apply_with(e, strict) {
+                Ok(inv) => inverses.push(inv),
+                Err(err) => {
+                    // Roll back what was applied so a refused batch changes nothing.
+                    for inv in inverses.into_iter().rev() {
+                        let _ = self.apply_with(inv, false);
                     }
+                    return Err(err);
                 }
-                inverses.reverse();
-                Ok(Edit::Batch(inverses))
             }
         }
+        inverses.reverse();
+        Ok(Edit::Batch(inverses))
     }
 
     /// Whether an edit whose inverse is `inverse` changed nothing (see
