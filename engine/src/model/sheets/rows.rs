@@ -79,86 +79,9 @@ pub fn row_op(
     op: RowOp,
     row: usize,
 ) -> Result<(Option<TableEdit>, usize), TableError> {
-    let profile = project.profile();
-    let first = |area: Area| profile.range(area).0;
     match sheet {
-        Sheet::Symbols(t) => {
-            let mut tables = project.symbol_tables.clone();
-            let Some(table) = tables.get_mut(t) else {
-                return Ok((None, row));
-            };
-            let start = seed(&table.rows, row, |s| s.address).unwrap_or(Address::bit(
-                Area::R,
-                first(Area::R),
-                0,
-            ));
-            let select = apply_op(
-                &mut table.rows,
-                sheet,
-                op,
-                row,
-                |s| {
-                    s.name.clear();
-                    s.comments.clear();
-                },
-                || {
-                    next_free_address(start, profile, |a| {
-                        project.symbols().any(|s| s.address == a)
-                    })
-                    .map(|address| Symbol {
-                        name: String::new(),
-                        address,
-                        comments: Comments::new(),
-                    })
-                },
-            )?;
-            Ok((
-                changed(&project.symbol_tables, tables, TableEdit::Symbols),
-                select,
-            ))
-        }
-        Sheet::D | Sheet::Dt | Sheet::Dc | Sheet::DFloat => {
-            let area = sheet.data_area();
-            let used: Vec<Address> = data_addresses(project, sheet)
-                .into_iter()
-                .map(|(_, _, a)| a)
-                .collect();
-            let free = |start: Option<Address>| {
-                next_free_address(
-                    start.unwrap_or(Address::byte(area, first(area))),
-                    profile,
-                    |a| used.contains(&a),
-                )
-            };
-            let mut data = project.data.clone();
-            let select = if sheet == Sheet::DFloat {
-                let rows = &mut data.d_float;
-                let start = seed(rows, row, |r| r.address);
-                apply_op(
-                    rows,
-                    sheet,
-                    op,
-                    row,
-                    |r| *r = RealRow::new(r.address, 0.0),
-                    || free(start).map(|a| RealRow::new(a, 0.0)),
-                )?
-            } else {
-                let rows = int_rows_mut(&mut data, sheet);
-                let start = seed(rows, row, |r| r.address);
-                apply_op(
-                    rows,
-                    sheet,
-                    op,
-                    row,
-                    |r| *r = DataRow::new(r.address, 0),
-                    || free(start).map(|a| DataRow::new(a, 0)),
-                )?
-            };
-            Ok((
-                changed(&project.data, data, |d| TableEdit::Data(Box::new(d))),
-                select,
-            ))
-        }
+        Sheet::Symbols(t) => symbol_row_op(project, t, op, row),
+        Sheet::D | Sheet::Dt | Sheet::Dc | Sheet::DFloat => data_row_op(project, sheet, op, row),
         Sheet::Messages => {
             // The rows are the A bits: they can be emptied, not added or removed.
             let mut messages = project.messages.clone();
@@ -174,56 +97,171 @@ pub fn row_op(
                 row,
             ))
         }
-        Sheet::Diagnosis | Sheet::Permissions => {
-            let mut rows = address_rows(project, sheet).clone();
-            // Diagnosis shows bits as lamps and words as values; permissions are about the
-            // settings a user may change, K bytes first (§3.4).
-            let default = if sheet == Sheet::Diagnosis {
-                Address::bit(Area::K, first(Area::K), 0)
-            } else {
-                Address::byte(Area::K, first(Area::K))
-            };
-            let start = seed(&rows, row, |r| r.address).unwrap_or(default);
-            let existing = address_rows(project, sheet);
-            let select = apply_op(
-                &mut rows,
-                sheet,
-                op,
-                row,
-                |r| r.comments.clear(),
-                || {
-                    next_free_address(start, profile, |a| existing.iter().any(|r| r.address == a))
-                        .map(|address| AddressRow {
-                            address,
-                            comments: Comments::new(),
-                        })
-                },
-            )?;
-            Ok((changed(existing, rows, address_edit(sheet)), select))
-        }
-        Sheet::MCodes => {
-            let mut rows = project.m_codes.clone();
-            let start = seed(&rows, row, |r| r.code).unwrap_or(0);
-            let span = M_CODES.end() - M_CODES.start() + 1;
-            let select = apply_op(
-                &mut rows,
-                sheet,
-                op,
-                row,
-                |r| r.comments.clear(),
-                || {
-                    (0..span)
-                        .map(|k| M_CODES.start() + (start - M_CODES.start() + k) % span)
-                        .find(|c| !project.m_codes.iter().any(|r| r.code == *c))
-                        .map(|code| MCodeRow {
-                            code,
-                            comments: Comments::new(),
-                        })
-                },
-            )?;
-            Ok((changed(&project.m_codes, rows, TableEdit::MCodes), select))
-        }
+        Sheet::Diagnosis | Sheet::Permissions => address_row_op(project, sheet, op, row),
+        Sheet::MCodes => m_code_row_op(project, op, row),
     }
+}
+
+/// [`row_op`] on symbol table `t`: a cleared row keeps its address, a new one takes the first
+/// address no table of the project uses (from the first R for an empty table).
+fn symbol_row_op(
+    project: &Project,
+    t: usize,
+    op: RowOp,
+    row: usize,
+) -> Result<(Option<TableEdit>, usize), TableError> {
+    let profile = project.profile();
+    let mut tables = project.symbol_tables.clone();
+    let Some(table) = tables.get_mut(t) else {
+        return Ok((None, row));
+    };
+    let start = seed(&table.rows, row, |s| s.address).unwrap_or(Address::bit(
+        Area::R,
+        profile.range(Area::R).0,
+        0,
+    ));
+    let select = apply_op(
+        &mut table.rows,
+        Sheet::Symbols(t),
+        op,
+        row,
+        |s| {
+            s.name.clear();
+            s.comments.clear();
+        },
+        || {
+            next_free_address(start, profile, |a| {
+                project.symbols().any(|s| s.address == a)
+            })
+            .map(|address| Symbol {
+                name: String::new(),
+                address,
+                comments: Comments::new(),
+            })
+        },
+    )?;
+    Ok((
+        changed(&project.symbol_tables, tables, TableEdit::Symbols),
+        select,
+    ))
+}
+
+/// [`row_op`] on a data sheet (D, DT, DC, D as reals): a cleared row keeps its address with a
+/// value of 0; a new one takes the first address of its area that no sheet of the same space
+/// lists, since D and D as reals share the D addresses.
+fn data_row_op(
+    project: &Project,
+    sheet: Sheet,
+    op: RowOp,
+    row: usize,
+) -> Result<(Option<TableEdit>, usize), TableError> {
+    let profile = project.profile();
+    let area = sheet.data_area();
+    let used: Vec<Address> = data_addresses(project, sheet)
+        .into_iter()
+        .map(|(_, _, a)| a)
+        .collect();
+    let free = |start: Option<Address>| {
+        next_free_address(
+            start.unwrap_or(Address::byte(area, profile.range(area).0)),
+            profile,
+            |a| used.contains(&a),
+        )
+    };
+    let mut data = project.data.clone();
+    let select = if sheet == Sheet::DFloat {
+        let rows = &mut data.d_float;
+        let start = seed(rows, row, |r| r.address);
+        apply_op(
+            rows,
+            sheet,
+            op,
+            row,
+            |r| *r = RealRow::new(r.address, 0.0),
+            || free(start).map(|a| RealRow::new(a, 0.0)),
+        )?
+    } else {
+        let rows = int_rows_mut(&mut data, sheet);
+        let start = seed(rows, row, |r| r.address);
+        apply_op(
+            rows,
+            sheet,
+            op,
+            row,
+            |r| *r = DataRow::new(r.address, 0),
+            || free(start).map(|a| DataRow::new(a, 0)),
+        )?
+    };
+    Ok((
+        changed(&project.data, data, |d| TableEdit::Data(Box::new(d))),
+        select,
+    ))
+}
+
+/// [`row_op`] on the diagnosis or permissions sheet, rows of an address and its comments: a
+/// new row takes the first K address the sheet does not list yet.
+fn address_row_op(
+    project: &Project,
+    sheet: Sheet,
+    op: RowOp,
+    row: usize,
+) -> Result<(Option<TableEdit>, usize), TableError> {
+    let profile = project.profile();
+    let mut rows = address_rows(project, sheet).clone();
+    // Diagnosis shows bits as lamps and words as values; permissions are about the
+    // settings a user may change, K bytes first (§3.4).
+    let default = if sheet == Sheet::Diagnosis {
+        Address::bit(Area::K, profile.range(Area::K).0, 0)
+    } else {
+        Address::byte(Area::K, profile.range(Area::K).0)
+    };
+    let start = seed(&rows, row, |r| r.address).unwrap_or(default);
+    let existing = address_rows(project, sheet);
+    let select = apply_op(
+        &mut rows,
+        sheet,
+        op,
+        row,
+        |r| r.comments.clear(),
+        || {
+            next_free_address(start, profile, |a| existing.iter().any(|r| r.address == a)).map(
+                |address| AddressRow {
+                    address,
+                    comments: Comments::new(),
+                },
+            )
+        },
+    )?;
+    Ok((changed(existing, rows, address_edit(sheet)), select))
+}
+
+/// [`row_op`] on the M-code sheet: a new row takes the first M code from the selected one on,
+/// wrapping round the range, that has no row yet.
+fn m_code_row_op(
+    project: &Project,
+    op: RowOp,
+    row: usize,
+) -> Result<(Option<TableEdit>, usize), TableError> {
+    let mut rows = project.m_codes.clone();
+    let start = seed(&rows, row, |r| r.code).unwrap_or(0);
+    let span = M_CODES.end() - M_CODES.start() + 1;
+    let select = apply_op(
+        &mut rows,
+        Sheet::MCodes,
+        op,
+        row,
+        |r| r.comments.clear(),
+        || {
+            (0..span)
+                .map(|k| M_CODES.start() + (start - M_CODES.start() + k) % span)
+                .find(|c| !project.m_codes.iter().any(|r| r.code == *c))
+                .map(|code| MCodeRow {
+                    code,
+                    comments: Comments::new(),
+                })
+        },
+    )?;
+    Ok((changed(&project.m_codes, rows, TableEdit::MCodes), select))
 }
 
 /// Sets bit `bit` of K byte `number` on the K page (§3.4.4.1): the edit, none when the bit
