@@ -113,10 +113,27 @@ fn at(row: usize, col: u32) -> Origin {
     }
 }
 
-/// Checks every table of a project.
+/// Checks every table of a project, in the tree's order (the order of the "block" numbers
+/// above), so the diagnostics read table by table as the editor lists them.
 pub fn check_tables(project: &Project, sink: &mut Sink) {
-    let profile = project.profile();
-    // Symbol tables: names, uniqueness, addresses.
+    symbol_tables(sink, project);
+    // D and D_FLOAT share the D addresses: one map sees every data table.
+    let mut listed: HashMap<Address, (&str, usize)> = HashMap::new();
+    integer_data_tables(sink, project, &mut listed);
+    real_data_table(sink, project, &mut listed);
+    message_table(sink, project);
+    // Diagnosis and permissions: memory addresses, each once.
+    sink.at(DIAGNOSIS, "DIAGNOSIS", 0);
+    address_table(sink, project, &project.diagnosis);
+    sink.at(PERMISSIONS, "PERMISSIONS", 0);
+    address_table(sink, project, &project.permissions);
+    m_code_table(sink, project);
+    version_info(sink, project);
+}
+
+/// Symbol tables: each table's name (T006), then every row's address and name. Names and
+/// addresses are unique across all the tables, so the maps of those seen span them all.
+fn symbol_tables(sink: &mut Sink, project: &Project) {
     let mut names: HashMap<&str, (usize, usize)> = HashMap::new();
     let mut addresses: HashMap<Address, (usize, usize)> = HashMap::new();
     let mut table_names: HashMap<&str, usize> = HashMap::new();
@@ -140,91 +157,130 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             );
         }
         for (r, s) in table.rows.iter().enumerate() {
-            if let Err(e) = check_symbol_area(s.address) {
-                sink.report(
-                    at(r, 0),
-                    Code::T007SymbolArea,
-                    format!("{e} (labels have no symbols; a subprogram is named in its block)"),
-                    format!("{}（标号不能定义符号；子程序在其程序块中命名）", e.zh()),
-                );
-            } else if let Err(e) = s.address.check_range(profile) {
-                sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
-            }
-            comments(sink, at(r, 2), &s.comments);
-            if let Some((pt, pr)) = addresses.insert(s.address, (t, r)) {
-                sink.report(
-                    at(r, 0),
-                    Code::W004AddressTwice,
-                    format!(
-                        "{} is also in table {} row {}; keep one row per address",
-                        s.address,
-                        pt + 1,
-                        pr + 1
-                    ),
-                    format!(
-                        "{} 也在符号表 {} 第 {} 行；每个地址只保留一行",
-                        s.address,
-                        pt + 1,
-                        pr + 1
-                    ),
-                );
-            }
+            symbol_address(sink, project, (t, r), s, &mut addresses);
             if s.name.is_empty() {
                 continue;
             }
-            if check_symbol_form(&s.name).is_err() {
-                sink.report(
-                    at(r, 1),
-                    Code::T001SymbolName,
-                    format!(
-                        "`{}` is not a valid symbol: use letters, digits, `_` and Chinese, not starting with a digit, at most 32 characters, and not an address",
-                        s.name
-                    ),
-                    format!(
-                        "`{}` 不是有效的符号：请使用字母、数字、`_` 和汉字，不以数字开头，最多 32 个字符，且不能是地址",
-                        s.name
-                    ),
-                );
-            } else if let Some((pt, pr)) = names.insert(&s.name, (t, r)) {
-                sink.report(
-                    at(r, 1),
-                    Code::T002SymbolTwice,
-                    format!(
-                        "symbol `{}` already exists (table {} row {}); symbols are unique",
-                        s.name,
-                        pt + 1,
-                        pr + 1
-                    ),
-                    format!(
-                        "符号 `{}` 已存在（符号表 {} 第 {} 行）；符号不能重复",
-                        s.name,
-                        pt + 1,
-                        pr + 1
-                    ),
-                );
-            }
+            symbol_name(sink, (t, r), &s.name, &mut names);
         }
     }
-    // Data tables: each row's area, listed once (D and D_FLOAT share the D addresses), its
-    // value inside its limits, its symbol and comments.
+}
+
+/// A symbol row's address: an area that takes symbols (T007) in range (T003), its comments,
+/// and listed once over all the symbol tables (W004), since `addresses` spans them all.
+/// `place` is (table, row).
+fn symbol_address(
+    sink: &mut Sink,
+    project: &Project,
+    place: (usize, usize),
+    s: &crate::model::tables::Symbol,
+    addresses: &mut HashMap<Address, (usize, usize)>,
+) {
+    let (t, r) = place;
+    if let Err(e) = check_symbol_area(s.address) {
+        sink.report(
+            at(r, 0),
+            Code::T007SymbolArea,
+            format!("{e} (labels have no symbols; a subprogram is named in its block)"),
+            format!("{}（标号不能定义符号；子程序在其程序块中命名）", e.zh()),
+        );
+    } else if let Err(e) = s.address.check_range(project.profile()) {
+        sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
+    }
+    comments(sink, at(r, 2), &s.comments);
+    if let Some((pt, pr)) = addresses.insert(s.address, (t, r)) {
+        sink.report(
+            at(r, 0),
+            Code::W004AddressTwice,
+            format!(
+                "{} is also in table {} row {}; keep one row per address",
+                s.address,
+                pt + 1,
+                pr + 1
+            ),
+            format!(
+                "{} 也在符号表 {} 第 {} 行；每个地址只保留一行",
+                s.address,
+                pt + 1,
+                pr + 1
+            ),
+        );
+    }
+}
+
+/// A symbol row's (non-empty) name: well formed (T001), and unique over all the symbol
+/// tables (T002), since an operand names its address by the symbol alone. `place` is
+/// (table, row).
+fn symbol_name<'p>(
+    sink: &mut Sink,
+    place: (usize, usize),
+    name: &'p str,
+    names: &mut HashMap<&'p str, (usize, usize)>,
+) {
+    let (t, r) = place;
+    if check_symbol_form(name).is_err() {
+        sink.report(
+            at(r, 1),
+            Code::T001SymbolName,
+            format!(
+                "`{name}` is not a valid symbol: use letters, digits, `_` and Chinese, not starting with a digit, at most 32 characters, and not an address"
+            ),
+            format!(
+                "`{name}` 不是有效的符号：请使用字母、数字、`_` 和汉字，不以数字开头，最多 32 个字符，且不能是地址"
+            ),
+        );
+    } else if let Some((pt, pr)) = names.insert(name, (t, r)) {
+        sink.report(
+            at(r, 1),
+            Code::T002SymbolTwice,
+            format!(
+                "symbol `{name}` already exists (table {} row {}); symbols are unique",
+                pt + 1,
+                pr + 1
+            ),
+            format!(
+                "符号 `{name}` 已存在（符号表 {} 第 {} 行）；符号不能重复",
+                pt + 1,
+                pr + 1
+            ),
+        );
+    }
+}
+
+/// Reports a data row whose address an earlier row of any data table already lists (T003),
+/// at the later row. `listed` maps each address seen to its table's name and row, and is
+/// shared by the tables because D and D_FLOAT set the same D addresses.
+fn data_listed_twice(
+    sink: &mut Sink,
+    listed: &mut HashMap<Address, (&str, usize)>,
+    name: &'static str,
+    r: usize,
+    a: Address,
+) {
+    if let Some((pname, pr)) = listed.insert(a, (name, r)) {
+        sink.report(
+            at(r, 0),
+            Code::T003DataAddress,
+            format!(
+                "{a} is also in the {pname} table row {}; keep one row per address",
+                pr + 1
+            ),
+            format!(
+                "{a} 也在数据表 {pname} 第 {} 行；每个地址只保留一行",
+                pr + 1
+            ),
+        );
+    }
+}
+
+/// The D, DT and DC data tables (DATA 0–2): each row's area, listed once, its value inside
+/// its limits (a DC preset never negative), its symbol and comments.
+fn integer_data_tables(
+    sink: &mut Sink,
+    project: &Project,
+    listed: &mut HashMap<Address, (&str, usize)>,
+) {
     let data = &project.data;
-    let mut listed: HashMap<Address, (&str, usize)> = HashMap::new();
-    let mut twice = |sink: &mut Sink, name: &'static str, r: usize, a: Address| {
-        if let Some((pname, pr)) = listed.insert(a, (name, r)) {
-            sink.report(
-                at(r, 0),
-                Code::T003DataAddress,
-                format!(
-                    "{a} is also in the {pname} table row {}; keep one row per address",
-                    pr + 1
-                ),
-                format!(
-                    "{a} 也在数据表 {pname} 第 {} 行；每个地址只保留一行",
-                    pr + 1
-                ),
-            );
-        }
-    };
     let tables = [
         (Sheet::D, Area::D, &data.d),
         (Sheet::Dt, Area::Dt, &data.dt),
@@ -234,7 +290,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
         let name = sheet.data_name().unwrap_or("D");
         sink.at(DATA, "DATA", t);
         for (r, row) in rows.iter().enumerate() {
-            twice(sink, name, r, row.address);
+            data_listed_twice(sink, listed, name, r, row.address);
             data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
             comments(sink, at(r, 5), &row.comments);
             if row.address.area != area || row.address.bit.is_some() {
@@ -247,7 +303,7 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
                     ),
                     format!("{} 不属于数据表 {name}；请使用 {name} 地址", row.address),
                 );
-            } else if let Err(e) = row.address.check_range(profile) {
+            } else if let Err(e) = row.address.check_range(project.profile()) {
                 sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
             }
             let lo = row.min.unwrap_or(-VALUE_LIMIT);
@@ -280,14 +336,23 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             }
         }
     }
+}
+
+/// The D_FLOAT table (DATA 3): D addresses of this controller, listed once with the integer
+/// tables' D rows, a finite value inside its limits, its symbol and comments.
+fn real_data_table(
+    sink: &mut Sink,
+    project: &Project,
+    listed: &mut HashMap<Address, (&str, usize)>,
+) {
     sink.at(DATA, "DATA", 3);
-    for (r, row) in data.d_float.iter().enumerate() {
-        twice(sink, "D_FLOAT", r, row.address);
+    for (r, row) in project.data.d_float.iter().enumerate() {
+        data_listed_twice(sink, listed, "D_FLOAT", r, row.address);
         data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
         comments(sink, at(r, 5), &row.comments);
         if row.address.area != Area::D
             || row.address.bit.is_some()
-            || row.address.check_range(profile).is_err()
+            || row.address.check_range(project.profile()).is_err()
         {
             sink.report(
                 at(r, 0),
@@ -308,7 +373,11 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             );
         }
     }
-    // Messages: numbers 1000–9999, unique, number and text together.
+}
+
+/// The message table: alarm numbers 1000–9999, each once, number and text together; then
+/// the rows past this controller's A range, which must stay empty.
+fn message_table(sink: &mut Sink, project: &Project) {
     sink.at(MESSAGES, "MESSAGES", 0);
     let mut numbers: HashMap<u16, usize> = HashMap::new();
     for (r, m) in project.messages.rows.iter().enumerate() {
@@ -361,9 +430,13 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             None => {}
         }
     }
-    // The table keeps a row per A bit of the largest profile; a smaller profile (the 980's
-    // A0–A24) must leave the rows beyond its range empty.
-    let rows = crate::model::tables::message_rows(profile);
+    messages_beyond_range(sink, project);
+}
+
+/// The message table keeps a row per A bit of the largest profile; a smaller profile (the
+/// 980's A0–A24) must leave the rows beyond its range empty (T005).
+fn messages_beyond_range(sink: &mut Sink, project: &Project) {
+    let rows = crate::model::tables::message_rows(project.profile());
     for (k, m) in project.messages.rows.iter().enumerate().skip(rows) {
         if *m != crate::model::Message::default() {
             sink.report(
@@ -382,12 +455,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
             );
         }
     }
-    // Diagnosis and permissions: memory addresses, each once.
-    sink.at(DIAGNOSIS, "DIAGNOSIS", 0);
-    address_table(sink, project, &project.diagnosis);
-    sink.at(PERMISSIONS, "PERMISSIONS", 0);
-    address_table(sink, project, &project.permissions);
-    // M codes: in range, each once.
+}
+
+/// The M-code comment table: codes in range, each once (T008), and their comments.
+fn m_code_table(sink: &mut Sink, project: &Project) {
     sink.at(MCODES, "MCODES", 0);
     let mut codes: HashMap<u32, usize> = HashMap::new();
     for (r, row) in project.m_codes.iter().enumerate() {
@@ -412,7 +483,10 @@ pub fn check_tables(project: &Project, sink: &mut Sink) {
         }
         comments(sink, at(r, 1), &row.comments);
     }
-    // Version information.
+}
+
+/// The version information: each field within its length (W006).
+fn version_info(sink: &mut Sink, project: &Project) {
     sink.at(VERSION, "VERSION", 0);
     let v = &project.version;
     for (field, field_zh, text, max) in [
