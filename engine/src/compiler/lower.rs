@@ -106,10 +106,39 @@ fn cell_origin(row: usize, col: usize) -> Origin {
     }
 }
 
+/// An output of the grid while reading: the node it hangs at, its row, the instruction.
+type GridOutput = (usize, u32, Output);
+
 /// Reads a network's grid as rungs, reporting what cannot be compiled.
 pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Rung> {
     let rows = network.rows.len();
     let junctions = width + 1;
+    let mut uf = junction_nodes(network, junctions);
+    let rail = uf.find(0);
+    let (edges, outputs) = grid_edges(network, width, &mut uf, sink);
+    let nodes = rows * junctions;
+    let reach = Reach::new(&edges, &outputs, rail, nodes);
+    let mut live = live_edges(edges, &reach, nodes, sink);
+    let mut rungs_out: Vec<(u32, Rung)> = Vec::new();
+    let mut powered_outputs = place_outputs(outputs, &reach, &live, &mut rungs_out, sink);
+    keep_powered(&mut live, &powered_outputs);
+
+    let output_nodes: Vec<bool> = powered_outputs.iter().map(|v| !v.is_empty()).collect();
+    reduce(&mut live, &output_nodes, nodes, sink);
+
+    if !is_tree(&live, nodes, sink) {
+        return Vec::new();
+    }
+    rail_rungs(&live, rail, &mut powered_outputs, &mut rungs_out, sink);
+    rungs_out.sort_by_key(|(row, _)| *row);
+    rungs_out.into_iter().map(|(_, r)| r).collect()
+}
+
+/// The junctions' nodes: junction `j` of row `r` is `r * junctions + j`; vertical links
+/// merge a junction with the one below, and the left rail merges every row's first
+/// junction into one node, the rail, which is node 0's set.
+fn junction_nodes(network: &Network, junctions: usize) -> Uf {
+    let rows = network.rows.len();
     let id = |r: usize, j: usize| r * junctions + j;
     let mut uf = Uf((0..rows * junctions).collect());
     for r in 0..rows {
@@ -120,11 +149,21 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             }
         }
     }
-    let rail = uf.find(id(0, 0));
+    uf
+}
 
+/// The grid's cells as edges (contacts and wires, from a junction's node to the next one)
+/// and outputs (at the output column's node), reporting an element in the wrong column.
+fn grid_edges(
+    network: &Network,
+    width: usize,
+    uf: &mut Uf,
+    sink: &mut Sink,
+) -> (Vec<Edge>, Vec<GridOutput>) {
+    let id = |r: usize, j: usize| r * (width + 1) + j;
     let mut edges: Vec<Edge> = Vec::new();
     // Outputs per node, with their row.
-    let mut outputs: Vec<(usize, u32, Output)> = Vec::new();
+    let mut outputs: Vec<GridOutput> = Vec::new();
     for (r, row) in network.rows.iter().enumerate() {
         for (c, cell) in row.cells.iter().enumerate() {
             let origin = cell_origin(r, c);
@@ -173,36 +212,60 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             }
         }
     }
+    (edges, outputs)
+}
 
-    let nodes = rows * junctions;
-    // Forward reachability from the rail, backward reachability from outputs.
-    let mut from_rail = vec![false; nodes];
-    from_rail[rail] = true;
-    let mut to_output = vec![false; nodes];
-    for (n, _, _) in &outputs {
-        to_output[*n] = true;
-    }
-    // Edges only go left to right, so one sweep in column order settles each direction.
-    let mut order: Vec<usize> = (0..edges.len()).collect();
-    order.sort_by_key(|&i| edges[i].key.1);
-    for &i in &order {
-        if from_rail[edges[i].from] {
-            from_rail[edges[i].to] = true;
+/// What reaches what in the grid, per node: what the rail powers, what leads on to an
+/// output, and what a path with at least one contact reaches from the rail.
+struct Reach {
+    from_rail: Vec<bool>,
+    to_output: Vec<bool>,
+    behind_contact: Vec<bool>,
+}
+
+impl Reach {
+    /// Forward reachability from the rail, backward reachability from the outputs.
+    fn new(edges: &[Edge], outputs: &[GridOutput], rail: usize, nodes: usize) -> Reach {
+        let mut from_rail = vec![false; nodes];
+        from_rail[rail] = true;
+        let mut to_output = vec![false; nodes];
+        for (n, _, _) in outputs {
+            to_output[*n] = true;
+        }
+        // Edges only go left to right, so one sweep in column order settles each direction.
+        let mut order: Vec<usize> = (0..edges.len()).collect();
+        order.sort_by_key(|&i| edges[i].key.1);
+        for &i in &order {
+            if from_rail[edges[i].from] {
+                from_rail[edges[i].to] = true;
+            }
+        }
+        for &i in order.iter().rev() {
+            if to_output[edges[i].to] {
+                to_output[edges[i].from] = true;
+            }
+        }
+        // Nodes that a path with at least one contact reaches from the rail.
+        let mut behind_contact = vec![false; nodes];
+        for &i in &order {
+            let e = &edges[i];
+            if from_rail[e.from] && (behind_contact[e.from] || matches!(e.term, Term::Expr(_))) {
+                behind_contact[e.to] = true;
+            }
+        }
+        Reach {
+            from_rail,
+            to_output,
+            behind_contact,
         }
     }
-    for &i in order.iter().rev() {
-        if to_output[edges[i].to] {
-            to_output[edges[i].from] = true;
-        }
-    }
-    // Nodes that a path with at least one contact reaches from the rail.
-    let mut behind_contact = vec![false; nodes];
-    for &i in &order {
-        let e = &edges[i];
-        if from_rail[e.from] && (behind_contact[e.from] || matches!(e.term, Term::Expr(_))) {
-            behind_contact[e.to] = true;
-        }
-    }
+}
+
+/// The edges on a path from the rail to an output. The others are reported: an element the
+/// rail does not reach (L001; a bare wire only when it leads on to an output), and the open
+/// branches, one L002 per branch.
+fn live_edges(edges: Vec<Edge>, reach: &Reach, nodes: usize, sink: &mut Sink) -> Vec<Edge> {
+    let (from_rail, to_output) = (&reach.from_rail, &reach.to_output);
     let mut live = Vec::new();
     // The elements of an open branch, by branch: one branch is one mistake, reported once
     // at its first cell however many elements it holds.
@@ -236,8 +299,20 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
         }
     }
     report_open_branches(&mut open, &open_edges, sink);
+    live
+}
 
-    let mut rungs_out: Vec<(u32, Rung)> = Vec::new();
+/// Sorts the outputs: a standalone instruction (LBL, CALLU) becomes a rung of its own in
+/// `rungs_out`, refused when anything shares its rung (L007); an output the rail does not
+/// reach is refused (L001); the others are returned by node, with their rows.
+fn place_outputs(
+    outputs: Vec<GridOutput>,
+    reach: &Reach,
+    live: &[Edge],
+    rungs_out: &mut Vec<(u32, Rung)>,
+    sink: &mut Sink,
+) -> Vec<Vec<(u32, Output)>> {
+    let nodes = reach.from_rail.len();
     let mut powered_outputs: Vec<Vec<(u32, Output)>> = vec![Vec::new(); nodes];
     let mut outputs_at = vec![0usize; nodes];
     for (n, _, _) in &outputs {
@@ -248,7 +323,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             // LBL and CALLU stand alone: nothing but wires (or nothing) before them, and
             // nothing else on their rung.
             let has_contacts =
-                behind_contact[n] || live.iter().any(|e| e.from == n) || outputs_at[n] > 1;
+                reach.behind_contact[n] || live.iter().any(|e| e.from == n) || outputs_at[n] > 1;
             if has_contacts {
                 sink.report(
                     o.origin,
@@ -264,7 +339,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 );
             }
             rungs_out.push((row, Rung::Standalone(o)));
-        } else if !from_rail[n] {
+        } else if !reach.from_rail[n] {
             let coil = o.op.spec().class == crate::catalog::InstrClass::Coil;
             sink.report(
                 o.origin,
@@ -282,26 +357,30 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             powered_outputs[n].push((row, o));
         }
     }
-    // The wires that lead a standalone instruction from the rail are not a rung of their own:
-    // keep only what leads to a powered output.
+    powered_outputs
+}
+
+/// The wires that lead a standalone instruction from the rail are not a rung of their own:
+/// keeps only the live edges that lead to a powered output.
+fn keep_powered(live: &mut Vec<Edge>, powered_outputs: &[Vec<(u32, Output)>]) {
     let mut to_powered: Vec<bool> = powered_outputs.iter().map(|v| !v.is_empty()).collect();
     live.sort_by_key(|e| std::cmp::Reverse(e.key.1));
-    for e in &live {
+    for e in live.iter() {
         if to_powered[e.to] {
             to_powered[e.from] = true;
         }
     }
     live.retain(|e| to_powered[e.to]);
+}
 
-    let output_nodes: Vec<bool> = powered_outputs.iter().map(|v| !v.is_empty()).collect();
-    reduce(&mut live, &output_nodes, nodes, sink);
-
-    // Whatever is left must be a tree: one way into each node.
+/// Whether what is left after the reductions is a tree: one way into each node. Otherwise
+/// the first edge into a node reached twice is reported (L004) and the network has no rung.
+fn is_tree(live: &[Edge], nodes: usize, sink: &mut Sink) -> bool {
     let mut in_count = vec![0usize; nodes];
-    for e in &live {
+    for e in live {
         in_count[e.to] += 1;
     }
-    for e in &live {
+    for e in live {
         if in_count[e.to] > 1 {
             sink.report(
                 cell_origin(e.key.0 as usize, e.key.1 as usize),
@@ -309,10 +388,23 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
                 "these branches join again after a branch point (or form a bridge), which no instruction list can express; draw each output's contacts as separate parallel branches",
                 "这些分支在分支点之后重新汇合（或形成桥接），指令表无法表达；请把每个输出的触点画成各自独立的并联分支",
             );
-            return Vec::new();
+            return false;
         }
     }
-    let mut out_edges: Vec<Vec<usize>> = vec![Vec::new(); nodes];
+    true
+}
+
+/// Builds a rung per edge leaving the rail, top to bottom, into `rungs_out`: the edge's
+/// expression and the tree it leads to. An edge with no contact (a wire) and an output
+/// straight at the rail have nothing to act on them, and are refused (L006).
+fn rail_rungs(
+    live: &[Edge],
+    rail: usize,
+    powered_outputs: &mut [Vec<(u32, Output)>],
+    rungs_out: &mut Vec<(u32, Rung)>,
+    sink: &mut Sink,
+) {
+    let mut out_edges: Vec<Vec<usize>> = vec![Vec::new(); powered_outputs.len()];
     for (i, e) in live.iter().enumerate() {
         out_edges[e.from].push(i);
     }
@@ -321,7 +413,7 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
     for i in rail_edges {
         let e = &live[i];
         let mut node = Node::default();
-        build_node(e.to, &live, &out_edges, &mut powered_outputs, &mut node);
+        build_node(e.to, live, &out_edges, powered_outputs, &mut node);
         match &e.term {
             Term::Expr(expr) => rungs_out.push((e.key.0, Rung::Powered(expr.clone(), node))),
             Term::Wire(origin) => {
@@ -344,8 +436,6 @@ pub fn lower_network(network: &Network, width: usize, sink: &mut Sink) -> Vec<Ru
             );
         }
     }
-    rungs_out.sort_by_key(|(row, _)| *row);
-    rungs_out.into_iter().map(|(_, r)| r).collect()
 }
 
 /// Series and parallel reductions until neither applies.
