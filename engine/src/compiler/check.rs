@@ -20,12 +20,26 @@ pub const BRANCH_STACK_DEPTH: usize = 16;
 /// Checks a whole program and resolves its symbols in place. Returns the step counts.
 pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) -> StepCounts {
     let profile = project.profile();
-    let symbols = project.symbol_index();
-    let mut labels: BTreeMap<u16, Place> = BTreeMap::new();
-    let mut coils: HashMap<Address, Place> = HashMap::new();
-    let mut timers: HashMap<Address, Place> = HashMap::new();
-    let mut subs: BTreeMap<u16, usize> = BTreeMap::new();
+    let subs = number_subprograms(program, profile, sink);
+    let labels = check_instructions(program, &project.symbol_index(), profile, sink);
 
+    super::writes::check_writes(program, profile, sink);
+    super::presets::check_presets(program, project, sink);
+
+    // Jumps and calls, now that every label and subprogram is known.
+    let calls = check_jumps_and_calls(program, &labels, &subs, sink);
+    check_recursion(program, &calls, sink);
+    count_steps(program, profile, &calls, sink)
+}
+
+/// Each subprogram's number: in the P range, and defined once (L038). Returns the block
+/// each number names; the first definition is the one calls reach.
+fn number_subprograms(
+    program: &Program,
+    profile: &Profile,
+    sink: &mut Sink,
+) -> BTreeMap<u16, usize> {
+    let mut subs: BTreeMap<u16, usize> = BTreeMap::new();
     for (b, block) in program.blocks.iter().enumerate() {
         if let BlockKind::Sub { number, .. } = block.kind {
             sink.at(b, &block.kind.label(), 0);
@@ -52,90 +66,123 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
             }
         }
     }
+    subs
+}
 
+/// What the instructions define, in program order, to find the second definition of each:
+/// labels (by number), coils and the timers or counters an instruction keeps.
+#[derive(Default)]
+struct Definitions {
+    labels: BTreeMap<u16, Place>,
+    coils: HashMap<Address, Place>,
+    timers: HashMap<Address, Place>,
+}
+
+/// Every instruction's operands (resolving symbols in place), what it defines, and each
+/// network's stack depths. Returns the labels, for the jumps.
+fn check_instructions(
+    program: &mut Program,
+    symbols: &SymbolIndex,
+    profile: &Profile,
+    sink: &mut Sink,
+) -> BTreeMap<u16, Place> {
+    let mut defs = Definitions::default();
     for b in 0..program.blocks.len() {
         let label = program.blocks[b].kind.label();
         for n in 0..program.blocks[b].networks.len() {
             sink.at(b, &label, n);
             for k in 0..program.blocks[b].networks[n].instrs.len() {
                 let instr = &mut program.blocks[b].networks[n].instrs[k];
-                check_operands(instr, &symbols, profile, sink);
+                check_operands(instr, symbols, profile, sink);
                 let instr = &program.blocks[b].networks[n].instrs[k];
-                let here = (b, n, instr.origin);
-                let first_addr = instr.operands.first().and_then(Operand::address);
-                match instr.op {
-                    Op::Lbl => {
-                        if let Some(a) = first_addr {
-                            if let Some(prev) = labels.get(&a.number) {
-                                sink.report(
-                                    instr.origin,
-                                    Code::L030LabelTwice,
-                                    format!(
-                                        "label {a} is already defined at {}; each label is defined once in the project",
-                                        place_text(program, *prev)
-                                    ),
-                                    format!(
-                                        "标号 {a} 已在 {} 定义；工程中每个标号只能定义一次",
-                                        place_text_zh(program, *prev)
-                                    ),
-                                );
-                            } else {
-                                labels.insert(a.number, here);
-                            }
-                        }
-                    }
-                    Op::Out | Op::Outn => {
-                        if let Some(a) = first_addr {
-                            if let Some(prev) = coils.get(&a) {
-                                sink.report(
-                                    instr.origin,
-                                    Code::W001CoilTwice,
-                                    format!(
-                                        "coil {a} is also driven at {}; the later one wins each scan",
-                                        place_text(program, *prev)
-                                    ),
-                                    format!(
-                                        "线圈 {a} 也在 {} 输出；每次扫描以后面的输出为准",
-                                        place_text_zh(program, *prev)
-                                    ),
-                                );
-                            } else {
-                                coils.insert(a, here);
-                            }
-                        }
-                    }
-                    _ if let Some((i, area)) = instr.op.spec().memory_operand() => {
-                        let number = instr.operands.get(i).and_then(Operand::address);
-                        if let Some(a) = number.filter(|a| a.area == area) {
-                            if let Some(prev) = timers.get(&a) {
-                                sink.report(
-                                    instr.origin,
-                                    Code::W002TimerTwice,
-                                    format!(
-                                        "{a} is also used by the instruction at {}; two instructions sharing a timer or counter disturb each other",
-                                        place_text(program, *prev)
-                                    ),
-                                    format!(
-                                        "{a} 也被 {} 的指令使用；两条指令共用一个定时器或计数器会互相干扰",
-                                        place_text_zh(program, *prev)
-                                    ),
-                                );
-                            } else {
-                                timers.insert(a, here);
-                            }
-                        }
-                    }
-                    _ => {}
-                }
+                defs.note(program, instr, (b, n, instr.origin), sink);
             }
             check_stacks(&program.blocks[b].networks[n].instrs, sink);
         }
     }
+    defs.labels
+}
 
-    super::writes::check_writes(program, profile, sink);
-    super::presets::check_presets(program, project, sink);
+impl Definitions {
+    /// Notes what `instr` at `here` defines, reporting a second definition at the place of
+    /// the first: a label (L030), a coil (W001) or a timer or counter (W002).
+    fn note(&mut self, program: &Program, instr: &Instr, here: Place, sink: &mut Sink) {
+        let first_addr = instr.operands.first().and_then(Operand::address);
+        match instr.op {
+            Op::Lbl => {
+                if let Some(a) = first_addr {
+                    if let Some(prev) = self.labels.get(&a.number) {
+                        sink.report(
+                            instr.origin,
+                            Code::L030LabelTwice,
+                            format!(
+                                "label {a} is already defined at {}; each label is defined once in the project",
+                                place_text(program, *prev)
+                            ),
+                            format!(
+                                "标号 {a} 已在 {} 定义；工程中每个标号只能定义一次",
+                                place_text_zh(program, *prev)
+                            ),
+                        );
+                    } else {
+                        self.labels.insert(a.number, here);
+                    }
+                }
+            }
+            Op::Out | Op::Outn => {
+                if let Some(a) = first_addr {
+                    if let Some(prev) = self.coils.get(&a) {
+                        sink.report(
+                            instr.origin,
+                            Code::W001CoilTwice,
+                            format!(
+                                "coil {a} is also driven at {}; the later one wins each scan",
+                                place_text(program, *prev)
+                            ),
+                            format!(
+                                "线圈 {a} 也在 {} 输出；每次扫描以后面的输出为准",
+                                place_text_zh(program, *prev)
+                            ),
+                        );
+                    } else {
+                        self.coils.insert(a, here);
+                    }
+                }
+            }
+            _ if let Some((i, area)) = instr.op.spec().memory_operand() => {
+                let number = instr.operands.get(i).and_then(Operand::address);
+                if let Some(a) = number.filter(|a| a.area == area) {
+                    if let Some(prev) = self.timers.get(&a) {
+                        sink.report(
+                            instr.origin,
+                            Code::W002TimerTwice,
+                            format!(
+                                "{a} is also used by the instruction at {}; two instructions sharing a timer or counter disturb each other",
+                                place_text(program, *prev)
+                            ),
+                            format!(
+                                "{a} 也被 {} 的指令使用；两条指令共用一个定时器或计数器会互相干扰",
+                                place_text_zh(program, *prev)
+                            ),
+                        );
+                    } else {
+                        self.timers.insert(a, here);
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
+}
 
-    // Jumps and calls, now that every label and subprogram is known.
+/// Every JMPB's label defined, in its own block (L031, L032), and every CALL/CALLU's
+/// subprogram defined (L033). Returns the calls by calling block: (called block, place).
+fn check_jumps_and_calls(
+    program: &Program,
+    labels: &BTreeMap<u16, Place>,
+    subs: &BTreeMap<u16, usize>,
+    sink: &mut Sink,
+) -> BTreeMap<usize, Vec<(usize, Place)>> {
     let mut calls: BTreeMap<usize, Vec<(usize, Place)>> = BTreeMap::new();
     for (b, block) in program.blocks.iter().enumerate() {
         let label = block.kind.label();
@@ -181,8 +228,17 @@ pub fn check_program(program: &mut Program, project: &Project, sink: &mut Sink) 
             }
         }
     }
-    check_recursion(program, &calls, sink);
+    calls
+}
 
+/// The program's step counts, and the limits they must keep (L035, L036): level 1 counts
+/// the subprograms it reaches through `calls`, since they run within its time.
+fn count_steps(
+    program: &Program,
+    profile: &Profile,
+    calls: &BTreeMap<usize, Vec<(usize, Place)>>,
+    sink: &mut Sink,
+) -> StepCounts {
     let block_steps: Vec<u32> = program
         .blocks
         .iter()
