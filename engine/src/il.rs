@@ -96,50 +96,70 @@ fn mark_broken(nets: &mut Vec<RawNetwork>) {
 
 /// Parses IL text into a program with line origins. Errors go to `sink`.
 pub fn parse(text: &str, sink: &mut Sink) -> Program {
-    let has_network_lines = text.lines().any(|l| {
-        tokenize(l)
-            .and_then(|t| {
-                t.first()
-                    .map(|(q, w)| !q && w.eq_ignore_ascii_case("NETWORK"))
-            })
-            .unwrap_or(false)
-    });
-    let mut blocks: Vec<(BlockKind, Origin, Vec<RawNetwork>)> = vec![
-        (BlockKind::Level1, Origin::None, Vec::new()),
-        (BlockKind::Level2, Origin::None, Vec::new()),
-    ];
-    let mut current = 0usize;
-    // Whether comment lines may still join the current network's comment.
-    let mut in_header = false;
+    let mut parser = Parser::new(text);
     for (index, line) in text.lines().enumerate() {
-        let line_no = index as u32 + 1;
-        let origin = Origin::Line(line_no);
-        let tokens = match tokenize(line) {
-            Some(t) => t,
-            None => {
-                sink.report(
-                    origin,
-                    Code::L012Syntax,
-                    "a quoted text is not closed: add the closing \"",
-                    "带引号的文字没有结束：请补上结尾的 \"",
-                );
-                mark_broken(&mut blocks[current].2);
-                continue;
-            }
+        let origin = Origin::Line(index as u32 + 1);
+        if !parser.line(line, origin, sink) {
+            break;
+        }
+    }
+    parser.into_program()
+}
+
+/// The parse's state between two lines: the blocks read so far (LEVEL1 and LEVEL2 always,
+/// then each SUB), the one lines go to, and whether comment lines still make the current
+/// network's comment.
+struct Parser {
+    /// Whether the text splits its networks itself; without NETWORK lines the instructions
+    /// are split where a rung ends ([`starts_network`]).
+    has_network_lines: bool,
+    blocks: Vec<(BlockKind, Origin, Vec<RawNetwork>)>,
+    current: usize,
+    /// Whether comment lines may still join the current network's comment.
+    in_header: bool,
+}
+
+impl Parser {
+    /// A parser for `text`, which is looked through once for NETWORK lines first: whether
+    /// there are any decides how every instruction is placed.
+    fn new(text: &str) -> Parser {
+        let has_network_lines = text.lines().any(|l| {
+            tokenize(l)
+                .and_then(|t| {
+                    t.first()
+                        .map(|(q, w)| !q && w.eq_ignore_ascii_case("NETWORK"))
+                })
+                .unwrap_or(false)
+        });
+        Parser {
+            has_network_lines,
+            blocks: vec![
+                (BlockKind::Level1, Origin::None, Vec::new()),
+                (BlockKind::Level2, Origin::None, Vec::new()),
+            ],
+            current: 0,
+            in_header: false,
+        }
+    }
+
+    /// Parses one line, reporting what is wrong with it. `false` at END, after which
+    /// nothing is read.
+    fn line(&mut self, line: &str, origin: Origin, sink: &mut Sink) -> bool {
+        let Some(tokens) = tokenize(line) else {
+            sink.report(
+                origin,
+                Code::L012Syntax,
+                "a quoted text is not closed: add the closing \"",
+                "带引号的文字没有结束：请补上结尾的 \"",
+            );
+            mark_broken(&mut self.blocks[self.current].2);
+            return true;
         };
         let Some((quoted, word)) = tokens.first() else {
-            let trimmed = line.trim_start();
-            if in_header && trimmed.starts_with(';') {
-                let body = trimmed[1..].strip_prefix(' ').unwrap_or(&trimmed[1..]);
-                if let Some(net) = blocks[current].2.last_mut() {
-                    net.comment.push(body.to_string());
-                }
-            } else if !trimmed.is_empty() {
-                in_header = false;
-            }
-            continue;
+            self.comment_line(line);
+            return true;
         };
-        in_header = false;
+        self.in_header = false;
         if *quoted {
             sink.report(
                 origin,
@@ -147,14 +167,14 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                 "a line starts with an instruction or a directive, not a quoted text",
                 "每行应以指令或伪指令开头，而不是带引号的文字",
             );
-            continue;
+            return true;
         }
         let upper = word.to_ascii_uppercase();
         match upper.as_str() {
-            "END" => break,
+            "END" => return false,
             "LEVEL1" | "LEVEL2" => {
-                current = if upper == "LEVEL1" { 0 } else { 1 };
-                blocks[current].1 = origin;
+                self.current = if upper == "LEVEL1" { 0 } else { 1 };
+                self.blocks[self.current].1 = origin;
                 if tokens.len() > 1 {
                     sink.report(
                         origin,
@@ -164,127 +184,173 @@ pub fn parse(text: &str, sink: &mut Sink) -> Program {
                     );
                 }
             }
-            "SUB" | "SP" => {
-                let number = tokens.get(1).and_then(|(q, t)| {
-                    (!q).then(|| crate::address::Address::parse(t).ok())
-                        .flatten()
-                });
-                match number {
-                    Some(a) if a.area == crate::address::Area::P && a.bit.is_none() => {
-                        let name = tokens.get(2).map(|(_, t)| t.clone()).unwrap_or_default();
-                        blocks.push((
-                            BlockKind::Sub {
-                                number: a.number,
-                                name,
-                            },
-                            origin,
-                            Vec::new(),
-                        ));
-                        current = blocks.len() - 1;
-                    }
-                    _ => sink.report(
-                        origin,
-                        Code::L012Syntax,
-                        "SUB needs a subprogram number: `SUB P0001 \"NAME\"`",
-                        "SUB 需要子程序号：`SUB P0001 \"NAME\"`",
-                    ),
-                }
+            "SUB" | "SP" => self.sub(&tokens, origin, sink),
+            "NETWORK" => self.network(&tokens, origin, sink),
+            _ => self.instruction(word, &upper, &tokens, origin, sink),
+        }
+        true
+    }
+
+    /// A line with no token: a `;` comment right after NETWORK (or another such line) adds
+    /// a line to the network's comment; any other comment ends the header.
+    fn comment_line(&mut self, line: &str) {
+        let trimmed = line.trim_start();
+        if self.in_header && trimmed.starts_with(';') {
+            let body = trimmed[1..].strip_prefix(' ').unwrap_or(&trimmed[1..]);
+            if let Some(net) = self.blocks[self.current].2.last_mut() {
+                net.comment.push(body.to_string());
             }
-            "NETWORK" => {
-                let title = match tokens.get(1) {
-                    Some((true, t)) => t.clone(),
-                    Some((false, t)) => {
-                        sink.report(
-                            origin,
-                            Code::L012Syntax,
-                            format!("write the network title in quotes: NETWORK \"{t}\""),
-                            format!("网络标题要写在引号内：NETWORK \"{t}\""),
-                        );
-                        t.clone()
-                    }
-                    None => String::new(),
-                };
-                blocks[current].2.push(RawNetwork::new(title));
-                in_header = true;
-            }
-            _ => {
-                let Some(op) = Op::from_name(&upper) else {
-                    let (hint, hint_zh) = suggestion(&upper);
-                    let word = shown(word);
-                    sink.report(
-                        origin,
-                        Code::L010UnknownInstruction,
-                        format!("unknown instruction `{word}`{hint}"),
-                        format!("未知指令 `{word}`{hint_zh}"),
-                    );
-                    mark_broken(&mut blocks[current].2);
-                    continue;
-                };
-                let mut operands = Vec::new();
-                let mut bad = false;
-                for (q, t) in &tokens[1..] {
-                    if *q {
-                        sink.report(
-                            origin,
-                            Code::L012Syntax,
-                            format!("`\"{t}\"`: operands are not quoted"),
-                            format!("`\"{t}\"`：操作数不加引号"),
-                        );
-                        bad = true;
-                        break;
-                    }
-                    match Operand::parse(t) {
-                        Ok(o) => operands.push(o),
-                        Err(e) => {
-                            sink.report(
-                                origin,
-                                Code::L012Syntax,
-                                format!("{} operand: {e}", op.name()),
-                                format!("{} 的操作数：{}", op.name(), e.zh()),
-                            );
-                            bad = true;
-                            break;
-                        }
-                    }
-                }
-                if bad {
-                    mark_broken(&mut blocks[current].2);
-                    continue;
-                }
-                let instr = Instr {
-                    op,
-                    operands,
+        } else if !trimmed.is_empty() {
+            self.in_header = false;
+        }
+    }
+
+    /// `SUB P0001 "NAME"`: a new subprogram block, which the next lines go to.
+    fn sub(&mut self, tokens: &[(bool, String)], origin: Origin, sink: &mut Sink) {
+        let number = tokens.get(1).and_then(|(q, t)| {
+            (!q).then(|| crate::address::Address::parse(t).ok())
+                .flatten()
+        });
+        match number {
+            Some(a) if a.area == crate::address::Area::P && a.bit.is_none() => {
+                let name = tokens.get(2).map(|(_, t)| t.clone()).unwrap_or_default();
+                self.blocks.push((
+                    BlockKind::Sub {
+                        number: a.number,
+                        name,
+                    },
                     origin,
-                };
-                let nets = &mut blocks[current].2;
-                if nets.is_empty()
-                    || (!has_network_lines && nets.last().is_some_and(|n| starts_network(n, op)))
-                {
-                    nets.push(RawNetwork::new(String::new()));
-                }
-                nets.last_mut()
-                    .expect("a network was just ensured")
-                    .push(instr);
+                    Vec::new(),
+                ));
+                self.current = self.blocks.len() - 1;
+            }
+            _ => sink.report(
+                origin,
+                Code::L012Syntax,
+                "SUB needs a subprogram number: `SUB P0001 \"NAME\"`",
+                "SUB 需要子程序号：`SUB P0001 \"NAME\"`",
+            ),
+        }
+    }
+
+    /// `NETWORK "TITLE"`: a new network in the current block, whose comment lines follow.
+    /// An unquoted title is kept, and reported.
+    fn network(&mut self, tokens: &[(bool, String)], origin: Origin, sink: &mut Sink) {
+        let title = match tokens.get(1) {
+            Some((true, t)) => t.clone(),
+            Some((false, t)) => {
+                sink.report(
+                    origin,
+                    Code::L012Syntax,
+                    format!("write the network title in quotes: NETWORK \"{t}\""),
+                    format!("网络标题要写在引号内：NETWORK \"{t}\""),
+                );
+                t.clone()
+            }
+            None => String::new(),
+        };
+        self.blocks[self.current].2.push(RawNetwork::new(title));
+        self.in_header = true;
+    }
+
+    /// An instruction line, added to the current network (or to a new one where a rung
+    /// starts, when the text has no NETWORK lines). A line that cannot be read marks its
+    /// network broken, so the network is not drawn from a partial list.
+    fn instruction(
+        &mut self,
+        word: &str,
+        upper: &str,
+        tokens: &[(bool, String)],
+        origin: Origin,
+        sink: &mut Sink,
+    ) {
+        let Some(op) = Op::from_name(upper) else {
+            let (hint, hint_zh) = suggestion(upper);
+            let word = shown(word);
+            sink.report(
+                origin,
+                Code::L010UnknownInstruction,
+                format!("unknown instruction `{word}`{hint}"),
+                format!("未知指令 `{word}`{hint_zh}"),
+            );
+            mark_broken(&mut self.blocks[self.current].2);
+            return;
+        };
+        let Some(operands) = parse_operands(op, &tokens[1..], origin, sink) else {
+            mark_broken(&mut self.blocks[self.current].2);
+            return;
+        };
+        let instr = Instr {
+            op,
+            operands,
+            origin,
+        };
+        let nets = &mut self.blocks[self.current].2;
+        if nets.is_empty()
+            || (!self.has_network_lines && nets.last().is_some_and(|n| starts_network(n, op)))
+        {
+            nets.push(RawNetwork::new(String::new()));
+        }
+        nets.last_mut()
+            .expect("a network was just ensured")
+            .push(instr);
+    }
+
+    /// The program the lines made, its networks' comment lines joined.
+    fn into_program(self) -> Program {
+        let mut program = Program::default();
+        for (kind, origin, nets) in self.blocks {
+            program.blocks.push(ProgramBlock {
+                kind,
+                origin,
+                networks: nets
+                    .into_iter()
+                    .map(|n| ProgramNetwork {
+                        title: n.title,
+                        comment: n.comment.join("\n"),
+                        instrs: n.instrs,
+                        broken: n.broken,
+                    })
+                    .collect(),
+            });
+        }
+        program
+    }
+}
+
+/// An instruction's operand tokens as operands, or `None` after reporting the first that is
+/// quoted or does not parse (the rest of the line is not read).
+fn parse_operands(
+    op: Op,
+    tokens: &[(bool, String)],
+    origin: Origin,
+    sink: &mut Sink,
+) -> Option<Vec<Operand>> {
+    let mut operands = Vec::new();
+    for (q, t) in tokens {
+        if *q {
+            sink.report(
+                origin,
+                Code::L012Syntax,
+                format!("`\"{t}\"`: operands are not quoted"),
+                format!("`\"{t}\"`：操作数不加引号"),
+            );
+            return None;
+        }
+        match Operand::parse(t) {
+            Ok(o) => operands.push(o),
+            Err(e) => {
+                sink.report(
+                    origin,
+                    Code::L012Syntax,
+                    format!("{} operand: {e}", op.name()),
+                    format!("{} 的操作数：{}", op.name(), e.zh()),
+                );
+                return None;
             }
         }
     }
-    let mut program = Program::default();
-    for (kind, origin, nets) in blocks {
-        program.blocks.push(ProgramBlock {
-            kind,
-            origin,
-            networks: nets
-                .into_iter()
-                .map(|n| ProgramNetwork {
-                    title: n.title,
-                    comment: n.comment.join("\n"),
-                    instrs: n.instrs,
-                    broken: n.broken,
-                })
-                .collect(),
-        });
-    }
-    program
+    Some(operands)
 }
 
 /// Without NETWORK lines: a network starts at an LD/LDI after an output when no MPS is open;
