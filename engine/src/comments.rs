@@ -215,6 +215,10 @@ fn address(key: &str) -> Result<Address, String> {
     Address::parse(key).map_err(|e| e.to_string())
 }
 
+/// What applying one row gives: the place it changed, with the names it gave or took away
+/// (for the guard's checks), or why it cannot apply.
+type Applied = Result<(Target, Vec<String>), String>;
+
 /// Applies one row: what it changed, with the names it gave or took away, or why it cannot
 /// apply.
 fn apply_row(
@@ -224,187 +228,233 @@ fn apply_row(
     key: &str,
     symbol: &str,
     langs: &[(String, String)],
-) -> Result<(Target, Vec<String>), String> {
-    let profile = p.profile();
+) -> Applied {
     match kind {
-        "symbol" => {
-            let a = Address::parse_in(key, profile).map_err(|e| e.to_string())?;
-            if !symbol.is_empty()
-                && (!is_symbol_name(symbol)
-                    || matches!(Operand::parse(symbol), Ok(Operand::Addr(_))))
-            {
-                return Err(format!("`{symbol}` is not a valid symbol name"));
-            }
-            check_symbol_area(a).map_err(|e| {
-                format!(
-                    "{e}: labels have no symbols, and a subprogram is named in its block (T007)"
-                )
-            })?;
-            let name = if table.is_empty() {
-                "符号表1"
-            } else {
-                table
-            };
-            if name == crate::model::tables::BLOCK_SYMBOLS {
-                return Err("the block-symbol table is derived from the subprograms; rename the subprogram instead".into());
-            }
-            let t = match p.symbol_tables.iter().position(|t| t.name == name) {
-                Some(i) => i,
-                None => {
-                    p.symbol_tables.push(SymbolTable {
-                        name: name.to_string(),
-                        rows: Vec::new(),
-                    });
-                    p.symbol_tables.len() - 1
-                }
-            };
-            let rows = &mut p.symbol_tables[t].rows;
-            let r = rows.iter().position(|s| s.address == a).unwrap_or_else(|| {
-                rows.push(Symbol {
-                    name: String::new(),
-                    address: a,
-                    comments: Comments::new(),
-                });
-                rows.len() - 1
-            });
-            let row = &mut rows[r];
-            let old = std::mem::replace(&mut row.name, symbol.to_string());
-            set_langs(&mut row.comments, langs);
-            Ok((
-                Target::Symbol { table: t, row: r },
-                vec![old, symbol.into()],
-            ))
-        }
-        "network" => {
-            let block = p
-                .ladder
-                .blocks
-                .iter_mut()
-                .find(|b| b.kind.label() == table)
-                .ok_or_else(|| format!("there is no block `{table}` (LEVEL1, LEVEL2 or P0001…)"))?;
-            let n: usize = key
-                .parse()
-                .map_err(|_| format!("`{key}` is not a network number"))?;
-            let net = n
-                .checked_sub(1)
-                .and_then(|i| block.networks.get_mut(i))
-                .ok_or_else(|| format!("{table} has no network {n}"))?;
-            net.title = symbol.to_string();
-            set_langs(&mut net.comments, langs);
-            Ok((Target::Other, Vec::new()))
-        }
-        "message" => {
-            let a = address(key)?;
-            let k = MessageTable::row_of(a)
-                .ok_or_else(|| format!("{a} is not a message row (an A bit)"))?;
-            let rows = message_rows(profile);
-            if k >= rows {
-                return Err(format!(
-                    "{a} is beyond this controller's A range (A0000.0–{}), which `check` refuses (T005): use an A bit of that range",
-                    MessageTable::address(rows - 1)
-                ));
-            }
-            let number = if symbol.is_empty() {
-                None
-            } else {
-                Some(
-                    symbol
-                        .parse::<u16>()
-                        .ok()
-                        .filter(|n| (1000..=9999).contains(n))
-                        .ok_or_else(|| format!("alarm number `{symbol}` is not 1000–9999"))?,
-                )
-            };
-            let m = p
-                .messages
-                .rows
-                .get_mut(k)
-                .ok_or_else(|| format!("{a} is not a message row"))?;
-            let old = std::mem::replace(&mut m.number, number);
-            set_langs(&mut m.texts, langs);
-            let names = [old, number]
-                .into_iter()
-                .flatten()
-                .map(|n| n.to_string())
-                .collect();
-            Ok((Target::Message(k), names))
-        }
-        "data" => {
-            let a = address(key)?;
-            if !symbol.is_empty() && check_symbol_form(symbol).is_err() {
-                return Err(format!(
-                    "`{symbol}` is not a valid symbol name, which `check` refuses (T001)"
-                ));
-            }
-            let d = &mut p.data;
-            // The table's number as `check` counts the data tables: 0 D, 1 DT, 2 DC, 3 D_FLOAT.
-            let (n, found) = match table {
-                "D_FLOAT" => (
-                    3,
-                    d.d_float
-                        .iter_mut()
-                        .enumerate()
-                        .find(|(_, r)| r.address == a)
-                        .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
-                ),
-                "D" | "DT" | "DC" => {
-                    let (n, rows) = match table {
-                        "D" => (0, &mut d.d),
-                        "DT" => (1, &mut d.dt),
-                        _ => (2, &mut d.dc),
-                    };
-                    (
-                        n,
-                        rows.iter_mut()
-                            .enumerate()
-                            .find(|(_, r)| r.address == a)
-                            .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
-                    )
-                }
-                _ => {
-                    return Err(format!(
-                        "`{table}` is not a data table (D, D_FLOAT, DT, DC)"
-                    ));
-                }
-            };
-            let (r, sym, comments) = found.ok_or_else(|| {
-                format!("the {table} table has no row {a}; add the row in the table first")
-            })?;
-            let old = std::mem::replace(sym, symbol.to_string());
-            set_langs(comments, langs);
-            Ok((Target::Data { table: n, row: r }, vec![old, symbol.into()]))
-        }
-        "diagnosis" | "permission" => {
-            let a = address(key)?;
-            let rows = if kind == "diagnosis" {
-                &mut p.diagnosis
-            } else {
-                &mut p.permissions
-            };
-            let row = rows
-                .iter_mut()
-                .find(|r| r.address == a)
-                .ok_or_else(|| format!("the {kind} table has no row {a}"))?;
-            set_langs(&mut row.comments, langs);
-            Ok((Target::Other, Vec::new()))
-        }
-        "mcode" => {
-            let code: u32 = key
-                .trim_start_matches(['M', 'm'])
-                .parse()
-                .map_err(|_| format!("`{key}` is not an M code"))?;
-            let row = p
-                .m_codes
-                .iter_mut()
-                .find(|r| r.code == code)
-                .ok_or_else(|| format!("the M-code table has no M{code:02}"))?;
-            set_langs(&mut row.comments, langs);
-            Ok((Target::Other, Vec::new()))
-        }
+        "symbol" => apply_symbol(p, table, key, symbol, langs),
+        "network" => apply_network(p, table, key, symbol, langs),
+        "message" => apply_message(p, key, symbol, langs),
+        "data" => apply_data(p, table, key, symbol, langs),
+        "diagnosis" | "permission" => apply_address_row(p, kind, key, langs),
+        "mcode" => apply_m_code(p, key, langs),
         other => Err(format!(
             "unknown kind `{other}` (symbol, network, message, data, diagnosis, permission, mcode)"
         )),
     }
+}
+
+/// A `symbol` row: the symbol and comments of an address in a symbol table, the row (and
+/// the table) made when missing. The name must be one `check` accepts, and the area one
+/// that takes symbols, so the import brings in no T001 or T007.
+fn apply_symbol(
+    p: &mut Project,
+    table: &str,
+    key: &str,
+    symbol: &str,
+    langs: &[(String, String)],
+) -> Applied {
+    let a = Address::parse_in(key, p.profile()).map_err(|e| e.to_string())?;
+    if !symbol.is_empty()
+        && (!is_symbol_name(symbol) || matches!(Operand::parse(symbol), Ok(Operand::Addr(_))))
+    {
+        return Err(format!("`{symbol}` is not a valid symbol name"));
+    }
+    check_symbol_area(a).map_err(|e| {
+        format!("{e}: labels have no symbols, and a subprogram is named in its block (T007)")
+    })?;
+    let name = if table.is_empty() {
+        "符号表1"
+    } else {
+        table
+    };
+    if name == crate::model::tables::BLOCK_SYMBOLS {
+        return Err(
+            "the block-symbol table is derived from the subprograms; rename the subprogram instead"
+                .into(),
+        );
+    }
+    let t = match p.symbol_tables.iter().position(|t| t.name == name) {
+        Some(i) => i,
+        None => {
+            p.symbol_tables.push(SymbolTable {
+                name: name.to_string(),
+                rows: Vec::new(),
+            });
+            p.symbol_tables.len() - 1
+        }
+    };
+    let rows = &mut p.symbol_tables[t].rows;
+    let r = rows.iter().position(|s| s.address == a).unwrap_or_else(|| {
+        rows.push(Symbol {
+            name: String::new(),
+            address: a,
+            comments: Comments::new(),
+        });
+        rows.len() - 1
+    });
+    let row = &mut rows[r];
+    let old = std::mem::replace(&mut row.name, symbol.to_string());
+    set_langs(&mut row.comments, langs);
+    Ok((
+        Target::Symbol { table: t, row: r },
+        vec![old, symbol.into()],
+    ))
+}
+
+/// A `network` row: the title (the symbol column) and comments of an existing network,
+/// numbered from 1 in its block.
+fn apply_network(
+    p: &mut Project,
+    table: &str,
+    key: &str,
+    symbol: &str,
+    langs: &[(String, String)],
+) -> Applied {
+    let block = p
+        .ladder
+        .blocks
+        .iter_mut()
+        .find(|b| b.kind.label() == table)
+        .ok_or_else(|| format!("there is no block `{table}` (LEVEL1, LEVEL2 or P0001…)"))?;
+    let n: usize = key
+        .parse()
+        .map_err(|_| format!("`{key}` is not a network number"))?;
+    let net = n
+        .checked_sub(1)
+        .and_then(|i| block.networks.get_mut(i))
+        .ok_or_else(|| format!("{table} has no network {n}"))?;
+    net.title = symbol.to_string();
+    set_langs(&mut net.comments, langs);
+    Ok((Target::Other, Vec::new()))
+}
+
+/// A `message` row: the alarm number (the symbol column) and texts of an A bit within this
+/// controller's range, since `check` refuses a row beyond it.
+fn apply_message(p: &mut Project, key: &str, symbol: &str, langs: &[(String, String)]) -> Applied {
+    let a = address(key)?;
+    let k =
+        MessageTable::row_of(a).ok_or_else(|| format!("{a} is not a message row (an A bit)"))?;
+    let rows = message_rows(p.profile());
+    if k >= rows {
+        return Err(format!(
+            "{a} is beyond this controller's A range (A0000.0–{}), which `check` refuses (T005): use an A bit of that range",
+            MessageTable::address(rows - 1)
+        ));
+    }
+    let number = if symbol.is_empty() {
+        None
+    } else {
+        Some(
+            symbol
+                .parse::<u16>()
+                .ok()
+                .filter(|n| (1000..=9999).contains(n))
+                .ok_or_else(|| format!("alarm number `{symbol}` is not 1000–9999"))?,
+        )
+    };
+    let m = p
+        .messages
+        .rows
+        .get_mut(k)
+        .ok_or_else(|| format!("{a} is not a message row"))?;
+    let old = std::mem::replace(&mut m.number, number);
+    set_langs(&mut m.texts, langs);
+    let names = [old, number]
+        .into_iter()
+        .flatten()
+        .map(|n| n.to_string())
+        .collect();
+    Ok((Target::Message(k), names))
+}
+
+/// A `data` row: the symbol and comments of a row already in a data table; the symbol's
+/// form is checked here, the rest of what `check` would refuse by the guard once every row
+/// has applied.
+fn apply_data(
+    p: &mut Project,
+    table: &str,
+    key: &str,
+    symbol: &str,
+    langs: &[(String, String)],
+) -> Applied {
+    let a = address(key)?;
+    if !symbol.is_empty() && check_symbol_form(symbol).is_err() {
+        return Err(format!(
+            "`{symbol}` is not a valid symbol name, which `check` refuses (T001)"
+        ));
+    }
+    let d = &mut p.data;
+    // The table's number as `check` counts the data tables: 0 D, 1 DT, 2 DC, 3 D_FLOAT.
+    let (n, found) = match table {
+        "D_FLOAT" => (
+            3,
+            d.d_float
+                .iter_mut()
+                .enumerate()
+                .find(|(_, r)| r.address == a)
+                .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
+        ),
+        "D" | "DT" | "DC" => {
+            let (n, rows) = match table {
+                "D" => (0, &mut d.d),
+                "DT" => (1, &mut d.dt),
+                _ => (2, &mut d.dc),
+            };
+            (
+                n,
+                rows.iter_mut()
+                    .enumerate()
+                    .find(|(_, r)| r.address == a)
+                    .map(|(i, r)| (i, &mut r.symbol, &mut r.comments)),
+            )
+        }
+        _ => {
+            return Err(format!(
+                "`{table}` is not a data table (D, D_FLOAT, DT, DC)"
+            ));
+        }
+    };
+    let (r, sym, comments) = found.ok_or_else(|| {
+        format!("the {table} table has no row {a}; add the row in the table first")
+    })?;
+    let old = std::mem::replace(sym, symbol.to_string());
+    set_langs(comments, langs);
+    Ok((Target::Data { table: n, row: r }, vec![old, symbol.into()]))
+}
+
+/// A `diagnosis` or `permission` row (`kind` says which): the comments of an existing row.
+fn apply_address_row(
+    p: &mut Project,
+    kind: &str,
+    key: &str,
+    langs: &[(String, String)],
+) -> Applied {
+    let a = address(key)?;
+    let rows = if kind == "diagnosis" {
+        &mut p.diagnosis
+    } else {
+        &mut p.permissions
+    };
+    let row = rows
+        .iter_mut()
+        .find(|r| r.address == a)
+        .ok_or_else(|| format!("the {kind} table has no row {a}"))?;
+    set_langs(&mut row.comments, langs);
+    Ok((Target::Other, Vec::new()))
+}
+
+/// An `mcode` row: the comments of an existing M code, written `M03` or `3`.
+fn apply_m_code(p: &mut Project, key: &str, langs: &[(String, String)]) -> Applied {
+    let code: u32 = key
+        .trim_start_matches(['M', 'm'])
+        .parse()
+        .map_err(|_| format!("`{key}` is not an M code"))?;
+    let row = p
+        .m_codes
+        .iter_mut()
+        .find(|r| r.code == code)
+        .ok_or_else(|| format!("the M-code table has no M{code:02}"))?;
+    set_langs(&mut row.comments, langs);
+    Ok((Target::Other, Vec::new()))
 }
 
 #[cfg(test)]
