@@ -115,151 +115,225 @@ pub fn run_with(
     name: &str,
     mut control: Control<'_>,
 ) -> std::io::Result<Outcome> {
-    let mut out = Outcome::default();
-    let mut reported_halt = false;
-    let mut header = false;
-    let mut ticks = 0u64;
-    let stop = control.stop;
-    let stopped = || stop.is_some_and(|s| s.load(Ordering::Relaxed));
+    let mut run = Run {
+        name,
+        out: Outcome::default(),
+        reported_halt: false,
+        header: false,
+        ticks: 0,
+    };
     for (line, command) in &script.commands {
-        if stopped() {
-            out.stopped = Some(Stopped {
+        if control.stop_asked() {
+            run.out.stopped = Some(Stopped {
                 line: *line,
                 done: 0,
                 of: 0,
-                ticks,
+                ticks: run.ticks,
             });
             break;
         }
         match command {
             Command::Do(MachineCommand::Tick(n)) => {
-                for done in 0..*n {
-                    if stopped() {
-                        out.stopped = Some(Stopped {
-                            line: *line,
-                            done,
-                            of: *n,
-                            ticks,
-                        });
-                        break;
-                    }
-                    machine.tick();
-                    ticks += 1;
-                    if let Some(t) = control.trace.as_deref_mut() {
-                        trace_row(machine, &mut header, t)?;
-                    }
-                    if let Some(h) = machine.plc().halt()
-                        && !reported_halt
-                    {
-                        out.output.push(format!("{name}:{line}: PLC halted at {h}"));
-                        reported_halt = true;
-                    }
-                    if (done + 1) % PROGRESS_EVERY == 0
-                        && let Some(p) = control.progress.as_deref_mut()
-                    {
-                        p(Progress {
-                            line: *line,
-                            done: done + 1,
-                            of: *n,
-                        });
-                    }
-                }
-                if out.stopped.is_some() {
+                run.tick(machine, *line, *n, &mut control)?;
+                if run.out.stopped.is_some() {
                     break;
                 }
             }
-            Command::Do(c) => {
-                if matches!(c, MachineCommand::PowerCycle) {
-                    reported_halt = false;
-                }
-                if let Err(e) = machine.apply(c) {
-                    let who = match c {
-                        MachineCommand::Device(..) => "device",
-                        MachineCommand::Scenario(..) | MachineCommand::Release(..) => "scenario",
-                        _ => "cnc",
-                    };
-                    out.output.push(format!("{name}:{line}: {who}: {e}"));
-                    out.failed += 1;
-                }
+            Command::Do(c) => run.apply(machine, *line, c),
+            Command::Print(p) => run.print(machine, *line, p),
+            Command::Expect(t, want) => run.expect(machine, *line, t, *want),
+            Command::ExpectCnc(key, want, written) => {
+                run.expect_cnc(machine, *line, *key, want, written)
             }
-            Command::Print(p) => match machine.read(p) {
-                Ok(v) => out.output.push(format!("{} = {v}", machine.probe_name(p))),
-                Err(e) => {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
-                    out.failed += 1;
-                }
-            },
-            Command::Expect(t, want) => {
-                let got = machine.plc().read(t.address, t.bytes);
-                if masked(got, t.bytes) == masked(*want, t.bytes) {
-                    out.passed += 1;
-                } else {
-                    // Show the value the way the expectation was written.
-                    let shown = if *want >= 0 {
-                        masked(got, t.bytes).to_string()
-                    } else {
-                        got.to_string()
-                    };
-                    out.output.push(format!(
-                        "{name}:{line}: expect {} = {want}, got {shown}",
-                        t.text()
-                    ));
-                    out.failed += 1;
-                }
-            }
-            Command::ExpectCnc(key, want, written) => match machine.read(&Probe::Cnc(*key)) {
-                Ok(ProbeValue::Cnc(got)) if got == *want => out.passed += 1,
-                Ok(got) => {
-                    out.output.push(format!(
-                        "{name}:{line}: expect {} = {written}, got {got}",
-                        key.text()
-                    ));
-                    out.failed += 1;
-                }
-                Err(e) => {
-                    out.output.push(format!("{name}:{line}: cnc: {e}"));
-                    out.failed += 1;
-                }
-            },
-            Command::ExpectDevice(i, want) => {
-                let p = Probe::Device(*i);
-                match machine.read(&p) {
-                    Ok(ProbeValue::Int(got)) if got == *want => out.passed += 1,
-                    Ok(got) => {
-                        out.output.push(format!(
-                            "{name}:{line}: expect {} = {want}, got {got}",
-                            machine.probe_name(&p)
-                        ));
-                        out.failed += 1;
-                    }
-                    Err(e) => {
-                        out.output.push(format!("{name}:{line}: device: {e}"));
-                        out.failed += 1;
-                    }
-                }
-            }
-            Command::ExpectReal(a, want, tol) => {
-                let got = machine.plc().read_real(*a);
-                let tol = tol.unwrap_or(1e-4);
-                let ok = if *want == 0.0 {
-                    got.abs() <= tol
-                } else {
-                    ((got - want) / want).abs() <= tol
-                };
-                if ok && !got.is_nan() {
-                    out.passed += 1;
-                } else {
-                    out.output
-                        .push(format!("{name}:{line}: expect {a} = {want}, got {got}"));
-                    out.failed += 1;
-                }
-            }
+            Command::ExpectDevice(i, want) => run.expect_device(machine, *line, *i, *want),
+            Command::ExpectReal(a, want, tol) => run.expect_real(machine, *line, *a, *want, *tol),
         }
     }
     if let Some(t) = control.trace {
         t.flush()?;
     }
-    Ok(out)
+    Ok(run.out)
+}
+
+impl Control<'_> {
+    /// Whether a stop was asked for; read between two ticks and before each line.
+    fn stop_asked(&self) -> bool {
+        self.stop.is_some_and(|s| s.load(Ordering::Relaxed))
+    }
+}
+
+/// A run's state between two lines: what it has produced, and what the lines share (a halt
+/// is reported once until a power cycle, the trace's header written once, the ticks
+/// counted over the whole script for [`Stopped`]).
+struct Run<'n> {
+    /// The script's name, which prefixes failure lines.
+    name: &'n str,
+    out: Outcome,
+    reported_halt: bool,
+    header: bool,
+    ticks: u64,
+}
+
+impl Run<'_> {
+    /// A `scan` or `run` line of `n` ticks: each tick traced, a halt reported, progress
+    /// called every [`PROGRESS_EVERY`] ticks; a stop leaves [`Outcome::stopped`] set.
+    fn tick(
+        &mut self,
+        machine: &mut Machine,
+        line: usize,
+        n: u64,
+        control: &mut Control<'_>,
+    ) -> std::io::Result<()> {
+        let name = self.name;
+        for done in 0..n {
+            if control.stop_asked() {
+                self.out.stopped = Some(Stopped {
+                    line,
+                    done,
+                    of: n,
+                    ticks: self.ticks,
+                });
+                break;
+            }
+            machine.tick();
+            self.ticks += 1;
+            if let Some(t) = control.trace.as_deref_mut() {
+                trace_row(machine, &mut self.header, t)?;
+            }
+            if let Some(h) = machine.plc().halt()
+                && !self.reported_halt
+            {
+                self.out
+                    .output
+                    .push(format!("{name}:{line}: PLC halted at {h}"));
+                self.reported_halt = true;
+            }
+            if (done + 1) % PROGRESS_EVERY == 0
+                && let Some(p) = control.progress.as_deref_mut()
+            {
+                p(Progress {
+                    line,
+                    done: done + 1,
+                    of: n,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    /// Any other command for the machine; one that cannot apply is a failure, named by the
+    /// part that refused it. A power cycle clears a halt, so the next one is reported again.
+    fn apply(&mut self, machine: &mut Machine, line: usize, c: &MachineCommand) {
+        let name = self.name;
+        if matches!(c, MachineCommand::PowerCycle) {
+            self.reported_halt = false;
+        }
+        if let Err(e) = machine.apply(c) {
+            let who = match c {
+                MachineCommand::Device(..) => "device",
+                MachineCommand::Scenario(..) | MachineCommand::Release(..) => "scenario",
+                _ => "cnc",
+            };
+            self.fail(format!("{name}:{line}: {who}: {e}"));
+        }
+    }
+
+    /// A `print` line: the probe's value, or a failure when it cannot be read.
+    fn print(&mut self, machine: &Machine, line: usize, p: &Probe) {
+        let name = self.name;
+        match machine.read(p) {
+            Ok(v) => self
+                .out
+                .output
+                .push(format!("{} = {v}", machine.probe_name(p))),
+            Err(e) => self.fail(format!("{name}:{line}: cnc: {e}")),
+        }
+    }
+
+    /// Records a failure: its line printed, and counted.
+    fn fail(&mut self, text: String) {
+        self.out.output.push(text);
+        self.out.failed += 1;
+    }
+
+    /// `expect ADDR[:N] VALUE`: the bytes compared, so a byte's 255 and -1 match.
+    fn expect(&mut self, machine: &Machine, line: usize, t: &super::Target, want: i64) {
+        let name = self.name;
+        let got = machine.plc().read(t.address, t.bytes);
+        if masked(got, t.bytes) == masked(want, t.bytes) {
+            self.out.passed += 1;
+        } else {
+            // Show the value the way the expectation was written.
+            let shown = if want >= 0 {
+                masked(got, t.bytes).to_string()
+            } else {
+                got.to_string()
+            };
+            self.fail(format!(
+                "{name}:{line}: expect {} = {want}, got {shown}",
+                t.text()
+            ));
+        }
+    }
+
+    /// `expect cnc.KEY VALUE`: a failure shows the value as written.
+    fn expect_cnc(
+        &mut self,
+        machine: &Machine,
+        line: usize,
+        key: crate::cnc::command::CncKey,
+        want: &crate::cnc::command::CncValue,
+        written: &str,
+    ) {
+        let name = self.name;
+        match machine.read(&Probe::Cnc(key)) {
+            Ok(ProbeValue::Cnc(got)) if got == *want => self.out.passed += 1,
+            Ok(got) => self.fail(format!(
+                "{name}:{line}: expect {} = {written}, got {got}",
+                key.text()
+            )),
+            Err(e) => self.fail(format!("{name}:{line}: cnc: {e}")),
+        }
+    }
+
+    /// `expect device.NAME VALUE`, by the device's index.
+    fn expect_device(&mut self, machine: &Machine, line: usize, i: usize, want: i64) {
+        let name = self.name;
+        let p = Probe::Device(i);
+        match machine.read(&p) {
+            Ok(ProbeValue::Int(got)) if got == want => self.out.passed += 1,
+            Ok(got) => self.fail(format!(
+                "{name}:{line}: expect {} = {want}, got {got}",
+                machine.probe_name(&p)
+            )),
+            Err(e) => self.fail(format!("{name}:{line}: device: {e}")),
+        }
+    }
+
+    /// `expectf ADDR VALUE [TOL]`: a relative tolerance (absolute around 0), 1e-4 unless
+    /// given; NaN never holds.
+    fn expect_real(
+        &mut self,
+        machine: &Machine,
+        line: usize,
+        a: crate::address::Address,
+        want: f32,
+        tol: Option<f32>,
+    ) {
+        let name = self.name;
+        let got = machine.plc().read_real(a);
+        let tol = tol.unwrap_or(1e-4);
+        let ok = if want == 0.0 {
+            got.abs() <= tol
+        } else {
+            ((got - want) / want).abs() <= tol
+        };
+        if ok && !got.is_nan() {
+            self.out.passed += 1;
+        } else {
+            self.fail(format!("{name}:{line}: expect {a} = {want}, got {got}"));
+        }
+    }
 }
 
 #[cfg(test)]
