@@ -144,69 +144,101 @@ pub(crate) fn tables(
     pages: &mut Pages,
     contents: &mut Vec<(String, usize)>,
 ) {
+    let heads = Heads::new(options);
+    let mut all = symbol_tables(project, options, &heads);
+    all.push(k_table(project, options, &heads));
+    all.extend(data_tables(project, options, &heads));
+    all.push(message_table(project, options, &heads));
+    for table in &all {
+        put(table, pages, metrics, contents);
+    }
+}
+
+/// The column heads the tables share, in the document's language.
+struct Heads {
+    addr: String,
+    symbol: String,
+    comment: String,
+    value: String,
+}
+
+impl Heads {
+    fn new(options: &Options) -> Heads {
+        let lang = options.lang;
+        Heads {
+            addr: lang.say("Address", "地址"),
+            symbol: lang.say("Symbol", "符号"),
+            comment: lang.say("Comment", "注释"),
+            value: lang.say("Value", "值"),
+        }
+    }
+}
+
+/// One table per symbol table: address, symbol, comments.
+fn symbol_tables(project: &Project, options: &Options, heads: &Heads) -> Vec<Table> {
     let lang = options.lang;
-    let (addr, symbol, comment, value) = (
-        lang.say("Address", "地址"),
-        lang.say("Symbol", "符号"),
-        lang.say("Comment", "注释"),
-        lang.say("Value", "值"),
-    );
-    for t in &project.symbol_tables {
-        let rows = t
-            .rows
-            .iter()
-            .map(|s| {
-                vec![
-                    s.address.to_string(),
-                    s.name.clone(),
-                    comments(&s.comments, options),
-                ]
-            })
-            .collect();
-        let table = Table {
+    project
+        .symbol_tables
+        .iter()
+        .map(|t| Table {
             title: format!("{}  {}", lang.say("Symbol table", "符号表"), t.name),
             columns: vec![
-                (addr.clone(), 0.14),
-                (symbol.clone(), 0.26),
-                (comment.clone(), 0.60),
+                (heads.addr.clone(), 0.14),
+                (heads.symbol.clone(), 0.26),
+                (heads.comment.clone(), 0.60),
             ],
-            rows,
-        };
-        put(&table, pages, metrics, contents);
+            rows: t
+                .rows
+                .iter()
+                .map(|s| {
+                    vec![
+                        s.address.to_string(),
+                        s.name.clone(),
+                        comments(&s.comments, options),
+                    ]
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// The K keep relays: each byte in bits and as a value.
+fn k_table(project: &Project, options: &Options, heads: &Heads) -> Table {
+    let lang = options.lang;
+    Table {
+        title: lang.say("K keep relays", "K 保持继电器"),
+        columns: vec![
+            (heads.addr.clone(), 0.2),
+            (lang.say("Bits 7…0", "位 7…0"), 0.3),
+            (heads.value.clone(), 0.5),
+        ],
+        rows: project
+            .data
+            .k
+            .iter()
+            .enumerate()
+            .map(|(i, v)| vec![format!("K{i:04}"), format!("{v:08b}"), v.to_string()])
+            .collect(),
     }
+}
+
+/// The D, DT, DC and D_FLOAT data tables, one row per entry with its range and comments.
+fn data_tables(project: &Project, options: &Options, heads: &Heads) -> Vec<Table> {
+    let lang = options.lang;
     let data = &project.data;
-    let k = data
-        .k
-        .iter()
-        .enumerate()
-        .map(|(i, v)| vec![format!("K{i:04}"), format!("{v:08b}"), v.to_string()])
-        .collect();
-    put(
-        &Table {
-            title: lang.say("K keep relays", "K 保持继电器"),
-            columns: vec![
-                (addr.clone(), 0.2),
-                (lang.say("Bits 7…0", "位 7…0"), 0.3),
-                (value.clone(), 0.5),
-            ],
-            rows: k,
-        },
-        pages,
-        metrics,
-        contents,
-    );
     let columns = vec![
-        (addr.clone(), 0.12),
-        (value.clone(), 0.12),
+        (heads.addr.clone(), 0.12),
+        (heads.value.clone(), 0.12),
         (lang.say("Min", "最小"), 0.1),
         (lang.say("Max", "最大"), 0.1),
-        (symbol.clone(), 0.18),
-        (comment.clone(), 0.38),
+        (heads.symbol.clone(), 0.18),
+        (heads.comment.clone(), 0.38),
     ];
-    let tables: [(&str, Vec<Vec<String>>); 4] = [
-        (
-            "D",
-            data.d
+    // A macro rather than a closure: the integer rows and D_FLOAT's are different types
+    // with the same fields.
+    macro_rules! rows {
+        ($rows:expr) => {
+            $rows
                 .iter()
                 .map(|r| {
                     data_row(
@@ -219,100 +251,50 @@ pub(crate) fn tables(
                         options,
                     )
                 })
-                .collect(),
-        ),
-        (
-            "DT",
-            data.dt
-                .iter()
-                .map(|r| {
-                    data_row(
-                        r.address,
-                        r.value,
-                        r.min,
-                        r.max,
-                        &r.symbol,
-                        &r.comments,
-                        options,
-                    )
-                })
-                .collect(),
-        ),
-        (
-            "DC",
-            data.dc
-                .iter()
-                .map(|r| {
-                    data_row(
-                        r.address,
-                        r.value,
-                        r.min,
-                        r.max,
-                        &r.symbol,
-                        &r.comments,
-                        options,
-                    )
-                })
-                .collect(),
-        ),
-        (
-            "D_FLOAT",
-            data.d_float
-                .iter()
-                .map(|r| {
-                    data_row(
-                        r.address,
-                        r.value,
-                        r.min,
-                        r.max,
-                        &r.symbol,
-                        &r.comments,
-                        options,
-                    )
-                })
-                .collect(),
-        ),
-    ];
-    for (name, rows) in tables {
-        put(
-            &Table {
-                title: lang.say(&format!("{name} data table"), &format!("{name} 数据表")),
-                columns: columns.clone(),
-                rows,
-            },
-            pages,
-            metrics,
-            contents,
-        );
+                .collect::<Vec<_>>()
+        };
     }
-    let rows = project
-        .messages
-        .rows
-        .iter()
-        .enumerate()
-        .filter(|(_, m)| m.number.is_some() || !m.texts.is_empty())
-        .map(|(i, m)| {
-            vec![
-                format!("A{:04}.{}", i / 8, i % 8),
-                opt(m.number),
-                comments(&m.texts, options),
-            ]
-        })
-        .collect();
-    put(
-        &Table {
-            title: lang.say("Display messages", "信息显示表"),
-            columns: vec![
-                (addr, 0.12),
-                (lang.say("Number", "编号"), 0.1),
-                (lang.say("Text", "内容"), 0.78),
-            ],
+    let tables: [(&str, Vec<Vec<String>>); 4] = [
+        ("D", rows!(data.d)),
+        ("DT", rows!(data.dt)),
+        ("DC", rows!(data.dc)),
+        ("D_FLOAT", rows!(data.d_float)),
+    ];
+    tables
+        .into_iter()
+        .map(|(name, rows)| Table {
+            title: lang.say(&format!("{name} data table"), &format!("{name} 数据表")),
+            columns: columns.clone(),
             rows,
-        },
-        pages,
-        metrics,
-        contents,
-    );
+        })
+        .collect()
+}
+
+/// The display messages that have a number or a text, by their A bit.
+fn message_table(project: &Project, options: &Options, heads: &Heads) -> Table {
+    let lang = options.lang;
+    Table {
+        title: lang.say("Display messages", "信息显示表"),
+        columns: vec![
+            (heads.addr.clone(), 0.12),
+            (lang.say("Number", "编号"), 0.1),
+            (lang.say("Text", "内容"), 0.78),
+        ],
+        rows: project
+            .messages
+            .rows
+            .iter()
+            .enumerate()
+            .filter(|(_, m)| m.number.is_some() || !m.texts.is_empty())
+            .map(|(i, m)| {
+                vec![
+                    format!("A{:04}.{}", i / 8, i % 8),
+                    opt(m.number),
+                    comments(&m.texts, options),
+                ]
+            })
+            .collect(),
+    }
 }
 
 /// The cross-reference index.
