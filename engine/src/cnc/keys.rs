@@ -2,7 +2,7 @@
 //! "Script commands"), with the way `expect` compares each kind: names in any case, lengths
 //! rounded to 0.001 mm, macro variables as decimals or `vacant`.
 
-use super::command::{axis_name, check_param, int, mm, offset_range, parse_axis};
+use super::arguments::{axis_name, check_param, int, mm, offset_range, parse_axis};
 use super::data::{OffsetType, WORK_SYSTEMS, work_system};
 use super::params;
 use super::{AXIS_NAMES, Mode, RunState, SimCnc};

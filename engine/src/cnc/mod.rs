@@ -19,6 +19,7 @@
 
 pub mod alarm_text;
 pub mod arc;
+mod arguments;
 mod auto;
 mod block;
 mod block_check;

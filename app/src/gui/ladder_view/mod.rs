@@ -2,11 +2,13 @@
 //! and function boxes. Only the networks inside the visible part are laid out and painted, so
 //! a 5000-step program scrolls as smoothly as a small one.
 
+mod label;
 mod network;
 mod scroll;
 
+pub use label::address_of;
+pub use network::LiveNetwork;
 use network::{Drawn, Style};
-pub use network::{LiveNetwork, address_of};
 pub use scroll::Anchor;
 
 use super::settings::{DisplayMode, NumFormat};

@@ -2,7 +2,8 @@
 //! what the online monitor shows (power flow, live values, forces, the "why?" marks), the
 //! selection and the cursor.
 
-use super::{COMMENT_LINES, ErrorMark, Metrics, Place, operand_text, row_tops};
+use super::label::{BitLabel, Span, address_of};
+use super::{ErrorMark, Metrics, Place, operand_text, row_tops};
 use crate::gui::settings::{DisplayMode, NumFormat};
 use crate::gui::theme::{self, SELECTED};
 use egui::{Align2, FontId, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
@@ -33,15 +34,6 @@ pub struct LiveNetwork<'a> {
     pub marked: &'a [(usize, usize)],
 }
 
-/// The address an operand stands for (a symbol through the symbol tables).
-pub fn address_of(project: &Project, o: &Operand) -> Option<Address> {
-    match o {
-        Operand::Addr(a) => Some(*a),
-        Operand::Symbol(s) => project.resolve_symbol(s),
-        _ => None,
-    }
-}
-
 /// Draws one network with its top-left at `origin`, with what the monitor shows when live.
 pub(super) fn network_ui(
     painter: &egui::Painter,
@@ -52,19 +44,79 @@ pub(super) fn network_ui(
     live: Option<&LiveNetwork<'_>>,
     drawn: &mut Vec<(Rect, String)>,
 ) {
-    let Style {
-        m,
-        mode,
-        comments,
-        titles,
-        element_comments,
-    } = style;
-    let (mode, comments) = (*mode, *comments);
+    let m = &style.m;
+    let top = header(painter, (net, index), origin, style);
     let width = project.ladder.width;
-    let wire = Stroke::new(1.5, theme::WIRE);
-    let power = Stroke::new(3.0, theme::POWER);
+    let rail_x = origin.x + m.margin;
+    let right_rail = rail_x + width as f32 * m.cell + m.output + 8.0;
+    let mut row_tops = Vec::with_capacity(net.rows.len());
+    let mut y = top;
+    for row in &net.rows {
+        row_tops.push(y);
+        y += m.row_height(&row.cells);
+    }
+    // Rails: the left one carries power whenever the program runs.
+    let left = if live.is_some() {
+        theme::POWER
+    } else {
+        theme::RAIL
+    };
+    painter.line_segment([pos2(rail_x, top), pos2(rail_x, y)], Stroke::new(3.0, left));
+    painter.line_segment(
+        [pos2(right_rail, top), pos2(right_rail, y)],
+        Stroke::new(3.0, theme::RAIL),
+    );
     let font = FontId::proportional(m.font);
-    let title = if net.title.is_empty() || !titles {
+    let cells = Cells {
+        painter,
+        project,
+        m,
+        mode: style.mode,
+        font: &font,
+        live,
+        wire: Stroke::new(1.5, theme::WIRE),
+        power: Stroke::new(3.0, theme::POWER),
+        right_rail,
+        label: BitLabel {
+            project,
+            mode: style.mode,
+            font: &font,
+            size: m.font,
+            line: m.line,
+            comment: style.element_comments,
+        },
+    };
+    for (r, row) in net.rows.iter().enumerate() {
+        for (c, cell) in row.cells.iter().enumerate() {
+            let x0 = rail_x + c as f32 * m.cell;
+            let x1 = x0 + if c == width { m.output } else { m.cell };
+            let at = At {
+                r,
+                c,
+                x0,
+                x1,
+                top: row_tops[r],
+                height: m.row_height(&row.cells),
+            };
+            cells.cell(cell, &at, drawn);
+            // A vertical link at the left edge of this column, down to the next row.
+            if c > 0 && row.links.get(c).copied().unwrap_or(false) && r + 1 < net.rows.len() {
+                cells.link(&at, row_tops[r + 1]);
+            }
+        }
+    }
+}
+
+/// Draws the network's title and, when shown, its comment lines; returns where its rows
+/// begin.
+fn header(
+    painter: &egui::Painter,
+    (net, index): (&Network, usize),
+    origin: Pos2,
+    style: &Style,
+) -> f32 {
+    let m = &style.m;
+    let title = if net.title.is_empty() || !style.titles {
         format!("N{:04}", index + 1)
     } else {
         format!("N{:04}  {}", index + 1, net.title)
@@ -77,368 +129,264 @@ pub(super) fn network_ui(
         theme::TITLE,
     );
     let mut y = origin.y + m.header;
-    if comments {
+    if style.comments {
         for line in super::comment_lines(net) {
             painter.text(
                 pos2(origin.x + 4.0, y),
                 Align2::LEFT_TOP,
                 line,
-                font.clone(),
+                FontId::proportional(m.font),
                 theme::COMMENT,
             );
             y += m.header;
         }
     }
-    let rail_x = origin.x + m.margin;
-    let col_x = |c: usize| rail_x + c as f32 * m.cell;
-    let right_rail = col_x(width) + m.output + 8.0;
-    let top = y;
-    let mut row_tops = Vec::with_capacity(net.rows.len());
-    for row in &net.rows {
-        row_tops.push(y);
-        y += m.row_height(&row.cells);
-    }
-    // Rails: the left one carries power whenever the program runs.
-    painter.line_segment(
-        [pos2(rail_x, top), pos2(rail_x, y)],
-        Stroke::new(
-            3.0,
-            if live.is_some() {
-                theme::POWER
-            } else {
-                theme::RAIL
-            },
-        ),
-    );
-    painter.line_segment(
-        [pos2(right_rail, top), pos2(right_rail, y)],
-        Stroke::new(3.0, theme::RAIL),
-    );
-    let cell_view = |r: usize, c: usize| live.and_then(|l| l.view.cells.get(r)?.get(c));
-    let stroke = |on: bool| if on { power } else { wire };
-    let forced =
-        |o: &Operand| live.is_some_and(|l| address_of(project, o).is_some_and(|a| (l.forced)(a)));
-    let label = BitLabel {
-        project,
-        mode,
-        font: &font,
-        size: m.font,
-        line: m.line,
-        comment: *element_comments,
-    };
-    for (r, row) in net.rows.iter().enumerate() {
-        let mid = row_tops[r] + m.mid;
-        for (c, cell) in row.cells.iter().enumerate() {
-            let x0 = col_x(c);
-            let x1 = if c == width {
-                x0 + m.output
-            } else {
-                x0 + m.cell
-            };
-            let v = cell_view(r, c);
-            let (p_in, p_out) = v.map_or((false, false), |v| (v.power_in, v.power_out));
-            if live.is_some_and(|l| l.marked.contains(&(r, c))) {
-                let h = m.row_height(&row.cells);
-                painter.rect_stroke(
-                    Rect::from_min_max(
-                        pos2(x0 + 1.0, row_tops[r] + 1.0),
-                        pos2(x1 - 1.0, row_tops[r] + h - 1.0),
-                    ),
-                    3.0,
-                    Stroke::new(2.5, theme::WHY),
-                    StrokeKind::Inside,
-                );
-            }
-            match cell {
-                Cell::Empty => {}
-                Cell::Wire => {
-                    painter.line_segment([pos2(x0, mid), pos2(x1, mid)], stroke(p_in && p_out));
-                }
-                Cell::Contact { negated, operand } => {
-                    let cx = (x0 + x1) * 0.5;
-                    let gap = m.cell * 0.12;
-                    let h = m.symbol;
-                    if v.and_then(|v| v.closed) == Some(true) {
-                        // A closed contact is filled, as on GSKLadder's monitor screen.
-                        painter.rect_filled(
-                            Rect::from_min_max(pos2(cx - gap, mid - h), pos2(cx + gap, mid + h)),
-                            0.0,
-                            theme::POWER_FILL,
-                        );
-                    }
-                    painter.line_segment([pos2(x0, mid), pos2(cx - gap, mid)], stroke(p_in));
-                    painter.line_segment([pos2(cx + gap, mid), pos2(x1, mid)], stroke(p_out));
-                    painter.line_segment([pos2(cx - gap, mid - h), pos2(cx - gap, mid + h)], wire);
-                    painter.line_segment([pos2(cx + gap, mid - h), pos2(cx + gap, mid + h)], wire);
-                    if *negated {
-                        painter.line_segment(
-                            [pos2(cx - gap * 1.4, mid + h), pos2(cx + gap * 1.4, mid - h)],
-                            wire,
-                        );
-                    }
-                    label.draw(
-                        painter,
-                        drawn,
-                        operand,
-                        Span {
-                            centre: cx,
-                            left: x0 + 3.0,
-                            right: x1 - 3.0,
-                        },
-                        (mid - h - 3.0, mid + h + 3.0),
-                        forced(operand).then_some(pos2(cx + gap + 2.0, mid + h)),
-                    );
-                }
-                Cell::Coil { negated, operand } => {
-                    let cx = x1 - m.output * 0.3;
-                    let rad = m.symbol * 0.9;
-                    let h_coil = m.symbol;
-                    if p_in {
-                        painter.circle_filled(pos2(cx, mid), rad, theme::POWER_FILL);
-                    }
-                    painter.line_segment([pos2(x0, mid), pos2(cx - rad, mid)], stroke(p_in));
-                    painter.circle_stroke(pos2(cx, mid), rad, wire);
-                    if *negated {
-                        painter.line_segment(
-                            [
-                                pos2(cx - rad * 0.7, mid + rad * 0.7),
-                                pos2(cx + rad * 0.7, mid - rad * 0.7),
-                            ],
-                            wire,
-                        );
-                    }
-                    painter.line_segment([pos2(cx + rad, mid), pos2(right_rail, mid)], wire);
-                    // The coil's label may use the whole output column, never past the rail.
-                    label.draw(
-                        painter,
-                        drawn,
-                        operand,
-                        Span {
-                            centre: (x0 + right_rail) * 0.5,
-                            left: x0 + 3.0,
-                            right: right_rail - 4.0,
-                        },
-                        (mid - h_coil - 3.0, mid + h_coil + 3.0),
-                        forced(operand).then_some(pos2(cx + rad + 2.0, mid + rad)),
-                    );
-                }
-                Cell::Box { op, operands } => {
-                    let h = m.row_height(&row.cells) - 8.0;
-                    let rect = Rect::from_min_size(
-                        pos2(x0 + 6.0, row_tops[r] + 4.0),
-                        vec2(m.output - 12.0, h),
-                    );
-                    if p_in {
-                        painter.rect_filled(rect, 2.0, theme::POWER_BOX);
-                    }
-                    painter.line_segment([pos2(x0, mid), pos2(rect.left(), mid)], stroke(p_in));
-                    painter.line_segment([pos2(rect.right(), mid), pos2(right_rail, mid)], wire);
-                    painter.rect_stroke(rect, 2.0, wire, StrokeKind::Middle);
-                    painter.text(
-                        rect.center_top() + vec2(0.0, 2.0),
-                        Align2::CENTER_TOP,
-                        op.name(),
-                        FontId::proportional(m.font * 1.1),
-                        theme::INK,
-                    );
-                    for (i, o) in operands.iter().enumerate() {
-                        let name = op.spec().operand(i).map_or("", |s| s.name);
-                        let (text, color) =
-                            operand_text(project, o, mode, Place::Box(*op, i), operands);
-                        let p = rect.left_top() + vec2(4.0, m.line * (i as f32 + 1.0) + 2.0);
-                        painter.text(
-                            p,
-                            Align2::LEFT_TOP,
-                            format!("{name} {text}"),
-                            font.clone(),
-                            color,
-                        );
-                        let value = v.and_then(|v| v.values.get(i).copied().flatten());
-                        if let (Some(l), Some(value)) = (live, value) {
-                            let bytes = address_of(project, o)
-                                .map_or(4, |a| u32::from(a.area.element_bytes()).max(1));
-                            let shown = if forced(o) {
-                                format!("{} F", l.format.show(value, bytes))
-                            } else {
-                                l.format.show(value, bytes)
-                            };
-                            painter.text(
-                                pos2(rect.right() - 4.0, p.y),
-                                Align2::RIGHT_TOP,
-                                shown,
-                                font.clone(),
-                                theme::LIVE_VALUE,
-                            );
-                        }
-                    }
-                }
-            }
-            // A vertical link at the left edge of this column, down to the next row.
-            if c > 0 && row.links.get(c).copied().unwrap_or(false) && r + 1 < net.rows.len() {
-                let next_mid = row_tops[r + 1] + m.mid;
-                // The link joins the nodes of both rows: powered when either side is.
-                let on = cell_view(r, c - 1).is_some_and(|v| v.power_out)
-                    || cell_view(r + 1, c - 1).is_some_and(|v| v.power_out);
-                painter.line_segment([pos2(x0, mid), pos2(x0, next_mid)], stroke(on));
-            }
-        }
+    y
+}
+
+/// Where one cell is drawn: its row and column, its left and right edge, its row's top and
+/// height.
+struct At {
+    r: usize,
+    c: usize,
+    x0: f32,
+    x1: f32,
+    top: f32,
+    height: f32,
+}
+
+impl At {
+    /// The height of the row's wire.
+    fn mid(&self, m: &Metrics) -> f32 {
+        self.top + m.mid
     }
 }
 
-/// How a contact's or coil's operand is labelled.
-struct BitLabel<'a> {
+/// What every cell of one network is drawn with.
+struct Cells<'a> {
+    painter: &'a egui::Painter,
     project: &'a Project,
+    m: &'a Metrics,
     mode: DisplayMode,
     font: &'a FontId,
-    size: f32,
-    /// The distance between two label lines.
-    line: f32,
-    /// The language of the element comment written under it, when comments are shown.
-    comment: Option<&'static str>,
+    live: Option<&'a LiveNetwork<'a>>,
+    wire: Stroke,
+    power: Stroke,
+    right_rail: f32,
+    label: BitLabel<'a>,
 }
 
-/// The horizontal room of a label: centred on `centre`, never past `left` or `right`.
-#[derive(Clone, Copy)]
-struct Span {
-    centre: f32,
-    left: f32,
-    right: f32,
-}
+impl Cells<'_> {
+    /// What the monitor says of cell (`r`, `c`), when live.
+    fn view(&self, r: usize, c: usize) -> Option<&ladder_engine::vm::monitor::CellView> {
+        self.live.and_then(|l| l.view.cells.get(r)?.get(c))
+    }
 
-impl BitLabel<'_> {
-    /// The operand's text above `ys.0` (address over symbol in "both" mode, each on its own
-    /// line), the element comment below `ys.1` when shown, and the force mark at `mark`
-    /// (given when the element is forced).
-    /// Every line is cut with an ellipsis at the span's edges: the tooltip shows it whole.
-    fn draw(
+    /// A wire's stroke: thick and coloured where power flows.
+    fn stroke(&self, on: bool) -> Stroke {
+        if on { self.power } else { self.wire }
+    }
+
+    /// Whether the operand's address is forced on the running machine.
+    fn forced(&self, o: &Operand) -> bool {
+        self.live
+            .is_some_and(|l| address_of(self.project, o).is_some_and(|a| (l.forced)(a)))
+    }
+
+    /// Draws one cell: its "why?" mark, then the element.
+    fn cell(&self, cell: &Cell, at: &At, drawn: &mut Vec<(Rect, String)>) {
+        let (p_in, p_out) = self
+            .view(at.r, at.c)
+            .map_or((false, false), |v| (v.power_in, v.power_out));
+        if self.live.is_some_and(|l| l.marked.contains(&(at.r, at.c))) {
+            self.painter.rect_stroke(
+                Rect::from_min_max(
+                    pos2(at.x0 + 1.0, at.top + 1.0),
+                    pos2(at.x1 - 1.0, at.top + at.height - 1.0),
+                ),
+                3.0,
+                Stroke::new(2.5, theme::WHY),
+                StrokeKind::Inside,
+            );
+        }
+        let mid = at.mid(self.m);
+        match cell {
+            Cell::Empty => {}
+            Cell::Wire => {
+                self.painter.line_segment(
+                    [pos2(at.x0, mid), pos2(at.x1, mid)],
+                    self.stroke(p_in && p_out),
+                );
+            }
+            Cell::Contact { negated, operand } => {
+                self.contact(*negated, operand, at, (p_in, p_out), drawn);
+            }
+            Cell::Coil { negated, operand } => self.coil(*negated, operand, at, p_in, drawn),
+            Cell::Box { op, operands } => self.function_box(*op, operands, at, p_in),
+        }
+    }
+
+    /// A contact: filled when closed, as on GSKLadder's monitor screen.
+    fn contact(
         &self,
-        painter: &egui::Painter,
-        drawn: &mut Vec<(Rect, String)>,
+        negated: bool,
         operand: &Operand,
-        span: Span,
-        ys: (f32, f32),
-        mark: Option<Pos2>,
+        at: &At,
+        (p_in, p_out): (bool, bool),
+        drawn: &mut Vec<(Rect, String)>,
     ) {
-        let (text, color) = operand_text(
-            self.project,
+        let (painter, m, wire) = (self.painter, self.m, self.wire);
+        let mid = at.mid(m);
+        let cx = (at.x0 + at.x1) * 0.5;
+        let gap = m.cell * 0.12;
+        let h = m.symbol;
+        if self.view(at.r, at.c).and_then(|v| v.closed) == Some(true) {
+            painter.rect_filled(
+                Rect::from_min_max(pos2(cx - gap, mid - h), pos2(cx + gap, mid + h)),
+                0.0,
+                theme::POWER_FILL,
+            );
+        }
+        painter.line_segment([pos2(at.x0, mid), pos2(cx - gap, mid)], self.stroke(p_in));
+        painter.line_segment([pos2(cx + gap, mid), pos2(at.x1, mid)], self.stroke(p_out));
+        painter.line_segment([pos2(cx - gap, mid - h), pos2(cx - gap, mid + h)], wire);
+        painter.line_segment([pos2(cx + gap, mid - h), pos2(cx + gap, mid + h)], wire);
+        if negated {
+            painter.line_segment(
+                [pos2(cx - gap * 1.4, mid + h), pos2(cx + gap * 1.4, mid - h)],
+                wire,
+            );
+        }
+        self.label.draw(
+            painter,
+            drawn,
             operand,
-            self.mode,
-            Place::Bit,
-            std::slice::from_ref(operand),
-        );
-        let line = self.line;
-        // "ADDRESS:SYMBOL" is one text for the find and the tooltip; drawn, it is two lines.
-        let lines: Vec<&str> = match (self.mode, text.split_once(':')) {
-            (DisplayMode::Both, Some((a, s))) => vec![a, s],
-            _ => vec![text.as_str()],
-        };
-        for (i, t) in lines.iter().rev().enumerate() {
-            let y = ys.0 - line * i as f32;
-            drawn.push(self.line(painter, t, span, y, Align2::CENTER_BOTTOM, color));
-        }
-        if let Some(lang) = self.comment
-            && let Some(a) = address_of(self.project, operand)
-            && let Some(c) = self.project.comment_of(a, lang)
-        {
-            drawn.push(self.comment(painter, c, span, ys.1));
-        }
-        if let Some(at) = mark {
-            force_mark(painter, at, self.size);
-        }
-    }
-
-    /// An element comment from height `y` down: wrapped to the span (its own line breaks
-    /// kept), at most [`COMMENT_LINES`] lines, the last ending with "…" when more is left.
-    fn comment(&self, painter: &egui::Painter, text: &str, span: Span, y: f32) -> (Rect, String) {
-        let width = (span.right - span.left).max(self.size);
-        let mut job = egui::text::LayoutJob::default();
-        job.append(
-            text,
-            0.0,
-            egui::TextFormat {
-                font_id: self.font.clone(),
-                color: theme::COMMENT,
-                line_height: Some(self.line),
-                ..Default::default()
+            Span {
+                centre: cx,
+                left: at.x0 + 3.0,
+                right: at.x1 - 3.0,
             },
+            (mid - h - 3.0, mid + h + 3.0),
+            self.forced(operand)
+                .then_some(pos2(cx + gap + 2.0, mid + h)),
         );
-        job.halign = egui::Align::Center;
-        job.wrap = egui::text::TextWrapping {
-            max_width: width,
-            max_rows: COMMENT_LINES,
-            break_anywhere: false,
-            overflow_character: Some('…'),
-        };
-        let galley = painter.layout_job(job);
-        // A centred galley is laid out about x = 0; its rectangle says how far each way.
-        let r = galley.rect;
-        let x = span
-            .centre
-            .clamp(span.left - r.min.x, (span.right - r.max.x).max(span.left));
-        let rect = r.translate(vec2(x, y));
-        let shown = galley
-            .rows
-            .iter()
-            .flat_map(|r| r.glyphs.iter().map(|g| g.chr))
-            .collect();
-        painter.galley(pos2(x, y), galley, theme::COMMENT);
-        (rect, shown)
     }
 
-    /// One line of text at height `y`, shortened with "…" to fit the span; returns where
-    /// it went and what it says.
-    fn line(
+    /// A coil, its wire on to the right rail.
+    fn coil(
         &self,
-        painter: &egui::Painter,
-        text: &str,
-        span: Span,
-        y: f32,
-        align: Align2,
-        color: egui::Color32,
-    ) -> (Rect, String) {
-        let width = (span.right - span.left).max(self.size);
-        let mut job =
-            egui::text::LayoutJob::simple_singleline(text.into(), self.font.clone(), color);
-        job.wrap = egui::text::TextWrapping {
-            max_width: width,
-            max_rows: 1,
-            break_anywhere: true,
-            overflow_character: Some('…'),
-        };
-        let galley = painter.layout_job(job);
-        let w = galley.size().x;
-        let x = (span.centre - w * 0.5).clamp(span.left, (span.right - w).max(span.left));
-        let top = match align.y() {
-            egui::Align::Max => y - galley.size().y,
-            _ => y,
-        };
-        let rect = Rect::from_min_size(pos2(x, top), galley.size());
-        // What is on screen, the ellipsis included (the galley's text is the whole one).
-        let shown = galley
-            .rows
-            .iter()
-            .flat_map(|r| r.glyphs.iter().map(|g| g.chr))
-            .collect();
-        painter.galley(rect.min, galley, color);
-        (rect, shown)
+        negated: bool,
+        operand: &Operand,
+        at: &At,
+        p_in: bool,
+        drawn: &mut Vec<(Rect, String)>,
+    ) {
+        let (painter, m, wire) = (self.painter, self.m, self.wire);
+        let mid = at.mid(m);
+        let cx = at.x1 - m.output * 0.3;
+        let rad = m.symbol * 0.9;
+        let h_coil = m.symbol;
+        if p_in {
+            painter.circle_filled(pos2(cx, mid), rad, theme::POWER_FILL);
+        }
+        painter.line_segment([pos2(at.x0, mid), pos2(cx - rad, mid)], self.stroke(p_in));
+        painter.circle_stroke(pos2(cx, mid), rad, wire);
+        if negated {
+            painter.line_segment(
+                [
+                    pos2(cx - rad * 0.7, mid + rad * 0.7),
+                    pos2(cx + rad * 0.7, mid - rad * 0.7),
+                ],
+                wire,
+            );
+        }
+        painter.line_segment([pos2(cx + rad, mid), pos2(self.right_rail, mid)], wire);
+        // The coil's label may use the whole output column, never past the rail.
+        self.label.draw(
+            painter,
+            drawn,
+            operand,
+            Span {
+                centre: (at.x0 + self.right_rail) * 0.5,
+                left: at.x0 + 3.0,
+                right: self.right_rail - 4.0,
+            },
+            (mid - h_coil - 3.0, mid + h_coil + 3.0),
+            self.forced(operand)
+                .then_some(pos2(cx + rad + 2.0, mid + rad)),
+        );
     }
-}
 
-/// The mark of a forced element: a small "F" badge.
-fn force_mark(painter: &egui::Painter, at: Pos2, font: f32) {
-    let r = painter.text(
-        at,
-        Align2::LEFT_TOP,
-        "F",
-        FontId::monospace(font),
-        theme::FORCED,
-    );
-    painter.rect_stroke(
-        r.expand(1.0),
-        2.0,
-        Stroke::new(1.0, theme::FORCED),
-        StrokeKind::Outside,
-    );
+    /// A function box: its name, an operand a line with its live value on the right.
+    fn function_box(&self, op: ladder_engine::Op, operands: &[Operand], at: &At, p_in: bool) {
+        let (painter, m, wire) = (self.painter, self.m, self.wire);
+        let mid = at.mid(m);
+        let rect = Rect::from_min_size(
+            pos2(at.x0 + 6.0, at.top + 4.0),
+            vec2(m.output - 12.0, at.height - 8.0),
+        );
+        if p_in {
+            painter.rect_filled(rect, 2.0, theme::POWER_BOX);
+        }
+        painter.line_segment(
+            [pos2(at.x0, mid), pos2(rect.left(), mid)],
+            self.stroke(p_in),
+        );
+        painter.line_segment([pos2(rect.right(), mid), pos2(self.right_rail, mid)], wire);
+        painter.rect_stroke(rect, 2.0, wire, StrokeKind::Middle);
+        painter.text(
+            rect.center_top() + vec2(0.0, 2.0),
+            Align2::CENTER_TOP,
+            op.name(),
+            FontId::proportional(m.font * 1.1),
+            theme::INK,
+        );
+        let v = self.view(at.r, at.c);
+        for (i, o) in operands.iter().enumerate() {
+            let name = op.spec().operand(i).map_or("", |s| s.name);
+            let (text, color) =
+                operand_text(self.project, o, self.mode, Place::Box(op, i), operands);
+            let p = rect.left_top() + vec2(4.0, m.line * (i as f32 + 1.0) + 2.0);
+            painter.text(
+                p,
+                Align2::LEFT_TOP,
+                format!("{name} {text}"),
+                self.font.clone(),
+                color,
+            );
+            let value = v.and_then(|v| v.values.get(i).copied().flatten());
+            if let (Some(l), Some(value)) = (self.live, value) {
+                let bytes = address_of(self.project, o)
+                    .map_or(4, |a| u32::from(a.area.element_bytes()).max(1));
+                let shown = if self.forced(o) {
+                    format!("{} F", l.format.show(value, bytes))
+                } else {
+                    l.format.show(value, bytes)
+                };
+                painter.text(
+                    pos2(rect.right() - 4.0, p.y),
+                    Align2::RIGHT_TOP,
+                    shown,
+                    self.font.clone(),
+                    theme::LIVE_VALUE,
+                );
+            }
+        }
+    }
+
+    /// A vertical link at the cell's left edge down to the next row (whose top is `next_top`):
+    /// it joins the nodes of both rows, so it is powered when either side is.
+    fn link(&self, at: &At, next_top: f32) {
+        let on = self.view(at.r, at.c - 1).is_some_and(|v| v.power_out)
+            || self.view(at.r + 1, at.c - 1).is_some_and(|v| v.power_out);
+        self.painter.line_segment(
+            [
+                pos2(at.x0, at.mid(self.m)),
+                pos2(at.x0, next_top + self.m.mid),
+            ],
+            self.stroke(on),
+        );
+    }
 }
 
 /// Fills what is selected in network `index`.
