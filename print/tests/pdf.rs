@@ -235,9 +235,10 @@ fn tables_and_the_cross_reference_are_printed_when_asked() {
     assert!(doc.pages.len() > plain.pages.len());
 }
 
+/// Writes the sample's first pages as SVG and the whole document as PDF, each a complete
+/// file; with `PRINT_LOOK_DIR` set they stay in that folder for a look.
 #[test]
-#[ignore = "writes the pages to /tmp for a look: cargo test -p ladder-print -- --ignored"]
-fn write_pages_for_a_look() {
+fn the_bilingual_sample_writes_whole_svg_pages_and_a_pdf() {
     let project = lathe();
     let doc = document(
         &project,
@@ -247,12 +248,16 @@ fn write_pages_for_a_look() {
             ..options(Lang::Both)
         },
     );
+    let temp = tempfile::tempdir().unwrap();
+    let dir = std::env::var_os("PRINT_LOOK_DIR").map_or(temp.path().to_path_buf(), Into::into);
     for (i, p) in doc.pages.iter().enumerate().take(6) {
-        std::fs::write(
-            format!("/tmp/page-{}.svg", i + 1),
-            ladder_print::page_svg(&doc, p),
-        )
-        .unwrap();
+        let svg = ladder_print::page_svg(&doc, p);
+        assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
+        assert!(svg.contains("<text"), "page {} has text", i + 1);
+        std::fs::write(dir.join(format!("page-{}.svg", i + 1)), svg).unwrap();
     }
-    std::fs::write("/tmp/lathe.pdf", pdf(&doc).unwrap()).unwrap();
+    let bytes = pdf(&doc).unwrap();
+    assert!(bytes.starts_with(b"%PDF-"));
+    assert!(bytes.trim_ascii_end().ends_with(b"%%EOF"));
+    std::fs::write(dir.join("lathe.pdf"), bytes).unwrap();
 }

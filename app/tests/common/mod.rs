@@ -46,14 +46,23 @@ pub fn il_of_saved(path: &std::path::Path) -> Vec<String> {
         .collect()
 }
 
-/// A fresh temporary folder for one test's files. It is kept: a harness may still write
-/// recovery copies into it after the test's last line.
+thread_local! {
+    /// The folders made for the test running on this thread. Each test runs on a thread of
+    /// its own, whose thread-locals are dropped when it ends: after the test's harness, which
+    /// may still write recovery copies as it closes, and so after the last write.
+    static FOLDERS: std::cell::RefCell<Vec<tempfile::TempDir>> =
+        const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// A fresh temporary folder for one test's files, removed when the test's thread ends.
 pub fn tempfile_dir() -> PathBuf {
-    tempfile::Builder::new()
+    let dir = tempfile::Builder::new()
         .prefix("ladder-gui-")
         .tempdir()
-        .expect("a temporary folder")
-        .keep()
+        .expect("a temporary folder");
+    let path = dir.path().to_path_buf();
+    FOLDERS.with(|f| f.borrow_mut().push(dir));
+    path
 }
 
 /// Types into the prompt (operand, find, go to…: the text field that has the keyboard) and

@@ -120,9 +120,37 @@ fn a_command_the_machine_cannot_do_is_answered_not_ignored() {
 
 #[test]
 fn dropping_a_running_runner_stops_its_thread() {
-    let r = start(machine(LATCH));
+    // The tick hook lives on the runner's thread: once the thread has ended, its clone of
+    // `alive` is gone.
+    let alive = std::sync::Arc::new(());
+    let held = alive.clone();
+    let r = Runner::start(
+        machine(LATCH),
+        Box::new(move |_| {
+            let _ = &held;
+        }),
+        Box::new(|_| {}),
+    )
+    .unwrap();
     r.send(Request::Command(MachineCommand::Run));
     let mut p = Published::default();
     wait(&r, &mut p, |p| p.snapshot.ticks > 2);
-    drop(r); // Joins: the test would hang here if the thread did not end.
+    assert_eq!(std::sync::Arc::strong_count(&alive), 2, "the thread runs");
+    // Dropped on a thread of its own, so a drop that never returns fails instead of hanging.
+    let (done, dropped) = std::sync::mpsc::channel();
+    std::thread::Builder::new()
+        .name("drop-runner".into())
+        .spawn(move || {
+            drop(r);
+            let _ = done.send(());
+        })
+        .unwrap();
+    dropped
+        .recv_timeout(Duration::from_secs(20))
+        .expect("dropping the runner returns");
+    assert_eq!(
+        std::sync::Arc::strong_count(&alive),
+        1,
+        "the runner's thread has ended"
+    );
 }
