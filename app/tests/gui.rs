@@ -1,8 +1,6 @@
 //! The editor's ladder editing driven headless through egui_kittest, by role and label: keys, mouse, clipboard, pen, subprograms.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::files::FileState;
 use ladder_studio::gui::replace::Replace;

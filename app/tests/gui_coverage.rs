@@ -1,9 +1,8 @@
 //! View → Coverage: a coverage file from `test --coverage` laid over the ladder, with a legend,
 //! and the networks left to cover listed in the output window.
 
-mod common;
-use common::online::*;
-use common::*;
+use crate::common::online::*;
+use crate::common::*;
 use ladder_engine::coverage::State;
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::coverage_view::CoverageView;

@@ -2,8 +2,7 @@
 //! block, labels that never overlap, errors marked on the elements, operands typed at the
 //! cell, rows opened with Down, and element properties.
 
-mod common;
-use common::*;
+use crate::common::*;
 use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::properties::ElementProperties;
 

@@ -1,8 +1,6 @@
 //! The editor's file handling driven headless: new, open, save, the unsaved-changes question, damaged files, recovery copies, export and import.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::files::FileState;
 

@@ -1,9 +1,7 @@
 //! The editor in a small window (900×600): the F3 dialog, the version page and the tables
 //! fit, fields keep a usable width, and the dialog's rows stay put as messages come and go.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use egui::Key;
 use egui::accesskit::Role;
 use egui_kittest::Harness;

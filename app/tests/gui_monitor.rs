@@ -1,9 +1,8 @@
 //! The online monitor as an engineer at the machine uses it: every key press of a frame acts,
 //! in order; a recorded past cannot be changed.
 
-mod common;
-use common::online::*;
-use common::*;
+use crate::common::online::*;
+use crate::common::*;
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::online::OnlineState;

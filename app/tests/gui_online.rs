@@ -3,9 +3,8 @@
 //! The machine runs on its own thread; the tests step it tick by tick and wait for the state
 //! it publishes, so nothing depends on the speed of the machine the tests run on.
 
-mod common;
-use common::online::*;
-use common::*;
+use crate::common::online::*;
+use crate::common::*;
 use ladder_engine::model::{Cell, CellRef, Edit, Operand};
 use ladder_studio::gui::command::Command;
 use ladder_studio::gui::editor::EditState;

@@ -2,9 +2,7 @@
 //! Ctrl+P sends one PDF to the (scripted) print queue, and without a queue the PDF is saved
 //! where the user says (docs/printing.md, "In the editor").
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use egui::{Key, Modifiers};
 use ladder_studio::gui::printing::{PrintState, ScriptedQueue};
 

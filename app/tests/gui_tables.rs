@@ -1,9 +1,7 @@
 //! The table editors driven headless on the bundled sample: a comment column per language,
 //! each edited in place, undone, exported, walked with Tab, and reachable in a small window.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use egui::accesskit::Role;
 use ladder_engine::model::Project;
 

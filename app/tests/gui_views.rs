@@ -1,8 +1,6 @@
 //! The editor's views driven headless: the project tree, languages, compiling, the cross-reference, tabs, go to, and undo going to what it changes.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use ladder_studio::gui::editor::EditState;
 use ladder_studio::gui::tables::TableState;
 use ladder_studio::gui::xref_view::XrefState;

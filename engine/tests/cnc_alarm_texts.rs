@@ -1,9 +1,7 @@
 //! The CNC panel's alarm texts for alarms raised the way a machine raises them: program
 //! errors, E-stop, overtravel and a PLC alarm (docs/cnc.md, "Alarms").
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::cnc::Mode;
 use ladder_engine::cnc::alarm_text::{TEXTS, alarm_text};
 

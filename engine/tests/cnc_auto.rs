@@ -1,9 +1,7 @@
 //! Automatic operation and the MST interface of the simulated CNC, exact in exchanges
 //! (docs/cnc.md, "Automatic operation", "MST interface").
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::cnc::Mode;
 
 fn mem(text: &str) -> Rig {

@@ -1,9 +1,7 @@
 //! PLC axis control of the simulated CNC (docs/cnc.md, "PLC axis control"), through the
 //! group signals and through the AXCTL instruction of a running machine.
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::address::Address;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::il;

@@ -2,9 +2,7 @@
 //! final positions in both forms, G70 running the profile, G73's passes, G74 pecks, G76 pass
 //! depths, and FANUC's alarms for bad cycles.
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 
 /// Runs the program to its end (at most `limit` exchanges) and returns every (X, Z) machine
 /// position and every block N seen.

@@ -2,9 +2,7 @@
 //! docs/gcode.md: arcs, units and the decimal point, feed modes, coordinate and data setting,
 //! and constant surface speed.
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::cnc::Mode;
 
 /// Runs until automatic operation leaves RUN (at most `limit` exchanges after the start).

@@ -1,9 +1,7 @@
 //! Operation preparation, modes, the spindle, manual operation and overtravel of the
 //! simulated CNC (docs/cnc.md, "Operation preparation", "Spindle", "Manual operation").
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::cnc::Mode;
 use ladder_engine::model::tables::{Message, MessageTable};
 

@@ -2,9 +2,7 @@
 //! docs/gcode.md, "Macros": arithmetic and functions, vacant variables, loops, G65/G66
 //! calls, #3000, the #1000/#1100 handshake with the PLC, look-ahead and the macro alarms.
 
-mod common;
-
-use common::{Rig, Rng};
+use crate::common::{Rig, Rng};
 use ladder_engine::cnc::command::CncValue;
 
 /// Runs a program from cycle start until it leaves RUN (at most `limit` exchanges).

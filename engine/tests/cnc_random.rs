@@ -3,9 +3,7 @@
 //! exchanges per seed. Nothing may panic, no F bit outside the CNC's own may ever change,
 //! and the same seed gives the same run.
 
-mod common;
-
-use common::{Rig, Rng};
+use crate::common::{Rig, Rng};
 use ladder_engine::ProfileId;
 use ladder_engine::cnc::command::CncCommand;
 use ladder_engine::cnc::signals::OWNED;

@@ -2,9 +2,7 @@
 //! program number and count rules, L repeats, and the alarm that ends a program looping
 //! through skipped blocks only.
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 
 /// Runs until IDLE or STOP (at most `limit` exchanges) and returns the N of the block
 /// executing at each exchange (N numbers are unique in these programs).

@@ -1,8 +1,6 @@
 //! The toolpath of the loaded program (docs/gcode.md, "Toolpath"): the interpreter run dry.
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::cnc::toolpath::PieceKind;
 
 #[test]

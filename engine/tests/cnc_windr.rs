@@ -1,9 +1,7 @@
 //! Every WINDR function code of both profiles on the simulated CNC: the data it reads or
 //! writes and each end code its table documents (docs/cnc.md, "WINDR").
 
-mod common;
-
-use common::Rig;
+use crate::common::Rig;
 use ladder_engine::ProfileId;
 use ladder_engine::address::Address;
 use ladder_engine::il;

@@ -22,7 +22,7 @@ fn the_instruction_reference_matches_the_catalogue() {
             + 1;
         panic!(
             "docs/instructions.md differs from the catalogue from line {line} on; rewrite it \
-             with `UPDATE_DOCS=1 cargo test -p ladder-engine --test docs`"
+             with `UPDATE_DOCS=1 cargo test -p ladder-engine --test engine docs::`"
         );
     }
 }

@@ -181,10 +181,10 @@ fn random_drawn_grids_never_panic_and_round_trip_when_valid() {
         let c = compile(&project);
         if c.diagnostics.iter().all(|d| d.code.as_str() >= "L010") {
             valid += 1;
-            let mut runner = TestRunner::default();
-            runner
-                .run(&Just(()), |_| assert_fixed_point(&project))
-                .unwrap();
+            // Once: a runner over `Just(())` would check the same grid 256 times.
+            if let Err(e) = assert_fixed_point(&project) {
+                panic!("{e}");
+            }
         }
     }
     eprintln!("{valid} of 5000 random grids were valid");

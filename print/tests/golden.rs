@@ -1,6 +1,6 @@
 //! One network drawn as SVG, compared with the drawing kept in `tests/golden/`: a change to
 //! how contacts, coils, boxes, links or labels are drawn shows up here as a diff to review.
-//! After an intended change: `UPDATE_GOLDEN=1 cargo test -p ladder-print --test golden`.
+//! After an intended change: `UPDATE_GOLDEN=1 cargo test -p ladder-print --test print golden::`.
 
 use ladder_print::{Labels, Lang, Options, document, page_svg};
 

@@ -1,9 +1,7 @@
 //! The printed PDF read back: every network title and every address of a network are in
 //! its text, in the language asked for, and networks are never cut when they fit a page.
 
-mod common;
-
-use common::pdf_pages;
+use crate::common::pdf_pages;
 use ladder_engine::model::{Cell, Operand, Project};
 use ladder_print::{Labels, Lang, Options, Paper, document, pdf};
 

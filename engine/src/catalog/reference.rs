@@ -20,8 +20,8 @@ the editor's function dialog shows (English, then Chinese). What the instruction
 [plc.md](plc.md) and, for WINDR, AXCTL, PSGNL and PSGN2, [cnc.md](cnc.md).
 
 This page is generated from the instruction catalogue (`engine/src/catalog/`) by
-`ladder_engine::catalog::reference_markdown()`; `cargo test -p ladder-engine --test docs` fails
-when it is out of date, and `UPDATE_DOCS=1 cargo test -p ladder-engine --test docs` rewrites it.
+`ladder_engine::catalog::reference_markdown()`; `cargo test -p ladder-engine --test engine docs::` fails
+when it is out of date, and `UPDATE_DOCS=1 cargo test -p ladder-engine --test engine docs::` rewrites it.
 ";
 
 /// Renders every instruction of [`CATALOG`] as Markdown, category by category in menu order:
