@@ -6,7 +6,7 @@
 use crate::common::{Rig, Rng};
 use ladder_engine::ProfileId;
 use ladder_engine::cnc::command::CncCommand;
-use ladder_engine::cnc::signals::OWNED;
+use ladder_engine::cnc::fsignals::OWNED_MASK;
 use ladder_engine::model::tables::MessageTable;
 use ladder_engine::vm::cnc::Cnc;
 
@@ -132,9 +132,7 @@ fn run(seed: u64, profile: ProfileId, exchanges: u64) -> u64 {
         *b = rng.next() as u8;
     }
     let mut mask = [0u8; 512];
-    for &(n, m) in OWNED {
-        mask[n] = m;
-    }
+    mask[..OWNED_MASK.len()].copy_from_slice(&OWNED_MASK);
     let foreign: Vec<u8> = r.f.iter().zip(&mask).map(|(f, m)| f & !m).collect();
     let mut digest = 0u64;
     let (mut ran, mut moved, mut strobed) = (0u32, 0u32, 0u32);

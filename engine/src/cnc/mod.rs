@@ -29,6 +29,7 @@ mod cycle;
 pub mod data;
 mod drill;
 mod frame;
+pub mod fsignals;
 mod keys;
 pub mod macro_b;
 mod manual;
@@ -55,6 +56,7 @@ use crate::profile::ProfileId;
 use crate::vm::cnc::{AxisStatus, Cnc};
 use auto::Auto;
 use data::{Macros, TOOL_OFFSETS, ToolOffset};
+use fsignals as fs;
 use manual::Manual;
 use params::{P0071, P1006, P3003, Params};
 use plc_axes::Group;
@@ -581,38 +583,37 @@ impl SimCnc {
         self.auto_f(&mut img);
         let inp = &self.inp;
         let cnc_alarm = self.alarms.iter().any(|&n| !is_plc_alarm(n));
-        img.bit(0, 6, !inp.estop && !self.servo_alarm());
-        img.bit(1, 0, !self.alarms.is_empty());
-        img.bit(1, 1, self.rst);
-        img.bit(1, 7, !cnc_alarm);
-        img.bit(1, 4, self.spindle.s_out != 0);
-        img.bit(2, 0, self.auto.modal.inch);
-        img.bit(2, 1, self.flags.rapid);
-        img.bit(2, 2, self.auto.modal.css);
-        img.bit(2, 3, self.flags.thread);
-        img.bit(2, 6, self.flags.cut);
-        img.bit(2, 7, inp.drn);
-        let (byte, b) = match self.mode {
-            Mode::Edit => (3, 6),
-            Mode::Mem => (3, 5),
-            Mode::Mdi => (3, 3),
-            Mode::Handle => (3, 1),
-            Mode::Jog => (3, 2),
-            Mode::Dnc => (3, 4),
-            Mode::Ref => (4, 5),
+        img.set(fs::SA, !inp.estop && !self.servo_alarm());
+        img.set(fs::AL, !self.alarms.is_empty());
+        img.set(fs::RST, self.rst);
+        img.set(fs::MA, !cnc_alarm);
+        img.set(fs::ENB, self.spindle.s_out != 0);
+        img.set(fs::INCH, self.auto.modal.inch);
+        img.set(fs::RPDO, self.flags.rapid);
+        img.set(fs::CSS, self.auto.modal.css);
+        img.set(fs::THRD, self.flags.thread);
+        img.set(fs::CUT, self.flags.cut);
+        img.set(fs::MDRN, inp.drn);
+        let mode = match self.mode {
+            Mode::Edit => fs::MEDT,
+            Mode::Mem => fs::MMEM,
+            Mode::Mdi => fs::MMDI,
+            Mode::Handle => fs::MH,
+            Mode::Jog => fs::MJ,
+            Mode::Dnc => fs::MRMT,
+            Mode::Ref => fs::MREF,
         };
-        img.bit(byte, b, true);
-        img.bit(4, 0, inp.bdt1);
-        img.bit(4, 1, inp.mlk);
-        img.bit(4, 2, !inp.absm);
-        img.bit(4, 3, inp.sbk);
-        img.bit(4, 4, inp.afl);
-        img.bit(
-            6,
-            0,
+        img.set(mode, true);
+        img.set(fs::MBDT1, inp.bdt1);
+        img.set(fs::MMLK, inp.mlk);
+        img.set(fs::MABSM, !inp.absm);
+        img.set(fs::MSBK, inp.sbk);
+        img.set(fs::MAFL, inp.afl);
+        img.set(
+            fs::OTA,
             self.alarm_active(ALARM_STROKE[0]) || self.alarm_active(ALARM_STROKE[1]),
         );
-        img.bit(6, 1, self.reset_key);
+        img.set(fs::MDIRST, self.reset_key);
         // Spindle.
         let sp = &self.spindle;
         let s12 = if inp.sind {
@@ -622,27 +623,26 @@ impl SimCnc {
         } else {
             0
         };
-        img.value(36, 2, s12.min(4095));
-        img.value(40, 2, sp.s_out.min(65_535));
+        img.put(fs::S12, s12.min(4095));
+        img.put(fs::AR, sp.s_out.min(65_535));
         let p = &self.params;
         let (made, wanted) = (p.one(params::P6711), p.one(params::P6713));
-        img.bit(62, 7, wanted > 0 && made >= wanted);
+        img.set(fs::PRTSF, wanted > 0 && made >= wanted);
         // Axes.
         let ots = p.bit(params::P1301, 0, 6);
         for (n, a) in self.axes.iter().enumerate() {
-            let b = n as u32;
-            img.bit(94, b, a.zp);
-            img.bit(96, b, a.zp_n[0]);
-            img.bit(98, b, a.zp_n[1]);
-            img.bit(100, b, a.zp_n[2]);
-            img.bit(102, b, a.mv);
-            img.bit(106, b, a.mvd);
-            img.bit(120, b, a.zrf);
-            img.bit(124, b, ots && a.stroke[0]);
-            img.bit(126, b, ots && a.stroke[1]);
+            img.axis(fs::ZP, n, a.zp);
+            img.axis(fs::ZP2, n, a.zp_n[0]);
+            img.axis(fs::ZP3, n, a.zp_n[1]);
+            img.axis(fs::ZP4, n, a.zp_n[2]);
+            img.axis(fs::MV, n, a.mv);
+            img.axis(fs::MVD, n, a.mvd);
+            img.axis(fs::ZRF, n, a.zrf);
+            img.axis(fs::OTP, n, ots && a.stroke[0]);
+            img.axis(fs::OTN, n, ots && a.stroke[1]);
         }
         self.plc_axes_f(&mut img);
-        img.value(214, 4, self.macros.outputs);
+        img.put(fs::MACRO_OUT, self.macros.outputs);
         img.store(f);
     }
 

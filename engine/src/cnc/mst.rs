@@ -2,6 +2,7 @@
 //! their own finish signal, the sequence finishes when every finish signal is 0 again, and
 //! the F image of the strobes, codes, DEN and the decode signals.
 
+use super::fsignals as fs;
 use super::modal::RunState;
 use super::signals::FImage;
 use super::{MstStatus, SimCnc};
@@ -62,33 +63,33 @@ impl SimCnc {
         let a = &self.auto;
         let run = a.state == RunState::Run;
         let hold = a.state == RunState::Hold;
-        img.bit(0, 5, run);
-        img.bit(0, 4, hold);
-        img.bit(0, 7, run || hold);
-        img.bit(9, 3, a.dm99);
+        img.set(fs::STL, run);
+        img.set(fs::SPL, hold);
+        img.set(fs::OP, run || hold);
+        img.set(fs::DM99, a.dm99);
         let Some(e) = &a.exec else { return };
         let mst = &e.mst;
         if !mst.open {
             return;
         }
         let done = e.motion_done();
-        img.value(10, 4, mst.m[0]);
-        img.value(14, 2, mst.m[1]);
-        img.value(16, 2, mst.m[2]);
-        img.value(22, 4, mst.s);
-        img.value(26, 4, mst.t);
-        img.bit(7, 0, mst.strobes & MF != 0);
-        img.bit(7, 2, mst.strobes & SF != 0);
-        img.bit(7, 3, mst.strobes & TF != 0);
-        img.bit(8, 4, mst.strobes & MF2 != 0);
-        img.bit(8, 5, mst.strobes & MF3 != 0);
-        img.bit(1, 3, done);
+        img.put(fs::M_CODE, mst.m[0]);
+        img.put(fs::M_CODE2, mst.m[1]);
+        img.put(fs::M_CODE3, mst.m[2]);
+        img.put(fs::S_CODE, mst.s);
+        img.put(fs::T_CODE, mst.t);
+        img.set(fs::MF, mst.strobes & MF != 0);
+        img.set(fs::SF, mst.strobes & SF != 0);
+        img.set(fs::TF, mst.strobes & TF != 0);
+        img.set(fs::MF2, mst.strobes & MF2 != 0);
+        img.set(fs::MF3, mst.strobes & MF3 != 0);
+        img.set(fs::DEN, done);
         if done && mst.strobes & MF != 0 {
             match mst.m[0] {
-                0 => img.bit(9, 7, true),
-                1 => img.bit(9, 6, true),
-                2 => img.bit(9, 5, true),
-                30 => img.bit(9, 4, true),
+                0 => img.set(fs::DM00, true),
+                1 => img.set(fs::DM01, true),
+                2 => img.set(fs::DM02, true),
+                30 => img.set(fs::DM30, true),
                 _ => {}
             }
         }

@@ -2,6 +2,7 @@
 //! buffers, every command code, overrides, errors, and the F signals the AXCTL instruction
 //! waits for.
 
+use super::fsignals as fs;
 use super::manual::{Return, Run};
 use super::motion::{Motion, MotionKind};
 use super::params::{P1240, P1420, P1421, P1424, P8002, P8010};
@@ -615,23 +616,22 @@ impl SimCnc {
         let mut eacnt = 0u8;
         let mut eaden = 0xFFu8;
         for (k, g) in self.groups.iter().enumerate() {
-            let b = 140 + 10 * k;
             let aux = g.exec.and_then(|r| match r.work {
                 Work::Aux { strobe, code, .. } => Some((strobe, code)),
                 _ => None,
             });
-            img.bit(b, 0, !g.egen);
-            img.bit(b, 2, g.eial);
-            img.bit(b, 3, aux.is_some());
-            img.bit(b, 4, g.egen);
-            img.bit(b, 5, g.eot[0]);
-            img.bit(b, 6, g.eot[1]);
-            img.bit(b, 7, g.ebsy);
+            img.group(k, fs::EINP, !g.egen);
+            img.group(k, fs::EIAL, g.eial);
+            img.group(k, fs::EDEN, aux.is_some());
+            img.group(k, fs::EGEN, g.egen);
+            img.group(k, fs::EOTP, g.eot[0]);
+            img.group(k, fs::EOTN, g.eot[1]);
+            img.group(k, fs::EBSY, g.ebsy);
             if let Some((strobe, code)) = aux {
-                img.bit(b + 1, [0, 2, 3][usize::from(strobe)], true);
-                img.value(b + 2, 2, u32::from(code));
+                img.group(k, [fs::EMF, fs::EMF2, fs::EMF3][usize::from(strobe)], true);
+                img.group_put(k, fs::EM_CODE, u32::from(code));
             }
-            img.bit(b + 1, 1, g.held() >= 3);
+            img.group(k, fs::EABUF, g.held() >= 3);
             if g.held() > 0 {
                 for n in 0..self.axis_count() {
                     if self.params.get(P8010, n) == k as i64 + 1 {
@@ -645,9 +645,9 @@ impl SimCnc {
                 }
             }
         }
-        img.value(182, 1, u32::from(eacnt));
-        img.value(112, 1, u32::from(eaden));
-        img.bit(129, 5, self.fov() == 0.0);
-        img.bit(129, 7, self.eaxsl);
+        img.axes(fs::EACNT, eacnt);
+        img.axes(fs::EADEN, eaden);
+        img.set(fs::EOV0, self.fov() == 0.0);
+        img.set(fs::EAXSL, self.eaxsl);
     }
 }

@@ -226,85 +226,8 @@ impl GroupInputs {
     }
 }
 
-/// Bytes of F the CNC writes (all of F0–F217 lies inside every profile's F range).
-pub const F_BYTES: usize = 218;
-
-/// Every F byte the CNC owns, with the mask of its bits (docs/cnc.md, "F signals written").
-pub const OWNED: &[(usize, u8)] = &[
-    (0, 0xF0),
-    (1, 0x9B),
-    (2, 0xDF),
-    (3, 0x7F),
-    (4, 0x3F),
-    (6, 0x03),
-    (7, 0x0D),
-    (8, 0x30),
-    (9, 0xF8),
-    (10, 0xFF),
-    (11, 0xFF),
-    (12, 0xFF),
-    (13, 0xFF),
-    (14, 0xFF),
-    (15, 0xFF),
-    (16, 0xFF),
-    (17, 0xFF),
-    (22, 0xFF),
-    (23, 0xFF),
-    (24, 0xFF),
-    (25, 0xFF),
-    (26, 0xFF),
-    (27, 0xFF),
-    (28, 0xFF),
-    (29, 0xFF),
-    (36, 0xFF),
-    (37, 0x0F),
-    (40, 0xFF),
-    (41, 0xFF),
-    (62, 0x80),
-    (94, 0xFF),
-    (96, 0xFF),
-    (98, 0xFF),
-    (100, 0xFF),
-    (102, 0xFF),
-    (106, 0xFF),
-    (112, 0xFF),
-    (120, 0xFF),
-    (124, 0xFF),
-    (126, 0xFF),
-    (129, 0xA0),
-    (140, 0xFF),
-    (141, 0x0F),
-    (142, 0xFF),
-    (143, 0xFF),
-    (150, 0xFF),
-    (151, 0x0F),
-    (152, 0xFF),
-    (153, 0xFF),
-    (160, 0xFF),
-    (161, 0x0F),
-    (162, 0xFF),
-    (163, 0xFF),
-    (170, 0xFF),
-    (171, 0x0F),
-    (172, 0xFF),
-    (173, 0xFF),
-    (182, 0xFF),
-    (214, 0xFF),
-    (215, 0xFF),
-    (216, 0xFF),
-    (217, 0xFF),
-];
-
-/// [`OWNED`] as one mask byte per F byte.
-const OWNED_MASK: [u8; F_BYTES] = {
-    let mut mask = [0u8; F_BYTES];
-    let mut i = 0;
-    while i < OWNED.len() {
-        mask[OWNED[i].0] |= OWNED[i].1;
-        i += 1;
-    }
-    mask
-};
+pub use super::fsignals::{F_BYTES, OWNED_MASK};
+use super::fsignals::{FAxes, FBit, FGroupBit, FValue, GROUPS};
 
 /// The F image being built at the end of an exchange.
 pub struct FImage(pub [u8; F_BYTES]);
@@ -315,22 +238,48 @@ impl FImage {
         FImage([0; F_BYTES])
     }
 
-    /// Sets bit `b` of byte `n` when `v`.
+    /// Sets signal `s` when `v`.
     #[inline]
-    pub fn bit(&mut self, n: usize, b: u32, v: bool) {
-        self.0[n] |= u8::from(v) << b;
+    pub fn set(&mut self, s: FBit, v: bool) {
+        self.0[usize::from(s.byte)] |= u8::from(v) << s.bit;
     }
 
-    /// Writes `bytes` of a little-endian value at byte `n`.
+    /// Sets axis `n`'s bit (from 0) of `s` when `v`.
     #[inline]
-    pub fn value(&mut self, n: usize, bytes: usize, v: u32) {
+    pub fn axis(&mut self, s: FAxes, n: usize, v: bool) {
+        self.0[usize::from(s.byte)] |= u8::from(v) << n;
+    }
+
+    /// Writes the bits of axes 1–8 of `s` at once.
+    #[inline]
+    pub fn axes(&mut self, s: FAxes, bits: u8) {
+        self.0[usize::from(s.byte)] = bits;
+    }
+
+    /// Writes the number `s` (little-endian over its bytes).
+    #[inline]
+    pub fn put(&mut self, s: FValue, v: u32) {
+        let (n, bytes) = (usize::from(s.byte), usize::from(s.bytes));
+        self.0[n..n + bytes].copy_from_slice(&v.to_le_bytes()[..bytes]);
+    }
+
+    /// Sets signal `s` of PLC axis group `g` (0–3) when `v`.
+    #[inline]
+    pub fn group(&mut self, g: usize, s: FGroupBit, v: bool) {
+        self.0[usize::from(GROUPS[g] + s.offset)] |= u8::from(v) << s.bit;
+    }
+
+    /// Writes the number `s` of PLC axis group `g`, its byte counted from the group's first.
+    #[inline]
+    pub fn group_put(&mut self, g: usize, s: FValue, v: u32) {
+        let (n, bytes) = (usize::from(GROUPS[g] + s.byte), usize::from(s.bytes));
         self.0[n..n + bytes].copy_from_slice(&v.to_le_bytes()[..bytes]);
     }
 
     /// Merges the owned bits into the PLC's F area, leaving every other bit as it was.
     pub fn store(&self, f: &mut [u8]) {
         // Byte by byte over a mask of the whole area: one straight loop the compiler turns
-        // into vector operations, where a walk over OWNED's entries costs ten times more.
+        // into vector operations, where a walk over the signals costs ten times more.
         let n = f.len().min(F_BYTES);
         for ((x, &v), &m) in f[..n].iter_mut().zip(&self.0[..n]).zip(&OWNED_MASK[..n]) {
             *x = (*x & !m) | (v & m);

@@ -13,6 +13,7 @@ use super::flow::{Flow, Place, WriteKind, bit};
 use super::tables::{MCODES, MESSAGES};
 use crate::address::{Address, Area};
 use crate::catalog::Op;
+use crate::cnc::fsignals::{self as fs, FBit};
 use crate::model::tables::message_rows;
 use crate::model::{Operand, Project};
 use std::collections::BTreeMap;
@@ -20,8 +21,9 @@ use std::collections::BTreeMap;
 /// A signal of the map: its name and bit.
 type Signal = (&'static str, (Area, u32, u8));
 
-const fn f(name: &'static str, byte: u32, b: u8) -> Signal {
-    (name, (Area::F, byte, b))
+/// An F signal of the CNC's table (`cnc::fsignals`): the checks read the names the CNC writes.
+const fn f(s: FBit) -> Signal {
+    (s.name, (Area::F, s.byte as u32, s.bit))
 }
 const fn g(name: &'static str, byte: u32, b: u8) -> Signal {
     (name, (Area::G, byte, b))
@@ -32,15 +34,15 @@ const MFIN: Signal = g("MFIN", 5, 0);
 
 /// The strobes and decode signals, each with the finish signals that answer it.
 const STROBES: [(Signal, [Signal; 2]); 9] = [
-    (f("MF", 7, 0), [FIN, MFIN]),
-    (f("SF", 7, 2), [FIN, g("SFIN", 5, 2)]),
-    (f("TF", 7, 3), [FIN, g("TFIN", 5, 3)]),
-    (f("MF2", 8, 4), [FIN, g("MFIN2", 4, 4)]),
-    (f("MF3", 8, 5), [FIN, g("MFIN3", 4, 5)]),
-    (f("DM00", 9, 7), [FIN, MFIN]),
-    (f("DM01", 9, 6), [FIN, MFIN]),
-    (f("DM02", 9, 5), [FIN, MFIN]),
-    (f("DM30", 9, 4), [FIN, MFIN]),
+    (f(fs::MF), [FIN, MFIN]),
+    (f(fs::SF), [FIN, g("SFIN", 5, 2)]),
+    (f(fs::TF), [FIN, g("TFIN", 5, 3)]),
+    (f(fs::MF2), [FIN, g("MFIN2", 4, 4)]),
+    (f(fs::MF3), [FIN, g("MFIN3", 4, 5)]),
+    (f(fs::DM00), [FIN, MFIN]),
+    (f(fs::DM01), [FIN, MFIN]),
+    (f(fs::DM02), [FIN, MFIN]),
+    (f(fs::DM30), [FIN, MFIN]),
 ];
 
 /// The finish signals.
@@ -85,23 +87,23 @@ const ESSENTIAL: [(Signal, &str, &str); 5] = [
 /// F answers and the G request each confirms. (MABSM F4.2 is the inverse of ABSM, so it
 /// reads 1 with ABSM never written: no pair.)
 const ANSWERS: [(Signal, Signal); 8] = [
-    (f("MBDT1", 4, 0), g("BDT1", 44, 0)),
-    (f("MMLK", 4, 1), g("MLK", 44, 1)),
-    (f("MSBK", 4, 3), g("SBK", 46, 1)),
-    (f("MAFL", 4, 4), g("AFL", 5, 6)),
-    (f("MREF", 4, 5), g("ZRN", 43, 7)),
-    (f("MDRN", 2, 7), g("DRN", 46, 7)),
-    (f("STL", 0, 5), g("ST", 7, 2)),
-    (f("SPL", 0, 4), g("*SP", 8, 5)),
+    (f(fs::MBDT1), g("BDT1", 44, 0)),
+    (f(fs::MMLK), g("MLK", 44, 1)),
+    (f(fs::MSBK), g("SBK", 46, 1)),
+    (f(fs::MAFL), g("AFL", 5, 6)),
+    (f(fs::MREF), g("ZRN", 43, 7)),
+    (f(fs::MDRN), g("DRN", 46, 7)),
+    (f(fs::STL), g("ST", 7, 2)),
+    (f(fs::SPL), g("*SP", 8, 5)),
 ];
 
 /// The M-code bytes (1st, 2nd, 3rd M code) and the decode signals with their codes.
-const M_BYTES: [u16; 3] = [10, 14, 16];
+const M_BYTES: [u16; 3] = [fs::M_CODE.byte, fs::M_CODE2.byte, fs::M_CODE3.byte];
 const DECODED: [(u32, (Area, u32, u8)); 4] = [
-    (0, (Area::F, 9, 7)),
-    (1, (Area::F, 9, 6)),
-    (2, (Area::F, 9, 5)),
-    (30, (Area::F, 9, 4)),
+    (0, f(fs::DM00).1),
+    (1, f(fs::DM01).1),
+    (2, f(fs::DM02).1),
+    (30, f(fs::DM30).1),
 ];
 
 /// M codes the CNC handles itself and never puts out (docs/cnc.md, "MST interface").
