@@ -662,7 +662,7 @@ fn the_toolbar_delete_deletes_the_selection_and_adds_nothing_to_an_empty_block()
     assert_eq!(h.state().doc().unwrap().history().undo_len(), 1);
     // On a new project's empty level 2 the button deletes nothing and adds no network.
     h.state_mut()
-        .with(|o: &mut FileState, cx| o.perform(cx, ladder_studio::gui::files::Action::New));
+        .with(|o: &mut FileState, cx| o.perform(cx, ladder_studio::gui::files::CloseAction::New));
     h.run();
     h.get_by_label("Delete").click();
     h.run();

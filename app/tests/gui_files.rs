@@ -128,7 +128,10 @@ fn a_damaged_file_opens_read_only_and_is_never_saved_over() {
     h.run();
     scripted(&mut h, vec![Some(path.clone()), Some(dir.join("copy.ldp"))]);
     h.state_mut().with(|o: &mut FileState, cx| {
-        o.request(cx, ladder_studio::gui::files::Action::Open(path.clone()))
+        o.request(
+            cx,
+            ladder_studio::gui::files::CloseAction::Open(path.clone()),
+        )
     });
     h.run();
     h.get_by_label_contains("Open what can be read of it");
@@ -271,8 +274,9 @@ fn escape_keeps_the_recovery_copy_and_an_open_answered_late_still_asks() {
     );
     // Ctrl+O on an unchanged project, an edit while the dialog is open, then the answer.
     scripted(&mut h, vec![Some(path.clone())]);
-    h.state_mut()
-        .with(|o: &mut FileState, cx| o.request(cx, ladder_studio::gui::files::Action::OpenDialog));
+    h.state_mut().with(|o: &mut FileState, cx| {
+        o.request(cx, ladder_studio::gui::files::CloseAction::OpenDialog)
+    });
     h.state_mut()
         .with(|o: &mut EditState, cx| o.insert_network(cx, true));
     h.run();
@@ -355,7 +359,7 @@ fn without_a_system_dialog_save_as_asks_in_the_window_and_saves_under_the_typed_
 #[test]
 fn each_project_starts_with_its_own_output() {
     use ladder_studio::gui::command::Command;
-    use ladder_studio::gui::files::Action;
+    use ladder_studio::gui::files::CloseAction;
     let dir = tempfile_dir();
     // A project that does not compile: its red summary in the output window.
     let bad = ladder_engine::il::import("LEVEL2\nNETWORK\nLD X0010.0\nOUT Y0010.0\n")
@@ -380,7 +384,7 @@ fn each_project_starts_with_its_own_output() {
         "the errors are listed"
     );
     h.state_mut()
-        .with(|o: &mut FileState, cx| o.perform(cx, Action::Open(good_path)));
+        .with(|o: &mut FileState, cx| o.perform(cx, CloseAction::Open(good_path)));
     h.run();
     assert!(
         h.state()

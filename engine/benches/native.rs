@@ -13,7 +13,7 @@
 use ladder_engine::generate::{Mix, program_il};
 use ladder_engine::il;
 use ladder_engine::vm::cnc::NoCnc;
-use ladder_engine::vm::code::{C_INVERT, C_OR, C_PUSH, C_START, CONTACT_END, Code, VmOp};
+use ladder_engine::vm::code::{C_INVERT, C_OR, C_PUSH, C_START, CONTACT_END, Executable, VmOp};
 use ladder_engine::vm::native::Native;
 use ladder_engine::vm::{Engine, IMAGE_BYTES, Vm};
 use std::fmt::Write as _;
@@ -31,7 +31,7 @@ fn vm(engine: Engine) -> Vm {
 }
 
 /// The bit-logic words as the body of a C function over `m`.
-fn c_body(code: &Code) -> String {
+fn c_body(code: &Executable) -> String {
     let mut c = String::new();
     for &w in code.words() {
         let arg = w >> 8;

@@ -152,7 +152,11 @@ impl Coverage {
 
     /// The coverage a trace carries ([`Vm::trace`]: bits 1 and 2 of each word), placed on the
     /// program the code was lowered from (a running machine's published trace, say).
-    pub fn from_trace(seen: &[u8], code: &crate::vm::code::Code, program: &Program) -> Coverage {
+    pub fn from_trace(
+        seen: &[u8],
+        code: &crate::vm::code::Executable,
+        program: &Program,
+    ) -> Coverage {
         // Per instruction, what its words saw.
         let mut by_instr: std::collections::HashMap<(usize, usize, usize), u8> =
             std::collections::HashMap::new();

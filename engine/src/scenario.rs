@@ -4,7 +4,7 @@
 //!
 //! A scenario is kept as lines in the stimulus-script syntax (`force X0002.1 1`, `device
 //! chuck fault stuck 0`, `panel "Feed override" 50%`), so the page, the file and a script read
-//! it alike; [`crate::sim::scenario`] turns the lines into [`Action`]s against a project, and
+//! it alike; [`crate::sim::scenario`] turns the lines into [`ScenarioAction`]s against a project, and
 //! the machine ([`crate::machine::Machine`]) applies them and remembers how to undo each.
 
 use crate::address::{Address, Target};
@@ -29,7 +29,7 @@ pub struct Scenario {
 
 /// What one line of a scenario does, resolved against a project.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Action {
+pub enum ScenarioAction {
     /// Write a value once (`set`).
     Write(Target, i64),
     /// Hold a bit or an address at a value (`force`).
@@ -53,7 +53,7 @@ pub struct Applied {
     /// The scenario's name.
     pub name: String,
     /// Its actions, in line order.
-    pub actions: Vec<Action>,
+    pub actions: Vec<ScenarioAction>,
 }
 
 /// The force state of the (up to 4) bytes of an address: per byte, the forced bits and their

@@ -8,7 +8,7 @@ use ladder_engine::devices::model::{Actuator, Logic};
 use ladder_engine::devices::{Device, DeviceKind, MachineModel};
 use ladder_engine::machine::{DeviceAction, MachineCommand};
 use ladder_engine::model::{PanelItem, PanelKind, Project};
-use ladder_engine::sim::{Command, Options, Script};
+use ladder_engine::sim::{Options, Script, ScriptCommand};
 use ladder_engine::{Address, Profile, ProfileId, file};
 
 fn a(t: &str) -> Address {
@@ -182,9 +182,9 @@ fn scripts_name_devices_and_may_not_set_what_a_device_drives() {
     .unwrap();
     assert!(matches!(
         s.commands[0].1,
-        Command::Do(MachineCommand::Device(0, DeviceAction::Fault(_)))
+        ScriptCommand::Do(MachineCommand::Device(0, DeviceAction::Fault(_)))
     ));
-    assert_eq!(s.commands[3].1, Command::ExpectDevice(0, 1));
+    assert_eq!(s.commands[3].1, ScriptCommand::ExpectDevice(0, 1));
     for (line, want) in [
         (
             "device chuck ok",

@@ -40,12 +40,12 @@ pub struct Cli {
     pub lang: Option<String>,
     /// What to do.
     #[command(subcommand)]
-    pub command: Option<Command>,
+    pub command: Option<CliCommand>,
 }
 
 /// The subcommands.
 #[derive(Subcommand, Debug)]
-pub enum Command {
+pub enum CliCommand {
     /// Compile and list every error and warning; exits 1 when there are errors.
     Check {
         /// A project (.ldp) or an instruction list (.il).
@@ -223,12 +223,12 @@ where
     }
     let result = match cli.command {
         None => open_editor(cli, say, err),
-        Some(Command::Check { path }) => check(&path, say, out),
-        Some(Command::ExportIl { path, output }) => {
+        Some(CliCommand::Check { path }) => check(&path, say, out),
+        Some(CliCommand::ExportIl { path, output }) => {
             export_il(&path, output.as_deref(), say, out, err)
         }
-        Some(Command::ImportIl { il, output }) => import_il(&il, &output, say, err),
-        Some(Command::Sim {
+        Some(CliCommand::ImportIl { il, output }) => import_il(&il, &output, say, err),
+        Some(CliCommand::Sim {
             path,
             engine,
             script,
@@ -252,7 +252,7 @@ where
             out,
             err,
         ),
-        Some(Command::Test {
+        Some(CliCommand::Test {
             path,
             engine,
             junit,
@@ -272,7 +272,7 @@ where
             say,
             out,
         ),
-        Some(Command::Bench {
+        Some(CliCommand::Bench {
             path,
             engine,
             instructions,
@@ -291,16 +291,16 @@ where
             out,
             err,
         ),
-        Some(Command::ExportComments { path, output }) => {
+        Some(CliCommand::ExportComments { path, output }) => {
             export_comments(&path, lang, output.as_deref(), say, out, err)
         }
-        Some(Command::ImportComments { project, csv }) => {
+        Some(CliCommand::ImportComments { project, csv }) => {
             import_comments(&project, &csv, lang, say, out, err)
         }
-        Some(Command::Xref {
+        Some(CliCommand::Xref {
             path, bits, bytes, ..
         }) => xref(&path, bits, bytes, say, out, err),
-        Some(Command::Print(args)) => print::print(&args, say, out, err),
+        Some(CliCommand::Print(args)) => print::print(&args, say, out, err),
     };
     match result {
         Ok(code) => code,

@@ -6,7 +6,7 @@
 use super::LadderApp;
 use super::command::Command;
 use super::diagnostics;
-use super::files::{Action, DialogKind};
+use super::files::{CloseAction, DialogKind};
 use super::place::{BlockKey, View};
 use crate::gui::editor::EditState;
 use crate::gui::editor::editing::PlaceKind;
@@ -204,18 +204,20 @@ impl LadderApp {
     /// Runs a command now. Only [`LadderApp::run_pending`] calls this.
     fn execute(&mut self, c: Command) {
         match c {
-            Command::New => self.with(|o: &mut FileState, cx| o.request(cx, Action::New)),
-            Command::Open => self.with(|o: &mut FileState, cx| o.request(cx, Action::OpenDialog)),
+            Command::New => self.with(|o: &mut FileState, cx| o.request(cx, CloseAction::New)),
+            Command::Open => {
+                self.with(|o: &mut FileState, cx| o.request(cx, CloseAction::OpenDialog))
+            }
             Command::OpenRecent(i) => {
                 if let Some(p) = self.settings.recent.get(i).cloned() {
-                    self.with(|o: &mut FileState, cx| o.request(cx, Action::Open(p)));
+                    self.with(|o: &mut FileState, cx| o.request(cx, CloseAction::Open(p)));
                 }
             }
             Command::Save => self.with(|o: &mut FileState, cx| o.save(cx)),
             Command::SaveAs => {
                 self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::SaveProjectAs))
             }
-            Command::Close => self.with(|o: &mut FileState, cx| o.request(cx, Action::Close)),
+            Command::Close => self.with(|o: &mut FileState, cx| o.request(cx, CloseAction::Close)),
             Command::ExportIl => {
                 self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportIl))
             }
@@ -234,7 +236,7 @@ impl LadderApp {
             Command::ExportDocument => {
                 self.with(|o: &mut FileState, cx| o.start_dialog(cx, DialogKind::ExportDocument))
             }
-            Command::Exit => self.with(|o: &mut FileState, cx| o.request(cx, Action::Exit)),
+            Command::Exit => self.with(|o: &mut FileState, cx| o.request(cx, CloseAction::Exit)),
             Command::Undo => self.undo(),
             Command::Redo => self.redo(),
             Command::Find => self

@@ -3,7 +3,7 @@
 
 use super::diag::{Code, Sink};
 pub use super::operands::{Refusal, operand_error, operand_ok};
-use super::place::{Place, place_text, place_text_zh};
+use super::place::{InstrPlace, place_text, place_text_zh};
 use super::rung::Instr;
 use super::{Program, StepCounts};
 use crate::address::{Address, Area};
@@ -73,9 +73,9 @@ fn number_subprograms(
 /// labels (by number), coils and the timers or counters an instruction keeps.
 #[derive(Default)]
 struct Definitions {
-    labels: BTreeMap<u16, Place>,
-    coils: HashMap<Address, Place>,
-    timers: HashMap<Address, Place>,
+    labels: BTreeMap<u16, InstrPlace>,
+    coils: HashMap<Address, InstrPlace>,
+    timers: HashMap<Address, InstrPlace>,
 }
 
 /// Every instruction's operands (resolving symbols in place), what it defines, and each
@@ -85,7 +85,7 @@ fn check_instructions(
     symbols: &SymbolIndex,
     profile: &Profile,
     sink: &mut Sink,
-) -> BTreeMap<u16, Place> {
+) -> BTreeMap<u16, InstrPlace> {
     let mut defs = Definitions::default();
     for b in 0..program.blocks.len() {
         let label = program.blocks[b].kind.label();
@@ -106,7 +106,7 @@ fn check_instructions(
 impl Definitions {
     /// Notes what `instr` at `here` defines, reporting a second definition at the place of
     /// the first: a label (L030), a coil (W001) or a timer or counter (W002).
-    fn note(&mut self, program: &Program, instr: &Instr, here: Place, sink: &mut Sink) {
+    fn note(&mut self, program: &Program, instr: &Instr, here: InstrPlace, sink: &mut Sink) {
         let first_addr = instr.operands.first().and_then(Operand::address);
         match instr.op {
             Op::Lbl => {
@@ -179,11 +179,11 @@ impl Definitions {
 /// subprogram defined (L033). Returns the calls by calling block: (called block, place).
 fn check_jumps_and_calls(
     program: &Program,
-    labels: &BTreeMap<u16, Place>,
+    labels: &BTreeMap<u16, InstrPlace>,
     subs: &BTreeMap<u16, usize>,
     sink: &mut Sink,
-) -> BTreeMap<usize, Vec<(usize, Place)>> {
-    let mut calls: BTreeMap<usize, Vec<(usize, Place)>> = BTreeMap::new();
+) -> BTreeMap<usize, Vec<(usize, InstrPlace)>> {
+    let mut calls: BTreeMap<usize, Vec<(usize, InstrPlace)>> = BTreeMap::new();
     for (b, block) in program.blocks.iter().enumerate() {
         let label = block.kind.label();
         for (n, net) in block.networks.iter().enumerate() {
@@ -236,7 +236,7 @@ fn check_jumps_and_calls(
 fn count_steps(
     program: &Program,
     profile: &Profile,
-    calls: &BTreeMap<usize, Vec<(usize, Place)>>,
+    calls: &BTreeMap<usize, Vec<(usize, InstrPlace)>>,
     sink: &mut Sink,
 ) -> StepCounts {
     let block_steps: Vec<u32> = program
@@ -305,15 +305,15 @@ fn count_steps(
 
 fn check_recursion(
     program: &Program,
-    calls: &BTreeMap<usize, Vec<(usize, Place)>>,
+    calls: &BTreeMap<usize, Vec<(usize, InstrPlace)>>,
     sink: &mut Sink,
 ) {
     // Depth-first search with colours; a back edge closes a cycle.
     fn visit(
         b: usize,
-        calls: &BTreeMap<usize, Vec<(usize, Place)>>,
+        calls: &BTreeMap<usize, Vec<(usize, InstrPlace)>>,
         colour: &mut [u8],
-        found: &mut Vec<(Place, usize)>,
+        found: &mut Vec<(InstrPlace, usize)>,
     ) {
         colour[b] = 1;
         for (t, place) in calls.get(&b).into_iter().flatten() {

@@ -9,7 +9,7 @@
 
 use super::Program;
 use super::diag::{Code, Origin, Sink};
-use super::flow::{Flow, Place, WriteKind, bit};
+use super::flow::{Flow, InstrPlace, WriteKind, bit};
 use super::tables::{MCODES, MESSAGES};
 use crate::address::{Address, Area};
 use crate::catalog::Op;
@@ -140,7 +140,7 @@ pub fn check_cnc(project: &Project, program: &Program, sink: &mut Sink) {
     alarms(project, program, &flow, sink);
 }
 
-fn at(program: &Program, sink: &mut Sink, place: Place) -> Origin {
+fn at(program: &Program, sink: &mut Sink, place: InstrPlace) -> Origin {
     let (b, n, origin) = place;
     let label = program
         .blocks
@@ -180,7 +180,7 @@ fn strobes(program: &Program, flow: &Flow, sink: &mut Sink) {
 fn finishes(program: &Program, flow: &Flow, sink: &mut Sink) {
     for s in FINISHES {
         let (name, a) = (s.0, address(s));
-        let mut drivers: Vec<Place> = Vec::new();
+        let mut drivers: Vec<InstrPlace> = Vec::new();
         let (mut set, mut rst_at) = (None, None);
         for (w, kind) in flow.writes_of(s.1) {
             match kind {
@@ -286,7 +286,7 @@ fn answers(program: &Program, flow: &Flow, sink: &mut Sink) {
 
 /// The M codes the program decodes, each with where: DECB of an M-code byte whose output bit
 /// is read, CMP of an M-code byte with a constant, a decode signal read.
-fn decoded(program: &Program, flow: &Flow) -> BTreeMap<u32, Place> {
+fn decoded(program: &Program, flow: &Flow) -> BTreeMap<u32, InstrPlace> {
     let mut codes = BTreeMap::new();
     let m_byte = |o: &Operand| {
         o.address()

@@ -6,15 +6,13 @@
 //! built on it can miss a broken path but never reports a path missing that exists.
 
 use super::Program;
-use super::diag::Origin;
 use super::writes::{Unit, units, writes};
 use crate::address::Area;
 use crate::catalog::{InstrClass, Op};
 use crate::model::Operand;
 use std::collections::{HashMap, HashSet, VecDeque};
 
-/// Where an instruction is: block, network, cell or line.
-pub type Place = (usize, usize, Origin);
+pub use super::place::InstrPlace;
 
 /// How an instruction writes a bit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,7 +35,7 @@ pub struct Access {
     /// The bit.
     pub unit: Unit,
     /// The instruction.
-    pub place: Place,
+    pub place: InstrPlace,
 }
 
 /// One network's reads and writes.
@@ -88,7 +86,7 @@ impl Flow {
     }
 
     /// The first read of `unit`, if anything reads it.
-    pub fn first_read(&self, unit: Unit) -> Option<Place> {
+    pub fn first_read(&self, unit: Unit) -> Option<InstrPlace> {
         let k = *self.readers.get(&unit)?.first()?;
         self.networks[k]
             .reads
@@ -137,7 +135,7 @@ impl Flow {
 }
 
 /// Adds one instruction's reads and writes.
-fn collect(op: Op, operands: &[Operand], place: Place, nf: &mut NetFlow) {
+fn collect(op: Op, operands: &[Operand], place: InstrPlace, nf: &mut NetFlow) {
     let spec = op.spec();
     for (i, operand) in operands.iter().enumerate() {
         let (Some(ospec), Some(a)) = (spec.operand(i), operand.address()) else {

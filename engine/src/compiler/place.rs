@@ -6,10 +6,10 @@ use super::Program;
 use super::diag::{Location, Origin};
 
 /// Where an instruction is: (block, network, origin).
-pub(super) type Place = (usize, usize, Origin);
+pub type InstrPlace = (usize, usize, Origin);
 
 /// The place of `p` in English, as a diagnostic's location reads.
-pub(super) fn place_text(program: &Program, p: Place) -> String {
+pub(super) fn place_text(program: &Program, p: InstrPlace) -> String {
     let block = program.blocks[p.0].kind.label();
     match p.2 {
         Origin::Line(l) => format!("line {l}"),
@@ -26,7 +26,7 @@ pub(super) fn place_text(program: &Program, p: Place) -> String {
 }
 
 /// The place of `p` in Chinese, as a diagnostic's location reads.
-pub(super) fn place_text_zh(program: &Program, p: Place) -> String {
+pub(super) fn place_text_zh(program: &Program, p: InstrPlace) -> String {
     Location {
         block: p.0,
         block_label: program.blocks[p.0].kind.label(),

@@ -13,7 +13,7 @@
 use super::Program;
 use super::diag::{Code, Sink};
 use super::operands::operand_error;
-use super::place::{Place, place_text, place_text_zh};
+use super::place::{InstrPlace, place_text, place_text_zh};
 use crate::address::{Address, Area};
 use crate::catalog::{Access, InstrClass, Op, OperandSpec, Role, Width};
 use crate::model::{BlockKind, Operand};
@@ -28,7 +28,7 @@ pub(super) type Unit = (Area, u32, u8);
 struct Writer {
     /// Which instruction, counted through the program: its own operands never clash.
     instr: usize,
-    place: Place,
+    place: InstrPlace,
     op: Op,
     /// The operand's name in the catalogue (`OUT`, `ERR`).
     operand: &'static str,

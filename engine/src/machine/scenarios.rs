@@ -3,7 +3,7 @@
 
 use super::{Machine, Target};
 use crate::refusal::Refusal;
-use crate::scenario::{Action, Applied, Undo};
+use crate::scenario::{Applied, ScenarioAction, Undo};
 
 impl Machine {
     /// The names of the scenarios applied now, oldest first.
@@ -22,7 +22,7 @@ impl Machine {
         }
         // Every fault's device must exist before anything changes: all or nothing.
         for a in &applied.actions {
-            if let Action::Fault(i, _) = a
+            if let ScenarioAction::Fault(i, _) = a
                 && self.plant.as_ref().is_none_or(|p| *i >= p.names().count())
             {
                 return Err(Refusal::new(
@@ -46,21 +46,21 @@ impl Machine {
     }
 
     /// Carries out one action and says how to undo it.
-    fn act(&mut self, a: &Action) -> Undo {
+    fn act(&mut self, a: &ScenarioAction) -> Undo {
         match a {
-            Action::Write(t, v) => {
+            ScenarioAction::Write(t, v) => {
                 let old = self.plc.read(t.address, t.bytes);
                 self.plc.write(t.address, t.bytes, *v);
                 Undo::Write(*t, old)
             }
-            Action::Force(addr, v) => {
+            ScenarioAction::Force(addr, v) => {
                 let t = Target::whole(*addr);
                 let state = self.plc.force_state(*addr);
                 let old = self.plc.read(t.address, t.bytes);
                 self.plc.force(*addr, *v);
                 Undo::Force(*addr, state, t, old)
             }
-            Action::Knob { input, mask, value } => {
+            ScenarioAction::Knob { input, mask, value } => {
                 let old = self.plc.read(*input, 1);
                 let m = i64::from(*mask);
                 self.plc.write(*input, 1, (old & 0xff & !m) | (value & m));
@@ -70,7 +70,7 @@ impl Machine {
                     old,
                 }
             }
-            Action::Fault(i, f) => {
+            ScenarioAction::Fault(i, f) => {
                 let plant = self.plant.as_mut().expect("checked before acting");
                 let old = plant.fault(*i);
                 plant.set_fault(*i, Some(*f));

@@ -2,7 +2,7 @@
 //! fault …`, `device NAME ok`, `device NAME reset`, the `device.NAME` value, and the refusal
 //! to `set` an input a device drives.
 
-use super::{Command, Msg, Target, msg};
+use super::{Msg, ScriptCommand, Target, msg};
 use crate::address::Address;
 use crate::devices::{FLICKER_MIN_MS, Fault, MachineModel, SLOW_MAX, SLOW_MIN};
 use crate::machine::{DeviceAction, MachineCommand, Probe};
@@ -43,7 +43,7 @@ pub fn probe(text: &str, machine: Option<&MachineModel>) -> Option<Result<Probe,
 }
 
 /// A `device` line.
-pub fn line(args: &[&str], machine: Option<&MachineModel>) -> Result<Command, Msg> {
+pub fn line(args: &[&str], machine: Option<&MachineModel>) -> Result<ScriptCommand, Msg> {
     let usage = || msg(format!("usage: {USAGE}"), format!("用法：`{USAGE}`"));
     let m = model(machine, "device")?;
     let (Some(name), Some(verb)) = (args.first(), args.get(1)) else {
@@ -57,7 +57,7 @@ pub fn line(args: &[&str], machine: Option<&MachineModel>) -> Result<Command, Ms
         ("fault", [kind, more @ ..]) => DeviceAction::Fault(fault(m, i, kind, more)?),
         _ => return Err(usage()),
     };
-    Ok(Command::Do(MachineCommand::Device(i, action)))
+    Ok(ScriptCommand::Do(MachineCommand::Device(i, action)))
 }
 
 fn number<T: std::str::FromStr>(text: &str, what: &str, zh: &str) -> Result<T, Msg> {

@@ -24,7 +24,7 @@ pub const MAX_TICKS: u64 = 100_000_000;
 
 /// One script line.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Command {
+pub enum ScriptCommand {
     /// Something done to the machine: `set`, `setf`, `force`, `unforce`, `scan`, `run`,
     /// `watch`, `division`, `power-cycle`, `cnc …`.
     Do(MachineCommand),
@@ -94,7 +94,7 @@ impl From<AddressError> for Msg {
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct Script {
     /// (line, command).
-    pub commands: Vec<(usize, Command)>,
+    pub commands: Vec<(usize, ScriptCommand)>,
 }
 
 /// How a script is read.
@@ -386,7 +386,7 @@ fn parse_line(
     args: &[&str],
     profile: &Profile,
     options: &Options<'_>,
-) -> Result<Command, Msg> {
+) -> Result<ScriptCommand, Msg> {
     let want = |n: std::ops::RangeInclusive<usize>, usage: &str| {
         if n.contains(&args.len()) {
             Ok(())
@@ -395,7 +395,7 @@ fn parse_line(
         }
     };
     let lower = verb.to_ascii_lowercase();
-    let act = |c: MachineCommand| Ok(Command::Do(c));
+    let act = |c: MachineCommand| Ok(ScriptCommand::Do(c));
     match lower.as_str() {
         "set" => {
             want(2..=2, "set ADDR[:N] VALUE")?;
@@ -440,7 +440,7 @@ fn parse_line(
         "expect" => {
             want(2..=2, "expect ADDR[:N] VALUE")?;
             match probe(args[0], profile, options)? {
-                Probe::Cnc(k) => Ok(Command::ExpectCnc(
+                Probe::Cnc(k) => Ok(ScriptCommand::ExpectCnc(
                     k,
                     k.expected(args[1]).map_err(cnc_refusal)?,
                     args[1].into(),
@@ -448,9 +448,9 @@ fn parse_line(
                 Probe::Memory(t) => {
                     let v = integer(args[1])?;
                     fits(&t, v)?;
-                    Ok(Command::Expect(t, v))
+                    Ok(ScriptCommand::Expect(t, v))
                 }
-                Probe::Device(i) => Ok(Command::ExpectDevice(i, integer(args[1])?)),
+                Probe::Device(i) => Ok(ScriptCommand::ExpectDevice(i, integer(args[1])?)),
             }
         }
         "expectf" => {
@@ -461,11 +461,11 @@ fn parse_line(
                 Some(t) => Some(real(t)?),
                 None => None,
             };
-            Ok(Command::ExpectReal(t.address, real(args[1])?, tol))
+            Ok(ScriptCommand::ExpectReal(t.address, real(args[1])?, tol))
         }
         "print" => {
             want(1..=1, "print ADDR[:N]")?;
-            Ok(Command::Print(probe(args[0], profile, options)?))
+            Ok(ScriptCommand::Print(probe(args[0], profile, options)?))
         }
         "watch" => {
             want(1..=1, "watch ADDR[:N]")?;
@@ -674,7 +674,7 @@ mod tests {
             .commands
             .iter()
             .map(|(_, c)| match c {
-                Command::Do(MachineCommand::Tick(n)) => *n,
+                ScriptCommand::Do(MachineCommand::Tick(n)) => *n,
                 _ => 0,
             })
             .collect();

@@ -2,7 +2,7 @@
 //! order, the `expect`s counted, the trace written row by row as the ticks run, and a way to
 //! stop a long run between two ticks with what it has.
 
-use super::{Command, Script};
+use super::{Script, ScriptCommand};
 use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -133,20 +133,22 @@ pub fn run_with(
             break;
         }
         match command {
-            Command::Do(MachineCommand::Tick(n)) => {
+            ScriptCommand::Do(MachineCommand::Tick(n)) => {
                 run.tick(machine, *line, *n, &mut control)?;
                 if run.out.stopped.is_some() {
                     break;
                 }
             }
-            Command::Do(c) => run.apply(machine, *line, c),
-            Command::Print(p) => run.print(machine, *line, p),
-            Command::Expect(t, want) => run.expect(machine, *line, t, *want),
-            Command::ExpectCnc(key, want, written) => {
+            ScriptCommand::Do(c) => run.apply(machine, *line, c),
+            ScriptCommand::Print(p) => run.print(machine, *line, p),
+            ScriptCommand::Expect(t, want) => run.expect(machine, *line, t, *want),
+            ScriptCommand::ExpectCnc(key, want, written) => {
                 run.expect_cnc(machine, *line, *key, want, written)
             }
-            Command::ExpectDevice(i, want) => run.expect_device(machine, *line, *i, *want),
-            Command::ExpectReal(a, want, tol) => run.expect_real(machine, *line, *a, *want, *tol),
+            ScriptCommand::ExpectDevice(i, want) => run.expect_device(machine, *line, *i, *want),
+            ScriptCommand::ExpectReal(a, want, tol) => {
+                run.expect_real(machine, *line, *a, *want, *tol)
+            }
         }
     }
     if let Some(t) = control.trace {

@@ -2,11 +2,11 @@
 //! script lines (`set`, `force`, `device … fault`) plus `panel LABEL VALUE`, read by the
 //! script's own parser so the two never disagree.
 
-use super::{Command, Msg, Options, ScriptError, lex, msg, parse_line};
+use super::{Msg, Options, ScriptCommand, ScriptError, lex, msg, parse_line};
 use crate::machine::{DeviceAction, MachineCommand};
 use crate::model::{PanelKind, Project};
 use crate::profile::Profile;
-use crate::scenario::{Action, Applied, Scenario};
+use crate::scenario::{Applied, Scenario, ScenarioAction};
 
 /// The usage of the script line.
 const USAGE: &str = "scenario NAME [off]";
@@ -44,14 +44,14 @@ fn action(
     project: &Project,
     profile: &Profile,
     options: &Options<'_>,
-) -> Result<Action, Msg> {
+) -> Result<ScenarioAction, Msg> {
     let lower = verb.to_ascii_lowercase();
     if lower == "panel" {
         let a = panel(args, project)?;
         // A device writes its inputs every tick: a panel state there would not hold.
         let t = match &a {
-            Action::Write(t, _) => *t,
-            Action::Knob { input, .. } => crate::machine::Target::whole(*input),
+            ScenarioAction::Write(t, _) => *t,
+            ScenarioAction::Knob { input, .. } => crate::machine::Target::whole(*input),
             _ => return Ok(a),
         };
         super::device::not_driven(&t, "panel", options.machine)?;
@@ -68,9 +68,11 @@ fn action(
         ));
     }
     match parse_line(verb, args, profile, options)? {
-        Command::Do(MachineCommand::Write(t, v)) => Ok(Action::Write(t, v)),
-        Command::Do(MachineCommand::Force(a, v)) => Ok(Action::Force(a, v)),
-        Command::Do(MachineCommand::Device(i, DeviceAction::Fault(f))) => Ok(Action::Fault(i, f)),
+        ScriptCommand::Do(MachineCommand::Write(t, v)) => Ok(ScenarioAction::Write(t, v)),
+        ScriptCommand::Do(MachineCommand::Force(a, v)) => Ok(ScenarioAction::Force(a, v)),
+        ScriptCommand::Do(MachineCommand::Device(i, DeviceAction::Fault(f))) => {
+            Ok(ScenarioAction::Fault(i, f))
+        }
         _ => Err(msg(
             "a scenario injects device faults only (`device NAME fault …`); its release clears them",
             "场景中的设备行只能注入故障（`device NAME fault …`）；解除场景时故障随之清除",
@@ -80,7 +82,7 @@ fn action(
 
 /// `panel LABEL VALUE`: a key or switch of the project's operator panel held at 0 or 1, or a
 /// knob turned to a position (its label or value).
-fn panel(args: &[&str], project: &Project) -> Result<Action, Msg> {
+fn panel(args: &[&str], project: &Project) -> Result<ScenarioAction, Msg> {
     let [label, value] = args else {
         return Err(msg("usage: panel LABEL VALUE", "用法：`panel LABEL VALUE`"));
     };
@@ -101,7 +103,7 @@ fn panel(args: &[&str], project: &Project) -> Result<Action, Msg> {
         PanelKind::Key { input }
         | PanelKind::Switch { input }
         | PanelKind::LampKey { input, .. } => match *value {
-            "0" | "1" => Ok(Action::Write(
+            "0" | "1" => Ok(ScenarioAction::Write(
                 crate::machine::Target::whole(*input),
                 i64::from(*value == "1"),
             )),
@@ -127,7 +129,7 @@ fn panel(args: &[&str], project: &Project) -> Result<Action, Msg> {
                     ),
                 ));
             };
-            Ok(Action::Knob {
+            Ok(ScenarioAction::Knob {
                 input: *input,
                 mask: item.kind.knob_mask(),
                 value: *v,
@@ -141,7 +143,7 @@ fn panel(args: &[&str], project: &Project) -> Result<Action, Msg> {
 }
 
 /// The `scenario NAME [off]` script line.
-pub(super) fn line(args: &[&str], options: &Options<'_>) -> Result<Command, Msg> {
+pub(super) fn line(args: &[&str], options: &Options<'_>) -> Result<ScriptCommand, Msg> {
     let usage = || msg(format!("usage: {USAGE}"), format!("用法：`{USAGE}`"));
     let (name, off) = match args {
         [name] => (*name, false),
@@ -177,7 +179,9 @@ pub(super) fn line(args: &[&str], options: &Options<'_>) -> Result<Command, Msg>
         ));
     };
     if off {
-        return Ok(Command::Do(MachineCommand::Release(scenario.name.clone())));
+        return Ok(ScriptCommand::Do(MachineCommand::Release(
+            scenario.name.clone(),
+        )));
     }
     let applied = resolve(scenario, project, options).map_err(|e| {
         msg(
@@ -191,5 +195,7 @@ pub(super) fn line(args: &[&str], options: &Options<'_>) -> Result<Command, Msg>
             ),
         )
     })?;
-    Ok(Command::Do(MachineCommand::Scenario(Box::new(applied))))
+    Ok(ScriptCommand::Do(MachineCommand::Scenario(Box::new(
+        applied,
+    ))))
 }

@@ -117,9 +117,9 @@ vm_ops! {
         Call CALL = 43;
         /// Call the code at the word index in the argument whatever ACT is.
         Callu CALLU = 44;
-        /// Start of a network: the argument indexes [`Code::networks`].
+        /// Start of a network: the argument indexes [`Executable::networks`].
         Net NET = 45;
-        /// A function instruction: the argument indexes [`Code::fns`].
+        /// A function instruction: the argument indexes [`Executable::fns`].
         Fn FN = 46;
         /// End of a block or subprogram.
         Ret RET = 47;
@@ -144,7 +144,7 @@ static DECODE: [Option<VmOp>; 256] = {
 };
 
 impl VmOp {
-    /// Decodes the low byte of a word; `None` when it is no opcode ([`Code`] refuses such
+    /// Decodes the low byte of a word; `None` when it is no opcode ([`Executable`] refuses such
     /// words when it is built, so the loop never meets one).
     #[inline(always)]
     pub fn decode(word: u32) -> Option<VmOp> {
@@ -184,13 +184,13 @@ pub struct FnCall {
     pub op: FnOp,
     /// Its operands in IL order.
     pub args: [Arg; MAX_ARGS],
-    /// CODB's table: a range of [`Code::consts`].
+    /// CODB's table: a range of [`Executable::consts`].
     pub table: (u32, u32),
     /// Index of its per-instance state (edge, timer and window memories).
     pub state: u32,
     /// Steps it costs.
     pub cost: u32,
-    /// Which network it is in (index into [`Code::networks`]).
+    /// Which network it is in (index into [`Executable::networks`]).
     pub network: u32,
 }
 
@@ -209,11 +209,11 @@ pub struct NetworkInfo {
     pub end: u32,
 }
 
-/// The executable program. Only lowering builds one, and `Code::checked` sees every word
+/// The executable program. Only lowering builds one, and `Executable::checked` sees every word
 /// on the way out: the scan loop then takes each opcode and index as valid without testing it.
 #[derive(Clone, Debug)]
-pub struct Code {
-    /// Instruction words (read through [`Code::words`]: nothing may change them once checked).
+pub struct Executable {
+    /// Instruction words (read through [`Executable::words`]: nothing may change them once checked).
     words: Vec<u32>,
     /// Function-instruction instances.
     pub fns: Vec<FnCall>,
@@ -269,7 +269,7 @@ pub enum CodeError {
     },
 }
 
-impl Code {
+impl Executable {
     /// The instruction words.
     pub fn words(&self) -> &[u32] {
         &self.words
@@ -278,7 +278,7 @@ impl Code {
     /// The code, once every word has an opcode of [`VmOp`] and every jump, call, network and
     /// function-instruction argument is inside what it indexes. Checked here once rather than
     /// at every word of every scan.
-    fn checked(self) -> Result<Code, CodeError> {
+    fn checked(self) -> Result<Executable, CodeError> {
         let len = self.words.len();
         for (at, &w) in self.words.iter().enumerate() {
             let Some(op) = VmOp::decode(w) else {
@@ -329,7 +329,7 @@ pub enum LowerError {
 struct Lowerer<'a> {
     program: &'a Program,
     layout: &'a Layout,
-    code: Code,
+    code: Executable,
     /// Entry word of each block for each level context, once lowered.
     entries: Vec<[Option<u32>; 2]>,
     /// Jumps to patch: (word index, block, label number, context).
@@ -565,11 +565,11 @@ impl Lowerer<'_> {
 }
 
 /// Lowers a compiled, error-free program to executable code.
-pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
+pub fn lower(program: &Program, layout: &Layout) -> Result<Executable, LowerError> {
     let mut l = Lowerer {
         program,
         layout,
-        code: Code {
+        code: Executable {
             words: Vec::new(),
             fns: Vec::new(),
             consts: Vec::new(),
@@ -615,8 +615,8 @@ pub fn lower(program: &Program, layout: &Layout) -> Result<Code, LowerError> {
 mod tests {
     use super::*;
 
-    fn code(words: Vec<u32>) -> Code {
-        Code {
+    fn code(words: Vec<u32>) -> Executable {
+        Executable {
             source: vec![None; words.len()],
             words,
             fns: Vec::new(),

@@ -204,7 +204,7 @@ impl Vm {
             let arg = w >> 8;
             r.pc = at + 1;
             let Some(op) = VmOp::decode(w) else {
-                unreachable!("Code::checked refused every word without an opcode");
+                unreachable!("Executable::checked refused every word without an opcode");
             };
             match op {
                 VmOp::Net => {

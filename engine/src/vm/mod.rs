@@ -22,7 +22,7 @@ use crate::compiler::{Program, compile};
 use crate::model::Project;
 use crate::profile::Profile;
 use cnc::Cnc;
-use code::{Code, LowerError, lower};
+use code::{Executable, LowerError, lower};
 use memory::{Layout, Loc};
 use std::fmt;
 
@@ -105,7 +105,7 @@ struct Frame {
 
 /// A running PLC.
 pub struct Vm {
-    code: Code,
+    code: Executable,
     layout: Layout,
     mem: Vec<u8>,
     states: Vec<InstState>,
@@ -236,7 +236,7 @@ impl Vm {
     }
 
     /// The executable code.
-    pub fn code(&self) -> &Code {
+    pub fn code(&self) -> &Executable {
         &self.code
     }
 
@@ -492,7 +492,7 @@ impl Vm {
     }
 
     /// Turns the recording of a network's values on or off (networks as in
-    /// [`Code::networks`]). Recording costs nothing for networks nobody watches.
+    /// [`Executable::networks`]). Recording costs nothing for networks nobody watches.
     pub fn watch(&mut self, network: usize, on: bool) {
         // While coverage is measured every network stays recorded.
         if self.covering && !on {
@@ -526,8 +526,8 @@ impl Vm {
     }
 
     /// What coverage has seen since it was turned on, per word of code (see [`Vm::trace`]),
-    /// with [`Code::source`] to place each word; `None` while off.
-    pub fn coverage(&self) -> Option<(&[u8], &Code)> {
+    /// with [`Executable::source`] to place each word; `None` while off.
+    pub fn coverage(&self) -> Option<(&[u8], &Executable)> {
         self.covering.then_some((&self.trace[..], &self.code))
     }
 

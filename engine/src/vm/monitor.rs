@@ -10,7 +10,7 @@
 //! recorder rebuilt, so the view must not need the VM itself.
 
 use super::Vm;
-use super::code::Code;
+use super::code::Executable;
 use super::memory::{self, Layout};
 use crate::address::Address;
 use crate::compiler::{Origin, Program};
@@ -21,7 +21,7 @@ use crate::model::{Cell, Network, Operand};
 #[derive(Clone, Copy)]
 pub struct Source<'a> {
     /// The running code (networks and word sources).
-    pub code: &'a Code,
+    pub code: &'a Executable,
     /// Where each area is in the image.
     pub layout: &'a Layout,
     /// The memory image.
@@ -73,7 +73,7 @@ impl Vm {
         }
     }
 
-    /// Which code networks are recorded, one flag per [`Code::networks`] entry.
+    /// Which code networks are recorded, one flag per [`Executable::networks`] entry.
     pub fn watched(&self) -> &[bool] {
         &self.watched
     }
@@ -99,13 +99,13 @@ pub struct NetworkView {
     pub cells: Vec<Vec<CellView>>,
 }
 
-/// The code network (see [`super::code::Code::networks`]) of a ladder network.
+/// The code network (see [`super::code::Executable::networks`]) of a ladder network.
 pub fn code_network(vm: &Vm, block: usize, network: usize) -> Option<usize> {
     code_network_of(vm.code(), block, network)
 }
 
 /// The code network of a ladder network, in given code.
-pub fn code_network_of(code: &Code, block: usize, network: usize) -> Option<usize> {
+pub fn code_network_of(code: &Executable, block: usize, network: usize) -> Option<usize> {
     code.networks
         .iter()
         .position(|n| n.block == block && n.network == network)

@@ -169,7 +169,7 @@ impl FileDialogs for ScriptedDialogs {
 
 /// Something that closes the current project, and so first asks about unsaved changes.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Action {
+pub enum CloseAction {
     /// A new, empty project.
     New,
     /// Pick a project in a dialog, then open it.
@@ -188,7 +188,7 @@ pub enum Question {
     /// The project has unsaved changes: save them before `then`?
     Unsaved {
         /// What happens after the answer.
-        then: Action,
+        then: CloseAction,
     },
     /// The file is damaged: open what can be read, read-only?
     Damaged {

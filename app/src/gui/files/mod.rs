@@ -12,7 +12,7 @@ use crate::gui::files::file_dialog::SystemDialogs;
 use crate::gui::i18n::Msg;
 pub use crate::gui::settings::canonical;
 pub use dialogs::{
-    Action, DialogKind, FileDialogs, NativeDialogs, Question, RecoveryCopy, ScriptedDialogs,
+    CloseAction, DialogKind, FileDialogs, NativeDialogs, Question, RecoveryCopy, ScriptedDialogs,
 };
 use ladder_engine::file::{self, FileError};
 use ladder_engine::model::{Change, Project};
@@ -26,7 +26,7 @@ pub struct FileState {
     /// The question the editor waits on (unsaved changes, damaged file, restore).
     pub question: Option<Question>,
     /// What to do once the pending Save or Save As succeeds.
-    pub after_save: Option<Action>,
+    pub after_save: Option<CloseAction>,
     /// The user agreed to quit.
     pub exit_confirmed: bool,
     /// Where recovery copies are autosaved; `None` turns autosave off.
@@ -112,7 +112,7 @@ pub(crate) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
 impl FileState {
     /// Asks for `action`: at once when nothing is unsaved, else after the unsaved-changes
     /// question.
-    pub fn request(&mut self, cx: &mut Context<'_>, action: Action) {
+    pub fn request(&mut self, cx: &mut Context<'_>, action: CloseAction) {
         if cx.doc().is_some_and(|d| d.is_dirty()) {
             self.question = Some(Question::Unsaved { then: action });
         } else {
@@ -121,17 +121,17 @@ impl FileState {
     }
 
     /// Does `action` now, whatever is unsaved.
-    pub fn perform(&mut self, cx: &mut Context<'_>, action: Action) {
+    pub fn perform(&mut self, cx: &mut Context<'_>, action: CloseAction) {
         match action {
-            Action::OpenDialog => {
+            CloseAction::OpenDialog => {
                 self.start_dialog(cx, DialogKind::OpenProject);
                 return;
             }
-            Action::Open(path) => {
+            CloseAction::Open(path) => {
                 self.open(cx, &path);
                 return;
             }
-            Action::Exit => {
+            CloseAction::Exit => {
                 self.exit_confirmed = true;
                 self.drop_recovery_copy(cx);
                 if let Some(ctx) = &cx.egui {
@@ -139,11 +139,11 @@ impl FileState {
                 }
                 return;
             }
-            Action::New | Action::Close => {}
+            CloseAction::New | CloseAction::Close => {}
         }
         self.drop_recovery_copy(cx);
         cx.replace_document(
-            (action == Action::New).then(|| Document::new(Project::default(), None)),
+            (action == CloseAction::New).then(|| Document::new(Project::default(), None)),
         );
     }
 
@@ -188,7 +188,7 @@ impl FileState {
         match kind {
             // The editor kept working while the dialog was open: ask again about what
             // changed meanwhile.
-            DialogKind::OpenProject => self.request(cx, Action::Open(path)),
+            DialogKind::OpenProject => self.request(cx, CloseAction::Open(path)),
             DialogKind::SaveProjectAs => self.save_as(cx, &path),
             DialogKind::ExportIl => self.export_il(cx, &path),
             DialogKind::ExportComments => self.export_comments(cx, &path),
@@ -567,7 +567,7 @@ impl FileState {
                 .collect()
         });
         if let Some(p) = dropped.into_iter().next() {
-            self.request(cx, Action::Open(p));
+            self.request(cx, CloseAction::Open(p));
         }
     }
 
@@ -576,7 +576,9 @@ impl FileState {
         if !self.exit_confirmed && ctx.input(|i| i.viewport().close_requested()) {
             if cx.doc().is_some_and(|d| d.is_dirty()) {
                 ctx.send_viewport_cmd(egui::ViewportCommand::CancelClose);
-                self.question = Some(Question::Unsaved { then: Action::Exit });
+                self.question = Some(Question::Unsaved {
+                    then: CloseAction::Exit,
+                });
             } else {
                 self.drop_recovery_copy(cx);
             }

@@ -1,7 +1,7 @@
 //! The label of a contact or coil: its operand (address, symbol or both) above the element,
 //! its element comment below it in the chosen language, and the mark of a forced address.
 
-use super::{COMMENT_LINES, Place, operand_text};
+use super::{COMMENT_LINES, OperandPlace, operand_text};
 use crate::gui::settings::DisplayMode;
 use crate::gui::theme;
 use egui::{Align2, FontId, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
@@ -62,7 +62,7 @@ impl BitLabel<'_> {
             self.project,
             operand,
             self.mode,
-            Place::Bit,
+            OperandPlace::Bit,
             std::slice::from_ref(operand),
         );
         let line = self.line;

@@ -25,7 +25,7 @@ use super::theme::{MAPPED, UNDEFINED};
 
 /// Where an operand stands, for its type check.
 #[derive(Clone, Copy, Debug)]
-pub enum Place {
+pub enum OperandPlace {
     /// On a contact or coil: a bit.
     Bit,
     /// Operand `i` of a function instruction.
@@ -34,14 +34,14 @@ pub enum Place {
 
 /// Whether an operand has the type its place needs (undefined symbols are not wrong-typed:
 /// they are red).
-fn right_type(project: &Project, o: &Operand, place: Place, operands: &[Operand]) -> bool {
+fn right_type(project: &Project, o: &Operand, place: OperandPlace, operands: &[Operand]) -> bool {
     match place {
-        Place::Bit => match o {
+        OperandPlace::Bit => match o {
             Operand::Addr(a) => a.bit.is_some(),
             Operand::Symbol(name) => project.resolve_symbol(name).is_none_or(|a| a.bit.is_some()),
             _ => false,
         },
-        Place::Box(op, i) => {
+        OperandPlace::Box(op, i) => {
             if let Operand::Symbol(name) = o
                 && project.resolve_symbol(name).is_none()
             {
@@ -154,7 +154,7 @@ pub fn operand_text(
     project: &Project,
     o: &Operand,
     mode: DisplayMode,
-    place: Place,
+    place: OperandPlace,
     operands: &[Operand],
 ) -> (String, Color32) {
     let (text, color) = plain_operand_text(project, o, mode);
@@ -731,7 +731,8 @@ mod tests {
             comments: Default::default(),
         });
         let o = |t: &str| Operand::parse(t).unwrap();
-        let bit = |t: &str| operand_text(&p, &o(t), DisplayMode::Address, Place::Bit, &[o(t)]);
+        let bit =
+            |t: &str| operand_text(&p, &o(t), DisplayMode::Address, OperandPlace::Bit, &[o(t)]);
         assert_eq!(bit("START"), ("X0002.1".into(), MAPPED));
         assert_eq!(bit("NOWHERE"), ("NOWHERE".into(), UNDEFINED));
         assert_eq!(bit("X0002.1").1, theme::INK);
@@ -747,7 +748,7 @@ mod tests {
                 &p,
                 &ops[i],
                 DisplayMode::Address,
-                Place::Box(ladder_engine::Op::Tmrb, i),
+                OperandPlace::Box(ladder_engine::Op::Tmrb, i),
                 ops,
             )
             .1

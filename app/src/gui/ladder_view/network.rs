@@ -3,7 +3,7 @@
 //! selection and the cursor.
 
 use super::label::{BitLabel, Span, address_of};
-use super::{ErrorMark, Metrics, Place, operand_text, row_tops};
+use super::{ErrorMark, Metrics, OperandPlace, operand_text, row_tops};
 use crate::gui::settings::{DisplayMode, NumFormat};
 use crate::gui::theme::{self, SELECTED};
 use egui::{Align2, FontId, Pos2, Rect, Stroke, StrokeKind, pos2, vec2};
@@ -344,8 +344,13 @@ impl Cells<'_> {
         let v = self.view(at.r, at.c);
         for (i, o) in operands.iter().enumerate() {
             let name = op.spec().operand(i).map_or("", |s| s.name);
-            let (text, color) =
-                operand_text(self.project, o, self.mode, Place::Box(op, i), operands);
+            let (text, color) = operand_text(
+                self.project,
+                o,
+                self.mode,
+                OperandPlace::Box(op, i),
+                operands,
+            );
             let p = rect.left_top() + vec2(4.0, m.line * (i as f32 + 1.0) + 2.0);
             painter.text(
                 p,

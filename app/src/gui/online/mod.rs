@@ -467,7 +467,7 @@ impl OnlineState {
             let (_, r) = self.startup.remove(0);
             s.send(r);
         }
-        let was_refused = matches!(s.sync, session::Sync::Refused(..));
+        let was_refused = matches!(s.sync, session::DrawingSync::Refused(..));
         let mut recompile = false;
         if let Some(doc) = cx.doc()
             && s.scrub.is_none()
@@ -477,7 +477,7 @@ impl OnlineState {
                 let t = Msg::EditNotCompiled.text(lang).to_string();
                 lines.push((t, true));
             } else if was_refused
-                && s.sync != session::Sync::Swapping
+                && s.sync != session::DrawingSync::Swapping
                 && s.drawing_runs(doc.project())
             {
                 // Undone back to what runs: the refused edit's errors are gone, and the output

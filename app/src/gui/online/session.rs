@@ -10,7 +10,7 @@ use ladder_engine::recorder::Recorder;
 use ladder_engine::refusal::Refusal;
 use ladder_engine::runner::{Published, Reply, Request, Runner, Speed};
 use ladder_engine::vm::Vm;
-use ladder_engine::vm::code::Code;
+use ladder_engine::vm::code::Executable;
 use ladder_engine::vm::memory::Layout;
 use ladder_engine::vm::monitor::Source;
 use std::collections::BTreeSet;
@@ -29,7 +29,7 @@ pub struct Running {
     /// The compiled program (cell origins of each instruction).
     pub program: Program,
     /// Its lowered code (networks, word sources).
-    pub code: Code,
+    pub code: Executable,
     /// The memory layout.
     pub layout: Layout,
     /// Its number in swap requests (0 for the program the machine started with).
@@ -38,7 +38,7 @@ pub struct Running {
 
 /// Whether what runs is what is drawn.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Sync {
+pub enum DrawingSync {
     /// The running program is the drawing.
     Same,
     /// An edited program was sent and has not taken over yet.
@@ -87,7 +87,7 @@ pub struct Session {
     pub scrub: Option<u64>,
     scrub_image: Vec<u8>,
     /// Whether what runs is what is drawn.
-    pub sync: Sync,
+    pub sync: DrawingSync,
     /// The machine model that runs (docs/machine.md).
     pub model: MachineModel,
     /// The project change counter last compared.
@@ -173,7 +173,7 @@ impl Session {
             recorder,
             scrub: None,
             scrub_image: Vec::new(),
-            sync: Sync::Same,
+            sync: DrawingSync::Same,
             model: project.machine.clone(),
             seen_generation: generation,
             watched: BTreeSet::new(),
@@ -222,8 +222,8 @@ impl Session {
                     if let Some(p) = self.pending.take_if(|p| p.number == n) {
                         self.running = p;
                         self.watched.clear();
-                        if self.sync == Sync::Swapping {
-                            self.sync = Sync::Same;
+                        if self.sync == DrawingSync::Swapping {
+                            self.sync = DrawingSync::Same;
                         }
                     }
                     notices.push(Notice::Swapped(s.kept, s.fresh));
@@ -231,7 +231,7 @@ impl Session {
                 Reply::SwapRefused(n, m) => {
                     if self.pending.as_ref().is_some_and(|p| p.number == n) {
                         self.pending = None;
-                        self.sync = Sync::Refused(m.en.clone(), m.zh.clone());
+                        self.sync = DrawingSync::Refused(m.en.clone(), m.zh.clone());
                     }
                     notices.push(Notice::SwapRefused(m));
                 }
@@ -259,7 +259,7 @@ impl Session {
         let target = self.pending.as_ref().unwrap_or(&self.running);
         if project.ladder == target.ladder {
             if self.pending.is_none() {
-                self.sync = Sync::Same;
+                self.sync = DrawingSync::Same;
             }
             return None;
         }
@@ -272,19 +272,19 @@ impl Session {
             Ok((vm, running)) => {
                 let running = Arc::new(running);
                 self.pending = Some(Arc::clone(&running));
-                self.sync = Sync::Swapping;
+                self.sync = DrawingSync::Swapping;
                 self.send(Request::Swap(Box::new(vm), number));
                 None
             }
             Err(StartError::Compile(n, en, zh)) => {
-                self.sync = Sync::Refused(
+                self.sync = DrawingSync::Refused(
                     format!("{n} compile error(s); the first: {en}"),
                     format!("{n} 个编译错误；第一个：{zh}"),
                 );
                 Some(n)
             }
             Err(StartError::Other(m)) => {
-                self.sync = Sync::Refused(m.clone(), m);
+                self.sync = DrawingSync::Refused(m.clone(), m);
                 None
             }
         }
@@ -292,7 +292,7 @@ impl Session {
 
     /// Whether the drawing is the program that runs.
     pub fn drawing_runs(&self, project: &Project) -> bool {
-        self.sync == Sync::Same && project.ladder == self.running.ladder
+        self.sync == DrawingSync::Same && project.ladder == self.running.ladder
     }
 
     /// The pace.

@@ -7,7 +7,7 @@ use super::super::theme;
 use super::OnlineState;
 use super::OnlineTab;
 use super::alarms::AlarmList;
-use super::session::Sync;
+use super::session::DrawingSync;
 use crate::gui::context::Context;
 use ladder_engine::machine::MachineCommand;
 use ladder_engine::runner::Speed;
@@ -117,10 +117,10 @@ impl OnlineState {
             _ if s.drawing_runs(doc.project()) => {
                 ui.colored_label(theme::OK, t(Msg::DrawingRuns));
             }
-            Sync::Swapping => {
+            DrawingSync::Swapping => {
                 ui.colored_label(theme::CAUTION, t(Msg::DrawingSwapping));
             }
-            Sync::Refused(en, zh) => {
+            DrawingSync::Refused(en, zh) => {
                 let why = if lang == super::super::i18n::Lang::Zh {
                     zh
                 } else {
@@ -128,7 +128,7 @@ impl OnlineState {
                 };
                 ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::DrawingDiffers)));
             }
-            Sync::Same => {
+            DrawingSync::Same => {
                 ui.colored_label(theme::CAUTION, t(Msg::DrawingDiffers));
             }
         }

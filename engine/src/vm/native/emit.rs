@@ -1,4 +1,4 @@
-//! Code generation: the checked words of a [`Code`] to x86-64, word by word, in one pass.
+//! Code generation: the checked words of an [`Executable`] to x86-64, word by word, in one pass.
 //!
 //! Bit logic is straight-line code on the image, addressed directly (`[rbx + byte]`): a
 //! contact is a `test` and a `setcc` or `cmov`, a coil a masked write into `dl`, a block or
@@ -15,7 +15,9 @@
 //! Subprograms have one copy and never check.
 
 use super::super::IMAGE_BYTES;
-use super::super::code::{C_INVERT, C_LOAD_OR, C_OR, C_PUSH, C_START, CONTACT_END, Code, VmOp};
+use super::super::code::{
+    C_INVERT, C_LOAD_OR, C_OR, C_PUSH, C_START, CONTACT_END, Executable, VmOp,
+};
 use super::asm::{Asm, Cond};
 use super::{
     CTX_BUDGET, CTX_EXIT_KIND, CTX_EXIT_PC, CTX_QUOTA, CTX_STEPS, CTX_WATCHED, Copy, ExitKind,
@@ -74,7 +76,7 @@ pub(super) struct Generated {
 
 struct Gen<'a> {
     asm: Asm,
-    code: &'a Code,
+    code: &'a Executable,
     helper: u64,
     /// Steps executed since the last point where `r14` was brought up to date.
     pending: u32,
@@ -91,7 +93,7 @@ struct Gen<'a> {
 }
 
 /// Generates code for `code`, whose function instructions call `helper`.
-pub(super) fn generate(code: &Code, helper: u64) -> Generated {
+pub(super) fn generate(code: &Executable, helper: u64) -> Generated {
     let words = code.words();
     let mut targets = vec![false; words.len()];
     for &w in words {
@@ -239,7 +241,7 @@ impl Gen<'_> {
             return;
         }
         let Some(vm_op) = VmOp::decode(w) else {
-            unreachable!("Code::checked refused every word without an opcode");
+            unreachable!("Executable::checked refused every word without an opcode");
         };
         if matches!(
             vm_op,

@@ -20,7 +20,7 @@ mod emit;
 mod timer;
 
 use super::cnc::Cnc;
-use super::code::Code;
+use super::code::Executable;
 use super::exec::{Handback, Level};
 use super::functions::{self, Ctx};
 use super::{Halt, Vm};
@@ -170,7 +170,7 @@ impl std::fmt::Debug for Native {
 impl Native {
     /// Generates and maps the code of `code`; `None` where native code is unavailable (see
     /// [`AVAILABLE`]) or the system refuses an executable mapping.
-    pub fn new(code: &Code) -> Option<Native> {
+    pub fn new(code: &Executable) -> Option<Native> {
         if !AVAILABLE {
             return None;
         }
@@ -230,7 +230,7 @@ extern "C" fn call_function(ctx: *mut RunCtx<'_>, index: u32, acc: u32) -> u32 {
     // SAFETY: the generated code passes the context `Vm::run_native` made for this run. Its
     // pointers are the PLC's parts, taken once from one `&mut Vm` that nothing else uses
     // while the native code runs; `index` is a function-instruction word's argument, which
-    // `Code::checked` bounded by the table, and each instance's state index is below the
+    // `Executable::checked` bounded by the table, and each instance's state index is below the
     // state and latch counts the tables were sized with (`Vm::from_program`). The native
     // code holds only the image's address, and this call does not move the image.
     let ctx = unsafe { &mut *ctx };
