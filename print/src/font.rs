@@ -6,11 +6,12 @@ use std::collections::HashMap;
 /// WenQuanYi Micro Hei (a TrueType collection; face 0 is used), for Chinese and Latin alike.
 pub static FONT: &[u8] = include_bytes!("../../assets/fonts/wqy-microhei.ttc");
 
-/// Advance widths of the font's characters, in em, looked up once each.
+/// Advance widths of the font's characters, in em, and their glyphs, looked up once each.
 pub struct Metrics {
     face: ttf_parser::Face<'static>,
     em: f32,
     cache: HashMap<char, f32>,
+    glyphs: HashMap<char, u16>,
 }
 
 impl Metrics {
@@ -22,7 +23,28 @@ impl Metrics {
             face,
             em,
             cache: HashMap::new(),
+            glyphs: HashMap::new(),
         }
+    }
+
+    /// The glyphs that set `text`, one per character with its advance in em and the byte
+    /// range of the character: the same advances [`Metrics::width`] measures, so text is
+    /// printed exactly as wide as the layout made room for. (The labels are plain Chinese and
+    /// Latin, which need no shaping beyond this; a character the font lacks is glyph 0.)
+    pub fn glyphs(&mut self, text: &str) -> Vec<(u16, f32, std::ops::Range<usize>)> {
+        text.char_indices()
+            .map(|(i, c)| {
+                let id = match self.glyphs.get(&c) {
+                    Some(id) => *id,
+                    None => {
+                        let id = self.face.glyph_index(c).map_or(0, |g| g.0);
+                        self.glyphs.insert(c, id);
+                        id
+                    }
+                };
+                (id, self.advance(c), i..i + c.len_utf8())
+            })
+            .collect()
     }
 
     fn advance(&mut self, c: char) -> f32 {

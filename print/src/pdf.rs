@@ -9,7 +9,7 @@ use krilla::geom::{PathBuilder, Point};
 use krilla::num::NormalizedF32;
 use krilla::page::PageSettings;
 use krilla::paint::{Fill, Stroke};
-use krilla::text::{Font, TextDirection};
+use krilla::text::{Font, GlyphId, KrillaGlyph};
 
 /// Why a PDF could not be made.
 #[derive(Debug, thiserror::Error)]
@@ -84,13 +84,30 @@ pub fn pdf(doc: &Document) -> Result<Vec<u8>, PdfError> {
                         opacity: NormalizedF32::ONE,
                         rule: Default::default(),
                     }));
-                    surface.draw_text(
+                    // Glyphs from the layout's own metrics rather than krilla's shaper, which
+                    // builds a shaping face for every text it draws (most of a long print).
+                    let glyphs: Vec<KrillaGlyph> = metrics
+                        .glyphs(text)
+                        .into_iter()
+                        .map(|(id, advance, range)| {
+                            KrillaGlyph::new(
+                                GlyphId::new(u32::from(id)),
+                                advance,
+                                0.0,
+                                0.0,
+                                0.0,
+                                range,
+                                None,
+                            )
+                        })
+                        .collect();
+                    surface.draw_glyphs(
                         Point::from_xy(x - w, *y),
+                        &glyphs,
                         font.clone(),
-                        *size,
                         text,
+                        *size,
                         false,
-                        TextDirection::Auto,
                     );
                 }
             }
