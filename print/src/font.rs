@@ -6,12 +6,11 @@ use std::collections::HashMap;
 /// WenQuanYi Micro Hei (a TrueType collection; face 0 is used), for Chinese and Latin alike.
 pub static FONT: &[u8] = include_bytes!("../../assets/fonts/wqy-microhei.ttc");
 
-/// Advance widths of the font's characters, in em, and their glyphs, looked up once each.
+/// The font's characters' glyphs and advance widths in em, looked up once each.
 pub struct Metrics {
     face: ttf_parser::Face<'static>,
     em: f32,
-    cache: HashMap<char, f32>,
-    glyphs: HashMap<char, u16>,
+    cache: HashMap<char, (u16, f32)>,
 }
 
 impl Metrics {
@@ -23,7 +22,6 @@ impl Metrics {
             face,
             em,
             cache: HashMap::new(),
-            glyphs: HashMap::new(),
         }
     }
 
@@ -34,32 +32,30 @@ impl Metrics {
     pub fn glyphs(&mut self, text: &str) -> Vec<(u16, f32, std::ops::Range<usize>)> {
         text.char_indices()
             .map(|(i, c)| {
-                let id = match self.glyphs.get(&c) {
-                    Some(id) => *id,
-                    None => {
-                        let id = self.face.glyph_index(c).map_or(0, |g| g.0);
-                        self.glyphs.insert(c, id);
-                        id
-                    }
-                };
-                (id, self.advance(c), i..i + c.len_utf8())
+                let (id, advance) = self.glyph(c);
+                (id, advance, i..i + c.len_utf8())
             })
             .collect()
     }
 
-    fn advance(&mut self, c: char) -> f32 {
-        if let Some(a) = self.cache.get(&c) {
-            return *a;
+    /// The glyph of `c` (0 where the font lacks it) and its advance in em.
+    fn glyph(&mut self, c: char) -> (u16, f32) {
+        if let Some(g) = self.cache.get(&c) {
+            return *g;
         }
-        let a = self
-            .face
-            .glyph_index(c)
+        let id = self.face.glyph_index(c);
+        let advance = id
             .and_then(|g| self.face.glyph_hor_advance(g))
             .map_or(if c.is_ascii() { 0.55 } else { 1.0 }, |a| {
                 f32::from(a) / self.em
             });
-        self.cache.insert(c, a);
-        a
+        let g = (id.map_or(0, |g| g.0), advance);
+        self.cache.insert(c, g);
+        g
+    }
+
+    fn advance(&mut self, c: char) -> f32 {
+        self.glyph(c).1
     }
 
     /// The width of `text` at `size` points.

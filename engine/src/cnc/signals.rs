@@ -266,14 +266,26 @@ impl FImage {
     /// Sets signal `s` of PLC axis group `g` (0–3) when `v`.
     #[inline]
     pub fn group(&mut self, g: usize, s: FGroupBit, v: bool) {
-        self.0[usize::from(GROUPS[g] + s.offset)] |= u8::from(v) << s.bit;
+        self.set(
+            FBit {
+                name: s.name,
+                byte: GROUPS[g] + s.offset,
+                bit: s.bit,
+            },
+            v,
+        );
     }
 
     /// Writes the number `s` of PLC axis group `g`, its byte counted from the group's first.
     #[inline]
     pub fn group_put(&mut self, g: usize, s: FValue, v: u32) {
-        let (n, bytes) = (usize::from(GROUPS[g] + s.byte), usize::from(s.bytes));
-        self.0[n..n + bytes].copy_from_slice(&v.to_le_bytes()[..bytes]);
+        self.put(
+            FValue {
+                byte: GROUPS[g] + s.byte,
+                ..s
+            },
+            v,
+        );
     }
 
     /// Merges the owned bits into the PLC's F area, leaving every other bit as it was.
