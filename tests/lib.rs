@@ -21,7 +21,7 @@ pub fn run(args: &[&str]) -> Run {
     let mut full = vec!["ladder-studio"];
     full.extend_from_slice(args);
     // In the C locale, whatever the machine's: the messages are English unless `--lang zh`.
-    let code = ladder_studio::cli::run_in(full, "C", &mut out, &mut err);
+    let code = ladder_cli::run_in(full, "C", &mut out, &mut err);
     Run {
         code,
         stdout: String::from_utf8(out).expect("UTF-8 output"),

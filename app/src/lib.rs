@@ -1,7 +1,5 @@
-//! Ladder Studio: the desktop editor and the command-line subcommands. All code lives in
-//! this library so that tests drive it without a process or a window; `main.rs` only passes
-//! the arguments in.
+//! Ladder Studio's desktop editor. All its code lives in this library so that tests drive it
+//! without a window; `main.rs` hands the arguments to the command line (`ladder_cli`), which
+//! opens this editor when no subcommand is given.
 
-mod atomic;
-pub mod cli;
 pub mod gui;

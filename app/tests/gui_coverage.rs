@@ -15,7 +15,7 @@ fn lathe_with_coverage() -> (PathBuf, PathBuf) {
     let ldp = dir.join("lathe-988ta.ldp");
     std::fs::copy(root.join("lathe-988ta.ldp"), &ldp).unwrap();
     let json = dir.join("lathe.json");
-    let code = ladder_studio::cli::run_in(
+    let code = ladder_cli::run_in(
         [
             "ladder-studio",
             "test",

@@ -106,7 +106,7 @@ fn remove_copy(copy: &Path) {
 /// Writes `text` to `path` through a temporary file in the same folder and a rename, so a
 /// crash leaves the old file or the new one.
 pub(crate) fn write_atomic(path: &Path, text: &str) -> std::io::Result<()> {
-    crate::atomic::write_atomic(path, text.as_bytes())
+    ladder_engine::file::write_atomic(path, text.as_bytes())
 }
 
 impl FileState {

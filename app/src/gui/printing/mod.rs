@@ -223,9 +223,10 @@ impl PrintState {
             let mut result = Ok(ladder_print::svg_page_path(path, 0, count));
             for (i, page) in doc.pages.iter().enumerate() {
                 let p = ladder_print::svg_page_path(path, i, count);
-                if let Err(e) =
-                    crate::atomic::write_atomic(&p, ladder_print::page_svg(&doc, page).as_bytes())
-                {
+                if let Err(e) = ladder_engine::file::write_atomic(
+                    &p,
+                    ladder_print::page_svg(&doc, page).as_bytes(),
+                ) {
                     result = Err(e);
                     break;
                 }
@@ -233,7 +234,9 @@ impl PrintState {
             result
         } else {
             match ladder_print::pdf(&doc) {
-                Ok(bytes) => crate::atomic::write_atomic(path, &bytes).map(|()| path.to_path_buf()),
+                Ok(bytes) => {
+                    ladder_engine::file::write_atomic(path, &bytes).map(|()| path.to_path_buf())
+                }
                 Err(e) => {
                     return cx
                         .output

@@ -79,7 +79,7 @@ impl Outputs<'_> {
             let name = project
                 .file_name()
                 .map_or(String::new(), |n| n.to_string_lossy().into_owned());
-            crate::atomic::write_atomic(path, html(c, &name, say).as_bytes())
+            ladder_engine::file::write_atomic(path, html(c, &name, say).as_bytes())
                 .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))?;
         }
         Ok(())
@@ -104,7 +104,7 @@ pub(super) fn writable(path: &Path, say: Say) -> anyhow::Result<()> {
 
 /// Writes a coverage report as JSON (atomically).
 fn write(path: &Path, c: &Coverage, say: Say) -> anyhow::Result<()> {
-    crate::atomic::write_atomic(path, c.to_json().as_bytes())
+    ladder_engine::file::write_atomic(path, c.to_json().as_bytes())
         .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))
 }
 

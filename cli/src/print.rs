@@ -2,8 +2,8 @@
 
 use super::say::Say;
 use super::source::project_of;
-use crate::atomic::write_atomic;
 use clap::ValueEnum;
+use ladder_engine::file::write_atomic;
 use ladder_print::{Blocks, Labels, Lang, Options, Paper};
 use std::io::Write;
 use std::path::{Path, PathBuf};

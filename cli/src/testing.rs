@@ -378,7 +378,7 @@ pub(super) fn test(
     let _ = writeln!(out, "{}", say.passed(passed, failed));
     if let Some(path) = junit_out {
         let xml = junit(project, &cases, &results);
-        crate::atomic::write_atomic(path, xml.as_bytes())
+        ladder_engine::file::write_atomic(path, xml.as_bytes())
             .map_err(|e| anyhow::anyhow!(say.cannot_write(path, e)))?;
     }
     if results.iter().any(|r| r.stopped) {

@@ -4,10 +4,10 @@
 //! The shape of every line stays the same in both languages (`PATH:…: error: MESSAGE
 //! [CODE]`), so scripts that read `check`'s output read it in either.
 
-use crate::gui::errors::file_error;
-use crate::gui::i18n::Lang;
 use ladder_engine::compiler::{Compiled, Diagnostic};
 use ladder_engine::file::FileError;
+use ladder_text::Lang;
+use ladder_text::errors::file_error;
 use std::fmt::Display;
 use std::path::Path;
 

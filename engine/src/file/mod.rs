@@ -2,6 +2,10 @@
 //! version and a CRC-32 of the body, then the project serialized as RON. This is the engine's
 //! only I/O.
 
+mod atomic;
+
+pub use atomic::write_atomic;
+
 use crate::model::Project;
 use std::fs;
 use std::io::Write;

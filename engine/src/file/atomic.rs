@@ -9,7 +9,7 @@ use std::path::Path;
 /// (`file::write_target`, `file::keep_mode`). A target that is no regular file (a device such
 /// as `/dev/stdout`, a pipe) is written in place: it holds no old content to keep whole, and
 /// renaming over it would replace it.
-pub(crate) fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     // Asked of the name as given: the system follows `/dev/stdout` to a pipe that has no
     // path of its own.
     if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
@@ -18,7 +18,7 @@ pub(crate) fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
             .open(path)
             .and_then(|mut f| f.write_all(bytes));
     }
-    let target = ladder_engine::file::write_target(path);
+    let target = super::write_target(path);
     let path = target.as_path();
     let name = path
         .file_name()
@@ -28,7 +28,7 @@ pub(crate) fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let written = std::fs::File::create(&tmp).and_then(|mut f| {
         f.write_all(bytes)?;
         f.sync_all()?;
-        ladder_engine::file::keep_mode(path, &tmp)
+        super::keep_mode(path, &tmp)
     });
     written
         .and_then(|()| std::fs::rename(&tmp, path))

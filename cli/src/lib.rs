@@ -181,16 +181,54 @@ pub enum CliCommand {
 
 /// Runs the command line; returns the exit code. Messages are in the system locale's
 /// language unless `--lang` says otherwise.
-pub fn run<I, T>(args: I, out: &mut dyn Write, err: &mut dyn Write) -> i32
+pub fn run<I, T>(args: I, editor: Editor<'_>, out: &mut dyn Write, err: &mut dyn Write) -> i32
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    run_in(args, &Say::system_locale(), out, err)
+    run_with(args, &Say::system_locale(), editor, out, err)
 }
 
-/// Runs the command line as in `locale` (tests give one, so they read the same everywhere).
+/// Runs the command line as in `locale` (tests give one, so they read the same everywhere),
+/// without an editor: the subcommands only.
 pub fn run_in<I, T>(args: I, locale: &str, out: &mut dyn Write, err: &mut dyn Write) -> i32
+where
+    I: IntoIterator<Item = T>,
+    T: Into<OsString> + Clone,
+{
+    run_with(
+        args,
+        locale,
+        &|_| Err(anyhow::anyhow!("no editor in this program")),
+        out,
+        err,
+    )
+}
+
+/// What the editor opens when no subcommand is given.
+pub struct Start {
+    /// The project to open.
+    pub project: Option<PathBuf>,
+    /// Go online and run at once.
+    pub run: bool,
+    /// An NC program to load and start from the operator panel.
+    pub nc: Option<String>,
+    /// The UI language asked for on the command line (else the saved setting).
+    pub lang: Option<ladder_text::Lang>,
+}
+
+/// Opens the editor window on a [`Start`] and blocks until it closes. The binary passes the
+/// window in, so this crate and its tests do not link the GUI.
+pub type Editor<'a> = &'a dyn Fn(Start) -> anyhow::Result<()>;
+
+/// Runs the command line as in `locale`, opening `editor` when no subcommand is given.
+pub fn run_with<I, T>(
+    args: I,
+    locale: &str,
+    editor: Editor<'_>,
+    out: &mut dyn Write,
+    err: &mut dyn Write,
+) -> i32
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
@@ -222,7 +260,7 @@ where
         return 2;
     }
     let result = match cli.command {
-        None => open_editor(cli, say, err),
+        None => open_editor(cli, say, editor, err),
         Some(CliCommand::Check { path }) => check(&path, say, out),
         Some(CliCommand::ExportIl { path, output }) => {
             export_il(&path, output.as_deref(), say, out, err)
@@ -313,7 +351,7 @@ where
 
 /// Without a subcommand: the editor, on PROJECT (online with `--run`), once the options
 /// are known to be usable.
-fn open_editor(cli: Cli, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
+fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> anyhow::Result<i32> {
     if let Some(p) = &cli.project
         && !p.exists()
     {
@@ -359,19 +397,19 @@ fn open_editor(cli: Cli, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
         );
         return Ok(2);
     }
-    let start = crate::gui::Start {
+    let start = Start {
         project: cli.project,
         run: cli.run,
         nc,
         lang: cli.lang.as_deref().map(|l| {
             if l == "zh" {
-                crate::gui::i18n::Lang::Zh
+                ladder_text::Lang::Zh
             } else {
-                crate::gui::i18n::Lang::En
+                ladder_text::Lang::En
             }
         }),
     };
-    crate::gui::run(start).map(|()| 0)
+    editor(start).map(|()| 0)
 }
 
 fn check(path: &Path, say: Say, out: &mut dyn Write) -> anyhow::Result<i32> {
@@ -427,7 +465,7 @@ fn write_output(
     out: &mut dyn Write,
 ) -> anyhow::Result<()> {
     match output {
-        Some(o) => crate::atomic::write_atomic(o, text.as_bytes())
+        Some(o) => ladder_engine::file::write_atomic(o, text.as_bytes())
             .map_err(|e| anyhow::anyhow!(say.cannot_write(o, e))),
         None => {
             let _ = out.write_all(text.as_bytes());

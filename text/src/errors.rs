@@ -1,0 +1,206 @@
+//! The engine's typed errors in the user's language: an edit, an operand, an address, a project
+//! file or a subprogram command refused.
+
+use crate::{Lang, Msg};
+use ladder_engine::address::AddressError;
+use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
+use ladder_engine::model::{EditError, OperandError, SubError};
+
+/// Why the engine refused a ladder edit.
+pub fn edit_error(e: &EditError, lang: Lang) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Zh => match e {
+            EditError::NoSuchPlace(what) => format!("这个位置不存在（{what}）"),
+            EditError::WrongColumn(why) => format!("元件不能放在这一列：{why}"),
+            EditError::FixedBlock => "一级程序和二级程序总是存在；只能增删子程序".to_string(),
+            EditError::LastRow => "网络至少保留一行；要删除请删除整个网络".to_string(),
+            EditError::NothingAbove => "并联触点需要上一行有元件".to_string(),
+            EditError::WrongWidth(w) => format!("网络与本梯形图的宽度不同：{w}"),
+        },
+    }
+}
+
+/// Why the operand prompt refused its text.
+pub fn operand_error(e: &OperandError, lang: Lang) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Zh => match e {
+            OperandError::Empty => "缺少操作数".to_string(),
+            OperandError::Number(s) => format!("`{s}` 不是数字（请写 12、-5、0x1F 或 1.5）"),
+            OperandError::Address(e) => address_error(e),
+            OperandError::Unrecognised(s) => {
+                format!("`{s}` 既不是地址、常数，也不是符号名")
+            }
+        },
+    }
+}
+
+/// An address refused, in Chinese (the English is the error's own text).
+fn address_error(e: &AddressError) -> String {
+    match e {
+        AddressError::Syntax(s) => {
+            format!("`{s}` 不是地址（例如 X0002.1、R100、D4、DT0004）")
+        }
+        AddressError::UnknownArea(s, a) => {
+            format!("`{s}` 没有地址区 `{a}`（地址区：X Y F G R A K T C DT DC D L P）")
+        }
+        AddressError::Bit(s) => format!("`{s}`：位号必须为 0–7"),
+        AddressError::NoBits(s, area) => {
+            format!("`{s}`：{area} 地址没有位（只有 X Y F G R A K 有位）")
+        }
+        AddressError::Range { text, area, lo, hi } => {
+            format!("{text} 超出范围（{area}{lo}–{area}{hi}）")
+        }
+    }
+}
+
+/// Why a project file could not be read or written (docs/files.md, "Project files (.ldp)").
+/// What comes from outside the engine (the system's I/O error, the RON parser's message, the
+/// structure check's detail) stays as it was said.
+pub fn file_error(e: &FileError, lang: Lang) -> String {
+    match lang {
+        Lang::En => e.to_string(),
+        Lang::Zh => match e {
+            FileError::Io { path, source } => {
+                format!("{}：文件读写失败（{source}）", path.display())
+            }
+            FileError::Foreign => format!(
+                "不是 Ladder Studio 工程文件：第一行必须以 `{MAGIC} v<版本> crc32=<8 位十六进制数>` 开头"
+            ),
+            FileError::Damaged(h) => format!(
+                "第 1 行：工程文件已损坏：文件头 `{h}` 应以 `{MAGIC}` 开头；请用旁边的 .bak 文件恢复，或只读打开以恢复剩余内容"
+            ),
+            FileError::ByteOrderMark => "工程文件以字节顺序标记（EF BB BF）开头，Ladder Studio 从不写入它：是文本编辑器加上的；请另存为不带 BOM 的 UTF-8，或用 .bak 文件恢复".into(),
+            FileError::LineEnds { intact: true } => "工程文件使用 Windows 换行符（CR LF），Ladder Studio 从不这样写：是文本工具或 git 转换的；内容完好，请转换回来（dos2unix 文件名，或设置 git config core.autocrlf false 后重新检出）".into(),
+            FileError::LineEnds { intact: false } => "工程文件使用 Windows 换行符（CR LF），Ladder Studio 从不这样写，而且内容另有改动；请用 .bak 文件恢复，或只读打开以恢复剩余内容".into(),
+            FileError::FinalNewline { intact: true } => "工程文件缺少结尾的换行符：是编辑器删掉的，其他内容未变；请在文件末尾加一个换行".into(),
+            FileError::FinalNewline { intact: false } => "工程文件缺少结尾的换行符：文件被截短了；请用 .bak 文件恢复，或只读打开以恢复剩余内容".into(),
+            FileError::Schema {
+                version,
+                line,
+                column,
+                message,
+            } => format!(
+                "第 1 行写的是格式版本 {version}，但内容不是版本 {version} 的工程（第 {line} 行第 {column} 列：{message}）：文件头被改动过；请用 .bak 文件恢复，或只读打开"
+            ),
+            FileError::Header(h) => format!(
+                "第 1 行：文件头格式错误 `{h}`：应为 `{MAGIC} v<版本> crc32=<8 位十六进制数>`"
+            ),
+            FileError::Version { found } => format!(
+                "第 1 行：文件格式版本 {found} 比本程序能读的（最高 {SCHEMA_VERSION}）新；请升级 Ladder Studio"
+            ),
+            FileError::Checksum { expected, actual } => format!(
+                "校验和不符：文件头为 crc32={expected:08x}，文件为 {actual:08x}；文件已损坏或被手工修改（可只读打开，恢复剩余内容）"
+            ),
+            FileError::Body {
+                line,
+                column,
+                message,
+            } => format!("第 {line} 行第 {column} 列：工程内容无法读取（{message}）"),
+            FileError::Encoding(b) => format!("文件不是 UTF-8 文本（第 {b} 字节）"),
+            FileError::Structure(m) => format!("梯形图结构错误：{m}"),
+        },
+    }
+}
+
+/// Why a subprogram command was refused.
+pub fn sub_error(e: &SubError, lang: Lang) -> String {
+    match (lang, e) {
+        (Lang::En, e) => e.to_string(),
+        (Lang::Zh, SubError::Usage { lo, hi }) => {
+            format!("{}: P{lo:04}–P{hi:04}", Msg::SubUsage.text(lang))
+        }
+        (Lang::Zh, SubError::BadName(name)) => {
+            format!("`{name}`: {}", Msg::BadSymbolName.text(lang))
+        }
+        (Lang::Zh, SubError::Exists(n)) => format!("P{n:04}: {}", Msg::SubExists.text(lang)),
+        (Lang::Zh, SubError::NoSuch(n)) => format!("P{n:04}: {}", Msg::NoSuchSub.text(lang)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn has_cjk(s: &str) -> bool {
+        s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
+    }
+
+    #[test]
+    fn every_operand_error_reads_in_chinese_in_a_chinese_ui() {
+        for text in ["", "12x", "X1.9", "X1.0.0", "D4.1", "R99999", "1ST?"] {
+            let e = ladder_engine::model::Operand::parse(text).unwrap_err();
+            let zh = operand_error(&e, Lang::Zh);
+            assert!(has_cjk(&zh), "{text}: {zh}");
+            assert_eq!(operand_error(&e, Lang::En), e.to_string());
+        }
+        let e = OperandError::Address(AddressError::UnknownArea("Q1".into(), "Q".into()));
+        assert!(has_cjk(&operand_error(&e, Lang::Zh)));
+    }
+
+    #[test]
+    fn every_file_error_reads_in_chinese_in_a_chinese_ui() {
+        let io = std::io::Error::new(std::io::ErrorKind::NotFound, "not found");
+        for e in [
+            FileError::Io {
+                path: "a.ldp".into(),
+                source: io,
+            },
+            FileError::Foreign,
+            FileError::Header("LADDER".into()),
+            FileError::Version { found: 9 },
+            FileError::Checksum {
+                expected: 1,
+                actual: 2,
+            },
+            FileError::Body {
+                line: 3,
+                column: 4,
+                message: "expected `)`".into(),
+            },
+            FileError::Encoding(7),
+            FileError::Structure("row 1 has 10 cells".into()),
+            FileError::Damaged("LADDER-STUDIO-PROJECX v3".into()),
+            FileError::ByteOrderMark,
+            FileError::LineEnds { intact: true },
+            FileError::LineEnds { intact: false },
+            FileError::FinalNewline { intact: true },
+            FileError::FinalNewline { intact: false },
+            FileError::Schema {
+                version: 1,
+                line: 4,
+                column: 2,
+                message: "unexpected field".into(),
+            },
+        ] {
+            let zh = file_error(&e, Lang::Zh);
+            assert!(has_cjk(&zh), "{zh}");
+            assert_eq!(file_error(&e, Lang::En), e.to_string());
+        }
+        let v = file_error(&FileError::Version { found: 9 }, Lang::Zh);
+        assert!(
+            v.contains('9') && v.contains(&SCHEMA_VERSION.to_string()),
+            "{v}"
+        );
+    }
+
+    #[test]
+    fn every_refusal_reads_in_chinese_in_a_chinese_ui() {
+        for e in [
+            EditError::NoSuchPlace("row"),
+            EditError::WrongColumn("a coil belongs in the output column"),
+            EditError::FixedBlock,
+            EditError::LastRow,
+            EditError::NothingAbove,
+            EditError::WrongWidth("9 columns".into()),
+        ] {
+            let zh = edit_error(&e, Lang::Zh);
+            assert!(
+                zh.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c)),
+                "{zh}"
+            );
+            assert_eq!(edit_error(&e, Lang::En), e.to_string());
+        }
+    }
+}
