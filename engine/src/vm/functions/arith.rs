@@ -16,18 +16,21 @@ fn fits(v: i64, bytes: u32) -> bool {
 /// latched (a good result clears it).
 #[inline]
 pub(super) fn addb_subb(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    if bit(mem, a[3]) {
-        set_bit(mem, a[5], false);
+    let [data_size, first, second, reset, result, error_out, ..] = &f.args;
+    if bit(mem, *reset) {
+        set_bit(mem, *error_out, false);
     } else if act {
-        let n = size(a[0]);
-        let (x, y) = (i64::from(int(mem, a[1], n)), i64::from(int(mem, a[2], n)));
+        let n = size(*data_size);
+        let (x, y) = (
+            i64::from(int(mem, *first, n)),
+            i64::from(int(mem, *second, n)),
+        );
         let r = if f.op == FnOp::Addb { x + y } else { x - y };
         if fits(r, n) {
-            put(mem, a[4], n, r as i32);
-            set_bit(mem, a[5], false);
+            put(mem, *result, n, r as i32);
+            set_bit(mem, *error_out, false);
         } else {
-            set_bit(mem, a[5], true);
+            set_bit(mem, *error_out, true);
         }
     }
 }
@@ -35,17 +38,17 @@ pub(super) fn addb_subb(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// ADDR / SUBR IN1 IN2 RST OUT ERR: real sum or difference; ERR not latched.
 #[inline]
 pub(super) fn addr_subr(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    if bit(mem, a[2]) {
-        set_bit(mem, a[4], false);
+    let [first, second, reset, result, error_out, ..] = &f.args;
+    if bit(mem, *reset) {
+        set_bit(mem, *error_out, false);
     } else if act {
-        let (x, y) = (real(mem, a[0]), real(mem, a[1]));
+        let (x, y) = (real(mem, *first), real(mem, *second));
         let r = if f.op == FnOp::Addr { x + y } else { x - y };
         if r.is_finite() {
-            put_real(mem, a[3], r);
-            set_bit(mem, a[4], false);
+            put_real(mem, *result, r);
+            set_bit(mem, *error_out, false);
         } else {
-            set_bit(mem, a[4], true);
+            set_bit(mem, *error_out, true);
         }
     }
 }
@@ -54,23 +57,26 @@ pub(super) fn addr_subr(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// 4 bytes; ERR latched.
 #[inline]
 pub(super) fn mulb_divb(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    if bit(mem, a[2]) {
-        put(mem, a[3], 4, 0);
-        set_bit(mem, a[4], false);
+    let [first, second, reset, result, error_out, ..] = &f.args;
+    if bit(mem, *reset) {
+        put(mem, *result, 4, 0);
+        set_bit(mem, *error_out, false);
     } else if act {
-        let (x, y) = (uint(mem, a[0], 2) & 0xFFFF, uint(mem, a[1], 2) & 0xFFFF);
+        let (x, y) = (
+            uint(mem, *first, 2) & 0xFFFF,
+            uint(mem, *second, 2) & 0xFFFF,
+        );
         if f.op == FnOp::Mulb {
             let p = u64::from(x) * u64::from(y);
             if p > 2_147_483_647 {
-                set_bit(mem, a[4], true);
+                set_bit(mem, *error_out, true);
             } else {
-                put(mem, a[3], 4, p as i32);
+                put(mem, *result, 4, p as i32);
             }
         } else {
             match (x.checked_div(y), x.checked_rem(y)) {
-                (Some(q), Some(r)) => put(mem, a[3], 4, (q | r << 16) as i32),
-                _ => set_bit(mem, a[4], true),
+                (Some(q), Some(r)) => put(mem, *result, 4, (q | r << 16) as i32),
+                _ => set_bit(mem, *error_out, true),
             }
         }
     }
@@ -79,17 +85,17 @@ pub(super) fn mulb_divb(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// MULR / DIVR IN1 IN2 RST OUT ERR: real product or quotient; ERR latched.
 #[inline]
 pub(super) fn mulr_divr(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    if bit(mem, a[2]) {
-        put(mem, a[3], 4, 0);
-        set_bit(mem, a[4], false);
+    let [first, second, reset, result, error_out, ..] = &f.args;
+    if bit(mem, *reset) {
+        put(mem, *result, 4, 0);
+        set_bit(mem, *error_out, false);
     } else if act {
-        let (x, y) = (real(mem, a[0]), real(mem, a[1]));
+        let (x, y) = (real(mem, *first), real(mem, *second));
         let r = if f.op == FnOp::Mulr { x * y } else { x / y };
         if r.is_finite() && !(f.op == FnOp::Divr && y == 0.0) {
-            put_real(mem, a[3], r);
+            put_real(mem, *result, r);
         } else {
-            set_bit(mem, a[4], true);
+            set_bit(mem, *error_out, true);
         }
     }
 }
@@ -97,28 +103,27 @@ pub(super) fn mulr_divr(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// SIN / COS / TAN / SQRT / DTR / ROUND IN OUT RST ERR: one real function of IN; ERR latched.
 #[inline]
 pub(super) fn real_function(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    // Operands: IN, OUT, RST, ERR.
-    if bit(mem, a[2]) {
-        set_bit(mem, a[3], false);
+    let [input, result, reset, error_out, ..] = &f.args;
+    if bit(mem, *reset) {
+        set_bit(mem, *error_out, false);
         return;
     }
     if !act {
         return;
     }
     if f.op == FnOp::Dtr {
-        let v = int(mem, a[0], 4);
-        put_real(mem, a[1], v as f32);
+        let v = int(mem, *input, 4);
+        put_real(mem, *result, v as f32);
         return;
     }
-    let x = real(mem, a[0]);
+    let x = real(mem, *input);
     if f.op == FnOp::Round {
         let r = x.round();
         // Compared in f64: 2147483647 is not representable in f32 (it rounds to 2^31).
         if r.is_nan() || f64::from(r).abs() > 2_147_483_647.0 {
-            set_bit(mem, a[3], true);
+            set_bit(mem, *error_out, true);
         } else {
-            put(mem, a[1], 4, r as i32);
+            put(mem, *result, 4, r as i32);
         }
         return;
     }
@@ -130,8 +135,8 @@ pub(super) fn real_function(f: &FnCall, act: bool, mem: &mut [u8]) {
         _ => x.sqrt(),
     };
     if r.is_finite() {
-        put_real(mem, a[1], r);
+        put_real(mem, *result, r);
     } else {
-        set_bit(mem, a[3], true);
+        set_bit(mem, *error_out, true);
     }
 }

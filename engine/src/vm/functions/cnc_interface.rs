@@ -7,10 +7,12 @@ use super::{Arg, Cnc, Ctx, FnCall, InstState, Loc, bit, element, int, memory, pu
 /// axis's machine position is in.
 #[inline]
 pub(super) fn psgnl(f: &FnCall, act: bool, mem: &mut [u8], cnc: &dyn Cnc) {
-    let a = &f.args;
+    let [axis_number, boundary_table, zone_out, error_out, ..] = &f.args;
     if act {
-        let axis = uint(mem, a[0], 1);
-        let Arg::Loc(area) = a[1] else { return };
+        let axis = uint(mem, *axis_number, 1);
+        let Arg::Loc(area) = *boundary_table else {
+            return;
+        };
         let mut bounds = [0i64; 7];
         for (k, b) in bounds.iter_mut().enumerate() {
             *b = element(area, k as u32, 4).map_or(0, |e| i64::from(memory::read(mem, e, 4)));
@@ -19,12 +21,12 @@ pub(super) fn psgnl(f: &FnCall, act: bool, mem: &mut [u8], cnc: &dyn Cnc) {
         match cnc.machine_position(axis) {
             Some(pos) if ascending => {
                 let zone = 1 + bounds.iter().filter(|b| **b <= pos).count() as u32;
-                put(mem, a[2], 1, 1 << (8 - zone));
-                set_bit(mem, a[3], false);
+                put(mem, *zone_out, 1, 1 << (8 - zone));
+                set_bit(mem, *error_out, false);
             }
             _ => {
-                put(mem, a[2], 1, 0);
-                set_bit(mem, a[3], true);
+                put(mem, *zone_out, 1, 0);
+                set_bit(mem, *error_out, true);
             }
         }
     }
@@ -33,18 +35,21 @@ pub(super) fn psgnl(f: &FnCall, act: bool, mem: &mut [u8], cnc: &dyn Cnc) {
 /// PSGN2 AXIS MIN MAX OUT ERR: OUT := MIN ≤ the axis's machine position ≤ MAX.
 #[inline]
 pub(super) fn psgn2(f: &FnCall, act: bool, mem: &mut [u8], cnc: &dyn Cnc) {
-    let a = &f.args;
+    let [axis_number, minimum, maximum, inside, error_out, ..] = &f.args;
     if act {
-        let axis = uint(mem, a[0], 1);
-        let (lo, hi) = (i64::from(int(mem, a[1], 4)), i64::from(int(mem, a[2], 4)));
+        let axis = uint(mem, *axis_number, 1);
+        let (lo, hi) = (
+            i64::from(int(mem, *minimum, 4)),
+            i64::from(int(mem, *maximum, 4)),
+        );
         match cnc.machine_position(axis) {
             Some(pos) if lo >= 0 && lo <= hi => {
-                set_bit(mem, a[3], lo <= pos && pos <= hi);
-                set_bit(mem, a[4], false);
+                set_bit(mem, *inside, lo <= pos && pos <= hi);
+                set_bit(mem, *error_out, false);
             }
             _ => {
-                set_bit(mem, a[3], false);
-                set_bit(mem, a[4], true);
+                set_bit(mem, *inside, false);
+                set_bit(mem, *error_out, true);
             }
         }
     }
@@ -53,19 +58,21 @@ pub(super) fn psgn2(f: &FnCall, act: bool, mem: &mut [u8], cnc: &dyn Cnc) {
 /// WINDR IN ERR: a window call on the D block at IN, at once for a high-speed function, over
 /// two scans (latch, then apply) for a low-speed one.
 pub(super) fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
-    let a = &f.args;
+    let [window_block, done, ..] = &f.args;
     if !act {
-        set_bit(cx.mem, a[1], false);
+        set_bit(cx.mem, *done, false);
         st.phase = 0;
         st.prev_act = false;
         return;
     }
-    let Arg::Loc(head) = a[0] else { return };
+    let Arg::Loc(head) = *window_block else {
+        return;
+    };
     let start = head.off as usize;
     let end = cx.d_range.end;
     let slots = (end.saturating_sub(start)) / 4;
     if slots < 6 {
-        set_bit(cx.mem, a[1], true);
+        set_bit(cx.mem, *done, true);
         return;
     }
     let function = memory::read(cx.mem, head, 4);
@@ -83,7 +90,7 @@ pub(super) fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
         for (k, v) in block.iter().enumerate() {
             memory::write(cx.mem, slot(k), 4, *v);
         }
-        set_bit(cx.mem, a[1], true);
+        set_bit(cx.mem, *done, true);
         st.prev_act = true;
         return;
     }
@@ -97,7 +104,7 @@ pub(super) fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
                 *v = memory::read(cx.mem, slot(k), 4);
             }
             st.phase = 1;
-            set_bit(cx.mem, a[1], false);
+            set_bit(cx.mem, *done, false);
         }
         1 => {
             let latch = &mut cx.latch[..n];
@@ -108,7 +115,7 @@ pub(super) fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
                 memory::write(cx.mem, slot(k), 4, v);
             }
             st.phase = 2;
-            set_bit(cx.mem, a[1], true);
+            set_bit(cx.mem, *done, true);
         }
         _ => {}
     }
@@ -119,9 +126,18 @@ pub(super) fn windr(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
 /// reports its end and errors while ACT stays 1; a command abandoned when ACT falls is
 /// stopped through the block-stop signal.
 pub(super) fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>) {
-    let a = &f.args;
+    let [
+        group_number,
+        command,
+        data1,
+        data2,
+        reset,
+        finished,
+        error_out,
+        ..,
+    ] = &f.args;
     let mem = &mut *cx.mem;
-    let group = uint(mem, a[0], 1);
+    let group = uint(mem, *group_number, 1);
     let valid = (1..=4).contains(&group);
     let base = cx.g_base + 140 + 10 * group.saturating_sub(1);
     let g = |k: u32| Loc {
@@ -135,8 +151,8 @@ pub(super) fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
         }
     };
     if !valid {
-        set_bit(mem, a[6], act);
-        set_bit(mem, a[5], false);
+        set_bit(mem, *error_out, act);
+        set_bit(mem, *finished, false);
         st.prev_act = act;
         return;
     }
@@ -147,12 +163,12 @@ pub(super) fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
             // ESBK from an earlier abandoned command is withdrawn (docs/plc.md, "Choices where
             // the manual is silent": the manual only says when it is set; left at 1 it would
             // stop every later command).
-            let cmd = uint(mem, a[1], 1) as u8 & 0x7F;
+            let cmd = uint(mem, *command, 1) as u8 & 0x7F;
             if let Some(x) = mem.get_mut((base + 1) as usize) {
                 *x = (*x & 0x80) | cmd;
             }
-            let dt1 = int(mem, a[2], 2);
-            let dt2 = int(mem, a[3], 4);
+            let dt1 = int(mem, *data1, 2);
+            let dt2 = int(mem, *data2, 4);
             memory::write(mem, g(2), 2, dt1);
             memory::write(mem, g(4), 4, dt2);
             let ebuf = mem.get(base as usize).is_some_and(|x| x >> 7 & 1 == 1);
@@ -170,13 +186,13 @@ pub(super) fn axctl(f: &FnCall, act: bool, st: &mut InstState, cx: &mut Ctx<'_>)
         if status.ended {
             st.phase = 0;
         }
-        let rst = bit(mem, a[4]);
+        let rst = bit(mem, *reset);
         set_g_bit(mem, 0, 6, rst);
-        set_bit(mem, a[5], status.ended || rst);
-        set_bit(mem, a[6], status.error);
+        set_bit(mem, *finished, status.ended || rst);
+        set_bit(mem, *error_out, status.error);
     } else if st.prev_act {
-        set_bit(mem, a[5], false);
-        set_bit(mem, a[6], false);
+        set_bit(mem, *finished, false);
+        set_bit(mem, *error_out, false);
         set_g_bit(mem, 0, 6, false);
         let ebuf = mem.get(base as usize).is_some_and(|x| x >> 7 & 1 == 1);
         if st.phase == 1 && !cx.cnc.axis_status(group as u8, ebuf).ended {

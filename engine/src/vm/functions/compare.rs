@@ -14,13 +14,13 @@ fn three_bits(mem: &mut [u8], out: Arg, which: u32) {
 /// CMP SIZE IN1 IN2 OUT: IN1 > IN2, =, < as signed integers of SIZE.
 #[inline]
 pub(super) fn cmp(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, first, second, result_bits, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let (x, y) = (int(mem, a[1], n), int(mem, a[2], n));
+        let n = size(*data_size);
+        let (x, y) = (int(mem, *first, n), int(mem, *second, n));
         three_bits(
             mem,
-            a[3],
+            *result_bits,
             if x > y {
                 0
             } else if x == y {
@@ -35,13 +35,13 @@ pub(super) fn cmp(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// CMPR IN1 IN2 OUT: CMP on reals.
 #[inline]
 pub(super) fn cmpr(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [first, second, result_bits, ..] = &f.args;
     if act {
-        let (x, y) = (real(mem, a[0]), real(mem, a[1]));
+        let (x, y) = (real(mem, *first), real(mem, *second));
         // A NaN compares as "less" (docs/plc.md, function instructions).
         three_bits(
             mem,
-            a[2],
+            *result_bits,
             if x > y {
                 0
             } else if x == y {
@@ -56,13 +56,17 @@ pub(super) fn cmpr(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// ZCP SIZE IN1 IN2 IN3 OUT: IN3 below the zone IN1…IN2, inside it, or above it.
 #[inline]
 pub(super) fn zcp(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, lower, upper, value, result_bits, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let (lo, hi, v) = (int(mem, a[1], n), int(mem, a[2], n), int(mem, a[3], n));
+        let n = size(*data_size);
+        let (lo, hi, v) = (
+            int(mem, *lower, n),
+            int(mem, *upper, n),
+            int(mem, *value, n),
+        );
         three_bits(
             mem,
-            a[4],
+            *result_bits,
             if lo > v {
                 0
             } else if v > hi {

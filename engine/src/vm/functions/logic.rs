@@ -5,27 +5,44 @@ use super::{Arg, FnCall, FnOp, bit, int, put, set_bit, size, uint};
 
 /// ROTB FMT CNT SIZE IN_W IN_D OUTE OUTO: which way and how far a turret turns to its target.
 pub(super) fn rotb(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [
+        format,
+        positions,
+        data_size,
+        current_pos,
+        target_pos,
+        position_out,
+        direction_out,
+        ..,
+    ] = &f.args;
     if !act {
         return;
     }
-    let fmt = match a[0] {
+    let fmt = match *format {
         Arg::Int(v) => v,
         _ => 0,
     };
     let digit = |k: u32| (fmt / 10i32.pow(k)) % 10 == 1;
     let (rn1, shortest, before, steps_out) = (digit(0), digit(1), digit(2), digit(3));
-    let n = size(a[2]);
-    let cnt = uint(mem, a[1], n) as i64;
-    let (cur, target) = (uint(mem, a[3], n) as i64, uint(mem, a[4], n) as i64);
+    let n = size(*data_size);
+    let cnt = uint(mem, *positions, n) as i64;
+    let (cur, target) = (
+        uint(mem, *current_pos, n) as i64,
+        uint(mem, *target_pos, n) as i64,
+    );
     let first = i64::from(rn1);
     let valid = |p: i64| p >= first && p < first + cnt;
     if cnt <= 0 || !valid(cur) || !valid(target) {
         return;
     }
     if cur == target {
-        put(mem, a[5], n, if steps_out { 0 } else { target as i32 });
-        set_bit(mem, a[6], false);
+        put(
+            mem,
+            *position_out,
+            n,
+            if steps_out { 0 } else { target as i32 },
+        );
+        set_bit(mem, *direction_out, false);
         return;
     }
     let forward = (target - cur).rem_euclid(cnt);
@@ -41,61 +58,61 @@ pub(super) fn rotb(f: &FnCall, act: bool, mem: &mut [u8]) {
     } else {
         target
     };
-    put(mem, a[5], n, value as i32);
-    set_bit(mem, a[6], go_reverse);
+    put(mem, *position_out, n, value as i32);
+    set_bit(mem, *direction_out, go_reverse);
 }
 
 /// PARI OE RST IN OUT: OUT := IN's parity is not the one OE expects; it does not hold, so
 /// RST = 1 or ACT = 0 write 0.
 #[inline]
 pub(super) fn pari(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    let oe = matches!(a[0], Arg::Int(1));
-    let out = if bit(mem, a[1]) || !act {
+    let [odd_even, reset, input, parity_error, ..] = &f.args;
+    let oe = matches!(*odd_even, Arg::Int(1));
+    let out = if bit(mem, *reset) || !act {
         false
     } else {
-        (uint(mem, a[2], 1).count_ones() % 2 == 1) != oe
+        (uint(mem, *input, 1).count_ones() % 2 == 1) != oe
     };
-    set_bit(mem, a[3], out);
+    set_bit(mem, *parity_error, out);
 }
 
 /// WAND / WOR / WXOR SIZE IN1 IN2 OUT: bitwise and, or, exclusive or.
 #[inline]
 pub(super) fn word_logic(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, first, second, result, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let (x, y) = (int(mem, a[1], n), int(mem, a[2], n));
+        let n = size(*data_size);
+        let (x, y) = (int(mem, *first, n), int(mem, *second, n));
         let r = match f.op {
             FnOp::Wand => x & y,
             FnOp::Wor => x | y,
             _ => x ^ y,
         };
-        put(mem, a[3], n, r);
+        put(mem, *result, n, r);
     }
 }
 
 /// WINV SIZE IN OUT: the bitwise complement.
 #[inline]
 pub(super) fn winv(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, source, result, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let v = !int(mem, a[1], n);
-        put(mem, a[2], n, v);
+        let n = size(*data_size);
+        let v = !int(mem, *source, n);
+        put(mem, *result, n, v);
     }
 }
 
 /// WSHL / WSHR SIZE N IN OUT: a SIZE-byte pattern shifted by N bits, zeros shifted in.
 #[inline]
 pub(super) fn shift(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, shift_count, source, result, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let by = uint(mem, a[1], 1);
+        let n = size(*data_size);
+        let by = uint(mem, *shift_count, 1);
         // IN is a signed read (a constant is taken modulo its width); the shift works
         // on its bits.
-        let v = int(mem, a[2], n) as u32 & if n == 4 { u32::MAX } else { (1 << (8 * n)) - 1 };
+        let v = int(mem, *source, n) as u32 & if n == 4 { u32::MAX } else { (1 << (8 * n)) - 1 };
         let r = if by >= 8 * n {
             0
         } else if f.op == FnOp::Wshl {
@@ -103,6 +120,6 @@ pub(super) fn shift(f: &FnCall, act: bool, mem: &mut [u8]) {
         } else {
             v >> by
         };
-        put(mem, a[3], n, r as i32);
+        put(mem, *result, n, r as i32);
     }
 }

@@ -9,6 +9,10 @@
 //!
 //! Everything here runs inside the scan: no allocation, hashing or string work. The helpers
 //! that were arms of the one match are `#[inline]`, so the dispatch costs what that match did.
+//! Each helper names its operands as docs/instructions.md lists them by binding references into
+//! `f.args` (`let [data_size, first, ..] = &f.args`) and reading them where they are used:
+//! bound by value instead, the inlined helpers' operands were loaded at the top of [`exec`],
+//! a larger frame on every call, where references compile to the positional reads they replace.
 
 mod arith;
 mod cnc_interface;

@@ -7,21 +7,21 @@ use crate::catalog::xmov_format;
 /// MOVN SIZE IN OUT: OUT := IN, SIZE bytes.
 #[inline]
 pub(super) fn movn(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [data_size, source, dest, ..] = &f.args;
     if act {
-        let n = size(a[0]);
-        let v = int(mem, a[1], n);
-        put(mem, a[2], n, v);
+        let n = size(*data_size);
+        let v = int(mem, *source, n);
+        put(mem, *dest, n, v);
     }
 }
 
 /// MOVR IN OUT: copies a real.
 #[inline]
 pub(super) fn movr(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [source, dest, ..] = &f.args;
     if act {
-        let v = real(mem, a[0]);
-        put_real(mem, a[1], v);
+        let v = real(mem, *source);
+        put_real(mem, *dest, v);
     }
 }
 
@@ -40,14 +40,14 @@ fn binary_digits(v: i32) -> u32 {
 /// MOVE H L IN OUT: OUT := IN masked by the binary digit groups H and L.
 #[inline]
 pub(super) fn move_masked(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [high_mask, low_mask, source, dest, ..] = &f.args;
     if act {
-        let (h, l) = match (a[0], a[1]) {
+        let (h, l) = match (*high_mask, *low_mask) {
             (Arg::Int(h), Arg::Int(l)) => (binary_digits(h), binary_digits(l)),
             _ => (0, 0),
         };
-        let v = uint(mem, a[2], 1) & (h << 4 | l);
-        put(mem, a[3], 1, v as i32);
+        let v = uint(mem, *source, 1) & (h << 4 | l);
+        put(mem, *dest, 1, v as i32);
     }
 }
 
@@ -55,8 +55,8 @@ pub(super) fn move_masked(f: &FnCall, act: bool, mem: &mut [u8]) {
 /// written on every scan.
 #[inline]
 pub(super) fn decb(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    let n = size(a[0]);
+    let [data_size, source, range_base, dest, ..] = &f.args;
+    let n = size(*data_size);
     let mut out = 0u8;
     if act {
         let mask = if n == 4 {
@@ -64,53 +64,65 @@ pub(super) fn decb(f: &FnCall, act: bool, mem: &mut [u8]) {
         } else {
             (1u32 << (8 * n)) - 1
         };
-        let v = int(mem, a[1], n) as u32 & mask;
-        let base = int(mem, a[2], 4);
+        let v = int(mem, *source, n) as u32 & mask;
+        let base = int(mem, *range_base, 4);
         for k in 0..8 {
             if v == (base.wrapping_add(k) as u32 & mask) {
                 out |= 1 << k;
             }
         }
     }
-    put(mem, a[3], 1, i32::from(out));
+    put(mem, *dest, 1, i32::from(out));
 }
 
 /// CODB SIZE1 SIZE2 IN OUT T…: OUT := entry IN of the instruction's constant table, whose
 /// entries the lowering put in `consts`; an IN past the table leaves OUT alone.
 #[inline]
 pub(super) fn codb(f: &FnCall, act: bool, mem: &mut [u8], consts: &[i32]) {
-    let a = &f.args;
+    // SIZE2 is not read: the entries as written, whose range is `f.table`, are the table.
+    let [out_size, _entry_count, table_index, dest, ..] = &f.args;
     if act {
-        let index = uint(mem, a[2], 1);
+        let index = uint(mem, *table_index, 1);
         let (start, end) = f.table;
         if let Some(v) = consts
             .get((start + index) as usize)
             .filter(|_| start + index < end)
         {
-            put(mem, a[3], size(a[0]), *v);
+            put(mem, *dest, size(*out_size), *v);
         }
     }
 }
 
 /// XMOV RW FMT DL DS DD DI RST ERR: indexed moves between a table and a list of elements.
 pub(super) fn xmov(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
-    if bit(mem, a[6]) {
-        set_bit(mem, a[7], false);
+    let [
+        read_write,
+        format,
+        table_length,
+        table_start,
+        data_start,
+        index_start,
+        reset,
+        error_out,
+        ..,
+    ] = &f.args;
+    if bit(mem, *reset) {
+        set_bit(mem, *error_out, false);
         return;
     }
     if !act {
         return;
     }
-    let write = matches!(a[0], Arg::Int(1));
-    let fmt = match a[1] {
+    let write = matches!(*read_write, Arg::Int(1));
+    let fmt = match *format {
         Arg::Int(v) => i64::from(v),
         _ => 1,
     };
     let (x, nn) = xmov_format(fmt);
     let x = u32::from(x);
-    let dl = uint(mem, a[2], 2);
-    let (Arg::Loc(ds), Arg::Loc(dd), Arg::Loc(di)) = (a[3], a[4], a[5]) else {
+    let dl = uint(mem, *table_length, 2);
+    let (Arg::Loc(ds), Arg::Loc(dd), Arg::Loc(di)) = (*table_start, *data_start, *index_start)
+    else {
         return;
     };
     // A table that runs past its area moves nothing.
@@ -119,7 +131,7 @@ pub(super) fn xmov(f: &FnCall, act: bool, mem: &mut [u8]) {
         || element(dd, nn - 1, x).is_none()
         || element(di, nn - 1, x).is_none()
     {
-        set_bit(mem, a[7], true);
+        set_bit(mem, *error_out, true);
         return;
     }
     // Every index is read before anything moves.
@@ -145,30 +157,40 @@ pub(super) fn xmov(f: &FnCall, act: bool, mem: &mut [u8]) {
             memory::write(mem, dst, x, v);
         }
     }
-    set_bit(mem, a[7], err);
+    set_bit(mem, *error_out, err);
 }
 
 /// DSCHB SIZE IN1 INL DS DI ERR: the index of the first table element equal to the key.
 #[inline]
 pub(super) fn dschb(f: &FnCall, act: bool, mem: &mut [u8]) {
-    let a = &f.args;
+    let [
+        data_size,
+        table_start,
+        entry_count,
+        search_value,
+        index_out,
+        error_out,
+        ..,
+    ] = &f.args;
     if act {
-        let n = size(a[0]);
-        let count = uint(mem, a[2], 2);
-        let key = int(mem, a[3], n);
-        let Arg::Loc(table) = a[1] else { return };
+        let n = size(*data_size);
+        let count = uint(mem, *entry_count, 2);
+        let key = int(mem, *search_value, n);
+        let Arg::Loc(table) = *table_start else {
+            return;
+        };
         if count == 0 || element(table, count - 1, n).is_none() {
-            set_bit(mem, a[5], true);
+            set_bit(mem, *error_out, true);
             return;
         }
         let found = (0..count)
             .find(|k| element(table, *k, n).is_some_and(|e| memory::read(mem, e, n) == key));
         match found {
             Some(k) => {
-                put(mem, a[4], n, k as i32);
-                set_bit(mem, a[5], false);
+                put(mem, *index_out, n, k as i32);
+                set_bit(mem, *error_out, false);
             }
-            None => set_bit(mem, a[5], true),
+            None => set_bit(mem, *error_out, true),
         }
     }
 }
