@@ -204,6 +204,24 @@ fn sim_counts_expectations_and_names_failing_lines() {
     assert_eq!(lines[1], "Y0003 = 0");
     assert_eq!(*lines.last().unwrap(), "2 passed, 1 failed");
     assert_eq!(read(&trace), "tick,ms,Y0003.7\n2,16,0\n3,24,0\n");
+    // In Chinese the line keeps its words, so a tool reads it, and says what it means.
+    let r = run(&[
+        "sim",
+        &il,
+        "--script",
+        script.to_str().unwrap(),
+        "--lang",
+        "zh",
+    ]);
+    let lines: Vec<&str> = r.stdout.lines().collect();
+    assert_eq!(
+        lines[0],
+        format!(
+            "{}:4: expect Y0003.7 = 0, got 1（实际值与期望值不符）",
+            script.display()
+        )
+    );
+    assert_eq!(*lines.last().unwrap(), "2 项通过，1 项失败");
 }
 
 #[test]

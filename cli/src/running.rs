@@ -179,7 +179,8 @@ pub(super) fn sim(
         (Err(e), Some(t)) => anyhow::bail!(say.cannot_write(t, e)),
         (Err(e), None) => return Err(e.into()),
     };
-    for line in &outcome.output {
+    for r in &outcome.output {
+        let line = ladder_text::sim::report(&outcome.script, r, say.lang());
         let _ = writeln!(out, "{line}");
     }
     if let Some(s) = outcome.stopped {
@@ -377,7 +378,8 @@ fn set_up(
     if outcome.failed == 0 {
         return Ok(None);
     }
-    for line in &outcome.output {
+    for r in &outcome.output {
+        let line = ladder_text::sim::report(&outcome.script, r, say.lang());
         let _ = writeln!(err, "{line}");
     }
     let _ = writeln!(

@@ -28,6 +28,11 @@ impl Say {
         Say { zh }
     }
 
+    /// The language as the message table takes it.
+    pub fn lang(self) -> Lang {
+        if self.zh { Lang::Zh } else { Lang::En }
+    }
+
     /// The locale messages follow: `LC_ALL`, else `LC_MESSAGES`, else `LANG`, else `C`.
     pub fn system_locale() -> String {
         ["LC_ALL", "LC_MESSAGES", "LANG"]

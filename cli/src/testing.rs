@@ -163,7 +163,11 @@ fn run_case(
                 Ok(o) => {
                     ran.passed = o.passed;
                     ran.failed = o.failed;
-                    ran.output = o.output;
+                    ran.output = o
+                        .output
+                        .iter()
+                        .map(|r| ladder_text::sim::report(&o.script, r, say.lang()))
+                        .collect();
                     ran.stopped = o.stopped.is_some();
                     ran.coverage = program.and_then(|p| Coverage::measure(machine.plc(), p));
                 }

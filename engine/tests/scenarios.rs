@@ -235,11 +235,22 @@ fn a_scenario_applied_twice_or_released_unapplied_is_a_refused_line() {
     let parsed = Script::parse_with(script, profile, &options(&p, NO_FILES)).unwrap();
     let mut m = Machine::new(&p, true).unwrap();
     let out = sim::run(&mut m, &parsed, "s", false);
+    let refused: Vec<(usize, String)> = out
+        .output
+        .iter()
+        .map(|r| match &r.event {
+            sim::Event::Refused(sim::Part::Scenario, e) => (r.line, e.en.clone()),
+            other => panic!("line {}: {other:?}", r.line),
+        })
+        .collect();
     assert_eq!(
-        out.output,
+        refused,
         [
-            "s:2: scenario: scenario `once` is already applied; release it first",
-            "s:4: scenario: scenario `once` is not applied"
+            (
+                2,
+                "scenario `once` is already applied; release it first".to_string()
+            ),
+            (4, "scenario `once` is not applied".to_string())
         ]
     );
     assert_eq!(out.failed, 2);

@@ -6,6 +6,7 @@
 //! language.
 
 pub mod errors;
+pub mod sim;
 pub mod ui;
 
 pub use ui::Msg;

@@ -16,7 +16,7 @@ use crate::vm::TICK_MS;
 use thiserror::Error;
 
 pub use crate::address::Target;
-pub use run::{Control, Outcome, Progress, Stopped, run, run_with};
+pub use run::{Control, Event, Outcome, Part, Progress, Report, Stopped, run, run_with};
 
 /// The most ticks one `scan` or `run` line may ask for: 100 000 000 ticks are 800 000 s
 /// (nine days) of virtual time, a few minutes of a real one.

@@ -4,14 +4,19 @@
 
 use super::{Script, ScriptCommand};
 use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
+use crate::refusal::Refusal;
+use crate::vm::Halt;
 use std::io::Write;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 /// What running a script produced.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Outcome {
-    /// Lines to print (expect failures, `print`s, halts, refused commands), in order.
-    pub output: Vec<String>,
+    /// The script's name, which prefixes its failure lines when they are worded.
+    pub script: String,
+    /// What to report (expect failures, `print`s, halts, refused commands), in order; the
+    /// command line words each in the user's language (`ladder_text::sim`).
+    pub output: Vec<Report>,
     /// `expect`/`expectf` that held.
     pub passed: usize,
     /// `expect`/`expectf` that did not, and commands that could not apply.
@@ -21,6 +26,66 @@ pub struct Outcome {
     pub trace_csv: String,
     /// Where the run was stopped before the end of the script, if it was.
     pub stopped: Option<Stopped>,
+}
+
+/// One thing a run reports: the script line, and what happened there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Report {
+    /// 1-based script line.
+    pub line: usize,
+    /// What happened.
+    pub event: Event,
+}
+
+/// What a run reports at a line. Data only: the words are the caller's, in either language,
+/// so the lines keep one shape (`SCRIPT:LINE: expect X0000.0 = 1, got 0`) in both.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Event {
+    /// A `print` line: the probe as named and its value.
+    Value {
+        /// The probe (`R0010`, `cnc.mode`, `device.door`).
+        probe: String,
+        /// Its value as read.
+        value: String,
+    },
+    /// The PLC halted (reported once until a power cycle).
+    Halted(Halt),
+    /// A command the machine refused, and which part of it refused.
+    Refused(Part, Refusal),
+    /// An `expect` that did not hold: the probe, the value as written, the value read.
+    Expected {
+        /// The probe as named.
+        probe: String,
+        /// The value the line expects, as written.
+        want: String,
+        /// The value read.
+        got: String,
+    },
+    /// A probe that could not be read, and the part that could not give it.
+    Unreadable(Part, String),
+}
+
+/// The part of the machine a failure comes from, named at the start of its line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// The simulated CNC (`cnc:`).
+    Cnc,
+    /// A device of the machine model (`device:`).
+    Device,
+    /// A saved scenario (`scenario:`).
+    Scenario,
+}
+
+impl Part {
+    /// The word that names the part in a failure line, the same in both languages (scripts
+    /// read it).
+    pub fn word(self) -> &'static str {
+        match self {
+            Part::Cnc => "cnc",
+            Part::Device => "device",
+            Part::Scenario => "scenario",
+        }
+    }
 }
 
 /// Where a run was stopped early.
@@ -116,8 +181,10 @@ pub fn run_with(
     mut control: Control<'_>,
 ) -> std::io::Result<Outcome> {
     let mut run = Run {
-        name,
-        out: Outcome::default(),
+        out: Outcome {
+            script: name.to_string(),
+            ..Outcome::default()
+        },
         reported_halt: false,
         header: false,
         ticks: 0,
@@ -167,16 +234,14 @@ impl Control<'_> {
 /// A run's state between two lines: what it has produced, and what the lines share (a halt
 /// is reported once until a power cycle, the trace's header written once, the ticks
 /// counted over the whole script for [`Stopped`]).
-struct Run<'n> {
-    /// The script's name, which prefixes failure lines.
-    name: &'n str,
+struct Run {
     out: Outcome,
     reported_halt: bool,
     header: bool,
     ticks: u64,
 }
 
-impl Run<'_> {
+impl Run {
     /// A `scan` or `run` line of `n` ticks: each tick traced, a halt reported, progress
     /// called every [`PROGRESS_EVERY`] ticks; a stop leaves [`Outcome::stopped`] set.
     fn tick(
@@ -186,7 +251,6 @@ impl Run<'_> {
         n: u64,
         control: &mut Control<'_>,
     ) -> std::io::Result<()> {
-        let name = self.name;
         for done in 0..n {
             if control.stop_asked() {
                 self.out.stopped = Some(Stopped {
@@ -205,9 +269,10 @@ impl Run<'_> {
             if let Some(h) = machine.plc().halt()
                 && !self.reported_halt
             {
-                self.out
-                    .output
-                    .push(format!("{name}:{line}: PLC halted at {h}"));
+                self.out.output.push(Report {
+                    line,
+                    event: Event::Halted(h.clone()),
+                });
                 self.reported_halt = true;
             }
             if (done + 1) % PROGRESS_EVERY == 0
@@ -226,41 +291,57 @@ impl Run<'_> {
     /// Any other command for the machine; one that cannot apply is a failure, named by the
     /// part that refused it. A power cycle clears a halt, so the next one is reported again.
     fn apply(&mut self, machine: &mut Machine, line: usize, c: &MachineCommand) {
-        let name = self.name;
         if matches!(c, MachineCommand::PowerCycle) {
             self.reported_halt = false;
         }
         if let Err(e) = machine.apply(c) {
-            let who = match c {
-                MachineCommand::Device(..) => "device",
-                MachineCommand::Scenario(..) | MachineCommand::Release(..) => "scenario",
-                _ => "cnc",
+            let part = match c {
+                MachineCommand::Device(..) => Part::Device,
+                MachineCommand::Scenario(..) | MachineCommand::Release(..) => Part::Scenario,
+                _ => Part::Cnc,
             };
-            self.fail(format!("{name}:{line}: {who}: {e}"));
+            self.fail(line, Event::Refused(part, e));
         }
     }
 
     /// A `print` line: the probe's value, or a failure when it cannot be read.
     fn print(&mut self, machine: &Machine, line: usize, p: &Probe) {
-        let name = self.name;
         match machine.read(p) {
-            Ok(v) => self
-                .out
-                .output
-                .push(format!("{} = {v}", machine.probe_name(p))),
-            Err(e) => self.fail(format!("{name}:{line}: cnc: {e}")),
+            Ok(v) => self.out.output.push(Report {
+                line,
+                event: Event::Value {
+                    probe: machine.probe_name(p),
+                    value: v.to_string(),
+                },
+            }),
+            Err(e) => self.fail(line, Event::Unreadable(Part::Cnc, e)),
         }
     }
 
     /// Records a failure: its line printed, and counted.
-    fn fail(&mut self, text: String) {
-        self.out.output.push(text);
+    fn fail(&mut self, line: usize, event: Event) {
+        self.out.output.push(Report { line, event });
         self.out.failed += 1;
+    }
+
+    /// An `expect` that did not hold, with the values as they are shown.
+    fn expected(
+        &mut self,
+        line: usize,
+        probe: impl ToString,
+        want: impl ToString,
+        got: impl ToString,
+    ) {
+        let event = Event::Expected {
+            probe: probe.to_string(),
+            want: want.to_string(),
+            got: got.to_string(),
+        };
+        self.fail(line, event);
     }
 
     /// `expect ADDR[:N] VALUE`: the bytes compared, so a byte's 255 and -1 match.
     fn expect(&mut self, machine: &Machine, line: usize, t: &super::Target, want: i64) {
-        let name = self.name;
         let got = machine.plc().read(t.address, t.bytes);
         if masked(got, t.bytes) == masked(want, t.bytes) {
             self.out.passed += 1;
@@ -271,10 +352,7 @@ impl Run<'_> {
             } else {
                 got.to_string()
             };
-            self.fail(format!(
-                "{name}:{line}: expect {} = {want}, got {shown}",
-                t.text()
-            ));
+            self.expected(line, t.text(), want, shown);
         }
     }
 
@@ -287,28 +365,20 @@ impl Run<'_> {
         want: &crate::cnc::command::CncValue,
         written: &str,
     ) {
-        let name = self.name;
         match machine.read(&Probe::Cnc(key)) {
             Ok(ProbeValue::Cnc(got)) if got == *want => self.out.passed += 1,
-            Ok(got) => self.fail(format!(
-                "{name}:{line}: expect {} = {written}, got {got}",
-                key.text()
-            )),
-            Err(e) => self.fail(format!("{name}:{line}: cnc: {e}")),
+            Ok(got) => self.expected(line, key.text(), written, got),
+            Err(e) => self.fail(line, Event::Unreadable(Part::Cnc, e)),
         }
     }
 
     /// `expect device.NAME VALUE`, by the device's index.
     fn expect_device(&mut self, machine: &Machine, line: usize, i: usize, want: i64) {
-        let name = self.name;
         let p = Probe::Device(i);
         match machine.read(&p) {
             Ok(ProbeValue::Int(got)) if got == want => self.out.passed += 1,
-            Ok(got) => self.fail(format!(
-                "{name}:{line}: expect {} = {want}, got {got}",
-                machine.probe_name(&p)
-            )),
-            Err(e) => self.fail(format!("{name}:{line}: device: {e}")),
+            Ok(got) => self.expected(line, machine.probe_name(&p), want, got),
+            Err(e) => self.fail(line, Event::Unreadable(Part::Device, e)),
         }
     }
 
@@ -322,7 +392,6 @@ impl Run<'_> {
         want: f32,
         tol: Option<f32>,
     ) {
-        let name = self.name;
         let got = machine.plc().read_real(a);
         let tol = tol.unwrap_or(1e-4);
         let ok = if want == 0.0 {
@@ -333,7 +402,7 @@ impl Run<'_> {
         if ok && !got.is_nan() {
             self.out.passed += 1;
         } else {
-            self.fail(format!("{name}:{line}: expect {a} = {want}, got {got}"));
+            self.expected(line, a, want, got);
         }
     }
 }
