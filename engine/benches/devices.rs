@@ -193,7 +193,7 @@ fn thousand_devices() {
     let model = thousand();
     let mut plant = Plant::new(&model, profile).expect("a valid model");
     let mut mem = Vm::new(&Project::default()).unwrap().image().to_vec();
-    let layout = ladder_engine::vm::memory::Layout::new(profile);
+    let layout = ladder_engine::vm::Layout::new(profile);
     let y = layout.area_range(Area::Y);
     let mut view = CncView::default();
     let ticks = 20_000u64;

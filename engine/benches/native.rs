@@ -1,8 +1,9 @@
 //! The native scan engine against straight-line C: `cargo bench -p ladder-engine --bench native`.
 //!
-//! The 5000-step bit-logic program of `bench scan` is translated word by word into one C
-//! function (each contact a shift and a mask, each coil a masked store: what a hand-written
-//! PLC runtime that compiles to C does), compiled with `gcc -O2`, and timed in the same run
+//! The 5000-step bit-logic program of `bench scan` is translated instruction by instruction
+//! into one C function (each contact a shift and a mask, each coil a masked store: what a
+//! hand-written PLC runtime that compiles to C does), with the bytes and the rung starts the
+//! VM's lowering gives them, compiled with `gcc -O2`, and timed in the same run
 //! as the interpreter and the native engine. With valgrind installed, all three are also
 //! counted in machine instructions per step (callgrind; N and 2N scans, the difference),
 //! which stays the same however busy the machine is. Code generation is timed too.
@@ -10,62 +11,80 @@
 //! `-- --no-valgrind` skips the counts. The binary runs itself as a child
 //! (`-- --child ENGINE SCANS`) under callgrind.
 
+use ladder_engine::Op;
+use ladder_engine::compiler::{Program, compile};
 use ladder_engine::generate::{Mix, program_il};
 use ladder_engine::il;
+use ladder_engine::model::{Operand, Project};
 use ladder_engine::vm::cnc::NoCnc;
-use ladder_engine::vm::code::{C_INVERT, C_OR, C_PUSH, C_START, CONTACT_END, Executable, VmOp};
 use ladder_engine::vm::native::Native;
-use ladder_engine::vm::{Engine, IMAGE_BYTES, Vm};
+use ladder_engine::vm::{Engine, IMAGE_BYTES, Layout, Vm};
 use std::fmt::Write as _;
 use std::path::Path;
 use std::process::Command;
 use std::time::Instant;
 
-fn vm(engine: Engine) -> Vm {
-    let project = il::import(&program_il(5000, Mix::BitLogic, 1))
+/// The benchmark's program.
+fn project() -> Project {
+    il::import(&program_il(5000, Mix::BitLogic, 1))
         .project
-        .expect("generated programs draw");
-    let mut vm = Vm::new(&project).expect("generated programs compile");
+        .expect("generated programs draw")
+}
+
+fn vm(engine: Engine) -> Vm {
+    let mut vm = Vm::new(&project()).expect("generated programs compile");
     assert_eq!(vm.set_engine(engine), engine, "{engine:?} is available");
     vm
 }
 
-/// The bit-logic words as the body of a C function over `m`.
-fn c_body(code: &Executable) -> String {
+/// The bit-logic program as the body of a C function over `m`, in the order the VM lowers it:
+/// level 1, then level 2, which reads X and F from the copy latched at its cycle's start.
+fn c_body(program: &Program, layout: &Layout) -> String {
     let mut c = String::new();
-    for &w in code.words() {
-        let arg = w >> 8;
-        let (byte, bit) = ((arg >> 3) as usize & (IMAGE_BYTES - 1), arg & 7);
-        let op = w & 0xFF;
-        if op < CONTACT_END {
-            let inv = if op & C_INVERT != 0 { " ^ 1" } else { "" };
-            let v = format!("((m[{byte}] >> {bit}) & 1{inv})");
-            let line = if op & C_START != 0 {
-                format!("s = 0; a = {v};")
-            } else if op & C_PUSH != 0 {
-                format!("s = s << 1 | a; a = {v};")
-            } else if op & C_OR != 0 {
-                format!("a |= {v};")
-            } else {
-                format!("a &= {v};")
-            };
-            let _ = writeln!(c, "  {line}");
-            continue;
-        }
-        let line = match VmOp::decode(w) {
-            Some(VmOp::Orb) => "a |= s & 1; s >>= 1;".to_string(),
-            Some(VmOp::Anb) => "a &= s & 1; s >>= 1;".to_string(),
-            Some(op @ (VmOp::Out | VmOp::Outn)) => {
-                let inv = if op == VmOp::Outn { " ^ 1" } else { "" };
-                format!(
-                    "m[{byte}] = (m[{byte}] & {}) | ((a{inv}) << {bit});",
-                    !(1u8 << bit)
-                )
+    for (b, block) in program.blocks.iter().enumerate() {
+        let latched = b == 1;
+        for net in &block.networks {
+            // A network starts a rung, and so does each coil (the program has no MPS): an LD
+            // there empties the stack instead of pushing on it.
+            let mut rung_start = true;
+            for i in &net.instrs {
+                let (byte, bit) = match i.operands.first() {
+                    Some(Operand::Addr(a)) => (
+                        layout.loc(*a, latched).off as usize & (IMAGE_BYTES - 1),
+                        a.bit.unwrap_or(0),
+                    ),
+                    _ => (0, 0),
+                };
+                let v = |inv: bool| {
+                    let inv = if inv { " ^ 1" } else { "" };
+                    format!("((m[{byte}] >> {bit}) & 1{inv})")
+                };
+                let line = match i.op {
+                    Op::Ld | Op::Ldi => {
+                        let v = v(i.op == Op::Ldi);
+                        if rung_start {
+                            format!("s = 0; a = {v};")
+                        } else {
+                            format!("s = s << 1 | a; a = {v};")
+                        }
+                    }
+                    Op::And | Op::Ani => format!("a &= {};", v(i.op == Op::Ani)),
+                    Op::Or | Op::Ori => format!("a |= {};", v(i.op == Op::Ori)),
+                    Op::Orb => "a |= s & 1; s >>= 1;".to_string(),
+                    Op::Anb => "a &= s & 1; s >>= 1;".to_string(),
+                    Op::Out | Op::Outn => {
+                        let inv = if i.op == Op::Outn { " ^ 1" } else { "" };
+                        format!(
+                            "m[{byte}] = (m[{byte}] & {}) | ((a{inv}) << {bit});",
+                            !(1u8 << bit)
+                        )
+                    }
+                    other => panic!("the bit-logic program has no {other:?}"),
+                };
+                rung_start = matches!(i.op, Op::Out | Op::Outn);
+                let _ = writeln!(c, "  {line}");
             }
-            Some(VmOp::Net | VmOp::Ret) => continue,
-            other => panic!("the bit-logic program has no {other:?}"),
-        };
-        let _ = writeln!(c, "  {line}");
+        }
     }
     c
 }
@@ -162,7 +181,8 @@ fn main() {
     std::fs::create_dir_all(&dir).expect("a temporary folder");
     let c_file = dir.join("scan.c");
     let c_exe = dir.join("scan");
-    std::fs::write(&c_file, c_program(&c_body(native.code()))).expect("the C file");
+    let program = compile(&project()).program;
+    std::fs::write(&c_file, c_program(&c_body(&program, native.layout()))).expect("the C file");
     let gcc = Command::new("gcc")
         .args(["-O2", "-o"])
         .arg(&c_exe)

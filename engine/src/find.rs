@@ -4,7 +4,7 @@
 
 use crate::address::Address;
 use crate::catalog::Op;
-use crate::compiler::check::operand_ok;
+use crate::compiler::operand_ok;
 use crate::model::{Cell, CellRef, Edit, Operand, Project};
 
 /// What to look for.

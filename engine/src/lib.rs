@@ -3,7 +3,7 @@
 //! outside [`mod@file`].
 
 pub mod address;
-pub mod area;
+mod area;
 pub mod catalog;
 pub mod cnc;
 pub mod comments;

@@ -182,7 +182,7 @@ pub struct Recorder {
 
 impl Recorder {
     /// A recorder of the first `image_len` bytes of an image (the layout size,
-    /// [`crate::vm::memory::Layout::size`]) over the last `capacity_ticks` ticks (at least 1;
+    /// [`crate::vm::Layout::size`]) over the last `capacity_ticks` ticks (at least 1;
     /// [`DEFAULT_CAPACITY_TICKS`] is 60 s).
     ///
     /// # Panics

@@ -6,8 +6,8 @@ use ladder_engine::devices::CncView;
 use ladder_engine::devices::model::*;
 use ladder_engine::devices::{Device, DeviceKind, Fault, MachineModel, ModelError, Plant};
 use ladder_engine::model::Project;
+use ladder_engine::vm::Layout;
 use ladder_engine::vm::Vm;
-use ladder_engine::vm::memory::Layout;
 use ladder_engine::{Profile, ProfileId};
 use proptest::prelude::*;
 

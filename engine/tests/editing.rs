@@ -7,7 +7,7 @@
 //! links below the previous row at junctions 1 and 3.
 
 use ladder_engine::compiler::Code;
-use ladder_engine::compiler::operands::{Refusal, operand_error};
+use ladder_engine::compiler::{Refusal, operand_error};
 use ladder_engine::model::region::{Clip, Region};
 use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Network, Operand, Row};
 use ladder_engine::{Op, Profile, ProfileId};

@@ -2,8 +2,8 @@
 //! their bytes), checked by `check` (M001–M005, W010, W011), and used by scripts (`device`
 //! lines, the refusal to `set` a driven input).
 
+use ladder_engine::compiler::Code;
 use ladder_engine::compiler::compile;
-use ladder_engine::compiler::diag::Code;
 use ladder_engine::devices::model::{Actuator, Logic};
 use ladder_engine::devices::{Device, DeviceKind, MachineModel};
 use ladder_engine::machine::{DeviceAction, MachineCommand};

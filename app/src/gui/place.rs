@@ -36,19 +36,19 @@ pub enum View {
 /// "block" is one of the compiler's pseudo-blocks), with the row to go to; `None` for a
 /// ladder block. The machine model is no view: `Some((None, _))`.
 pub fn table_view(at: CellRef) -> Option<(Option<View>, Option<usize>)> {
-    use ladder_engine::compiler::{machine::MACHINE, tables};
+    use ladder_engine::compiler::pseudo_blocks as block;
     use ladder_engine::diagnose::SCENARIOS;
     let row = Some(at.row);
     Some(match at.block {
-        tables::SYMBOLS => (Some(View::Symbols(at.network)), row),
-        tables::DATA => (Some(View::Data), None),
-        tables::MESSAGES => (Some(View::Messages), row),
-        tables::DIAGNOSIS => (Some(View::Diagnosis), row),
-        tables::PERMISSIONS => (Some(View::Permissions), row),
-        tables::MCODES => (Some(View::MCodes), row),
-        tables::VERSION => (Some(View::Version), None),
+        block::SYMBOLS => (Some(View::Symbols(at.network)), row),
+        block::DATA => (Some(View::Data), None),
+        block::MESSAGES => (Some(View::Messages), row),
+        block::DIAGNOSIS => (Some(View::Diagnosis), row),
+        block::PERMISSIONS => (Some(View::Permissions), row),
+        block::MCODES => (Some(View::MCodes), row),
+        block::VERSION => (Some(View::Version), None),
         SCENARIOS => (Some(View::Scenarios), None),
-        MACHINE => (None, None),
+        block::MACHINE => (None, None),
         _ => return None,
     })
 }

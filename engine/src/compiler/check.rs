@@ -2,7 +2,7 @@
 //! limits, and the warnings about doubly driven coils and shared timers.
 
 use super::diag::{Code, Sink};
-pub use super::operands::{Refusal, operand_error, operand_ok};
+use super::operands::operand_error;
 use super::place::{InstrPlace, place_text, place_text_zh};
 use super::rung::Instr;
 use super::{Program, StepCounts};

@@ -1,37 +1,58 @@
 //! The compiler: ladder → instruction list, with checks that point at the cell (or IL line)
 //! and say how to fix what they find.
 //!
-//! Phases: [`lower`] reads each network's grid as rung trees (structure checks), [`rung`]
-//! emits their instructions, [`check`] checks operands, labels, calls, stacks and step
-//! limits against the catalogue and the profile, [`writes`] looks for outputs two instructions
-//! fight over, [`presets`] for table presets out of their instruction's range. The IL importer runs the other way through
-//! [`decompile`] and [`layout`]; [`written`] keeps an imported network's list as written.
+//! Phases: `lower` reads each network's grid as rung trees (structure checks), `rung`
+//! emits their instructions, `check` checks operands, labels, calls, stacks and step
+//! limits against the catalogue and the profile, `writes` looks for outputs two instructions
+//! fight over, `presets` for table presets out of their instruction's range. The IL importer
+//! runs the other way through `decompile` and `layout`; `written` keeps an imported network's
+//! list as written.
+//!
+//! The phases are private to the engine: the rest of the workspace compiles through
+//! [`compile`] and [`compile_program`] and reads a [`Compiled`] program and its
+//! [`Diagnostic`]s. What the editor needs beside them is re-exported here: the operand check
+//! it colours and refuses operands with ([`operand_ok`], [`operand_error`], [`Refusal`]),
+//! and the pseudo-blocks a diagnostic of a table or the machine model points at
+//! ([`pseudo_blocks`]).
 
-pub mod check;
-pub mod cnc;
+pub(crate) mod check;
+pub(crate) mod cnc;
 #[cfg(test)]
 mod cnc_tests;
-pub mod decompile;
-pub mod diag;
-pub mod flow;
-pub mod layout;
-pub mod lower;
-pub mod machine;
-pub mod operands;
+pub(crate) mod decompile;
+pub(crate) mod diag;
+pub(crate) mod flow;
+pub(crate) mod layout;
+pub(crate) mod lower;
+pub(crate) mod machine;
+pub(crate) mod operands;
 mod place;
-pub mod presets;
-pub mod rung;
-pub mod tables;
-pub mod text;
+pub(crate) mod presets;
+#[cfg(test)]
+mod roundtrip_tests;
+pub(crate) mod rung;
+pub(crate) mod tables;
+pub(crate) mod text;
 #[cfg(test)]
 mod warn_tests;
-pub mod writes;
-pub mod written;
+pub(crate) mod writes;
+pub(crate) mod written;
+#[cfg(test)]
+mod written_tests;
 #[cfg(test)]
 pub(crate) mod zh_tests;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
+pub use operands::{Refusal, operand_error, operand_ok};
 pub use rung::Instr;
+
+/// The pseudo-blocks of [`Location::block`]: a diagnostic of a table or of the machine model
+/// is not in a ladder block, so its "block" is one of these numbers (at the top of `usize`,
+/// past any ladder block) and its "network" the table's number or the device's index.
+pub mod pseudo_blocks {
+    pub use super::machine::MACHINE;
+    pub use super::tables::{DATA, DIAGNOSIS, MCODES, MESSAGES, PERMISSIONS, SYMBOLS, VERSION};
+}
 
 use crate::model::{BlockKind, Project};
 
@@ -136,7 +157,7 @@ impl Compiled {
 }
 
 /// Emits a project's ladder as an instruction list, without checks beyond the structure.
-pub fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
+fn ladder_program(project: &Project, sink: &mut Sink) -> Program {
     let width = project.ladder.width;
     let mut program = Program::default();
     for (b, block) in project.ladder.blocks.iter().enumerate() {

@@ -43,6 +43,9 @@ macro_rules! vm_ops {
         }
 
         /// The opcode bytes as `u32`, for matching the low byte of a word without decoding it.
+        // One per opcode, whether or not a loop matches it: the interpreter matches contacts
+        // by range, not by byte.
+        #[allow(dead_code)]
         pub mod byte {
             $(
                 #[doc = concat!("The byte of [`VmOp::", stringify!($cop), "`](super::VmOp::", stringify!($cop), ").")]
@@ -190,8 +193,6 @@ pub struct FnCall {
     pub state: u32,
     /// Steps it costs.
     pub cost: u32,
-    /// Which network it is in (index into [`Executable::networks`]).
-    pub network: u32,
 }
 
 /// Where a network's code is, for monitoring and for naming the place of a halt.
@@ -216,19 +217,19 @@ pub struct Executable {
     /// Instruction words (read through [`Executable::words`]: nothing may change them once checked).
     words: Vec<u32>,
     /// Function-instruction instances.
-    pub fns: Vec<FnCall>,
+    pub(crate) fns: Vec<FnCall>,
     /// CODB tables.
-    pub consts: Vec<i32>,
+    pub(crate) consts: Vec<i32>,
     /// Networks in code order (a subprogram called from both levels appears twice).
     pub networks: Vec<NetworkInfo>,
     /// Entry of level 1.
-    pub level1: u32,
+    pub(crate) level1: u32,
     /// Entry of level 2.
-    pub level2: u32,
+    pub(crate) level2: u32,
     /// Level 2's static step count (S of the slice quota).
-    pub level2_steps: u32,
+    pub(crate) level2_steps: u32,
     /// Number of per-instance states.
-    pub states: u32,
+    pub(crate) states: u32,
     /// For each word, the source instruction it came from (block, network, index in the
     /// network's instruction list), or none for markers.
     pub source: Vec<Option<(u16, u32, u32)>>,
@@ -237,7 +238,7 @@ pub struct Executable {
 /// A word the scan loop could not run.
 #[derive(Clone, Debug, Error, PartialEq, Eq)]
 pub enum CodeError {
-    /// The low byte is no opcode of [`VmOp`].
+    /// The low byte is no opcode of the VM.
     #[error("word {at}: {byte:#04x} is not an opcode of the VM")]
     UnknownOpcode {
         /// Index of the word.
@@ -418,7 +419,6 @@ impl Lowerer<'_> {
                     latched,
                     b,
                     ctx,
-                    net_index,
                     &mut rung_start,
                     &mut mps_depth,
                     src,
@@ -447,7 +447,6 @@ impl Lowerer<'_> {
         latched: bool,
         block: usize,
         ctx: usize,
-        net_index: u32,
         rung_start: &mut bool,
         mps_depth: &mut i32,
         src: Option<(u16, u32, u32)>,
@@ -528,7 +527,6 @@ impl Lowerer<'_> {
                     table: (0, 0),
                     state,
                     cost: op.spec().steps(instr.operands.len()),
-                    network: net_index,
                 };
                 let fixed = op.spec().operands.len();
                 for (i, o) in instr.operands.iter().enumerate().take(fixed.min(MAX_ARGS)) {

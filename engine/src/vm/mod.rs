@@ -1,29 +1,39 @@
 //! The scan engine: runs a compiled program the way the GSK PLC does (docs/plc.md).
 //!
-//! [`code`] lowers the compiled program once to compact words with addresses resolved;
+//! `code` lowers the compiled program once to compact words with addresses resolved;
 //! `exec` runs them (no allocation, hashing or string work in the loop); `functions`
-//! holds the function instructions' semantics; [`memory`] the image and its width rules;
+//! holds the function instructions' semantics; `memory` the image and its width rules;
 //! [`cnc`] the interface to the CNC.
+//!
+//! Those internals are private to the engine. The rest of the workspace runs a PLC through
+//! [`Vm`] (build, tick, read, write, force, watch), chooses its [`Engine`], plugs a CNC in
+//! through [`cnc::Cnc`] and reads what a scan showed through [`monitor`]. The lowered program
+//! ([`Executable`]) and the image's [`Layout`] are handed out whole, for monitors that read
+//! a machine on another thread; their encoding stays inside.
 
 pub mod cnc;
-pub mod code;
+pub(crate) mod code;
+#[cfg(test)]
+mod differential_tests;
+pub use code::{CodeError, Executable, LowerError, NetworkInfo};
 mod exec;
 pub(crate) use exec::decides;
 mod functions;
 pub mod native;
 pub use native::Engine;
-pub mod memory;
+pub(crate) mod memory;
+pub use memory::{Layout, Loc};
 pub mod monitor;
-pub mod swap;
-pub mod why;
+pub(crate) mod swap;
+pub use swap::{SwapError, Swapped};
+mod why;
 
 use crate::address::{Address, Area};
 use crate::compiler::{Program, compile};
 use crate::model::Project;
 use crate::profile::Profile;
 use cnc::Cnc;
-use code::{Executable, LowerError, lower};
-use memory::{Layout, Loc};
+use code::lower;
 use std::fmt;
 
 /// Bytes of the memory image: a fixed power of two, so the hot loop's masked byte index needs
@@ -39,7 +49,7 @@ pub const WATCHDOG_STEPS: u64 = 200_000;
 /// since the native engine's timers read and write it (`vm/native/timer.rs`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[repr(C)]
-pub struct InstState {
+pub(crate) struct InstState {
     /// ACT at the previous execution.
     pub prev_act: bool,
     /// Virtual time of the previous execution.

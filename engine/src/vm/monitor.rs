@@ -7,7 +7,10 @@
 //!
 //! It reads a [`Source`], not a [`Vm`]: the editor monitors a machine running on another
 //! thread from the snapshots it publishes, and a recorded past state from an image the scan
-//! recorder rebuilt, so the view must not need the VM itself.
+//! recorder rebuilt, so the view must not need the VM itself. [`deciding_contacts`] reads
+//! a view back: which contacts decide an output.
+
+pub use super::why::deciding_contacts;
 
 use super::Vm;
 use super::code::Executable;
@@ -99,7 +102,7 @@ pub struct NetworkView {
     pub cells: Vec<Vec<CellView>>,
 }
 
-/// The code network (see [`super::code::Executable::networks`]) of a ladder network.
+/// The code network (see [`Executable::networks`]) of a ladder network.
 pub fn code_network(vm: &Vm, block: usize, network: usize) -> Option<usize> {
     code_network_of(vm.code(), block, network)
 }

@@ -47,7 +47,7 @@ fn right_type(project: &Project, o: &Operand, place: OperandPlace, operands: &[O
             {
                 return true;
             }
-            ladder_engine::compiler::check::operand_ok(op, operands, i, project.profile())
+            ladder_engine::compiler::operand_ok(op, operands, i, project.profile())
         }
     }
 }

@@ -9,10 +9,8 @@ use ladder_engine::model::{Ladder, Project};
 use ladder_engine::recorder::Recorder;
 use ladder_engine::refusal::Refusal;
 use ladder_engine::runner::{Published, Reply, Request, Runner, Speed};
-use ladder_engine::vm::Vm;
-use ladder_engine::vm::code::Executable;
-use ladder_engine::vm::memory::Layout;
 use ladder_engine::vm::monitor::Source;
+use ladder_engine::vm::{Executable, Layout, Vm};
 use std::collections::BTreeSet;
 use std::sync::Arc;
 
@@ -102,7 +100,7 @@ fn compiled(project: &Project) -> Result<Program, StartError> {
         let first = compiled
             .diagnostics
             .iter()
-            .find(|d| d.severity() == ladder_engine::compiler::diag::Severity::Error);
+            .find(|d| d.severity() == ladder_engine::compiler::Severity::Error);
         let (en, zh) = first.map_or_else(Default::default, |d| {
             let en = d.render("");
             (

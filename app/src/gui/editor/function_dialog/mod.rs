@@ -13,7 +13,7 @@ mod tests;
 
 use egui::{Key, RichText};
 use ladder_engine::catalog::{CATALOG, Category, InstrClass, InstrSpec, OperandKind, OperandSpec};
-use ladder_engine::compiler::operands::{Refusal, operand_error, operand_ok};
+use ladder_engine::compiler::{Refusal, operand_error, operand_ok};
 use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 

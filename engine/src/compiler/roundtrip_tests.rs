@@ -1,16 +1,17 @@
 //! Round trips on seeded random programs: ladder → IL → ladder → IL is a fixed point, and IL
 //! written the way the compiler writes it comes back unchanged.
+//!
+//! A unit test of the engine rather than an integration test: it draws random rung trees
+//! (`rung`) and lays them out as grids (`layout`), phases private to the compiler.
 
-use ladder_engine::Op;
-use ladder_engine::address::{Address, Area};
-use ladder_engine::compiler::layout::{layout, width_needed};
-use ladder_engine::compiler::rung::{Expr, Item, Node, Output, Rung, and, or};
-use ladder_engine::compiler::{Origin, compile};
-use ladder_engine::generate::SplitMix64;
-use ladder_engine::il;
-use ladder_engine::model::{
-    Cell, DEFAULT_WIDTH, Ladder, Network, NetworkId, Operand, Project, Row,
-};
+use crate::Op;
+use crate::address::{Address, Area};
+use crate::compiler::layout::{layout, width_needed};
+use crate::compiler::rung::{Expr, Item, Node, Output, Rung, and, or};
+use crate::compiler::{Origin, compile};
+use crate::generate::SplitMix64;
+use crate::il;
+use crate::model::{Cell, DEFAULT_WIDTH, Ladder, Network, NetworkId, Operand, Project, Row};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 

@@ -4,17 +4,20 @@
 //! The reference walks the rung trees the ladder reads as (`compiler::lower`) with a map of
 //! bits: no lowering, no words, no stacks. It implements the bit logic, SET/RST, DIFU/DIFD,
 //! ALT and TMRB from docs/plc.md directly.
+//!
+//! A unit test of the engine rather than an integration test: it builds and reads back rung
+//! trees with the compiler's private phases (`rung`, `layout`, `lower`).
 
-use ladder_engine::Op;
-use ladder_engine::address::{Address, Area};
-use ladder_engine::compiler::layout::{layout, width_needed};
-use ladder_engine::compiler::lower::lower_network;
-use ladder_engine::compiler::rung::{Expr, Item, Node, Output, Rung, and, or};
-use ladder_engine::compiler::{Origin, Sink};
-use ladder_engine::generate::SplitMix64;
-use ladder_engine::model::{DEFAULT_WIDTH, Ladder, Network, NetworkId, Operand, Project};
-use ladder_engine::vm::Vm;
-use ladder_engine::vm::cnc::NoCnc;
+use crate::Op;
+use crate::address::{Address, Area};
+use crate::compiler::layout::{layout, width_needed};
+use crate::compiler::lower::lower_network;
+use crate::compiler::rung::{Expr, Item, Node, Output, Rung, and, or};
+use crate::compiler::{Origin, Sink};
+use crate::generate::SplitMix64;
+use crate::model::{DEFAULT_WIDTH, Ladder, Network, NetworkId, Operand, Project};
+use crate::vm::Vm;
+use crate::vm::cnc::NoCnc;
 use std::collections::HashMap;
 
 /// Bits and 4-byte words of the reference machine.
@@ -265,9 +268,7 @@ fn the_vm_agrees_with_the_reference_on_1000_random_programs() {
                             vm.read_bit(a),
                             want,
                             "program {program}, tick {tick}, {a}\n{}",
-                            ladder_engine::il::print(
-                                &ladder_engine::compiler::compile(&project).program
-                            )
+                            crate::il::print(&crate::compiler::compile(&project).program)
                         );
                     }
                 }

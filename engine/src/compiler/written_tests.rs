@@ -2,20 +2,23 @@
 //! lists"): import → export gives the same instruction sequence, and the list, the imported
 //! project and the exported list run alike after every tick, at every level-2 division.
 //!
-//! The generator draws random rung trees (the constructs of `differential.rs`, on both levels
-//! and in subprograms) and writes each one the ways other tools write it: MPS/MRD/MPP at every
-//! branch point or only where needed, `LD x / ANB` for `AND x`, `LD x / ORB` for `OR x`, an
-//! empty `MPS / MPP` before a block, outputs under their own MPS.
+//! The generator draws random rung trees (the constructs of `vm/differential_tests.rs`, on
+//! both levels and in subprograms) and writes each one the ways other tools write it:
+//! MPS/MRD/MPP at every branch point or only where needed, `LD x / ANB` for `AND x`,
+//! `LD x / ORB` for `OR x`, an empty `MPS / MPP` before a block, outputs under their own MPS.
+//!
+//! A unit test of the engine because the generator builds the compiler's own rung trees
+//! (`rung`), which are private to it; everything it checks goes through the public doors.
 
-use ladder_engine::Op;
-use ladder_engine::address::{Address, Area};
-use ladder_engine::compiler::rung::{Expr, Item, Node, Output, and, or};
-use ladder_engine::compiler::{Origin, Sink, compile, compile_program};
-use ladder_engine::generate::SplitMix64;
-use ladder_engine::il;
-use ladder_engine::model::{Cell, Operand, Project};
-use ladder_engine::vm::Vm;
-use ladder_engine::vm::cnc::NoCnc;
+use crate::Op;
+use crate::address::{Address, Area};
+use crate::compiler::rung::{Expr, Item, Node, Output, and, or};
+use crate::compiler::{Origin, Sink, compile, compile_program};
+use crate::generate::SplitMix64;
+use crate::il;
+use crate::model::{Cell, Operand, Project};
+use crate::vm::Vm;
+use crate::vm::cnc::NoCnc;
 
 struct Gen {
     rng: SplitMix64,
