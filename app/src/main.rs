@@ -2,7 +2,7 @@
 //! when no subcommand is given.
 
 fn main() {
-    let editor = |start: ladder_cli::Start| {
+    let editor = |start: ladder_cli::EditorStart| {
         ladder_studio::gui::run(ladder_studio::gui::Start {
             project: start.project,
             run: start.run,

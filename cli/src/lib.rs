@@ -206,7 +206,7 @@ where
 }
 
 /// What the editor opens when no subcommand is given.
-pub struct Start {
+pub struct EditorStart {
     /// The project to open.
     pub project: Option<PathBuf>,
     /// Go online and run at once.
@@ -217,9 +217,9 @@ pub struct Start {
     pub lang: Option<ladder_text::Lang>,
 }
 
-/// Opens the editor window on a [`Start`] and blocks until it closes. The binary passes the
+/// Opens the editor window on an [`EditorStart`] and blocks until it closes. The binary passes the
 /// window in, so this crate and its tests do not link the GUI.
-pub type Editor<'a> = &'a dyn Fn(Start) -> anyhow::Result<()>;
+pub type Editor<'a> = &'a dyn Fn(EditorStart) -> anyhow::Result<()>;
 
 /// Runs the command line as in `locale`, opening `editor` when no subcommand is given.
 pub fn run_with<I, T>(
@@ -397,7 +397,7 @@ fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> a
         );
         return Ok(2);
     }
-    let start = Start {
+    let start = EditorStart {
         project: cli.project,
         run: cli.run,
         nc,

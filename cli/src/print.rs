@@ -4,7 +4,7 @@ use super::say::Say;
 use super::source::project_of;
 use clap::ValueEnum;
 use ladder_engine::file::write_atomic;
-use ladder_print::{Blocks, Labels, Lang, Options, Paper};
+use ladder_print::{Blocks, Labels, Options, Paper, PrintLang};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -160,11 +160,11 @@ pub(super) fn print(
         ));
     }
     let lang = match args.language {
-        Some(LanguageArg::Zh) => Lang::Zh,
-        Some(LanguageArg::En) => Lang::En,
-        Some(LanguageArg::Both) => Lang::Both,
-        None if say.zh => Lang::Zh,
-        None => Lang::En,
+        Some(LanguageArg::Zh) => PrintLang::Zh,
+        Some(LanguageArg::En) => PrintLang::En,
+        Some(LanguageArg::Both) => PrintLang::Both,
+        None if say.zh => PrintLang::Zh,
+        None => PrintLang::En,
     };
     let options = Options {
         paper: match args.paper {

@@ -7,7 +7,7 @@
 //! links below the previous row at junctions 1 and 3.
 
 use ladder_engine::compiler::Code;
-use ladder_engine::compiler::{Refusal, operand_error};
+use ladder_engine::compiler::{OperandRefusal, operand_error};
 use ladder_engine::model::region::{Clip, Region};
 use ladder_engine::model::{Cell, CellRef, Edit, EditError, Ladder, Network, Operand, Row};
 use ladder_engine::{Op, Profile, ProfileId};
@@ -252,24 +252,24 @@ fn an_operand_is_refused_with_its_reason_and_the_compiler_code() {
     };
     let refused = |op, text: &str, i| operand_error(op, &ops(text), i, profile).unwrap_err();
     let r = refused(Op::Tmrb, "Y0 DT4 R300.0", 0);
-    assert!(matches!(r, Refusal::Area { .. }), "{r:?}");
+    assert!(matches!(r, OperandRefusal::Area { .. }), "{r:?}");
     assert_eq!(r.code(), Code::L022Area);
     let r = refused(Op::Tmrb, "T0 DT4 R300", 2);
-    assert!(matches!(r, Refusal::WantsBit(_)));
+    assert!(matches!(r, OperandRefusal::WantsBit(_)));
     assert_eq!(r.code(), Code::L021OperandKind);
     let r = refused(Op::Movn, "3 1 R10", 0);
-    assert_eq!(r, Refusal::Size(3));
+    assert_eq!(r, OperandRefusal::Size(3));
     assert_eq!(r.code(), Code::L024ConstRange);
     let r = refused(Op::Set, "X0.0", 0);
-    assert!(matches!(r, Refusal::ReadOnly { .. }), "{r:?}");
+    assert!(matches!(r, OperandRefusal::ReadOnly { .. }), "{r:?}");
     assert_eq!(r.code(), Code::L025ReadOnly);
     let r = refused(Op::Tmrb, "T9999 DT4 R300.0", 0);
-    assert!(matches!(r, Refusal::Range(_)));
+    assert!(matches!(r, OperandRefusal::Range(_)));
     assert!(r.to_string().contains("out of range"), "{r}");
     assert!(operand_error(Op::Tmrb, &ops("T0 DT4 R300.0"), 0, profile).is_ok());
     assert_eq!(
         operand_error(Op::Tmrb, &ops("T0 DT4 R300.0"), 3, profile),
-        Err(Refusal::TooMany)
+        Err(OperandRefusal::TooMany)
     );
 }
 

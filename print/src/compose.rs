@@ -178,9 +178,9 @@ fn frame_pages(doc: &mut Document, options: &Options, metrics: &mut Metrics) {
     for (i, page) in doc.pages.iter_mut().enumerate() {
         let n = i + 1;
         let footer = match options.lang {
-            crate::options::Lang::Zh => format!("第 {n}/{total} 页"),
-            crate::options::Lang::En => format!("Page {n}/{total}"),
-            crate::options::Lang::Both => format!("第 {n}/{total} 页  Page {n}/{total}"),
+            crate::options::PrintLang::Zh => format!("第 {n}/{total} 页"),
+            crate::options::PrintLang::En => format!("Page {n}/{total}"),
+            crate::options::PrintLang::Both => format!("第 {n}/{total} 页  Page {n}/{total}"),
         };
         page.items.push(Item::text(
             w / 2.0,

@@ -37,7 +37,7 @@ impl Paper {
 
 /// The language of the document's own words and of the comments printed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Lang {
+pub enum PrintLang {
     /// Chinese.
     #[default]
     Zh,
@@ -47,22 +47,22 @@ pub enum Lang {
     Both,
 }
 
-impl Lang {
+impl PrintLang {
     /// The comment languages printed, in order.
     pub fn comment_langs(self) -> &'static [&'static str] {
         match self {
-            Lang::Zh => &["zh"],
-            Lang::En => &["en"],
-            Lang::Both => &["zh", "en"],
+            PrintLang::Zh => &["zh"],
+            PrintLang::En => &["en"],
+            PrintLang::Both => &["zh", "en"],
         }
     }
 
     /// A word of the document in this language.
     pub fn say(self, en: &str, zh: &str) -> String {
         match self {
-            Lang::Zh => zh.to_string(),
-            Lang::En => en.to_string(),
-            Lang::Both => format!("{zh} {en}"),
+            PrintLang::Zh => zh.to_string(),
+            PrintLang::En => en.to_string(),
+            PrintLang::Both => format!("{zh} {en}"),
         }
     }
 }
@@ -120,7 +120,7 @@ pub struct Options {
     /// Landscape rather than portrait.
     pub landscape: bool,
     /// Language of the document and its comments.
-    pub lang: Lang,
+    pub lang: PrintLang,
     /// How operands are written.
     pub labels: Labels,
     /// Element comments under contacts and coils.
@@ -144,7 +144,7 @@ impl Default for Options {
         Options {
             paper: Paper::A4,
             landscape: false,
-            lang: Lang::Zh,
+            lang: PrintLang::Zh,
             labels: Labels::Address,
             element_comments: true,
             blocks: Blocks::default(),

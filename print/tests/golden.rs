@@ -2,7 +2,7 @@
 //! how contacts, coils, boxes, links or labels are drawn shows up here as a diff to review.
 //! After an intended change: `UPDATE_GOLDEN=1 cargo test -p ladder-print --test print golden::`.
 
-use ladder_print::{Labels, Lang, Options, document, page_svg};
+use ladder_print::{Labels, Options, PrintLang, document, page_svg};
 
 const LIST: &str = "\
 LEVEL1
@@ -30,7 +30,7 @@ fn a_network_draws_as_its_golden_svg() {
             comments: [("en".to_string(), "Start button".to_string())].into(),
         });
     let options = Options {
-        lang: Lang::En,
+        lang: PrintLang::En,
         labels: Labels::Both,
         title_page: false,
         only: Some(vec![(0, 0)]),

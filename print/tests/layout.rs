@@ -2,7 +2,7 @@
 //! of the power rails and the vertical links, and wrap inside their cell instead of being
 //! cut after a few characters.
 
-use ladder_print::{Ink, Item, Labels, Lang, Metrics, Options, Seg, document};
+use ladder_print::{Ink, Item, Labels, Metrics, Options, PrintLang, Seg, document};
 
 fn sample() -> ladder_engine::model::Project {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../projects/lathe-988ta.ldp");
@@ -39,7 +39,7 @@ fn verticals(items: &[Item]) -> Vec<(f32, f32, f32)> {
 fn element_comments_never_cross_a_rail_or_a_link_and_wrap_in_their_cell() {
     let project = sample();
     let mut metrics = Metrics::new();
-    for lang in [Lang::En, Lang::Zh, Lang::Both] {
+    for lang in [PrintLang::En, PrintLang::Zh, PrintLang::Both] {
         let options = Options {
             lang,
             labels: Labels::Both,

@@ -3,14 +3,14 @@
 
 use crate::common::pdf_pages;
 use ladder_engine::model::{Cell, Operand, Project};
-use ladder_print::{Labels, Lang, Options, Paper, document, pdf};
+use ladder_print::{Labels, Options, Paper, PrintLang, document, pdf};
 
 fn lathe() -> Project {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../projects/lathe-988ta.ldp");
     ladder_engine::file::load(std::path::Path::new(path)).unwrap()
 }
 
-fn options(lang: Lang) -> Options {
+fn options(lang: PrintLang) -> Options {
     Options {
         lang,
         date: "2026-12-02".into(),
@@ -43,7 +43,7 @@ fn addresses(project: &Project, block: usize, network: usize) -> Vec<String> {
 #[test]
 fn the_pdf_holds_every_network_title_and_the_addresses_of_a_network() {
     let project = lathe();
-    let doc = document(&project, "lathe-988ta", &options(Lang::Zh));
+    let doc = document(&project, "lathe-988ta", &options(PrintLang::Zh));
     let bytes = pdf(&doc).unwrap();
     assert!(bytes.starts_with(b"%PDF-"));
     let pages = pdf_pages(&bytes);
@@ -85,14 +85,15 @@ fn the_pdf_holds_every_network_title_and_the_addresses_of_a_network() {
 #[test]
 fn english_and_both_languages_are_printed_when_asked() {
     let project = lathe();
-    let en = pdf_pages(&pdf(&document(&project, "lathe", &options(Lang::En))).unwrap()).concat();
+    let en =
+        pdf_pages(&pdf(&document(&project, "lathe", &options(PrintLang::En))).unwrap()).concat();
     assert!(
         en.contains("Level 1 program") && en.contains("Controller"),
         "{en}"
     );
     assert!(!en.contains("第1级程序"));
     let both =
-        pdf_pages(&pdf(&document(&project, "lathe", &options(Lang::Both))).unwrap()).concat();
+        pdf_pages(&pdf(&document(&project, "lathe", &options(PrintLang::Both))).unwrap()).concat();
     assert!(both.contains("第1级程序 Level 1 program"), "{both}");
     // Element comments in both languages: a symbol row with zh and en comments.
     let s = project
@@ -111,7 +112,7 @@ fn symbols_are_printed_in_the_symbol_view() {
     let project = lathe();
     let opts = Options {
         labels: Labels::Symbol,
-        ..options(Lang::En)
+        ..options(PrintLang::En)
     };
     let text = pdf_pages(&pdf(&document(&project, "lathe", &opts)).unwrap()).concat();
     // A symbol on a contact of level 2: its name stands where the address would.
@@ -133,14 +134,14 @@ fn symbols_are_printed_in_the_symbol_view() {
 #[test]
 fn the_page_count_grows_with_the_project_and_a_network_that_fits_is_never_cut() {
     let project = lathe();
-    let one = document(&project, "lathe", &options(Lang::Zh));
+    let one = document(&project, "lathe", &options(PrintLang::Zh));
     let mut bigger = project.clone();
     let extra = bigger.ladder.blocks[1].networks.clone();
     for mut n in extra {
         n.id = bigger.ladder.new_network_id();
         bigger.ladder.blocks[1].networks.push(n);
     }
-    let two = document(&bigger, "lathe", &options(Lang::Zh));
+    let two = document(&bigger, "lathe", &options(PrintLang::Zh));
     assert!(
         two.pages.len() > one.pages.len(),
         "{} → {}",
@@ -181,7 +182,7 @@ fn a_network_taller_than_a_page_continues_with_a_marker() {
         t
     });
     let project = imported.project.unwrap();
-    let doc = document(&project, "tall", &options(Lang::En));
+    let doc = document(&project, "tall", &options(PrintLang::En));
     let marked: Vec<usize> = (0..doc.pages.len())
         .filter(|i| {
             doc.pages[*i]
@@ -204,7 +205,7 @@ fn landscape_a3_pages_are_wider_than_they_are_tall() {
     let opts = Options {
         paper: Paper::A3,
         landscape: true,
-        ..options(Lang::En)
+        ..options(PrintLang::En)
     };
     let doc = document(&lathe(), "lathe", &opts);
     assert!((doc.width - 1190.55).abs() < 0.1 && (doc.height - 841.89).abs() < 0.1);
@@ -216,7 +217,7 @@ fn tables_and_the_cross_reference_are_printed_when_asked() {
     let opts = Options {
         tables: true,
         xref: true,
-        ..options(Lang::En)
+        ..options(PrintLang::En)
     };
     let doc = document(&project, "lathe", &opts);
     let text = pdf_pages(&pdf(&doc).unwrap()).concat();
@@ -229,7 +230,7 @@ fn tables_and_the_cross_reference_are_printed_when_asked() {
     ] {
         assert!(text.contains(title), "{title}");
     }
-    let plain = document(&project, "lathe", &options(Lang::En));
+    let plain = document(&project, "lathe", &options(PrintLang::En));
     assert!(doc.pages.len() > plain.pages.len());
 }
 
@@ -243,7 +244,7 @@ fn the_bilingual_sample_writes_whole_svg_pages_and_a_pdf() {
         "lathe-988ta",
         &Options {
             labels: Labels::Both,
-            ..options(Lang::Both)
+            ..options(PrintLang::Both)
         },
     );
     let temp = tempfile::tempdir().unwrap();

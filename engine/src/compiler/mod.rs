@@ -11,7 +11,7 @@
 //! The phases are private to the engine: the rest of the workspace compiles through
 //! [`compile`] and [`compile_program`] and reads a [`Compiled`] program and its
 //! [`Diagnostic`]s. What the editor needs beside them is re-exported here: the operand check
-//! it colours and refuses operands with ([`operand_ok`], [`operand_error`], [`Refusal`]),
+//! it colours and refuses operands with ([`operand_ok`], [`operand_error`], [`OperandRefusal`]),
 //! and the pseudo-blocks a diagnostic of a table or the machine model points at
 //! ([`pseudo_blocks`]).
 
@@ -43,7 +43,7 @@ mod written_tests;
 pub(crate) mod zh_tests;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
-pub use operands::{Refusal, operand_error, operand_ok};
+pub use operands::{OperandRefusal, operand_error, operand_ok};
 pub use rung::Instr;
 
 /// The pseudo-blocks of [`Location::block`]: a diagnostic of a table or of the machine model

@@ -1,6 +1,6 @@
 //! Whether an operand may stand where it is written, and if not, why: one function for the
 //! compiler's check, the editor's function dialog, replace and the operand colours. The
-//! refusal is structured ([`Refusal`]), so the compiler turns it into a diagnostic (its code,
+//! refusal is structured ([`OperandRefusal`]), so the compiler turns it into a diagnostic (its code,
 //! English text and Chinese text) and the editor into a sentence in the user's language.
 
 use super::diag::Code;
@@ -15,7 +15,7 @@ use std::fmt;
 
 /// Why an operand is refused where it stands.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Refusal {
+pub enum OperandRefusal {
     /// The instruction takes fewer operands.
     TooMany,
     /// A constant, real or address where the operand's kind takes none of that kind.
@@ -69,22 +69,22 @@ pub enum Refusal {
     Range(AddressError),
 }
 
-impl Refusal {
+impl OperandRefusal {
     /// The compiler's diagnostic code for this refusal.
     pub fn code(&self) -> Code {
         match self {
-            Refusal::TooMany => Code::L011OperandCount,
-            Refusal::Kind { .. } | Refusal::WantsBit(_) | Refusal::WantsByte(_) => {
-                Code::L021OperandKind
-            }
-            Refusal::Size(_)
-            | Refusal::Digits { .. }
-            | Refusal::DigitGroup(_)
-            | Refusal::ConstRange { .. }
-            | Refusal::ConstTooBig(_) => Code::L024ConstRange,
-            Refusal::ReadOnly { .. } => Code::L025ReadOnly,
-            Refusal::Area { .. } => Code::L022Area,
-            Refusal::Range(_) => Code::L023AddressRange,
+            OperandRefusal::TooMany => Code::L011OperandCount,
+            OperandRefusal::Kind { .. }
+            | OperandRefusal::WantsBit(_)
+            | OperandRefusal::WantsByte(_) => Code::L021OperandKind,
+            OperandRefusal::Size(_)
+            | OperandRefusal::Digits { .. }
+            | OperandRefusal::DigitGroup(_)
+            | OperandRefusal::ConstRange { .. }
+            | OperandRefusal::ConstTooBig(_) => Code::L024ConstRange,
+            OperandRefusal::ReadOnly { .. } => Code::L025ReadOnly,
+            OperandRefusal::Area { .. } => Code::L022Area,
+            OperandRefusal::Range(_) => Code::L023AddressRange,
         }
     }
 }
@@ -125,75 +125,79 @@ pub fn expected_text_zh(kind: OperandKind) -> &'static str {
     }
 }
 
-impl Refusal {
+impl OperandRefusal {
     /// The refusal in Chinese, with the same specifics as its English text. `op` is the
     /// instruction the operand belongs to (it names the rule of a refused digit group).
     pub fn zh(&self, op: Op) -> String {
         match self {
-            Refusal::TooMany => "该指令没有这么多操作数".into(),
-            Refusal::Kind { expected, found } => {
+            OperandRefusal::TooMany => "该指令没有这么多操作数".into(),
+            OperandRefusal::Kind { expected, found } => {
                 format!("应为{}，实为 `{found}`", expected_text_zh(*expected))
             }
-            Refusal::WantsBit(a) => format!("应为位地址，如 R0010.0，实为 `{a}`"),
-            Refusal::WantsByte(a) => {
+            OperandRefusal::WantsBit(a) => format!("应为位地址，如 R0010.0，实为 `{a}`"),
+            OperandRefusal::WantsByte(a) => {
                 format!("应为不带位的字节地址，如 R0010，实为 `{a}`")
             }
-            Refusal::Size(v) => format!("大小应为 1、2 或 4，不能是 {v}"),
-            Refusal::Digits { value, binary } => format!(
+            OperandRefusal::Size(v) => format!("大小应为 1、2 或 4，不能是 {v}"),
+            OperandRefusal::Digits { value, binary } => format!(
                 "应写 4 位{}数字，不能是 `{value}`",
                 if *binary { "二进制" } else { "十进制" }
             ),
-            Refusal::DigitGroup(_) => digit_group_rule_zh(op).into(),
-            Refusal::ConstRange { value, min, max } => {
+            OperandRefusal::DigitGroup(_) => digit_group_rule_zh(op).into(),
+            OperandRefusal::ConstRange { value, min, max } => {
                 format!("{value} 超出范围（{min}–{max}）")
             }
-            Refusal::ConstTooBig(v) => format!("{v} 超出范围（−2147483647–2147483647）"),
-            Refusal::ReadOnly { address, .. } => {
+            OperandRefusal::ConstTooBig(v) => format!("{v} 超出范围（−2147483647–2147483647）"),
+            OperandRefusal::ReadOnly { address, .. } => {
                 format!("{address} 不能写入：X 和 F 是输入，对程序只读")
             }
-            Refusal::Area { address, allowed } => {
+            OperandRefusal::Area { address, allowed } => {
                 format!("此处不允许使用 {address}；请用 {}", allowed.describe())
             }
-            Refusal::Range(e) => e.zh(),
+            OperandRefusal::Range(e) => e.zh(),
         }
     }
 }
 
-impl fmt::Display for Refusal {
+impl fmt::Display for OperandRefusal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Refusal::TooMany => f.write_str("the instruction takes fewer operands"),
-            Refusal::Kind { expected, found } => {
+            OperandRefusal::TooMany => f.write_str("the instruction takes fewer operands"),
+            OperandRefusal::Kind { expected, found } => {
                 write!(f, "expects {}, found `{found}`", expected_text(*expected))
             }
-            Refusal::WantsBit(a) => write!(f, "expects a bit address such as R0010.0, found `{a}`"),
-            Refusal::WantsByte(a) => write!(
+            OperandRefusal::WantsBit(a) => {
+                write!(f, "expects a bit address such as R0010.0, found `{a}`")
+            }
+            OperandRefusal::WantsByte(a) => write!(
                 f,
                 "expects a byte address without a bit, such as R0010, found `{a}`"
             ),
-            Refusal::Size(v) => write!(f, "the size is 1, 2 or 4, not {v}"),
-            Refusal::Digits { value, binary } => write!(
+            OperandRefusal::Size(v) => write!(f, "the size is 1, 2 or 4, not {v}"),
+            OperandRefusal::Digits { value, binary } => write!(
                 f,
                 "write 4 {} digits, not `{value}`",
                 if *binary { "binary" } else { "decimal" }
             ),
-            Refusal::DigitGroup(why) => f.write_str(why),
-            Refusal::ConstRange { value, min, max } => {
+            OperandRefusal::DigitGroup(why) => f.write_str(why),
+            OperandRefusal::ConstRange { value, min, max } => {
                 write!(f, "{value} is out of range ({min}–{max})")
             }
-            Refusal::ConstTooBig(v) => write!(f, "{v} is out of range (−2147483647–2147483647)"),
-            Refusal::ReadOnly { address, .. } => write!(
+            OperandRefusal::ConstTooBig(v) => {
+                write!(f, "{v} is out of range (−2147483647–2147483647)")
+            }
+            OperandRefusal::ReadOnly { address, .. } => write!(
                 f,
                 "{address} cannot be written: X and F are inputs, read-only to the program"
             ),
-            Refusal::Area { address, allowed } => {
+            OperandRefusal::Area { address, allowed } => {
                 write!(
                     f,
                     "{address} is not allowed here; use {}",
                     allowed.describe()
                 )
             }
-            Refusal::Range(e) => write!(f, "{e}"),
+            OperandRefusal::Range(e) => write!(f, "{e}"),
         }
     }
 }
@@ -218,15 +222,15 @@ pub fn operand_error(
     operands: &[Operand],
     i: usize,
     profile: &Profile,
-) -> Result<(), Refusal> {
+) -> Result<(), OperandRefusal> {
     let Some(spec) = op.spec().operand(i) else {
-        return Err(Refusal::TooMany);
+        return Err(OperandRefusal::TooMany);
     };
     let Some(operand) = operands.get(i) else {
-        return Err(Refusal::TooMany);
+        return Err(OperandRefusal::TooMany);
     };
     let kind_error = || {
-        Err(Refusal::Kind {
+        Err(OperandRefusal::Kind {
             expected: spec.kind,
             found: operand.clone(),
         })
@@ -238,24 +242,24 @@ pub fn operand_error(
             }
             let v = *v;
             match spec.kind {
-                OperandKind::Size if !matches!(v, 1 | 2 | 4) => Err(Refusal::Size(v)),
+                OperandKind::Size if !matches!(v, 1 | 2 | 4) => Err(OperandRefusal::Size(v)),
                 OperandKind::Digits { max_digit } => {
                     let digits_ok = (0..=9999).contains(&v)
                         && v.to_string().bytes().all(|d| d - b'0' <= max_digit);
                     if !digits_ok {
-                        return Err(Refusal::Digits {
+                        return Err(OperandRefusal::Digits {
                             value: v,
                             binary: max_digit == 1,
                         });
                     }
-                    check_digit_group(op, spec.name, v).map_err(Refusal::DigitGroup)
+                    check_digit_group(op, spec.name, v).map_err(OperandRefusal::DigitGroup)
                 }
-                _ if v < spec.min || v > spec.max => Err(Refusal::ConstRange {
+                _ if v < spec.min || v > spec.max => Err(OperandRefusal::ConstRange {
                     value: v,
                     min: spec.min,
                     max: spec.max,
                 }),
-                _ if v.abs() > CONST_MAX => Err(Refusal::ConstTooBig(v)),
+                _ if v.abs() > CONST_MAX => Err(OperandRefusal::ConstTooBig(v)),
                 _ => Ok(()),
             }
         }
@@ -272,12 +276,12 @@ fn address_error(
     spec: &OperandSpec,
     a: Address,
     profile: &Profile,
-) -> Result<(), Refusal> {
+) -> Result<(), OperandRefusal> {
     let wants_bit = match spec.kind {
         OperandKind::Bit => Some(true),
         OperandKind::BitOrByte => None,
         OperandKind::Size | OperandKind::Const | OperandKind::Digits { .. } => {
-            return Err(Refusal::Kind {
+            return Err(OperandRefusal::Kind {
                 expected: spec.kind,
                 found: Operand::Addr(a),
             });
@@ -285,8 +289,8 @@ fn address_error(
         _ => Some(false),
     };
     match (wants_bit, a.bit.is_some()) {
-        (Some(true), false) => return Err(Refusal::WantsBit(a)),
-        (Some(false), true) => return Err(Refusal::WantsByte(a)),
+        (Some(true), false) => return Err(OperandRefusal::WantsBit(a)),
+        (Some(false), true) => return Err(OperandRefusal::WantsByte(a)),
         _ => {}
     }
     let writes = match spec.access {
@@ -297,13 +301,13 @@ fn address_error(
         }
     };
     if writes && matches!(a.area, Area::X | Area::F) {
-        return Err(Refusal::ReadOnly {
+        return Err(OperandRefusal::ReadOnly {
             address: a,
             allowed: spec.areas,
         });
     }
     if !spec.areas.contains(a.area) {
-        return Err(Refusal::Area {
+        return Err(OperandRefusal::Area {
             address: a,
             allowed: spec.areas,
         });
@@ -347,7 +351,7 @@ fn address_error(
             .map(|bytes| covered(a, bytes, 1))
             .unwrap_or(1),
     };
-    a.check_span(profile, count).map_err(Refusal::Range)
+    a.check_span(profile, count).map_err(OperandRefusal::Range)
 }
 
 /// Addresses covered from `a` by `count` elements of `bytes` (element rule, docs/plc.md).

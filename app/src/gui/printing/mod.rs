@@ -11,10 +11,10 @@ pub use queue::{LpQueue, PrintQueue, Printers, ScriptedQueue, parse_lpstat};
 
 use super::command::Command;
 use super::context::Context;
-use super::i18n::{Lang as UiLang, Msg};
+use super::i18n::{Lang, Msg};
 pub use super::settings::PageSetup;
 use super::settings::{DisplayMode, Settings};
-use ladder_print::{Document, Labels, Lang, Options};
+use ladder_print::{Document, Labels, Options, PrintLang};
 use std::path::Path;
 
 /// The print preview's pages and where the user is in them.
@@ -95,9 +95,9 @@ impl PrintState {
             paper: s.paper,
             landscape: s.landscape,
             lang: match (s.both_languages, cx.settings.lang) {
-                (true, _) => Lang::Both,
-                (false, UiLang::Zh) => Lang::Zh,
-                (false, UiLang::En) => Lang::En,
+                (true, _) => PrintLang::Both,
+                (false, Lang::Zh) => PrintLang::Zh,
+                (false, Lang::En) => PrintLang::En,
             },
             labels: match cx.settings.display {
                 DisplayMode::Address => Labels::Address,

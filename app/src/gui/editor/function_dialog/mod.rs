@@ -13,7 +13,7 @@ mod tests;
 
 use egui::{Key, RichText};
 use ladder_engine::catalog::{CATALOG, Category, InstrClass, InstrSpec, OperandKind, OperandSpec};
-use ladder_engine::compiler::{Refusal, operand_error, operand_ok};
+use ladder_engine::compiler::{OperandRefusal, operand_error, operand_ok};
 use ladder_engine::model::{Cell, CellRef, Operand, Project};
 use ladder_engine::{Op, Profile};
 
@@ -178,25 +178,25 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
         return Msg::FnOutOfRange.text(lang).into();
     };
     match refusal {
-        Refusal::TooMany => Msg::FnTooMany.text(lang).into(),
-        Refusal::WantsBit(_) => Msg::FnWantsBit.text(lang).into(),
-        Refusal::WantsByte(_) => Msg::FnWantsByte.text(lang).into(),
+        OperandRefusal::TooMany => Msg::FnTooMany.text(lang).into(),
+        OperandRefusal::WantsBit(_) => Msg::FnWantsBit.text(lang).into(),
+        OperandRefusal::WantsByte(_) => Msg::FnWantsByte.text(lang).into(),
         // An input outside the operand's areas is first of all not allowed there.
-        Refusal::ReadOnly { address, allowed } if allowed.contains(address.area) => {
+        OperandRefusal::ReadOnly { address, allowed } if allowed.contains(address.area) => {
             Msg::FnReadOnly.text(lang).into()
         }
-        Refusal::DigitGroup(why) => match lang {
-            Lang::Zh => Refusal::DigitGroup(why).zh(op),
+        OperandRefusal::DigitGroup(why) => match lang {
+            Lang::Zh => OperandRefusal::DigitGroup(why).zh(op),
             Lang::En => why,
         },
-        Refusal::Range(e) => crate::gui::tables::address_error(&e, profile, lang),
-        Refusal::ReadOnly { .. }
-        | Refusal::Area { .. }
-        | Refusal::Kind { .. }
-        | Refusal::Size(_)
-        | Refusal::Digits { .. }
-        | Refusal::ConstRange { .. }
-        | Refusal::ConstTooBig(_) => not_allowed(),
+        OperandRefusal::Range(e) => crate::gui::tables::address_error(&e, profile, lang),
+        OperandRefusal::ReadOnly { .. }
+        | OperandRefusal::Area { .. }
+        | OperandRefusal::Kind { .. }
+        | OperandRefusal::Size(_)
+        | OperandRefusal::Digits { .. }
+        | OperandRefusal::ConstRange { .. }
+        | OperandRefusal::ConstTooBig(_) => not_allowed(),
     }
 }
 
