@@ -6,6 +6,7 @@
 //! the two totals divided by N is the cost of one scan, free of start-up, loading, warm-up
 //! and the set-up script, which both runs share.
 
+use ladder_text::cli::RunText;
 use std::ffi::OsString;
 use std::path::Path;
 use std::process::Command;
@@ -15,22 +16,19 @@ use std::process::Command;
 pub(super) enum CountError {
     /// valgrind is not installed (or cannot start).
     NoValgrind(String),
-    /// A run under valgrind failed or printed no total.
+    /// A run under valgrind failed.
     Run(String),
+    /// A run under valgrind printed no total.
+    NoTotal,
 }
 
 impl CountError {
-    /// The message, in English or Chinese.
-    pub(super) fn text(&self, zh: bool) -> String {
-        match (self, zh) {
-            (CountError::NoValgrind(why), false) => format!(
-                "cannot start valgrind ({why}): install it with `scripts/setup-debian.sh --bench`"
-            ),
-            (CountError::NoValgrind(why), true) => {
-                format!("无法启动 valgrind（{why}）：请用 `scripts/setup-debian.sh --bench` 安装")
-            }
-            (CountError::Run(why), false) => format!("counting under callgrind failed: {why}"),
-            (CountError::Run(why), true) => format!("在 callgrind 下计数失败：{why}"),
+    /// What the command line says about it.
+    pub(super) fn said(self) -> RunText {
+        match self {
+            CountError::NoValgrind(why) => RunText::NoValgrind { why },
+            CountError::Run(why) => RunText::CountFailed { why },
+            CountError::NoTotal => RunText::NoTotal,
         }
     }
 }
@@ -93,7 +91,7 @@ fn total(exe: &Path, args: &[OsString], scans: u64) -> Result<u64, CountError> {
             .unwrap_or("");
         return Err(CountError::Run(format!("{} {last}", output.status)));
     }
-    collected(&stderr).ok_or_else(|| CountError::Run("no `Collected :` line".into()))
+    collected(&stderr).ok_or(CountError::NoTotal)
 }
 
 /// The number on callgrind's `==PID== Collected : N` line.

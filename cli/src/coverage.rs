@@ -1,8 +1,9 @@
 //! Rung coverage on the command line: the summary lines, the JSON file and the HTML page
 //! (docs/scripts.md, "Coverage").
 
-use super::say::Say;
+use super::say::{Say, shown};
 use ladder_engine::coverage::{Coverage, State};
+use ladder_text::cli::{CoverageGroup, CoverageText, FileText};
 use std::path::Path;
 
 /// The coverage summary lines (`level 2: 412/520 networks fully covered, 78 %`).
@@ -10,29 +11,14 @@ fn lines(c: &Coverage, say: Say) -> Vec<String> {
     c.summary()
         .iter()
         .map(|l| {
-            let (en, zh) = match l.group {
-                "LEVEL1" => ("level 1", "一级程序"),
-                "LEVEL2" => ("level 2", "二级程序"),
-                _ => ("subprograms", "子程序"),
-            };
-            say.pick(
-                format!(
-                    "{en}: {}/{} networks fully covered, {} % ({}/{} elements)",
-                    l.covered,
-                    l.networks,
-                    l.percent(),
-                    l.elements_covered,
-                    l.elements
-                ),
-                format!(
-                    "{zh}：{}/{} 个网络完全覆盖，{} %（元素 {}/{}）",
-                    l.covered,
-                    l.networks,
-                    l.percent(),
-                    l.elements_covered,
-                    l.elements
-                ),
-            )
+            say.text(CoverageText::Line {
+                group: CoverageGroup::of(l.group),
+                covered: l.covered,
+                networks: l.networks,
+                percent: l.percent(),
+                elements_covered: l.elements_covered,
+                elements: l.elements,
+            })
         })
         .collect()
 }
@@ -95,10 +81,9 @@ pub(super) fn writable(path: &Path, say: Say) -> anyhow::Result<()> {
     if folder.is_dir() {
         Ok(())
     } else {
-        Err(anyhow::anyhow!(say.cannot_write(
-            path,
-            say.pick("no such folder", "文件夹不存在")
-        )))
+        Err(anyhow::anyhow!(
+            say.text(FileText::NoSuchFolder { path: shown(path) })
+        ))
     }
 }
 
@@ -117,10 +102,9 @@ fn html(c: &Coverage, project: &str, say: Say) -> String {
             .replace('>', "&gt;")
             .replace('"', "&quot;")
     };
-    let title = say.pick(
-        format!("Rung coverage of {}", esc(project)),
-        format!("{} 的梯形图覆盖率", esc(project)),
-    );
+    let title = say.text(CoverageText::Title {
+        project: esc(project),
+    });
     let mut page = format!(
         "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{title}</title>\n\
          <style>body{{font-family:sans-serif;margin:2em;color:#222}}\
@@ -128,24 +112,21 @@ fn html(c: &Coverage, project: &str, say: Say) -> String {
          td,th{{border:1px solid #ccc;padding:.2em .6em;text-align:left}}\
          .covered{{color:#1a7f37}}.half{{color:#9a6700}}.never{{color:#cf222e}}\
          code{{font-family:monospace}}</style></head><body>\n<h1>{title}</h1>\n",
-        if say.zh { "zh" } else { "en" }
+        say.lang().code()
     );
     page.push_str(&format!(
         "<p>{}</p>\n<ul>\n",
-        say.pick(
-            format!("{} runs merged.", c.runs),
-            format!("合并了 {} 次运行。", c.runs)
-        )
+        say.text(CoverageText::RunsMerged { runs: c.runs })
     ));
     for line in lines(c, say) {
         page.push_str(&format!("<li>{}</li>\n", esc(&line)));
     }
     page.push_str("</ul>\n");
-    let (h_el, h_state, h_seen) = if say.zh {
-        ("元素", "状态", "见到")
-    } else {
-        ("Element", "State", "Seen")
-    };
+    let (h_el, h_state, h_seen) = (
+        say.text(CoverageText::ElementHeading),
+        say.text(CoverageText::StateHeading),
+        say.text(CoverageText::SeenHeading),
+    );
     let open = c
         .networks
         .iter()
@@ -153,10 +134,9 @@ fn html(c: &Coverage, project: &str, say: Say) -> String {
         .collect::<Vec<_>>();
     page.push_str(&format!(
         "<h2>{}</h2>\n",
-        say.pick(
-            format!("{} networks not fully covered", open.len()),
-            format!("{} 个网络未完全覆盖", open.len())
-        )
+        say.text(CoverageText::NotFullyCovered {
+            networks: open.len()
+        })
     ));
     for n in open {
         page.push_str(&format!(
@@ -166,11 +146,13 @@ fn html(c: &Coverage, project: &str, say: Say) -> String {
             esc(&n.title)
         ));
         for e in &n.elements {
-            let (class, state) = match e.state() {
-                State::Covered => ("covered", say.pick("covered", "已覆盖")),
-                State::Half => ("half", say.pick("half", "部分")),
-                State::Never => ("never", say.pick("never", "从未")),
+            // The class is the page's style, the same in both languages.
+            let class = match e.state() {
+                State::Covered => "covered",
+                State::Half => "half",
+                State::Never => "never",
             };
+            let state = say.text(CoverageText::State(e.state()));
             let mut seen = match (e.seen0, e.seen1) {
                 (true, true) => "0, 1",
                 (true, false) => "0",

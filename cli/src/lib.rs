@@ -11,11 +11,13 @@ mod source;
 mod testing;
 
 pub use say::Say;
+use say::shown;
 
 use clap::{Parser, Subcommand};
 use ladder_engine::diagnose::diagnose;
 use ladder_engine::sim;
 use ladder_engine::{file, il};
+use ladder_text::cli::{CheckText, Counts, FileText, StartText};
 use source::{EngineArg, Source, print_diagnostics, project_of};
 use std::ffi::OsString;
 use std::io::Write;
@@ -199,7 +201,10 @@ where
     run_with(
         args,
         locale,
-        &|_| Err(anyhow::anyhow!("no editor in this program")),
+        &|start| {
+            let lang = start.lang.unwrap_or(Say::new(None, locale).lang());
+            Err(anyhow::anyhow!(StartText::NoEditor.text(lang)))
+        },
         out,
         err,
     )
@@ -252,10 +257,7 @@ where
         let _ = writeln!(
             err,
             "ladder-studio: {}",
-            say.pick(
-                "a project to open (or --run) and a subcommand cannot be given together (see --help)",
-                "要打开的工程（或 --run）不能与子命令同时给出（见 --help）"
-            )
+            say.text(StartText::ProjectAndSubcommand)
         );
         return 2;
     }
@@ -358,13 +360,7 @@ fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> a
         let _ = writeln!(
             err,
             "ladder-studio: {}",
-            say.pick(
-                format!(
-                    "no project file or subcommand `{}` (see --help)",
-                    p.display()
-                ),
-                format!("没有工程文件或子命令 `{}`（见 --help）", p.display())
-            )
+            say.text(StartText::NoProjectOrSubcommand { name: shown(p) })
         );
         return Ok(2);
     }
@@ -373,11 +369,7 @@ fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> a
         Some(Ok(text)) => Some(text),
         Some(Err(e)) => {
             let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
-            let _ = writeln!(
-                err,
-                "ladder-studio: {}",
-                say.pick(e.message(nc, false), e.message(nc, true))
-            );
+            let _ = writeln!(err, "ladder-studio: {}", e.message(nc, say.zh));
             return Ok(2);
         }
         None => None,
@@ -387,14 +379,7 @@ fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> a
         .iter()
         .any(|v| std::env::var_os(v).is_some_and(|s| !s.is_empty()));
     if !display {
-        let _ = writeln!(
-            err,
-            "ladder-studio: {}",
-            say.pick(
-                "the editor needs a graphical session (no DISPLAY or WAYLAND_DISPLAY); the subcommands run without one (see --help)",
-                "编辑器需要图形界面（没有 DISPLAY 或 WAYLAND_DISPLAY）；子命令无需图形界面即可运行（见 --help）"
-            )
-        );
+        let _ = writeln!(err, "ladder-studio: {}", say.text(StartText::NoDisplay));
         return Ok(2);
     }
     let start = EditorStart {
@@ -441,10 +426,7 @@ fn export_il(
         let _ = writeln!(
             err,
             "{}",
-            say.pick(
-                format!("{}; no instruction list written", say.summary(&compiled)),
-                format!("{}；未写出指令表", say.summary(&compiled))
-            )
+            say.text(CheckText::IlNotWritten(Counts::of(&compiled)))
         );
         return Ok(1);
     }
@@ -477,46 +459,24 @@ fn write_output(
 fn import_il(path: &Path, output: &Path, say: Say, err: &mut dyn Write) -> anyhow::Result<i32> {
     let source = Source::read(path, say)?;
     let Source::Il { imported, .. } = source else {
-        anyhow::bail!(say.pick(
-            format!(
-                "{} is a project file, not an instruction list; use export-il to get its IL",
-                path.display()
-            ),
-            format!(
-                "{} 是工程文件，不是指令表；用 export-il 导出它的指令表",
-                path.display()
-            )
-        ));
+        anyhow::bail!(say.text(FileText::IsAProject { path: shown(path) }));
     };
     print_diagnostics(path, &imported.compiled, say, err);
-    let summary = say.summary(&imported.compiled);
+    let counts = Counts::of(&imported.compiled);
     let Some(project) = imported.project else {
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                format!("{summary}; the instruction list cannot be drawn as a ladder, no project written"),
-                format!("{summary}；指令表无法画成梯形图，未写出工程")
-            )
-        );
+        let _ = writeln!(err, "{}", say.text(CheckText::NoProjectWritten(counts)));
         return Ok(1);
     };
-    file::save(&project, output).map_err(|e| anyhow::anyhow!(say.cannot_save(output, &e)))?;
-    let errors = imported.compiled.errors();
+    file::save(&project, output).map_err(|e| anyhow::anyhow!(say.cannot_save(output, e)))?;
+    let errors = counts.errors;
     if errors > 0 {
         let _ = writeln!(
             err,
             "{}",
-            say.pick(
-                format!(
-                    "{summary}; project written to {} with the errors to fix",
-                    output.display()
-                ),
-                format!(
-                    "{summary}；工程已写入 {}，其中的错误待修改",
-                    output.display()
-                )
-            )
+            say.text(CheckText::WrittenWithErrors {
+                counts,
+                path: shown(output)
+            })
         );
     }
     Ok(i32::from(errors > 0))
@@ -548,21 +508,20 @@ fn import_comments(
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     let mut project =
-        file::load(project_path).map_err(|e| anyhow::anyhow!(say.cannot_open(project_path, &e)))?;
+        file::load(project_path).map_err(|e| anyhow::anyhow!(say.cannot_open(project_path, e)))?;
     let text = file::read_input_text(csv_path)
         .map_err(|e| anyhow::anyhow!(say.cannot_read(csv_path, e)))?;
     match ladder_engine::comments::import(&mut project, &text, lang) {
         Ok(n) => {
             file::save(&project, project_path)
-                .map_err(|e| anyhow::anyhow!(say.cannot_save(project_path, &e)))?;
-            let shown = project_path.display();
+                .map_err(|e| anyhow::anyhow!(say.cannot_save(project_path, e)))?;
             let _ = writeln!(
                 out,
                 "{}",
-                say.pick(
-                    format!("{n} rows applied to {shown}"),
-                    format!("{n} 行已导入 {shown}")
-                )
+                say.text(CheckText::RowsApplied {
+                    rows: n,
+                    path: shown(project_path)
+                })
             );
             Ok(0)
         }
@@ -570,14 +529,10 @@ fn import_comments(
             for (line, message) in &rows {
                 let _ = writeln!(err, "{}:{line}: {message}", csv_path.display());
             }
-            let n = rows.len();
             let _ = writeln!(
                 err,
                 "{}",
-                say.pick(
-                    format!("{n} row(s) rejected; the project was not changed"),
-                    format!("{n} 行被拒绝；工程未改动")
-                )
+                say.text(CheckText::RowsRejected { rows: rows.len() })
             );
             Ok(1)
         }

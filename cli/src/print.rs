@@ -1,10 +1,11 @@
 //! `print PATH -o OUT.pdf|OUT.svg`: the project as a printed document (docs/printing.md).
 
-use super::say::Say;
+use super::say::{Say, shown};
 use super::source::project_of;
 use clap::ValueEnum;
 use ladder_engine::file::write_atomic;
 use ladder_print::{Blocks, Labels, Options, Paper, PrintLang};
+use ladder_text::cli::PrintText;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -116,30 +117,27 @@ pub(super) fn print(
     {
         Some("pdf") => Kind::Pdf,
         Some("svg") => Kind::Svg,
-        _ => anyhow::bail!(say.pick(
-            format!(
-                "{}: the output is a .pdf or a .svg file",
-                args.output.display()
-            ),
-            format!("{}：输出文件须为 .pdf 或 .svg", args.output.display())
-        )),
+        _ => anyhow::bail!(say.text(PrintText::OutputKind {
+            path: shown(&args.output)
+        })),
     };
     if let Some(d) = args.date.as_deref()
         && !valid_date(d)
     {
-        anyhow::bail!(say.pick(
-            format!("--date {d}: write the date as YYYY-MM-DD, e.g. 2026-12-02"),
-            format!("--date {d}：日期应写成 YYYY-MM-DD，例如 2026-12-02")
-        ));
+        anyhow::bail!(say.text(PrintText::BadDate {
+            date: d.to_string()
+        }));
     }
     let project = match project_of(&args.path, say, err)? {
         Ok(p) => p,
         Err(code) => return Ok(code),
     };
     let only = match args.network.as_deref() {
-        Some(text) => Some(ladder_print::find_networks(&project, text).map_err(|e| {
-            anyhow::anyhow!(say.pick(format!("--network {e}"), format!("--network {e}")))
-        })?),
+        // The reason is the print crate's, the same in both languages.
+        Some(text) => Some(
+            ladder_print::find_networks(&project, text)
+                .map_err(|e| anyhow::anyhow!("--network {e}"))?,
+        ),
         None => None,
     };
     let blocks = if args.blocks.is_empty() {
@@ -154,10 +152,9 @@ pub(super) fn print(
     if let (Some(text), Some(&[(b, _), ..])) = (args.network.as_deref(), only.as_deref())
         && !blocks.includes(&project.ladder.blocks[b].kind)
     {
-        anyhow::bail!(say.pick(
-            format!("--network {text}: that block is not among the --blocks printed; add it or leave --blocks out"),
-            format!("--network {text}：该程序块不在 --blocks 所选之中；请加上它或去掉 --blocks")
-        ));
+        anyhow::bail!(say.text(PrintText::BlockNotPrinted {
+            network: text.to_string()
+        }));
     }
     let lang = match args.language {
         Some(LanguageArg::Zh) => PrintLang::Zh,
@@ -197,10 +194,7 @@ pub(super) fn print(
     if let Some(p) = args.page
         && !(1..=total).contains(&p)
     {
-        anyhow::bail!(say.pick(
-            format!("--page {p}: the document has pages 1 to {total}"),
-            format!("--page {p}：文档只有第 1 至 {total} 页")
-        ));
+        anyhow::bail!(say.text(PrintText::PageRange { page: p, total }));
     }
     let cannot = |p: &Path, e: std::io::Error| anyhow::anyhow!(say.cannot_write(p, e));
     match kind {
@@ -215,10 +209,10 @@ pub(super) fn print(
             let _ = writeln!(
                 out,
                 "{}",
-                say.pick(
-                    format!("{}: {n} pages", args.output.display()),
-                    format!("{}：{n} 页", args.output.display())
-                )
+                say.text(PrintText::Pages {
+                    path: shown(&args.output),
+                    pages: n
+                })
             );
         }
         Kind::Svg => {

@@ -2,13 +2,14 @@
 //! run for a long time, so both show progress on standard error once a run takes more than a
 //! moment, and both stop cleanly on Ctrl+C with what they have (docs/scripts.md, "Long runs").
 
-use super::say::Say;
+use super::say::{Say, shown};
 use super::source::machine;
 use ladder_engine::coverage::Coverage;
 use ladder_engine::machine::Machine;
 use ladder_engine::sim::{self, Control, Progress, Script};
 use ladder_engine::vm::Engine;
 use ladder_engine::vm::cnc::Cnc;
+use ladder_text::cli::{FileText, RunText};
 use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -84,8 +85,7 @@ pub(super) fn read_script(
         .unwrap_or_default();
     let read_file = |p: &str| -> Result<String, String> {
         let full = folder.join(p);
-        ladder_engine::cnc::program::read_program_file(&full)
-            .map_err(|e| say.pick(e.message(&full, false), e.message(&full, true)))
+        ladder_engine::cnc::program::read_program_file(&full).map_err(|e| e.message(&full, say.zh))
     };
     // The project again, for its saved scenarios and operator panel (`scenario` lines).
     let project = match super::source::Source::read(project_path, say)? {
@@ -119,7 +119,9 @@ pub(super) fn sim(
     err: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     if !script_path.exists() {
-        anyhow::bail!(say.cannot_read(script_path, say.pick("no such file", "文件不存在")));
+        anyhow::bail!(say.text(FileText::NoSuchFile {
+            path: shown(script_path)
+        }));
     }
     let mut machine = match machine(path, (cnc, engine), say, err)? {
         Ok(m) if devices => m,
@@ -145,22 +147,13 @@ pub(super) fn sim(
             let _ = writeln!(
                 err,
                 "{}",
-                say.pick(
-                    format!(
-                        "{name}:{}: {} of {} ticks ({}%); Ctrl+C stops with the results so far",
-                        p.line,
-                        p.done,
-                        p.of,
-                        percent(p.done, p.of)
-                    ),
-                    format!(
-                        "{name}:{}：已运行 {} / {} 个节拍（{}%）；按 Ctrl+C 停止并给出已有结果",
-                        p.line,
-                        p.done,
-                        p.of,
-                        percent(p.done, p.of)
-                    )
-                )
+                say.text(RunText::SimProgress {
+                    script: name.clone(),
+                    line: p.line,
+                    done: p.done,
+                    of: p.of,
+                    percent: percent(p.done, p.of),
+                })
             );
         }
     };
@@ -187,16 +180,13 @@ pub(super) fn sim(
         let _ = writeln!(
             err,
             "{}",
-            say.pick(
-                format!(
-                    "{name}:{}: stopped by Ctrl+C after {} of {} ticks of this line, {} in all; the results so far:",
-                    s.line, s.done, s.of, s.ticks
-                ),
-                format!(
-                    "{name}:{}：按 Ctrl+C 停止，本行已运行 {} / {} 个节拍，共 {} 个；已有结果如下：",
-                    s.line, s.done, s.of, s.ticks
-                )
-            )
+            say.text(RunText::SimStopped {
+                script: name.clone(),
+                line: s.line,
+                done: s.done,
+                of: s.of,
+                ticks: s.ticks,
+            })
         );
     }
     if coverage.wanted() {
@@ -258,44 +248,23 @@ pub(super) fn bench(
             let _ = writeln!(
                 err,
                 "{}",
-                say.pick(
-                    format!(
-                        "{timed} of {scans} scans ({}%); Ctrl+C stops with the figures so far",
-                        percent(timed, scans)
-                    ),
-                    format!(
-                        "已计时 {timed} / {scans} 次扫描（{}%）；按 Ctrl+C 停止并给出已有结果",
-                        percent(timed, scans)
-                    )
-                )
+                say.text(RunText::BenchProgress {
+                    timed,
+                    scans,
+                    percent: percent(timed, scans),
+                })
             );
         }
     }
     let elapsed = start.elapsed().as_nanos() as f64;
     if let Some(h) = machine.plc().halt() {
         let why = h.text(say.zh);
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                format!("the PLC halted during the benchmark: {why}"),
-                format!("计时中 PLC 停止：{why}")
-            )
-        );
+        let _ = writeln!(err, "{}", say.text(RunText::BenchHalted { why }));
         return Ok(1);
     }
     let stopped = timed < scans;
     if stopped {
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                format!(
-                    "stopped by Ctrl+C after {timed} of {scans} scans; the figures cover those"
-                ),
-                format!("按 Ctrl+C 停止，已计时 {timed} / {scans} 次扫描；结果按已计时的扫描计算")
-            )
-        );
+        let _ = writeln!(err, "{}", say.text(RunText::BenchStopped { timed, scans }));
     }
     let scans = timed.max(1);
     let steps = (machine.plc().executed_steps() - before) as f64 / scans as f64;
@@ -345,7 +314,7 @@ pub(super) fn bench(
                 );
             }
             Err(e) => {
-                let _ = writeln!(err, "{}", e.text(say.zh));
+                let _ = writeln!(err, "{}", say.text(e.said()));
                 return Ok(1);
             }
         }
@@ -382,14 +351,7 @@ fn set_up(
         let line = ladder_text::sim::report(&outcome.script, r, say.lang());
         let _ = writeln!(err, "{line}");
     }
-    let _ = writeln!(
-        err,
-        "{}",
-        say.pick(
-            "the set-up script failed; nothing was timed",
-            "准备脚本失败；未计时"
-        )
-    );
+    let _ = writeln!(err, "{}", say.text(RunText::SetUpFailed));
     Ok(Some(1))
 }
 

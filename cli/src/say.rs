@@ -1,13 +1,15 @@
-//! The command line's own words in the user's language: `--lang zh|en`, else the locale
-//! (`LC_ALL`, `LC_MESSAGES`, `LANG`; English when none is set, as in the C locale).
+//! The language the command line speaks: `--lang zh|en`, else the locale (`LC_ALL`,
+//! `LC_MESSAGES`, `LANG`; English when none is set, as in the C locale). The words
+//! themselves are not here: each is a [`CliText`] of `ladder_text`, the one table of zh and
+//! en texts shared with the editor, and the command line names them with their data.
 //!
 //! The shape of every line stays the same in both languages (`PATH:…: error: MESSAGE
 //! [CODE]`), so scripts that read `check`'s output read it in either.
 
 use ladder_engine::compiler::{Compiled, Diagnostic};
 use ladder_engine::file::FileError;
-use ladder_text::Lang;
-use ladder_text::errors::file_error;
+use ladder_text::cli::{CheckText, Counts, FileText, RunText};
+use ladder_text::{CliText, Lang};
 use std::fmt::Display;
 use std::path::Path;
 
@@ -28,11 +30,6 @@ impl Say {
         Say { zh }
     }
 
-    /// The language as the message table takes it.
-    pub fn lang(self) -> Lang {
-        if self.zh { Lang::Zh } else { Lang::En }
-    }
-
     /// The locale messages follow: `LC_ALL`, else `LC_MESSAGES`, else `LANG`, else `C`.
     pub fn system_locale() -> String {
         ["LC_ALL", "LC_MESSAGES", "LANG"]
@@ -41,21 +38,20 @@ impl Say {
             .unwrap_or_else(|| "C".to_string())
     }
 
-    /// The last line of `sim` and `test`: `N passed, M failed` (checks, or scripts).
-    pub fn passed(self, passed: usize, failed: usize) -> String {
-        self.pick(
-            format!("{passed} passed, {failed} failed"),
-            format!("{passed} 项通过，{failed} 项失败"),
-        )
+    /// The language as the text table names it.
+    pub fn lang(self) -> Lang {
+        if self.zh { Lang::Zh } else { Lang::En }
     }
 
-    /// `en` or `zh`, as the language is.
-    pub fn pick(self, en: impl Display, zh: impl Display) -> String {
-        if self.zh {
-            zh.to_string()
-        } else {
-            en.to_string()
-        }
+    /// A text of the command line in this language; every word the command line says comes
+    /// from the one table ([`CliText`], docs/files.md, "Language").
+    pub fn text(self, t: impl Into<CliText>) -> String {
+        t.into().text(self.lang())
+    }
+
+    /// The last line of `sim` and `test`: `N passed, M failed` (checks, or scripts).
+    pub fn passed(self, passed: usize, failed: usize) -> String {
+        self.text(RunText::Passed { passed, failed })
     }
 
     /// One diagnostic line.
@@ -65,50 +61,45 @@ impl Say {
 
     /// `N errors, M warnings`.
     pub fn summary(self, compiled: &Compiled) -> String {
-        let (e, w) = (compiled.errors(), compiled.warnings());
-        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
-        self.pick(
-            format!("{}, {}", plural(e, "error"), plural(w, "warning")),
-            format!("{e} 个错误，{w} 个警告"),
-        )
+        self.text(CheckText::Summary(Counts::of(compiled)))
     }
 
-    /// A file that could not be read.
+    /// A file that could not be read, with the system's reason.
     pub fn cannot_read(self, path: &Path, e: impl Display) -> String {
-        self.pick(
-            format!("cannot read {}: {e}", path.display()),
-            format!("无法读取 {}：{e}", path.display()),
-        )
+        self.text(FileText::CannotRead {
+            path: shown(path),
+            why: e.to_string(),
+        })
     }
 
-    /// A file that could not be written.
+    /// A file that could not be written, with the system's reason.
     pub fn cannot_write(self, path: &Path, e: impl Display) -> String {
-        self.pick(
-            format!("cannot write {}: {e}", path.display()),
-            format!("无法写入 {}：{e}", path.display()),
-        )
+        self.text(FileText::CannotWrite {
+            path: shown(path),
+            why: e.to_string(),
+        })
     }
 
     /// A project file that could not be saved.
-    pub fn cannot_save(self, path: &Path, e: &FileError) -> String {
-        self.pick(
-            format!("cannot save {}: {e}", path.display()),
-            format!("无法保存 {}：{}", path.display(), self.file(e)),
-        )
+    pub fn cannot_save(self, path: &Path, error: FileError) -> String {
+        self.text(FileText::CannotSave {
+            path: shown(path),
+            error,
+        })
     }
 
     /// A project file that could not be opened.
-    pub fn cannot_open(self, path: &Path, e: &FileError) -> String {
-        self.pick(
-            format!("{} cannot be opened: {e}", path.display()),
-            format!("{} 无法打开：{}", path.display(), self.file(e)),
-        )
+    pub fn cannot_open(self, path: &Path, error: FileError) -> String {
+        self.text(FileText::CannotOpen {
+            path: shown(path),
+            error,
+        })
     }
+}
 
-    /// A project file's error by itself.
-    pub fn file(self, e: &FileError) -> String {
-        file_error(e, if self.zh { Lang::Zh } else { Lang::En })
-    }
+/// A path as the texts show it: as the user gave it.
+pub fn shown(path: &Path) -> String {
+    path.display().to_string()
 }
 
 #[cfg(test)]

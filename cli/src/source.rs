@@ -1,13 +1,14 @@
 //! Reading a PATH argument: a project file or an instruction list, told apart by content,
 //! and what the commands build from it: its diagnostics, its project, its program, its machine.
 
-use super::say::Say;
+use super::say::{Say, shown};
 use anyhow::{Result, anyhow, bail};
 use ladder_engine::compiler::{Compiled, compile};
 use ladder_engine::machine::Machine;
 use ladder_engine::model::Project;
 use ladder_engine::vm::Engine;
 use ladder_engine::{file, il};
+use ladder_text::cli::{CheckText, Counts, FileText, RunText};
 use std::io::Write;
 use std::path::Path;
 
@@ -29,20 +30,11 @@ impl Source {
         let bytes = file::read_input(path).map_err(|e| anyhow!(say.cannot_read(path, e)))?;
         if file::is_project_text(&bytes) {
             let project =
-                file::from_bytes(&bytes).map_err(|e| anyhow!(say.cannot_open(path, &e)))?;
+                file::from_bytes(&bytes).map_err(|e| anyhow!(say.cannot_open(path, e)))?;
             return Ok(Source::Project(project));
         }
         let Ok(text) = String::from_utf8(bytes) else {
-            bail!(say.pick(
-                format!(
-                    "{} is neither a Ladder Studio project nor an instruction list (it is not UTF-8 text)",
-                    path.display()
-                ),
-                format!(
-                    "{} 既不是 Ladder Studio 工程，也不是指令表（不是 UTF-8 文本）",
-                    path.display()
-                )
-            ));
+            bail!(say.text(FileText::NotText { path: shown(path) }));
         };
         let imported = il::import(&text);
         Ok(Source::Il { imported })
@@ -112,14 +104,7 @@ pub(super) fn machine(
     if let (Ok(m), Some(engine)) = (&mut built, engine)
         && m.plc_mut().set_engine(engine) != engine
     {
-        let _ = writeln!(
-            err,
-            "{}",
-            say.pick(
-                "native code is unavailable on this machine: the interpreter runs the scan",
-                "本机无法生成本机代码：扫描由解释器执行"
-            )
-        );
+        let _ = writeln!(err, "{}", say.text(RunText::NoNativeCode));
     }
     Ok(built)
 }
@@ -134,14 +119,10 @@ fn machine_of(
     let source = Source::read(path, say)?;
     let cannot_run = |compiled: &Compiled, err: &mut dyn Write| {
         print_diagnostics(path, compiled, say, err);
-        let summary = say.summary(compiled);
         let _ = writeln!(
             err,
             "{}",
-            say.pick(
-                format!("{summary}; the program cannot run"),
-                format!("{summary}；程序无法运行")
-            )
+            say.text(CheckText::CannotRun(Counts::of(compiled)))
         );
     };
     let project = match source {
@@ -181,14 +162,10 @@ pub(super) fn project_of(
             Some(p) => Ok(p),
             None => {
                 print_diagnostics(path, &imported.compiled, say, err);
-                let summary = say.summary(&imported.compiled);
                 let _ = writeln!(
                     err,
                     "{}",
-                    say.pick(
-                        format!("{summary}; the instruction list cannot be drawn"),
-                        format!("{summary}；指令表无法画成梯形图")
-                    )
+                    say.text(CheckText::NotDrawable(Counts::of(&imported.compiled)))
                 );
                 Err(1)
             }

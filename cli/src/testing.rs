@@ -8,11 +8,13 @@
 //! the project's machine model, as `sim --no-machine`); words may share one line.
 
 use super::running::{STOPPED, read_script, stop_on_ctrl_c};
-use super::say::Say;
+use super::say::{Say, shown};
 use ladder_engine::compiler::Program;
 use ladder_engine::coverage::Coverage;
 use ladder_engine::sim::{self, Control};
 use ladder_engine::vm::Engine;
+use ladder_text::Lang;
+use ladder_text::cli::{CaseFailure, FileText, TestText};
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -250,12 +252,13 @@ fn junit(project: &Path, cases: &[Case], results: &[Ran]) -> String {
             let mut s = TestCaseStatus::non_success(kind);
             let message = match &ran.error {
                 Some(e) => e.lines().next().unwrap_or_default().to_string(),
-                None if ran.stopped => "stopped by Ctrl+C".to_string(),
-                None => format!(
-                    "{} of {} checks failed",
-                    ran.failed,
-                    ran.passed + ran.failed
-                ),
+                // English whatever the language: the report is read by a CI server.
+                None if ran.stopped => CaseFailure::Stopped.text(Lang::En),
+                None => CaseFailure::Checks {
+                    failed: ran.failed,
+                    checks: ran.passed + ran.failed,
+                }
+                .text(Lang::En),
             };
             s.set_message(message);
             let detail = ran.error.clone().unwrap_or_else(|| ran.output.join("\n"));
@@ -288,12 +291,12 @@ pub(super) fn test(
     out: &mut dyn Write,
 ) -> anyhow::Result<i32> {
     if !project.is_file() {
-        let why = if project.exists() {
-            say.pick("not a project file", "不是工程文件")
+        let path = shown(project);
+        anyhow::bail!(if project.exists() {
+            say.text(FileText::NotAProjectFile { path })
         } else {
-            say.pick("no such file", "文件不存在")
-        };
-        anyhow::bail!(say.cannot_read(project, why));
+            say.text(FileText::NoSuchFile { path })
+        });
     }
     coverage_out.check(say)?;
     if let Some(path) = junit_out {
@@ -301,22 +304,15 @@ pub(super) fn test(
     }
     let folder = test_folder(project);
     let cases = cases(&folder).map_err(|e| {
-        anyhow::anyhow!(say.pick(
-            format!(
-                "{}: no test folder ({e}); put the project's scripts in it as NAME.script",
-                folder.display()
-            ),
-            format!(
-                "{}：没有测试文件夹（{e}）；请把工程的脚本以 NAME.script 放入其中",
-                folder.display()
-            )
-        ))
+        anyhow::anyhow!(say.text(TestText::NoTestFolder {
+            folder: shown(&folder),
+            why: e.to_string(),
+        }))
     })?;
     if cases.is_empty() {
-        anyhow::bail!(say.pick(
-            format!("{}: no .script files to run", folder.display()),
-            format!("{}：没有可运行的 .script 文件", folder.display())
-        ));
+        anyhow::bail!(say.text(TestText::NoScripts {
+            folder: shown(&folder)
+        }));
     }
     let jobs = jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     let program = match coverage_out.wanted() {
@@ -336,29 +332,29 @@ pub(super) fn test(
             let _ = writeln!(
                 out,
                 "{}",
-                say.pick(
-                    format!("ok    {} ({checks} checks)", case.name),
-                    format!("通过  {}（{checks} 项检查）", case.name)
-                )
+                say.text(TestText::CaseOk {
+                    name: case.name.clone(),
+                    checks
+                })
             );
             continue;
         }
         failed += 1;
         let why = match &ran.error {
-            Some(_) => say.pick("cannot run", "无法运行"),
-            None if ran.stopped => say.pick("stopped by Ctrl+C", "按 Ctrl+C 停止"),
-            None => say.pick(
-                format!("{} of {checks} checks failed", ran.failed),
-                format!("{checks} 项检查中 {} 项失败", ran.failed),
-            ),
+            Some(_) => CaseFailure::CannotRun,
+            None if ran.stopped => CaseFailure::Stopped,
+            None => CaseFailure::Checks {
+                failed: ran.failed,
+                checks,
+            },
         };
         let _ = writeln!(
             out,
             "{}",
-            say.pick(
-                format!("FAIL  {} ({why})", case.name),
-                format!("失败  {}（{why}）", case.name)
-            )
+            say.text(TestText::CaseFailed {
+                name: case.name.clone(),
+                why
+            })
         );
         let detail = ran.error.iter().flat_map(|e| e.lines().map(str::to_string));
         for line in detail.chain(ran.output.iter().cloned()) {

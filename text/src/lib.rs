@@ -5,10 +5,12 @@
 //! words. A missing translation is a compile error: each text is a `match` with an arm per
 //! language.
 
+pub mod cli;
 pub mod errors;
 pub mod sim;
 pub mod ui;
 
+pub use cli::CliText;
 pub use ui::Msg;
 
 use serde::{Deserialize, Serialize};
