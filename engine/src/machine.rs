@@ -5,7 +5,7 @@
 
 pub use crate::address::Target;
 use crate::address::{Address, Area};
-use crate::cnc::command::{CncCommand, CncKey, CncValue};
+use crate::cnc::command::{CncCommand, CncError, CncKey, CncValue};
 use crate::cnc::{CncStatus, SimCnc};
 use crate::devices::{DeviceStatus, Fault, MachineModel, ModelError, Plant};
 use crate::model::Project;
@@ -391,20 +391,21 @@ impl Machine {
         Ok(())
     }
 
-    /// Reads a probe.
-    pub fn read(&self, probe: &Probe) -> Result<ProbeValue, String> {
+    /// Reads a probe. A CNC value can be refused (an axis beyond #8130), as can a probe of
+    /// a part the machine runs without; the refusal reads in either language.
+    pub fn read(&self, probe: &Probe) -> Result<ProbeValue, CncError> {
         match probe {
             Probe::Memory(t) => Ok(ProbeValue::Int(self.plc.read(t.address, t.bytes))),
             Probe::Cnc(k) => match &self.cnc {
                 Some(c) => c.value(k).map(ProbeValue::Cnc),
-                None => Err("no CNC is attached".into()),
+                None => Err(CncError::NoCnc),
             },
             Probe::Device(i) => self
                 .plant
                 .as_ref()
                 .and_then(|p| p.value(*i))
                 .map(ProbeValue::Int)
-                .ok_or_else(|| "no machine model is running".into()),
+                .ok_or(CncError::NoMachineModel),
         }
     }
 

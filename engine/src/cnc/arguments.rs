@@ -1,8 +1,9 @@
 //! The words of a `cnc` script command and what each may be: axes by name or number,
-//! millimetres, integers, parameter settings with their refusals in both languages, tool
-//! offset numbers. Both the command parser and the key and value names read them.
+//! millimetres, integers, parameter settings, tool offset numbers. Both the command parser
+//! and the key and value names read them; their refusals are [`CncError`]s.
 
-use super::params::{self, ParamError, Params, Selector, TABLE};
+use super::error::{CncError, Quantity};
+use super::params::{self, Params};
 use super::{AXES, AXIS_NAMES};
 use crate::profile::ProfileId;
 
@@ -27,68 +28,25 @@ pub fn parse_axis(text: &str) -> Option<u8> {
 }
 
 /// Millimetres as written (`12.5`), in thousandths, within ±99999.999 mm.
-pub(super) fn mm(text: &str) -> Result<i64, String> {
+pub(super) fn mm(text: &str) -> Result<i64, CncError> {
     let v: f64 = text
         .parse()
         .ok()
         .filter(|v: &f64| v.is_finite())
-        .ok_or_else(|| format!("`{text}` is not a number of mm"))?;
+        .ok_or_else(|| CncError::NotMm { text: text.into() })?;
     let incr = (v * 1000.0).round();
     if incr.abs() > 99_999_999.0 {
-        return Err(format!("{text} mm is beyond ±99999.999 mm"));
+        return Err(CncError::MmRange { text: text.into() });
     }
     Ok(incr as i64)
 }
 
 /// An integer as written; `what` names it in the refusal.
-pub(super) fn int(text: &str, what: &str) -> Result<i64, String> {
-    text.parse::<i64>()
-        .map_err(|_| format!("`{text}` is not an integer ({what})"))
-}
-
-/// [`param_error`] in Chinese.
-pub(super) fn param_error_zh(e: ParamError, number: u16) -> String {
-    match e {
-        ParamError::Number => format!("没有参数 {number}"),
-        ParamError::Selector => {
-            let s = params::spec(number).expect("number checked first");
-            match s.selector {
-                Selector::None => format!("参数 {number} 不带轴号或主轴号"),
-                Selector::Axis => format!("参数 {number} 需要轴号 1–5"),
-                Selector::Spindle => format!("参数 {number} 需要主轴号 1–4"),
-            }
-        }
-        ParamError::Value => {
-            let s = params::spec(number).expect("number checked first");
-            format!("参数 {number} 的范围为 {}…{}", s.min, s.max)
-        }
-    }
-}
-
-/// Why a parameter setting was refused, in English.
-pub(super) fn param_error(e: ParamError, number: u16) -> String {
-    match e {
-        ParamError::Number => format!(
-            "no parameter {number} (the simulator has {})",
-            TABLE
-                .iter()
-                .map(|s| format!("{:04}", s.number))
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
-        ParamError::Selector => {
-            let s = params::spec(number).expect("number checked first");
-            match s.selector {
-                Selector::None => format!("parameter {number} takes no axis or spindle number"),
-                Selector::Axis => format!("parameter {number} needs an axis number 1–5"),
-                Selector::Spindle => format!("parameter {number} needs a spindle number 1–4"),
-            }
-        }
-        ParamError::Value => {
-            let s = params::spec(number).expect("number checked first");
-            format!("parameter {number} is {}…{}", s.min, s.max)
-        }
-    }
+pub(super) fn int(text: &str, what: Quantity) -> Result<i64, CncError> {
+    text.parse::<i64>().map_err(|_| CncError::NotInteger {
+        text: text.into(),
+        what,
+    })
 }
 
 /// Checks a parameter reference of a profile: GSK980 words 1–254, or a machine setting.
@@ -97,19 +55,19 @@ pub(super) fn check_param(
     number: u16,
     selector: Option<u8>,
     value: i64,
-) -> Result<(), String> {
+) -> Result<(), CncError> {
     if profile == ProfileId::Gsk980 && (1..=params::GSK980_WORDS as u16).contains(&number) {
         if selector.is_some() {
-            return Err(format!("GSK980 parameter {number} takes no selector"));
+            return Err(CncError::Gsk980Selector { number });
         }
         if i32::try_from(value).is_err() {
-            return Err(format!("GSK980 parameter {number} holds a 32-bit integer"));
+            return Err(CncError::Gsk980Value { number });
         }
         return Ok(());
     }
     Params::check(number, selector, value)
         .map(|_| ())
-        .map_err(|e| param_error(e, number))
+        .map_err(|error| CncError::Param { number, error })
 }
 
 /// The tool offset numbers a profile has.

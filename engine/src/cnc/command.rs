@@ -2,14 +2,15 @@
 //! commands"): the `cnc …` commands as values, checked when they are parsed so a script is
 //! refused before it runs, and the `cnc.KEY` values with their comparison rules.
 
-use super::data::{MacroSlot, OffsetType, WORK_SYSTEMS, parse_clock, work_system};
+use super::data::{MacroSlot, OffsetType, parse_clock, work_system};
 use super::params::{self, Params};
 use super::{AXIS_NAMES, RunState, SimCnc};
 use crate::profile::ProfileId;
 use crate::refusal::Refusal;
 
 pub use super::arguments::{axis_name, parse_axis};
-use super::arguments::{check_param, int, mm, offset_range, param_error, param_error_zh};
+use super::arguments::{check_param, int, mm, offset_range};
+pub use super::error::{CncError, Quantity};
 pub use super::keys::{CncKey, CncValue};
 
 /// A command to the CNC.
@@ -83,12 +84,9 @@ impl CncCommand {
         words: &[&str],
         profile: ProfileId,
         read_file: &dyn Fn(&str) -> Result<String, String>,
-    ) -> Result<CncCommand, String> {
+    ) -> Result<CncCommand, CncError> {
         let Some(&sub) = words.first() else {
-            return Err(format!(
-                "`cnc` needs a subcommand ({})",
-                SUBCOMMANDS.join(", ")
-            ));
+            return Err(CncError::NoSubcommand);
         };
         let args = &words[1..];
         Ok(match sub.to_ascii_lowercase().as_str() {
@@ -98,7 +96,10 @@ impl CncCommand {
             }
             "program-file" => {
                 want(args, 1, "program-file PATH")?;
-                CncCommand::Program(read_file(args[0])?)
+                CncCommand::Program(read_file(args[0]).map_err(|message| CncError::ReadFile {
+                    path: args[0].into(),
+                    message,
+                })?)
             }
             "mdi" => {
                 want(args, 1, "mdi \"TEXT\"")?;
@@ -117,37 +118,36 @@ impl CncCommand {
             "handwheel" => Self::parse_handwheel(args)?,
             "clock" => {
                 want(args, 1, "clock YYYY-MM-DDTHH:MM:SS")?;
-                CncCommand::Clock(parse_clock(args[0]).ok_or_else(|| {
-                    format!("`{}` is not a date and time YYYY-MM-DDTHH:MM:SS", args[0])
+                CncCommand::Clock(parse_clock(args[0]).ok_or_else(|| CncError::NotClock {
+                    text: args[0].into(),
                 })?)
             }
-            _ => {
-                return Err(format!(
-                    "unknown cnc command `{sub}` (commands: {})",
-                    SUBCOMMANDS.join(", ")
-                ));
-            }
+            _ => return Err(CncError::UnknownCommand { text: sub.into() }),
         })
     }
 
     /// `param N [SEL] VALUE`: the selector is optional, so the count is checked here rather
     /// than by [`want`]; the value is checked against the profile's parameter table.
-    fn parse_param(args: &[&str], profile: ProfileId) -> Result<CncCommand, String> {
+    fn parse_param(args: &[&str], profile: ProfileId) -> Result<CncCommand, CncError> {
         if !(2..=3).contains(&args.len()) {
-            return Err(usage("param N [SEL] VALUE"));
+            return Err(CncError::Usage {
+                usage: "param N [SEL] VALUE",
+            });
         }
         let number = args[0]
             .parse::<u16>()
-            .map_err(|_| format!("`{}` is not a parameter number", args[0]))?;
+            .map_err(|_| CncError::NotParamNumber {
+                text: args[0].into(),
+                key: None,
+            })?;
         let selector = match args.len() {
-            3 => Some(
-                args[1]
-                    .parse::<u8>()
-                    .map_err(|_| format!("`{}` is not an axis or spindle number", args[1]))?,
-            ),
+            3 => Some(args[1].parse::<u8>().map_err(|_| CncError::NotSelector {
+                text: args[1].into(),
+                key: None,
+            })?),
             _ => None,
         };
-        let value = int(args[args.len() - 1], "a parameter value")?;
+        let value = int(args[args.len() - 1], Quantity::ParamValue)?;
         check_param(profile, number, selector, value)?;
         Ok(CncCommand::Param {
             number,
@@ -158,27 +158,27 @@ impl CncCommand {
 
     /// `offset N TYPE VALUE`: N within the profile's offsets; TIP takes a direction 0–9, every
     /// other type a length in mm.
-    fn parse_offset(args: &[&str], profile: ProfileId) -> Result<CncCommand, String> {
+    fn parse_offset(args: &[&str], profile: ProfileId) -> Result<CncCommand, CncError> {
         want(args, 3, "offset N TYPE VALUE")?;
         let range = offset_range(profile);
         let number = args[0]
             .parse::<u8>()
             .ok()
             .filter(|n| range.contains(n))
-            .ok_or_else(|| {
-                format!(
-                    "`{}`: tool offsets are {}–{}",
-                    args[0],
-                    range.start(),
-                    range.end()
-                )
+            .ok_or_else(|| CncError::OffsetNumber {
+                text: args[0].into(),
+                key: None,
+                first: *range.start(),
+                last: *range.end(),
             })?;
-        let kind = OffsetType::parse(args[1])
-            .ok_or_else(|| format!("`{}`: the type is X Z R Y, WX WZ WR WY or TIP", args[1]))?;
+        let kind = OffsetType::parse(args[1]).ok_or_else(|| CncError::OffsetType {
+            text: args[1].into(),
+            key: None,
+        })?;
         let value = if kind == OffsetType::Tip {
-            let v = int(args[2], "the tip direction 0–9")?;
+            let v = int(args[2], Quantity::TipDirection)?;
             if !(0..=9).contains(&v) {
-                return Err(format!("the tip direction is 0–9, not {v}"));
+                return Err(CncError::TipRange { value: v });
             }
             v
         } else {
@@ -192,13 +192,16 @@ impl CncCommand {
     }
 
     /// `workpiece SYS AXIS VALUE`: a work system by name, an axis, a value in mm.
-    fn parse_workpiece(args: &[&str]) -> Result<CncCommand, String> {
+    fn parse_workpiece(args: &[&str]) -> Result<CncCommand, CncError> {
         want(args, 3, "workpiece SYS AXIS VALUE")?;
-        let system = work_system(args[0])
-            .ok_or_else(|| format!("`{}`: the system is {}", args[0], WORK_SYSTEMS.join(", ")))?
-            as u8;
-        let axis = parse_axis(args[1])
-            .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[1]))?;
+        let system = work_system(args[0]).ok_or_else(|| CncError::WorkSystem {
+            text: args[0].into(),
+            key: None,
+        })? as u8;
+        let axis = parse_axis(args[1]).ok_or_else(|| CncError::BadAxis {
+            text: args[1].into(),
+            key: None,
+        })?;
         Ok(CncCommand::Workpiece {
             system,
             axis,
@@ -208,13 +211,11 @@ impl CncCommand {
 
     /// `macro N VALUE`: only the variables a script may write, `vacant` or a finite number,
     /// and 0 or 1 for a signal bit.
-    fn parse_macro(args: &[&str]) -> Result<CncCommand, String> {
+    fn parse_macro(args: &[&str]) -> Result<CncCommand, CncError> {
         want(args, 2, "macro N VALUE")?;
-        let n = int(args[0], "a variable number")?;
+        let n = int(args[0], Quantity::Variable)?;
         if !writable_macro(n) {
-            return Err(format!(
-                "#{n} cannot be set: the variables are #1–#33 (the current level's locals), #100–#199, #500–#999 and #1100–#1131"
-            ));
+            return Err(CncError::MacroNotWritable { number: n });
         }
         let value = if args[1].eq_ignore_ascii_case("vacant") {
             None
@@ -224,13 +225,15 @@ impl CncCommand {
                     .parse::<f64>()
                     .ok()
                     .filter(|v| v.is_finite())
-                    .ok_or_else(|| format!("`{}` is not a decimal number or `vacant`", args[1]))?,
+                    .ok_or_else(|| CncError::NotDecimal {
+                        text: args[1].into(),
+                    })?,
             )
         };
         if matches!(MacroSlot::of(n), MacroSlot::Output(_))
             && !matches!(value, Some(v) if v == 0.0 || v == 1.0)
         {
-            return Err(format!("#{n} is a signal bit: 0 or 1"));
+            return Err(CncError::MacroSignalBit { number: n });
         }
         Ok(CncCommand::Macro {
             number: n as u16,
@@ -239,10 +242,12 @@ impl CncCommand {
     }
 
     /// `position AXIS VALUE`: an axis and a machine position in mm.
-    fn parse_position(args: &[&str]) -> Result<CncCommand, String> {
+    fn parse_position(args: &[&str]) -> Result<CncCommand, CncError> {
         want(args, 2, "position AXIS VALUE")?;
-        let axis = parse_axis(args[0])
-            .ok_or_else(|| format!("`{}`: the axis is X, Z, Y, 4, 5 or 1–5", args[0]))?;
+        let axis = parse_axis(args[0]).ok_or_else(|| CncError::BadAxis {
+            text: args[0].into(),
+            key: None,
+        })?;
         Ok(CncCommand::Position {
             axis,
             value: mm(args[1])?,
@@ -251,43 +256,38 @@ impl CncCommand {
 
     /// `alarm N`: the alarms the machine itself raises are refused, so a script cannot fake
     /// them.
-    fn parse_alarm(args: &[&str]) -> Result<CncCommand, String> {
+    fn parse_alarm(args: &[&str]) -> Result<CncCommand, CncError> {
         want(args, 1, "alarm N")?;
-        let n = int(args[0], "an alarm number")?;
+        let n = int(args[0], Quantity::Alarm)?;
         if !(1..=999).contains(&n) || matches!(n, 500 | 501 | 506 | 507 | 950) {
-            return Err(format!(
-                "alarm {n} cannot be raised by a script: 1–999 except 500, 501, 506, 507 and 950 (those come from the machine)"
-            ));
+            return Err(CncError::AlarmNotRaisable { number: n });
         }
         Ok(CncCommand::Alarm(n as u16))
     }
 
     /// `handwheel COUNT`: at most 10000 pulses either way in one exchange.
-    fn parse_handwheel(args: &[&str]) -> Result<CncCommand, String> {
+    fn parse_handwheel(args: &[&str]) -> Result<CncCommand, CncError> {
         want(args, 1, "handwheel COUNT")?;
-        let n = int(args[0], "pulses")?;
+        let n = int(args[0], Quantity::Pulses)?;
         if !(-10_000..=10_000).contains(&n) {
-            return Err(format!("{n} pulses: the count is −10000…10000"));
+            return Err(CncError::HandwheelRange { pulses: n });
         }
         Ok(CncCommand::Handwheel(n))
     }
 }
 
-/// The answer to a command given the wrong words: its usage line.
-fn usage(u: &str) -> String {
-    format!("usage: cnc {u}")
-}
-
-/// Checks that a command has exactly `n` words after its name; `u` is its usage.
-fn want(args: &[&str], n: usize, u: &str) -> Result<(), String> {
+/// Checks that a command has exactly `n` words after its name; `usage` is its usage, the
+/// answer to a command given the wrong words.
+fn want(args: &[&str], n: usize, usage: &'static str) -> Result<(), CncError> {
     if args.len() == n {
         Ok(())
     } else {
-        Err(usage(u))
+        Err(CncError::Usage { usage })
     }
 }
 
-const SUBCOMMANDS: [&str; 12] = [
+/// The subcommands, as a refusal of a missing or unknown one lists them.
+pub(super) const SUBCOMMANDS: [&str; 12] = [
     "program",
     "program-file",
     "mdi",
@@ -343,8 +343,11 @@ impl SimCnc {
                 {
                     self.params.set_word980(usize::from(*number), *value as i32);
                 } else {
-                    let (i, slot) = Params::check(*number, *selector, *value).map_err(|e| {
-                        Refusal::new(param_error(e, *number), param_error_zh(e, *number))
+                    let (i, slot) = Params::check(*number, *selector, *value).map_err(|error| {
+                        CncError::Param {
+                            number: *number,
+                            error,
+                        }
                     })?;
                     self.params.set(i, slot, *value);
                     if i == params::P3402 && self.auto.state == RunState::Idle {
@@ -367,10 +370,7 @@ impl SimCnc {
                     ));
                 }
                 if *kind == OffsetType::Tip && !(0..=9).contains(value) {
-                    return Err(Refusal::new(
-                        format!("the tip direction is 0–9, not {value}"),
-                        format!("刀尖方向为 0–9，不是 {value}"),
-                    ));
+                    return Err(CncError::TipRange { value: *value }.into());
                 }
                 self.offsets[usize::from(*number)].set(*kind, *value);
             }
@@ -383,9 +383,7 @@ impl SimCnc {
                     .work
                     .get_mut(usize::from(*system))
                     .and_then(|w| w.get_mut(usize::from(*axis)))
-                    .ok_or_else(|| {
-                        Refusal::new("no such workpiece system or axis", "没有此工件坐标系或轴")
-                    })?;
+                    .ok_or(CncError::NoWorkSlot)?;
                 *slot = *value;
             }
             CncCommand::Macro { number, value } => match MacroSlot::of(i64::from(*number)) {
@@ -401,11 +399,11 @@ impl SimCnc {
                 let n = usize::from(*axis);
                 let name = AXIS_NAMES.get(n).unwrap_or(&"?");
                 if n >= self.axis_count() {
-                    let count = self.axis_count();
-                    return Err(Refusal::new(
-                        format!("axis {name} is beyond the {count} controlled axes (#8130)"),
-                        format!("{name} 轴超出 {count} 个控制轴（#8130）"),
-                    ));
+                    return Err(CncError::AxisBeyond {
+                        axis: *axis,
+                        count: self.axis_count(),
+                    }
+                    .into());
                 }
                 if self.remaining(n) != 0 || self.manual.moving(n) || self.plc_moving(n) {
                     return Err(Refusal::new(
@@ -437,7 +435,7 @@ impl SimCnc {
 mod tests {
     use super::*;
 
-    fn parse(words: &[&str]) -> Result<CncCommand, String> {
+    fn parse(words: &[&str]) -> Result<CncCommand, CncError> {
         CncCommand::parse(words, ProfileId::Gsk988ta, &|p| Err(format!("no file {p}")))
     }
 
@@ -454,17 +452,25 @@ mod tests {
         assert!(
             parse(&["param", "1420", "3000"])
                 .unwrap_err()
+                .en()
                 .contains("axis number")
         );
         assert!(
             parse(&["param", "3003", "1", "3"])
                 .unwrap_err()
+                .en()
                 .contains("no axis")
         );
-        assert!(parse(&["param", "8130", "9"]).unwrap_err().contains("2…5"));
+        assert!(
+            parse(&["param", "8130", "9"])
+                .unwrap_err()
+                .en()
+                .contains("2…5")
+        );
         assert!(
             parse(&["offset", "100", "X", "1"])
                 .unwrap_err()
+                .en()
                 .contains("1–99")
         );
         assert!(parse(&["offset", "1", "TIP", "10"]).is_err());
@@ -486,11 +492,13 @@ mod tests {
         assert!(
             parse(&["spin"])
                 .unwrap_err()
+                .en()
                 .contains("unknown cnc command")
         );
         assert!(
             parse(&["program-file", "x.nc"])
                 .unwrap_err()
+                .en()
                 .contains("no file")
         );
         assert!(parse(&["position", "Q", "1"]).is_err());

@@ -4,8 +4,9 @@
 
 use super::arguments::{axis_name, check_param, int, mm, offset_range, parse_axis};
 use super::data::{OffsetType, WORK_SYSTEMS, work_system};
+use super::error::{CncError, Quantity};
 use super::params;
-use super::{AXIS_NAMES, Mode, RunState, SimCnc};
+use super::{Mode, RunState, SimCnc};
 use crate::profile::ProfileId;
 use std::fmt;
 
@@ -68,22 +69,39 @@ impl fmt::Display for CncValue {
     }
 }
 
+/// The forms of `cnc.KEY`, as the refusal of an unknown key lists them.
+pub(super) const KEY_FORMS: [&str; 13] = [
+    "cnc.mode",
+    "cnc.run",
+    "cnc.block",
+    "cnc.prog",
+    "cnc.pos.AXIS",
+    "cnc.abs.AXIS",
+    "cnc.spindle",
+    "cnc.alarm.N",
+    "cnc.alarms",
+    "cnc.param.N[.SEL]",
+    "cnc.offset.N.TYPE",
+    "cnc.work.SYS.AXIS",
+    "cnc.macro.N",
+];
+
 impl CncKey {
     /// Parses `cnc.KEY` (the text starts with `cnc.`, any case).
-    pub fn parse(text: &str, profile: ProfileId) -> Result<CncKey, String> {
+    pub fn parse(text: &str, profile: ProfileId) -> Result<CncKey, CncError> {
         let lower = text.to_ascii_lowercase();
         let parts: Vec<&str> = lower.split('.').collect();
-        let bad = || {
-            format!(
-                "unknown CNC value `{text}` (cnc.mode, cnc.run, cnc.block, cnc.prog, cnc.pos.AXIS, cnc.abs.AXIS, cnc.spindle, cnc.alarm.N, cnc.alarms, cnc.param.N[.SEL], cnc.offset.N.TYPE, cnc.work.SYS.AXIS, cnc.macro.N)"
-            )
-        };
+        let bad = || CncError::UnknownKey { text: text.into() };
         if parts.first() != Some(&"cnc") {
             return Err(bad());
         }
+        // A word of the key is refused with the key it was part of.
+        let key = || Some(text.to_string());
         let axis = |t: &str| {
-            parse_axis(t)
-                .ok_or_else(|| format!("`{t}` in `{text}`: the axis is X, Z, Y, 4, 5 or 1–5"))
+            parse_axis(t).ok_or_else(|| CncError::BadAxis {
+                text: t.into(),
+                key: key(),
+            })
         };
         Ok(match parts[1..] {
             ["mode"] => CncKey::Mode,
@@ -98,15 +116,20 @@ impl CncKey {
                 n.parse::<u16>()
                     .ok()
                     .filter(|n| (1..=9999).contains(n))
-                    .ok_or_else(|| format!("`{n}` in `{text}`: alarm numbers are 1–9999"))?,
+                    .ok_or_else(|| CncError::KeyAlarm {
+                        text: n.into(),
+                        key: text.into(),
+                    })?,
             ),
             ["param", n] | ["param", n, _] => {
-                let number = n
-                    .parse::<u16>()
-                    .map_err(|_| format!("`{n}` in `{text}` is not a parameter number"))?;
+                let number = n.parse::<u16>().map_err(|_| CncError::NotParamNumber {
+                    text: n.into(),
+                    key: key(),
+                })?;
                 let selector = match parts.get(3) {
-                    Some(s) => Some(s.parse::<u8>().map_err(|_| {
-                        format!("`{s}` in `{text}` is not an axis or spindle number")
+                    Some(s) => Some(s.parse::<u8>().map_err(|_| CncError::NotSelector {
+                        text: s.to_string(),
+                        key: key(),
                     })?),
                     None => None,
                 };
@@ -121,24 +144,22 @@ impl CncKey {
                     .parse::<u8>()
                     .ok()
                     .filter(|n| range.contains(n))
-                    .ok_or_else(|| {
-                        format!(
-                            "`{n}` in `{text}`: tool offsets are {}–{}",
-                            range.start(),
-                            range.end()
-                        )
+                    .ok_or_else(|| CncError::OffsetNumber {
+                        text: n.into(),
+                        key: key(),
+                        first: *range.start(),
+                        last: *range.end(),
                     })?;
-                let kind = OffsetType::parse(t).ok_or_else(|| {
-                    format!("`{t}` in `{text}`: the type is X Z R Y, WX WZ WR WY or TIP")
+                let kind = OffsetType::parse(t).ok_or_else(|| CncError::OffsetType {
+                    text: t.into(),
+                    key: key(),
                 })?;
                 CncKey::Offset(number, kind)
             }
             ["work", s, a] => CncKey::Work(
-                work_system(s).ok_or_else(|| {
-                    format!(
-                        "`{s}` in `{text}`: the system is {}",
-                        WORK_SYSTEMS.join(", ")
-                    )
+                work_system(s).ok_or_else(|| CncError::WorkSystem {
+                    text: s.into(),
+                    key: key(),
                 })? as u8,
                 axis(a)?,
             ),
@@ -147,10 +168,9 @@ impl CncKey {
                     .parse::<i64>()
                     .ok()
                     .filter(|v| super::macro_b::exists(*v))
-                    .ok_or_else(|| {
-                        format!(
-                            "`{n}` in `{text}`: no such variable (the variables are #1–#33, #100–#199, #500–#999, #1000–#1133, #2001–#2964, #3000–#3012, #4001–#4130 and #5001–#5340: docs/gcode.md, \"Macros\")"
-                        )
+                    .ok_or_else(|| CncError::KeyMacro {
+                        text: n.into(),
+                        key: text.into(),
                     })?;
                 CncKey::Macro(v as u16)
             }
@@ -182,23 +202,18 @@ impl CncKey {
 
     /// The value an `expect` line wants, read by the key's kind: names case-insensitively,
     /// lengths rounded to 0.001 mm, macros as decimals or `vacant`.
-    pub fn expected(&self, text: &str) -> Result<CncValue, String> {
+    pub fn expected(&self, text: &str) -> Result<CncValue, CncError> {
         match self {
             CncKey::Mode => Mode::ALL
                 .iter()
                 .find(|m| m.name().eq_ignore_ascii_case(text))
                 .map(|m| CncValue::Name(m.name()))
-                .ok_or_else(|| {
-                    format!(
-                        "`{text}` is not a mode ({})",
-                        Mode::ALL.map(Mode::name).join(" ")
-                    )
-                }),
+                .ok_or_else(|| CncError::NotMode { text: text.into() }),
             CncKey::Run => RunState::ALL
                 .iter()
                 .find(|m| m.name().eq_ignore_ascii_case(text))
                 .map(|m| CncValue::Name(m.name()))
-                .ok_or_else(|| format!("`{text}` is not a run state (IDLE RUN HOLD STOP)")),
+                .ok_or_else(|| CncError::NotRunState { text: text.into() }),
             CncKey::Pos(_) | CncKey::Abs(_) | CncKey::Work(..) => mm(text).map(CncValue::Mm),
             CncKey::Offset(_, t) if *t != OffsetType::Tip => mm(text).map(CncValue::Mm),
             CncKey::Macro(_) => {
@@ -209,25 +224,24 @@ impl CncKey {
                         .ok()
                         .filter(|v| v.is_finite())
                         .map(|v| CncValue::Macro(Some(v)))
-                        .ok_or_else(|| format!("`{text}` is not a decimal number or `vacant`"))
+                        .ok_or_else(|| CncError::NotDecimal { text: text.into() })
                 }
             }
-            _ => int(text, "an integer").map(CncValue::Int),
+            _ => int(text, Quantity::Integer).map(CncValue::Int),
         }
     }
 }
 
 impl SimCnc {
     /// Reads a value; positions of an axis beyond #8130 cannot be read.
-    pub fn value(&self, key: &CncKey) -> Result<CncValue, String> {
+    pub fn value(&self, key: &CncKey) -> Result<CncValue, CncError> {
         let axis = |a: u8| {
             let n = usize::from(a);
             if n >= self.axis_count() {
-                Err(format!(
-                    "axis {} is beyond the {} controlled axes (#8130)",
-                    AXIS_NAMES.get(n).unwrap_or(&"?"),
-                    self.axis_count()
-                ))
+                Err(CncError::AxisBeyond {
+                    axis: a,
+                    count: self.axis_count(),
+                })
             } else {
                 Ok(n)
             }
@@ -248,7 +262,7 @@ impl SimCnc {
                 {
                     CncValue::Int(i64::from(self.params.word980(usize::from(n))))
                 } else {
-                    let i = params::index(n).ok_or_else(|| format!("no parameter {n}"))?;
+                    let i = params::index(n).ok_or(CncError::NoParameter { number: n })?;
                     let slot = sel.map_or(0, |s| usize::from(s).saturating_sub(1));
                     CncValue::Int(self.params.get(i, slot))
                 }
@@ -257,7 +271,7 @@ impl SimCnc {
                 let v = self
                     .offsets
                     .get(usize::from(n))
-                    .ok_or_else(|| format!("no tool offset {n}"))?
+                    .ok_or(CncError::NoOffset { number: n })?
                     .get(t);
                 if t == OffsetType::Tip {
                     CncValue::Int(v)
@@ -270,7 +284,7 @@ impl SimCnc {
                     .work
                     .get(usize::from(s))
                     .and_then(|w| w.get(usize::from(a)))
-                    .ok_or_else(|| "no such workpiece system or axis".to_string())?,
+                    .ok_or(CncError::NoWorkSlot)?,
             ),
             CncKey::Macro(n) => CncValue::Macro(
                 super::macro_b::expr::Vars::read(self, i64::from(n)).unwrap_or(None),

@@ -15,7 +15,8 @@
 //! segment queue), `arc` and `motion` (straight and circular moves), `auto`
 //! (automatic operation), `mst` (the M/S/T handshake), `manual` (JOG, handwheel, reference
 //! return, overtravel), `plc_axes` (AXCTL groups), `windr` (the window functions), `command`
-//! (what scripts and the editor do to a running CNC) and `keys` (the values they read back).
+//! (what scripts and the editor do to a running CNC), `keys` (the values they read back) and
+//! `error` (why either was refused, in English and Chinese).
 
 pub mod alarm_text;
 pub mod arc;
@@ -28,6 +29,7 @@ mod corner;
 mod cycle;
 pub mod data;
 mod drill;
+pub mod error;
 mod frame;
 pub mod fsignals;
 mod keys;

@@ -9,7 +9,7 @@ mod run;
 pub mod scenario;
 
 use crate::address::{Address, AddressError, Area};
-use crate::cnc::command::{CncCommand, CncKey, CncValue};
+use crate::cnc::command::{CncCommand, CncError, CncKey, CncValue};
 use crate::machine::{MachineCommand, Probe};
 use crate::profile::Profile;
 use crate::vm::TICK_MS;
@@ -73,11 +73,11 @@ fn msg(en: impl Into<String>, zh: impl Into<String>) -> Msg {
     }
 }
 
-/// A refusal of the CNC side (`cnc` lines, `cnc.KEY` values), which words it in English only.
-fn cnc_refusal(en: String) -> Msg {
+/// A refusal of the CNC side (`cnc` lines, `cnc.KEY` values), in its own two wordings.
+fn cnc_refusal(e: CncError) -> Msg {
     Msg {
-        zh: format!("CNC 命令或数值有误：{en}"),
-        en,
+        en: e.en(),
+        zh: e.zh(),
     }
 }
 
@@ -643,10 +643,40 @@ mod tests {
             assert_eq!(e.message_in(false), e.message);
             assert_eq!(e.message_in(true), e.message_zh);
         }
-        // The CNC side words its refusals in English; the Chinese says what they are about.
+        // The CNC side says the same in Chinese, in the manual's words: no English behind a
+        // Chinese prefix.
         let e = parse_cnc("scan\ncnc program-file other.nc").unwrap_err();
-        assert!(e.message_zh.starts_with("CNC 命令或数值有误："));
+        assert!(
+            e.message_zh.contains("无法读取程序文件"),
+            "{}",
+            e.message_zh
+        );
         assert!(e.message_zh.contains("other.nc"), "{}", e.message_zh);
+        let cnc = [
+            ("cnc", "子命令"),
+            ("cnc spin", "未知的 CNC 命令"),
+            ("cnc offset 1 X", "用法"),
+            ("cnc param 1420 3000", "轴号"),
+            ("cnc param 8130 9", "参数 8130"),
+            ("cnc param 1234 1", "没有参数"),
+            ("cnc offset 100 X 1", "刀补号"),
+            ("cnc offset 1 TIP 10", "刀尖方向"),
+            ("cnc workpiece G60 X 1", "工件坐标系"),
+            ("cnc macro 1000 1", "宏变量"),
+            ("cnc alarm 950", "报警"),
+            ("cnc handwheel 20000", "手轮"),
+            ("cnc clock 2026-02-30T00:00:00", "日期时间"),
+            ("cnc position Q 1", "轴"),
+            ("expect cnc.speed 1", "未知的 CNC 值"),
+            ("expect cnc.run GO", "运行状态"),
+            ("expect cnc.mode AUTO", "方式"),
+            ("print cnc.macro.99999", "宏变量"),
+        ];
+        for (text, word) in cnc {
+            let e = parse_cnc(text).expect_err(text);
+            assert_bilingual(&e.message, &e.message_zh);
+            assert!(e.message_zh.contains(word), "{text}: {}", e.message_zh);
+        }
     }
 
     #[test]
