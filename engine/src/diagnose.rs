@@ -119,7 +119,7 @@ pub(crate) mod tests {
             found[1].message
         );
         for d in &found {
-            crate::compiler::zh_tests::assert_bilingual(&d.message, &d.message_zh);
+            crate::compiler::bilingual::assert_bilingual(&d.message, &d.message_zh);
         }
     }
 }

@@ -2,7 +2,6 @@
 //! file or a subprogram command refused.
 
 use crate::{Lang, Msg};
-use ladder_engine::address::AddressError;
 use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
 use ladder_engine::model::{EditError, OperandError, SubError};
 
@@ -21,37 +20,13 @@ pub fn edit_error(e: &EditError, lang: Lang) -> String {
     }
 }
 
-/// Why the operand prompt refused its text.
+/// Why the operand prompt refused its text. The engine words an operand's and an address's
+/// refusal itself, in both languages, because its diagnostics and script errors quote them;
+/// the prompt shows the same words.
 pub fn operand_error(e: &OperandError, lang: Lang) -> String {
     match lang {
         Lang::En => e.to_string(),
-        Lang::Zh => match e {
-            OperandError::Empty => "缺少操作数".to_string(),
-            OperandError::Number(s) => format!("`{s}` 不是数字（请写 12、-5、0x1F 或 1.5）"),
-            OperandError::Address(e) => address_error(e),
-            OperandError::Unrecognised(s) => {
-                format!("`{s}` 既不是地址、常数，也不是符号名")
-            }
-        },
-    }
-}
-
-/// An address refused, in Chinese (the English is the error's own text).
-fn address_error(e: &AddressError) -> String {
-    match e {
-        AddressError::Syntax(s) => {
-            format!("`{s}` 不是地址（例如 X0002.1、R100、D4、DT0004）")
-        }
-        AddressError::UnknownArea(s, a) => {
-            format!("`{s}` 没有地址区 `{a}`（地址区：X Y F G R A K T C DT DC D L P）")
-        }
-        AddressError::Bit(s) => format!("`{s}`：位号必须为 0–7"),
-        AddressError::NoBits(s, area) => {
-            format!("`{s}`：{area} 地址没有位（只有 X Y F G R A K 有位）")
-        }
-        AddressError::Range { text, area, lo, hi } => {
-            format!("{text} 超出范围（{area}{lo}–{area}{hi}）")
-        }
+        Lang::Zh => e.zh(),
     }
 }
 
@@ -135,7 +110,10 @@ mod tests {
             assert!(has_cjk(&zh), "{text}: {zh}");
             assert_eq!(operand_error(&e, Lang::En), e.to_string());
         }
-        let e = OperandError::Address(AddressError::UnknownArea("Q1".into(), "Q".into()));
+        let e = OperandError::Address(ladder_engine::address::AddressError::UnknownArea(
+            "Q1".into(),
+            "Q".into(),
+        ));
         assert!(has_cjk(&operand_error(&e, Lang::Zh)));
     }
 

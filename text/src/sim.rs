@@ -24,14 +24,15 @@ pub fn report(script: &str, r: &Report, lang: Lang) -> String {
         (Event::Expected { probe, want, got }, true) => {
             format!("{at}: expect {probe} = {want}, got {got}（实际值与期望值不符）")
         }
-        (Event::Unreadable(part, e), false) => format!("{at}: {}: {e}", part.word()),
-        (Event::Unreadable(part, e), true) => format!("{at}: {}: 无法读取（{e}）", part.word()),
+        (Event::Unreadable(part, e), false) => format!("{at}: {}: {}", part.word(), e.en()),
+        (Event::Unreadable(part, e), true) => format!("{at}: {}: {}", part.word(), e.zh()),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ladder_engine::cnc::CncError;
     use ladder_engine::refusal::Refusal;
     use ladder_engine::sim::Part;
     use ladder_engine::vm::Halt;
@@ -59,7 +60,7 @@ mod tests {
                 want: "1".into(),
                 got: "0".into(),
             },
-            Event::Unreadable(Part::Device, "no machine model is running".into()),
+            Event::Unreadable(Part::Device, CncError::NoMachineModel),
         ];
         for e in &all {
             match e {

@@ -286,22 +286,6 @@ fn want(args: &[&str], n: usize, usage: &'static str) -> Result<(), CncError> {
     }
 }
 
-/// The subcommands, as a refusal of a missing or unknown one lists them.
-pub(super) const SUBCOMMANDS: [&str; 12] = [
-    "program",
-    "program-file",
-    "mdi",
-    "param",
-    "offset",
-    "workpiece",
-    "macro",
-    "position",
-    "alarm",
-    "reset",
-    "handwheel",
-    "clock",
-];
-
 impl SimCnc {
     /// Carries out a command between ticks; its effect on F appears at the next exchange.
     /// A command that cannot apply now says why.

@@ -4,13 +4,44 @@
 //! docs/cnc.md's examples) and in Chinese (a Chinese run, the editor) with the same specifics.
 
 use super::AXIS_NAMES;
-use super::command::SUBCOMMANDS;
 use super::data::WORK_SYSTEMS;
-use super::keys::KEY_FORMS;
 use super::params::{self, ParamError, Selector, TABLE};
 use super::{Mode, RunState};
 use crate::refusal::Refusal;
 use std::fmt;
+
+/// The subcommands, as a refusal of a missing or unknown one lists them.
+const SUBCOMMANDS: [&str; 12] = [
+    "program",
+    "program-file",
+    "mdi",
+    "param",
+    "offset",
+    "workpiece",
+    "macro",
+    "position",
+    "alarm",
+    "reset",
+    "handwheel",
+    "clock",
+];
+
+/// The forms of `cnc.KEY`, as the refusal of an unknown key lists them.
+const KEY_FORMS: [&str; 13] = [
+    "cnc.mode",
+    "cnc.run",
+    "cnc.block",
+    "cnc.prog",
+    "cnc.pos.AXIS",
+    "cnc.abs.AXIS",
+    "cnc.spindle",
+    "cnc.alarm.N",
+    "cnc.alarms",
+    "cnc.param.N[.SEL]",
+    "cnc.offset.N.TYPE",
+    "cnc.work.SYS.AXIS",
+    "cnc.macro.N",
+];
 
 /// What an integer written in a command stands for, named in the refusal of a word that is
 /// not an integer.
@@ -529,7 +560,7 @@ impl From<CncError> for Refusal {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compiler::zh_tests::assert_bilingual;
+    use crate::compiler::bilingual::assert_bilingual;
 
     /// Where `e` is in the example list: one arm per variant, no wildcard, so a new variant
     /// does not compile until it is named here, and the test below then wants an example.

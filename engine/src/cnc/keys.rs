@@ -69,23 +69,6 @@ impl fmt::Display for CncValue {
     }
 }
 
-/// The forms of `cnc.KEY`, as the refusal of an unknown key lists them.
-pub(super) const KEY_FORMS: [&str; 13] = [
-    "cnc.mode",
-    "cnc.run",
-    "cnc.block",
-    "cnc.prog",
-    "cnc.pos.AXIS",
-    "cnc.abs.AXIS",
-    "cnc.spindle",
-    "cnc.alarm.N",
-    "cnc.alarms",
-    "cnc.param.N[.SEL]",
-    "cnc.offset.N.TYPE",
-    "cnc.work.SYS.AXIS",
-    "cnc.macro.N",
-];
-
 impl CncKey {
     /// Parses `cnc.KEY` (the text starts with `cnc.`, any case).
     pub fn parse(text: &str, profile: ProfileId) -> Result<CncKey, CncError> {

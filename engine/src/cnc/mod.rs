@@ -66,6 +66,7 @@ use program::{NcProgram, parse_mdi, parse_programs};
 use signals::{FImage, GroupInputs, Inputs};
 use spindle::Spindle;
 
+pub use error::CncError;
 pub use modal::RunState;
 pub use status::{CncStatus, MstStatus};
 

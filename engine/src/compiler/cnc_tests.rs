@@ -336,7 +336,7 @@ END
     let compiled = compile_program(program, &project, sink);
     let mut reached = std::collections::BTreeSet::new();
     for d in &compiled.diagnostics {
-        super::zh_tests::assert_bilingual(&d.message, &d.message_zh);
+        super::bilingual::assert_bilingual(&d.message, &d.message_zh);
         reached.insert(d.code);
     }
     for code in CNC_CODES {

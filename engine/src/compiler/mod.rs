@@ -15,6 +15,8 @@
 //! and the pseudo-blocks a diagnostic of a table or the machine model points at
 //! ([`pseudo_blocks`]).
 
+#[cfg(test)]
+pub(crate) mod bilingual;
 pub(crate) mod check;
 pub(crate) mod cnc;
 #[cfg(test)]
@@ -40,7 +42,7 @@ pub(crate) mod written;
 #[cfg(test)]
 mod written_tests;
 #[cfg(test)]
-pub(crate) mod zh_tests;
+mod zh_tests;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
 pub use operands::{OperandRefusal, operand_error, operand_ok};

@@ -528,7 +528,7 @@ fn parse_line(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compiler::zh_tests::assert_bilingual;
+    use crate::compiler::bilingual::assert_bilingual;
     use crate::profile::ProfileId;
 
     fn parse(text: &str) -> Result<Script, ScriptError> {

@@ -3,6 +3,7 @@
 //! stop a long run between two ticks with what it has.
 
 use super::{Script, ScriptCommand};
+use crate::cnc::CncError;
 use crate::machine::{Machine, MachineCommand, Probe, ProbeValue};
 use crate::refusal::Refusal;
 use crate::vm::Halt;
@@ -62,7 +63,7 @@ pub enum Event {
         got: String,
     },
     /// A probe that could not be read, and the part that could not give it.
-    Unreadable(Part, String),
+    Unreadable(Part, CncError),
 }
 
 /// The part of the machine a failure comes from, named at the start of its line.

@@ -553,7 +553,7 @@ mod tests {
     use super::super::cnc::NoCnc;
     use super::super::{Vm, WATCHDOG_STEPS};
     use crate::address::Address;
-    use crate::compiler::zh_tests::assert_bilingual;
+    use crate::compiler::bilingual::assert_bilingual;
 
     /// A PLC whose level (`LEVEL1` or `LEVEL2`) spins in a JMPB loop while X0001.0 is on.
     fn spinning(level: &str) -> Vm {

@@ -27,6 +27,7 @@ pub mod monitor;
 pub(crate) mod swap;
 pub use swap::{SwapError, Swapped};
 mod why;
+pub use why::deciding_contacts;
 
 use crate::address::{Address, Area};
 use crate::compiler::{Program, compile};

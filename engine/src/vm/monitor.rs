@@ -7,10 +7,8 @@
 //!
 //! It reads a [`Source`], not a [`Vm`]: the editor monitors a machine running on another
 //! thread from the snapshots it publishes, and a recorded past state from an image the scan
-//! recorder rebuilt, so the view must not need the VM itself. [`deciding_contacts`] reads
+//! recorder rebuilt, so the view must not need the VM itself. [`deciding_contacts`](super::deciding_contacts) reads
 //! a view back: which contacts decide an output.
-
-pub use super::why::deciding_contacts;
 
 use super::Vm;
 use super::code::Executable;

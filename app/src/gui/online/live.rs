@@ -7,7 +7,8 @@ use super::OnlineState;
 use super::Why;
 use crate::gui::context::Context;
 use ladder_engine::model::{Cell, Operand, Project};
-use ladder_engine::vm::monitor::{NetworkView, deciding_contacts, network_view};
+use ladder_engine::vm::deciding_contacts;
+use ladder_engine::vm::monitor::{NetworkView, network_view};
 
 impl OnlineState {
     /// Draws block `b` with the monitor on it, when online. Returns what `block_ui` returns.

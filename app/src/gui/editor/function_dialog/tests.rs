@@ -338,7 +338,7 @@ fn a_wrong_operand_is_explained_in_the_ui_language() {
     d.line = "SET X0.9".into();
     d.fill_from_line(Lang::Zh);
     match &d.checks(&project, Lang::Zh)[0] {
-        Check::Bad(why) => assert_eq!(why, "`X0.9`：位号必须为 0–7"),
+        Check::Bad(why) => assert_eq!(why, "`X0.9`：位号应为 0–7"),
         other => panic!("{other:?}"),
     }
 }
