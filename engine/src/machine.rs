@@ -357,24 +357,15 @@ impl Machine {
             MachineCommand::Cnc(c) => match &mut self.cnc {
                 Some(cnc) => cnc.apply(c)?,
                 None => {
-                    return Err(Refusal::new(
-                        "no CNC is attached (run with the simulated CNC)",
-                        "没有连接 CNC（请带仿真 CNC 运行）",
-                    ));
+                    return Err(Refusal::NoCnc);
                 }
             },
             MachineCommand::Device(i, action) => {
                 let Some(p) = &mut self.plant else {
-                    return Err(Refusal::new(
-                        "no machine model is running (the project has no devices, or it runs with --no-machine)",
-                        "没有运行机床模型（工程中没有设备，或以 --no-machine 运行）",
-                    ));
+                    return Err(Refusal::NoMachineModel);
                 };
                 if *i >= p.names().count() {
-                    return Err(Refusal::new(
-                        format!("there is no device {}", i + 1),
-                        format!("没有第 {} 号设备", i + 1),
-                    ));
+                    return Err(Refusal::NoDevice(*i));
                 }
                 match action {
                     DeviceAction::Fault(f) => p.set_fault(*i, Some(*f)),
@@ -382,9 +373,7 @@ impl Machine {
                     DeviceAction::Reset => p.reset(*i),
                 }
             }
-            MachineCommand::LoadModel(model) => self
-                .load_model(model)
-                .map_err(|e| Refusal::new(e.to_string(), e.zh()))?,
+            MachineCommand::LoadModel(model) => self.load_model(model).map_err(Refusal::Model)?,
             MachineCommand::Scenario(applied) => self.apply_scenario(applied)?,
             MachineCommand::Release(name) => self.release_scenario(name)?,
         }

@@ -252,10 +252,9 @@ fn a_force_wins_over_a_device_and_a_new_model_keeps_the_faults_by_name() {
     let mut bare = Machine::new(&p, false).unwrap().without_devices();
     bare.tick();
     assert_eq!(bare.plc().read(y, 1), 0);
-    assert!(
-        bare.apply(&MachineCommand::Device(0, DeviceAction::Ok))
-            .unwrap_err()
-            .contains("--no-machine")
+    assert_eq!(
+        bare.apply(&MachineCommand::Device(0, DeviceAction::Ok)),
+        Err(ladder_engine::refusal::Refusal::NoMachineModel)
     );
 }
 

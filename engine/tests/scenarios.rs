@@ -6,6 +6,7 @@
 use ladder_engine::machine::{Machine, MachineCommand, Snapshot};
 use ladder_engine::model::Project;
 use ladder_engine::profile::Profile;
+use ladder_engine::refusal::Refusal;
 use ladder_engine::scenario::Scenario;
 use ladder_engine::sim::{Options, Script, scenario};
 use ladder_engine::{file, sim};
@@ -103,13 +104,13 @@ fn apply_then_release_leaves_memory_forces_and_faults_as_before() {
     let e = m
         .apply(&MachineCommand::Scenario(Box::new(again)))
         .unwrap_err();
-    assert!(e.to_string().contains("already applied"), "{e}");
+    assert_eq!(e, Refusal::ScenarioApplied("chuck-trouble".into()));
     m.apply(&MachineCommand::Release("chuck-trouble".into()))
         .unwrap();
     let e = m
         .apply(&MachineCommand::Release("chuck-trouble".into()))
         .unwrap_err();
-    assert!(e.to_string().contains("is not applied"), "{e}");
+    assert_eq!(e, Refusal::ScenarioNotApplied("chuck-trouble".into()));
     assert_eq!(state(&m), before);
 }
 
@@ -235,22 +236,19 @@ fn a_scenario_applied_twice_or_released_unapplied_is_a_refused_line() {
     let parsed = Script::parse_with(script, profile, &options(&p, NO_FILES)).unwrap();
     let mut m = Machine::new(&p, true).unwrap();
     let out = sim::run(&mut m, &parsed, "s", false);
-    let refused: Vec<(usize, String)> = out
+    let refused: Vec<(usize, Refusal)> = out
         .output
         .iter()
         .map(|r| match &r.event {
-            sim::Event::Refused(sim::Part::Scenario, e) => (r.line, e.en.clone()),
+            sim::Event::Refused(sim::Part::Scenario, e) => (r.line, e.clone()),
             other => panic!("line {}: {other:?}", r.line),
         })
         .collect();
     assert_eq!(
         refused,
         [
-            (
-                2,
-                "scenario `once` is already applied; release it first".to_string()
-            ),
-            (4, "scenario `once` is not applied".to_string())
+            (2, Refusal::ScenarioApplied("once".into())),
+            (4, Refusal::ScenarioNotApplied("once".into()))
         ]
     );
     assert_eq!(out.failed, 2);
@@ -275,8 +273,11 @@ fn overlapping_scenarios_release_last_first_and_a_knob_gives_back_only_its_bits(
     // `a` and `b` both force X0003.1: `b`, applied later, goes first.
     let e = m.apply(&MachineCommand::Release("a".into())).unwrap_err();
     assert_eq!(
-        e.to_string(),
-        "scenario `a` changed what `b`, applied after it, changed too: release `b` first"
+        e,
+        Refusal::ScenarioOrder {
+            name: "a".into(),
+            other: "b".into()
+        }
     );
     // `c` touches nothing of the others: released in any order.
     m.apply(&MachineCommand::Release("c".into())).unwrap();

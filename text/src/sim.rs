@@ -15,8 +15,12 @@ pub fn report(script: &str, r: &Report, lang: Lang) -> String {
         (Event::Value { probe, value }, _) => format!("{probe} = {value}"),
         (Event::Halted(h), false) => format!("{at}: PLC halted at {h}"),
         (Event::Halted(h), true) => format!("{at}: PLC 停止于 {}", h.text(true)),
-        (Event::Refused(part, refusal), _) => {
-            format!("{at}: {}: {}", part.word(), refusal.text(zh))
+        (Event::Refused(part, r), _) => {
+            format!(
+                "{at}: {}: {}",
+                part.word(),
+                crate::refusal::refusal(r, lang)
+            )
         }
         (Event::Expected { probe, want, got }, false) => {
             format!("{at}: expect {probe} = {want}, got {got}")
@@ -51,10 +55,7 @@ mod tests {
                 message: "division by zero".into(),
                 message_zh: "除数为零".into(),
             }),
-            Event::Refused(
-                Part::Scenario,
-                Refusal::new("scenario `once` is not applied", "场景 `once` 未应用"),
-            ),
+            Event::Refused(Part::Scenario, Refusal::ScenarioNotApplied("once".into())),
             Event::Expected {
                 probe: "Y0000.3".into(),
                 want: "1".into(),

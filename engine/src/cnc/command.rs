@@ -300,16 +300,7 @@ impl SimCnc {
         match cmd {
             CncCommand::Program(text) | CncCommand::Mdi(text) => {
                 if self.auto.state != RunState::Idle {
-                    return Err(Refusal::new(
-                        format!(
-                            "the program cannot be replaced while automatic operation is {} (reset first)",
-                            self.auto.state.name()
-                        ),
-                        format!(
-                            "自动运行状态为 {} 时不能替换程序（请先复位）",
-                            self.auto.state.name()
-                        ),
-                    ));
+                    return Err(Refusal::ProgramBusy(self.auto.state));
                 }
                 if matches!(cmd, CncCommand::Program(_)) {
                     self.load_programs(text);
@@ -348,10 +339,11 @@ impl SimCnc {
                 let range = offset_range(self.profile);
                 if !range.contains(number) {
                     let (a, b) = (range.start(), range.end());
-                    return Err(Refusal::new(
-                        format!("tool offsets are {a}–{b}, not {number}"),
-                        format!("刀具补偿号为 {a}–{b}，不是 {number}"),
-                    ));
+                    return Err(Refusal::OffsetNumber {
+                        lo: *a,
+                        hi: *b,
+                        number: *number,
+                    });
                 }
                 if *kind == OffsetType::Tip && !(0..=9).contains(value) {
                     return Err(CncError::TipRange { value: *value }.into());
@@ -372,12 +364,9 @@ impl SimCnc {
             }
             CncCommand::Macro { number, value } => match MacroSlot::of(i64::from(*number)) {
                 MacroSlot::Local => self.set_local(usize::from(*number), *value),
-                slot => self.set_macro(slot, *value).map_err(|()| {
-                    Refusal::new(
-                        format!("#{number} cannot take that value"),
-                        format!("#{number} 不能取此值"),
-                    )
-                })?,
+                slot => self
+                    .set_macro(slot, *value)
+                    .map_err(|()| Refusal::MacroValue(*number))?,
             },
             CncCommand::Position { axis, value } => {
                 let n = usize::from(*axis);
@@ -390,12 +379,7 @@ impl SimCnc {
                     .into());
                 }
                 if self.remaining(n) != 0 || self.manual.moving(n) || self.plc_moving(n) {
-                    return Err(Refusal::new(
-                        format!(
-                            "axis {name} is moving; its position can be set only while it is still"
-                        ),
-                        format!("{name} 轴正在移动；只有停止时才能设定其位置"),
-                    ));
+                    return Err(Refusal::AxisMoving(name));
                 }
                 self.axes[n].m = (*value).clamp(-99_999_999, 99_999_999);
             }

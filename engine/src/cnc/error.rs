@@ -7,7 +7,6 @@ use super::AXIS_NAMES;
 use super::data::WORK_SYSTEMS;
 use super::params::{self, ParamError, Selector, TABLE};
 use super::{Mode, RunState};
-use crate::refusal::Refusal;
 use std::fmt;
 
 /// The subcommands, as a refusal of a missing or unknown one lists them.
@@ -550,13 +549,6 @@ impl fmt::Display for CncError {
 
 impl std::error::Error for CncError {}
 
-/// A refusal of the running CNC says the same in both languages as a refusal when parsed.
-impl From<CncError> for Refusal {
-    fn from(e: CncError) -> Refusal {
-        Refusal::new(e.en(), e.zh())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -732,7 +724,8 @@ mod tests {
                 assert!(en.contains(d), "`{d}` missing in: {en}");
                 assert!(zh.contains(d), "`{d}` missing in: {zh}");
             }
-            assert_eq!(Refusal::from(e.clone()), Refusal::new(en, zh));
+            let refusal = crate::refusal::Refusal::from(e.clone());
+            assert_eq!(refusal, crate::refusal::Refusal::Cnc(e.clone()));
         }
         let missing: Vec<usize> = (0..VARIANTS).filter(|&i| !seen[i]).collect();
         assert!(

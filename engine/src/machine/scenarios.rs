@@ -15,26 +15,17 @@ impl Machine {
     pub(super) fn apply_scenario(&mut self, applied: &Applied) -> Result<(), Refusal> {
         let name = &applied.name;
         if self.applied.iter().any(|(n, _)| n == name) {
-            return Err(Refusal::new(
-                format!("scenario `{name}` is already applied; release it first"),
-                format!("场景 `{name}` 已经应用；请先解除"),
-            ));
+            return Err(Refusal::ScenarioApplied(name.clone()));
         }
         // Every fault's device must exist before anything changes: all or nothing.
         for a in &applied.actions {
             if let ScenarioAction::Fault(i, _) = a
                 && self.plant.as_ref().is_none_or(|p| *i >= p.names().count())
             {
-                return Err(Refusal::new(
-                    format!(
-                        "scenario `{name}` injects a device fault, but no machine model is running (or it has no device {}): run with the machine model",
-                        i + 1
-                    ),
-                    format!(
-                        "场景 `{name}` 要向设备注入故障，但没有运行机床模型（或没有第 {} 号设备）：请带机床模型运行",
-                        i + 1
-                    ),
-                ));
+                return Err(Refusal::ScenarioNeedsModel {
+                    name: name.clone(),
+                    device: *i,
+                });
             }
         }
         let mut undo = Vec::with_capacity(applied.actions.len());
@@ -85,10 +76,7 @@ impl Machine {
     /// back a state the other one made.
     pub(super) fn release_scenario(&mut self, name: &str) -> Result<(), Refusal> {
         let Some(k) = self.applied.iter().position(|(n, _)| n == name) else {
-            return Err(Refusal::new(
-                format!("scenario `{name}` is not applied"),
-                format!("场景 `{name}` 没有应用"),
-            ));
+            return Err(Refusal::ScenarioNotApplied(name.to_string()));
         };
         let later = self.applied[k + 1..].iter().find(|(_, theirs)| {
             theirs
@@ -96,14 +84,10 @@ impl Machine {
                 .any(|t| self.applied[k].1.iter().any(|u| u.overlaps(t)))
         });
         if let Some((other, _)) = later {
-            return Err(Refusal::new(
-                format!(
-                    "scenario `{name}` changed what `{other}`, applied after it, changed too: release `{other}` first"
-                ),
-                format!(
-                    "场景 `{name}` 与其后应用的 `{other}` 改动了相同的对象：请先解除 `{other}`"
-                ),
-            ));
+            return Err(Refusal::ScenarioOrder {
+                name: name.to_string(),
+                other: other.clone(),
+            });
         }
         let (_, undo) = self.applied.remove(k);
         for u in undo.into_iter().rev() {

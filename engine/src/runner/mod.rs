@@ -362,10 +362,9 @@ impl Worker {
                     self.program = n;
                     self.replies.push(Reply::Swapped(n, s));
                 }
-                Err(e) => self.replies.push(Reply::SwapRefused(
-                    n,
-                    crate::refusal::Refusal::new(e.to_string(), e.zh()),
-                )),
+                Err(e) => self
+                    .replies
+                    .push(Reply::SwapRefused(n, crate::refusal::Refusal::Swap(e))),
             },
             Request::Speed(s) => {
                 self.clock = Clock::new(s);

@@ -115,7 +115,7 @@ impl Rig {
             .unwrap_or_else(|e| panic!("{words:?}: {e}"));
         self.cnc
             .apply(&c)
-            .unwrap_or_else(|e| panic!("{words:?}: {e}"));
+            .unwrap_or_else(|e| panic!("{words:?}: {e:?}"));
     }
 
     /// Loads memory programs.

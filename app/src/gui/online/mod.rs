@@ -27,7 +27,7 @@ pub mod values;
 pub mod watch;
 
 use super::command::Command;
-use super::i18n::{self, Msg};
+use super::i18n::Msg;
 use crate::gui::context::Context;
 use ladder_engine::Address;
 use ladder_engine::machine::{MachineCommand, Target};
@@ -437,7 +437,7 @@ impl OnlineState {
                     format!(
                         "{}: {}",
                         Msg::MachineRefused.text(lang),
-                        m.text(lang == i18n::Lang::Zh)
+                        ladder_text::refusal::refusal(&m, lang)
                     ),
                     true,
                 ),
@@ -454,7 +454,7 @@ impl OnlineState {
                     format!(
                         "{}: {}",
                         Msg::EditNotSwapped.text(lang),
-                        m.text(lang == i18n::Lang::Zh)
+                        ladder_text::refusal::refusal(&m, lang)
                     ),
                     true,
                 ),

@@ -229,7 +229,10 @@ impl Session {
                 Reply::SwapRefused(n, m) => {
                     if self.pending.as_ref().is_some_and(|p| p.number == n) {
                         self.pending = None;
-                        self.sync = DrawingSync::Refused(m.en.clone(), m.zh.clone());
+                        self.sync = DrawingSync::Refused(
+                            ladder_text::refusal::refusal(&m, ladder_text::Lang::En),
+                            ladder_text::refusal::refusal(&m, ladder_text::Lang::Zh),
+                        );
                     }
                     notices.push(Notice::SwapRefused(m));
                 }
