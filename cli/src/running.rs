@@ -258,7 +258,7 @@ pub(super) fn bench(
     }
     let elapsed = start.elapsed().as_nanos() as f64;
     if let Some(h) = machine.plc().halt() {
-        let why = h.text(say.zh);
+        let why = ladder_text::halt::halt(h, say.lang());
         let _ = writeln!(err, "{}", say.text(RunText::BenchHalted { why }));
         return Ok(1);
     }

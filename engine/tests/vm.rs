@@ -33,8 +33,18 @@ fn the_watchdog_stops_an_endless_jump_loop_and_names_it() {
     vm.write(a("X1.0"), 1, 1);
     vm.tick(&mut NoCnc);
     let halt = vm.halt().expect("halted").clone();
-    assert_eq!((halt.block.as_str(), halt.network), ("LEVEL2", 2), "{halt}");
-    assert!(halt.message.contains("JMPB loop"), "{halt}");
+    assert_eq!(
+        (halt.block.as_str(), halt.network),
+        ("LEVEL2", 2),
+        "{halt:?}"
+    );
+    assert!(
+        matches!(
+            halt.reason,
+            ladder_engine::vm::HaltReason::Watchdog { level: 2, .. }
+        ),
+        "{halt:?}"
+    );
     // Halted: level 1 no longer runs.
     vm.write(a("X0.0"), 1, 1);
     vm.tick(&mut NoCnc);

@@ -7,6 +7,7 @@
 
 pub mod cli;
 pub mod errors;
+pub mod halt;
 pub mod refusal;
 pub mod sim;
 pub mod ui;

@@ -13,8 +13,8 @@ pub fn report(script: &str, r: &Report, lang: Lang) -> String {
     let at = format!("{script}:{}", r.line);
     match (&r.event, zh) {
         (Event::Value { probe, value }, _) => format!("{probe} = {value}"),
-        (Event::Halted(h), false) => format!("{at}: PLC halted at {h}"),
-        (Event::Halted(h), true) => format!("{at}: PLC 停止于 {}", h.text(true)),
+        (Event::Halted(h), false) => format!("{at}: PLC halted at {}", crate::halt::halt(h, lang)),
+        (Event::Halted(h), true) => format!("{at}: PLC 停止于 {}", crate::halt::halt(h, lang)),
         (Event::Refused(part, r), _) => {
             format!(
                 "{at}: {}: {}",
@@ -39,7 +39,7 @@ mod tests {
     use ladder_engine::cnc::CncError;
     use ladder_engine::refusal::Refusal;
     use ladder_engine::sim::Part;
-    use ladder_engine::vm::Halt;
+    use ladder_engine::vm::{Halt, HaltReason};
 
     /// One report of every kind; the `match` fails to compile when a kind is added without
     /// an example here.
@@ -52,8 +52,10 @@ mod tests {
             Event::Halted(Halt {
                 block: "LEVEL2".into(),
                 network: 3,
-                message: "division by zero".into(),
-                message_zh: "除数为零".into(),
+                reason: HaltReason::Watchdog {
+                    level: 2,
+                    steps: 200_000,
+                },
             }),
             Event::Refused(Part::Scenario, Refusal::ScenarioNotApplied("once".into())),
             Event::Expected {

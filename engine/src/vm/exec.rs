@@ -7,7 +7,7 @@ use super::cnc::Cnc;
 use super::code::{C_INVERT, CONTACT_END, VmOp, byte};
 use super::functions::{self, Ctx};
 use super::memory::write_bit;
-use super::{Frame, Halt, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
+use super::{Frame, Halt, HaltReason, IMAGE_BYTES, Vm, WATCHDOG_STEPS};
 
 use crate::address::Area;
 
@@ -143,22 +143,10 @@ impl Vm {
         Halt {
             block,
             network,
-            message: format!(
-                "a JMPB loop ran past {WATCHDOG_STEPS} steps in {}; the PLC is stopped until power-cycle",
-                if level == Level::One {
-                    "one level-1 scan"
-                } else {
-                    "one level-2 cycle"
-                }
-            ),
-            message_zh: format!(
-                "{}中 JMPB 循环超过 {WATCHDOG_STEPS} 步；PLC 已停止，需重新上电",
-                if level == Level::One {
-                    "一级程序的一次扫描"
-                } else {
-                    "二级程序的一个周期"
-                }
-            ),
+            reason: HaltReason::Watchdog {
+                level: if level == Level::One { 1 } else { 2 },
+                steps: WATCHDOG_STEPS,
+            },
         }
     }
 
@@ -551,9 +539,8 @@ fn hot<const TRACE: bool>(
 #[cfg(test)]
 mod tests {
     use super::super::cnc::NoCnc;
-    use super::super::{Vm, WATCHDOG_STEPS};
+    use super::super::{Halt, HaltReason, Vm, WATCHDOG_STEPS};
     use crate::address::Address;
-    use crate::compiler::bilingual::assert_bilingual;
 
     /// A PLC whose level (`LEVEL1` or `LEVEL2`) spins in a JMPB loop while X0001.0 is on.
     fn spinning(level: &str) -> Vm {
@@ -568,23 +555,21 @@ mod tests {
     }
 
     #[test]
-    fn a_halt_says_in_chinese_what_it_says_in_english() {
-        for (level, words) in [("LEVEL1", "一级程序"), ("LEVEL2", "二级程序")] {
+    fn a_halt_names_its_level_network_and_the_watchdog_steps() {
+        for (level, n) in [("LEVEL1", 1), ("LEVEL2", 2)] {
             let vm = spinning(level);
             let halt = vm.halt().expect("halted");
-            assert_bilingual(&halt.message, &halt.message_zh);
-            assert!(halt.message_zh.contains(words), "{}", halt.message_zh);
-            assert!(
-                halt.message_zh
-                    .contains(&format!("JMPB 循环超过 {WATCHDOG_STEPS} 步")),
-                "{}",
-                halt.message_zh
-            );
-            assert_eq!(halt.text(false), halt.to_string());
             let network = if level == "LEVEL1" { 3 } else { 2 };
             assert_eq!(
-                halt.text(true),
-                format!("{level} 网络 {network}：{}", halt.message_zh)
+                *halt,
+                Halt {
+                    block: level.to_string(),
+                    network,
+                    reason: HaltReason::Watchdog {
+                        level: n,
+                        steps: WATCHDOG_STEPS,
+                    },
+                }
             );
         }
     }

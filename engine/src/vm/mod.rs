@@ -35,7 +35,6 @@ use crate::model::Project;
 use crate::profile::Profile;
 use cnc::Cnc;
 use code::lower;
-use std::fmt;
 
 /// Bytes of the memory image: a fixed power of two, so the hot loop's masked byte index needs
 /// no bounds check. Every profile's layout fits (the GSK988TA uses about 10.6 KiB).
@@ -59,7 +58,7 @@ pub(crate) struct InstState {
     pub phase: u8,
 }
 
-/// Why the PLC stopped.
+/// Why the PLC stopped, and where: data only, worded by `ladder_text::halt`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Halt {
     /// Block label where it happened.
@@ -67,31 +66,20 @@ pub struct Halt {
     /// Network (1-based).
     pub network: usize,
     /// What happened.
-    pub message: String,
-    /// The same in Chinese, with the same specifics.
-    pub message_zh: String,
+    pub reason: HaltReason,
 }
 
-impl Halt {
-    /// The halt for a reader of Chinese (`zh`) or English: `LEVEL1 网络 3：MESSAGE_ZH`, or
-    /// as [`fmt::Display`] writes it.
-    pub fn text(&self, zh: bool) -> String {
-        if zh {
-            format!("{} 网络 {}：{}", self.block, self.network, self.message_zh)
-        } else {
-            self.to_string()
-        }
-    }
-}
-
-impl fmt::Display for Halt {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} network {}: {}",
-            self.block, self.network, self.message
-        )
-    }
+/// What stopped the PLC.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HaltReason {
+    /// A JMPB loop ran past the watchdog's steps in one scan of level 1 (`level` 1) or one
+    /// cycle of level 2 (`level` 2); the PLC stays stopped until a power cycle.
+    Watchdog {
+        /// The program level, 1 or 2.
+        level: u8,
+        /// The steps the watchdog allows.
+        steps: u64,
+    },
 }
 
 /// Level 2's progress through its cycle.

@@ -79,7 +79,7 @@ impl OnlineState {
             ui.add(egui::Label::new(text).wrap_mode(egui::TextWrapMode::Extend))
                 .on_hover_text(t(Msg::ScanHint));
             if let Some(h) = &snap.halt {
-                let why = h.text(lang == super::super::i18n::Lang::Zh);
+                let why = ladder_text::halt::halt(h, lang);
                 ui.colored_label(theme::ERROR, format!("{}: {why}", t(Msg::PlcHalted)));
             }
         }
