@@ -1,5 +1,5 @@
 //! The F signals the CNC writes (docs/cnc.md, "F signals written"), each named once: the
-//! exchange writes them through these names ([`super::signals::FImage`]), the bits the CNC
+//! exchange writes them through these names (`signals::FImage`), the bits the CNC
 //! owns ([`OWNED_MASK`]) are derived from this table alone, and the compiler's CNC-aware
 //! checks read the strobes and answers by the same names. A bit the CNC owns but does not
 //! model (SRNMV, MINC, ECKZ) is listed too: it is written, always as 0.

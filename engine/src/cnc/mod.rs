@@ -19,7 +19,7 @@
 //! `error` (why either was refused, in English and Chinese).
 
 pub mod alarm_text;
-pub mod arc;
+pub(crate) mod arc;
 mod arguments;
 mod auto;
 mod block;
@@ -29,16 +29,16 @@ mod corner;
 mod cycle;
 pub mod data;
 mod drill;
-pub mod error;
+pub(crate) mod error;
 mod frame;
 pub mod fsignals;
 mod keys;
 pub mod macro_b;
 mod manual;
 mod modal;
-pub mod motion;
+pub(crate) mod motion;
 mod mst;
-pub mod params;
+pub(crate) mod params;
 mod path;
 mod plc_axes;
 mod profile;
@@ -46,12 +46,12 @@ pub mod program;
 pub mod ps;
 mod repeat;
 mod rough;
-pub mod signals;
+pub(crate) mod signals;
 mod spindle;
 mod status;
 pub mod toolpath;
 mod windr;
-pub mod word;
+pub(crate) mod word;
 
 use crate::model::tables::MessageTable;
 use crate::profile::ProfileId;

@@ -10,7 +10,7 @@ pub mod expr;
 pub mod fields;
 mod kinds;
 pub mod model;
-pub mod run;
+pub(crate) mod run;
 mod turret;
 
 mod error;

@@ -8,7 +8,7 @@
 //! after each batch of ticks. Neither side waits for the other longer than that copy.
 
 mod clock;
-pub mod journal;
+pub(crate) mod journal;
 
 pub use clock::{Lateness, Speed};
 

@@ -61,7 +61,9 @@ macro_rules! vm_ops {
             /// Every opcode, in the order of the table.
             pub const ALL: &[VmOp] = &[$(VmOp::$cop,)* $(VmOp::$op),*];
 
-            /// Whether the opcode is a contact, whose byte is its `C_*` flags.
+            /// Whether the opcode is a contact, whose byte is its `C_*` flags (the table's
+            /// test checks the bytes against it).
+            #[cfg(test)]
             pub const fn is_contact(self) -> bool {
                 matches!(self, $(VmOp::$cop)|*)
             }
@@ -247,12 +249,12 @@ pub enum CodeError {
         byte: u8,
     },
     /// A jump or call target, network or function-instruction index past what it indexes.
-    #[error("word {at}: {op:?} {index} is past the {len} {what}")]
+    #[error("word {at}: {op} {index} is past the {len} {what}")]
     OutOfRange {
         /// Index of the word.
         at: usize,
-        /// Its opcode.
-        op: VmOp,
+        /// Its opcode, by name (the opcodes themselves are the VM's own).
+        op: String,
         /// Its argument.
         index: u32,
         /// How many there are.
@@ -297,7 +299,7 @@ impl Executable {
             {
                 return Err(CodeError::OutOfRange {
                     at,
-                    op,
+                    op: format!("{op:?}"),
                     index,
                     len,
                     what,

@@ -588,13 +588,3 @@ impl<'a> Parser<'a> {
         r
     }
 }
-
-/// Reads one whole expression from `text`; anything left over is a format error.
-pub fn parse(text: &str) -> Result<Expr, u16> {
-    let mut p = Parser::new(text);
-    let e = p.expr()?;
-    if p.at != text.len() {
-        return Err(alarm::FORMAT);
-    }
-    Ok(e)
-}

@@ -7,8 +7,8 @@
 //! ahead of the executing one, `vars` reads and writes every variable, and `render` turns an
 //! NC block's expressions into the words the G-code reader already knows.
 
-pub mod expr;
-pub mod parse;
+pub(crate) mod expr;
+pub(crate) mod parse;
 mod render;
 pub(super) mod run;
 mod vars;
