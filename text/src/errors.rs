@@ -1,6 +1,10 @@
 //! The engine's typed errors in the user's language: an edit, an operand, an address, a project
 //! file or a subprogram command refused.
 
+mod structure;
+
+pub use structure::{structure_error, width_error_zh};
+
 use crate::{Lang, Msg};
 use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
 use ladder_engine::model::{EditError, OperandError, SubError};
@@ -15,7 +19,9 @@ pub fn edit_error(e: &EditError, lang: Lang) -> String {
             EditError::FixedBlock => "一级程序和二级程序总是存在；只能增删子程序".to_string(),
             EditError::LastRow => "网络至少保留一行；要删除请删除整个网络".to_string(),
             EditError::NothingAbove => "并联触点需要上一行有元件".to_string(),
-            EditError::WrongWidth(w) => format!("网络与本梯形图的宽度不同：{w}"),
+            EditError::WrongWidth(w) => {
+                format!("网络与本梯形图的宽度不同：{}", width_error_zh(w))
+            }
         },
     }
 }
@@ -31,8 +37,8 @@ pub fn operand_error(e: &OperandError, lang: Lang) -> String {
 }
 
 /// Why a project file could not be read or written (docs/files.md, "Project files (.ldp)").
-/// What comes from outside the engine (the system's I/O error, the RON parser's message, the
-/// structure check's detail) stays as it was said.
+/// What comes from outside the engine (the system's I/O error, the RON parser's message)
+/// stays as it was said; the structure check's detail is the engine's, so it is rendered.
 pub fn file_error(e: &FileError, lang: Lang) -> String {
     match lang {
         Lang::En => e.to_string(),
@@ -74,7 +80,9 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
                 message,
             } => format!("第 {line} 行第 {column} 列：工程内容无法读取（{message}）"),
             FileError::Encoding(b) => format!("文件不是 UTF-8 文本（第 {b} 字节）"),
-            FileError::Structure(m) => format!("梯形图结构错误：{m}"),
+            FileError::Structure(s) => {
+                format!("梯形图结构错误：{}", structure_error(s, Lang::Zh))
+            }
         },
     }
 }
@@ -97,9 +105,117 @@ pub fn sub_error(e: &SubError, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use ladder_engine::model::{BlockKind, NetworkId, NetworkPlace, StructureError, WidthError};
 
     fn has_cjk(s: &str) -> bool {
         s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
+    }
+
+    /// The runs of ASCII digits in `text`.
+    fn digit_runs(text: &str) -> Vec<&str> {
+        text.split(|c: char| !c.is_ascii_digit())
+            .filter(|s| !s.is_empty())
+            .collect()
+    }
+
+    /// Checks that `zh` is Chinese with no English word in it (a block label such as LEVEL1
+    /// or P0001 is a name, not a word) and carries every number of `en`. The levels are
+    /// words in Chinese (一级程序), so the digits of their labels are not looked for.
+    fn assert_chinese_with_numbers(en: &str, zh: &str) {
+        assert!(has_cjk(zh), "not Chinese: {zh} (English: {en})");
+        for word in zh.split(|c: char| !c.is_ascii_alphanumeric()) {
+            let label = matches!(word, "LEVEL1" | "LEVEL2")
+                || (word.len() == 5
+                    && word.starts_with('P')
+                    && word[1..].bytes().all(|b| b.is_ascii_digit()));
+            assert!(
+                label || !word.bytes().any(|b| b.is_ascii_alphabetic()),
+                "English `{word}` in: {zh} (English: {en})"
+            );
+        }
+        let plain = en.replace("LEVEL1", "").replace("LEVEL2", "");
+        for digits in digit_runs(&plain) {
+            assert!(
+                digit_runs(zh).contains(&digits),
+                "`{digits}` missing in: {zh} (English: {en})"
+            );
+        }
+    }
+
+    /// The slot of each width error in [`width_examples`]' coverage. No wildcard: a new
+    /// variant fails to compile here until it has a slot, and then the tests until it has
+    /// an example.
+    fn width_slot(e: &WidthError) -> usize {
+        match e {
+            WidthError::NoRows => 0,
+            WidthError::Row { .. } => 1,
+        }
+    }
+    const WIDTH_VARIANTS: usize = 2;
+
+    /// One example or more of every width error.
+    fn width_examples() -> Vec<WidthError> {
+        let examples = vec![
+            WidthError::NoRows,
+            WidthError::Row {
+                row: 3,
+                cells: 10,
+                junctions: 11,
+                expected: 12,
+            },
+        ];
+        let mut seen = [false; WIDTH_VARIANTS];
+        examples.iter().for_each(|e| seen[width_slot(e)] = true);
+        assert_eq!(
+            seen, [true; WIDTH_VARIANTS],
+            "a width error without an example"
+        );
+        examples
+    }
+
+    /// The slot of each structure error, as [`width_slot`].
+    fn structure_slot(e: &StructureError) -> usize {
+        match e {
+            StructureError::Width(_) => 0,
+            StructureError::LevelsFirst => 1,
+            StructureError::AfterSubprograms(_) => 2,
+            StructureError::SubprogramOrder(_) => 3,
+            StructureError::Network { .. } => 4,
+            StructureError::DuplicateId { .. } => 5,
+        }
+    }
+    const STRUCTURE_VARIANTS: usize = 6;
+
+    /// One example or more of every structure error, every width error among them.
+    fn structure_examples() -> Vec<StructureError> {
+        let place = |block, network| NetworkPlace { block, network };
+        let sub = BlockKind::Sub {
+            number: 7,
+            name: "spindle".into(),
+        };
+        let mut examples = vec![
+            StructureError::Width(0),
+            StructureError::Width(65),
+            StructureError::LevelsFirst,
+            StructureError::AfterSubprograms(BlockKind::Level2),
+            StructureError::SubprogramOrder(3),
+            StructureError::DuplicateId {
+                at: place(sub.clone(), 5),
+                id: NetworkId(41),
+                first: place(BlockKind::Level1, 2),
+            },
+        ];
+        for (error, block) in width_examples().into_iter().zip([BlockKind::Level2, sub]) {
+            let at = place(block, 4);
+            examples.push(StructureError::Network { at, error });
+        }
+        let mut seen = [false; STRUCTURE_VARIANTS];
+        examples.iter().for_each(|e| seen[structure_slot(e)] = true);
+        assert_eq!(
+            seen, [true; STRUCTURE_VARIANTS],
+            "a structure error without an example"
+        );
+        examples
     }
 
     #[test]
@@ -138,7 +254,6 @@ mod tests {
                 message: "expected `)`".into(),
             },
             FileError::Encoding(7),
-            FileError::Structure("row 1 has 10 cells".into()),
             FileError::Damaged("LADDER-STUDIO-PROJECX v3".into()),
             FileError::ByteOrderMark,
             FileError::LineEnds { intact: true },
@@ -156,6 +271,31 @@ mod tests {
             assert!(has_cjk(&zh), "{zh}");
             assert_eq!(file_error(&e, Lang::En), e.to_string());
         }
+        for s in structure_examples() {
+            let zh = structure_error(&s, Lang::Zh);
+            assert_chinese_with_numbers(&s.to_string(), &zh);
+            assert_eq!(structure_error(&s, Lang::En), s.to_string());
+            let e = FileError::Structure(s);
+            let (en, zh) = (file_error(&e, Lang::En), file_error(&e, Lang::Zh));
+            assert_eq!(en, e.to_string());
+            assert_chinese_with_numbers(&en, &zh);
+        }
+        // The English is what docs/files.md and scripts quote: it stays as it was.
+        let e = FileError::Structure(StructureError::DuplicateId {
+            at: NetworkPlace {
+                block: BlockKind::Level2,
+                network: 3,
+            },
+            id: NetworkId(9),
+            first: NetworkPlace {
+                block: BlockKind::Level1,
+                network: 1,
+            },
+        });
+        assert_eq!(
+            e.to_string(),
+            "the ladder is malformed: LEVEL2 network 3 has the id 9 of LEVEL1 network 1: give it an id no other network has"
+        );
         let v = file_error(&FileError::Version { found: 9 }, Lang::Zh);
         assert!(
             v.contains('9') && v.contains(&SCHEMA_VERSION.to_string()),
@@ -171,14 +311,34 @@ mod tests {
             EditError::FixedBlock,
             EditError::LastRow,
             EditError::NothingAbove,
-            EditError::WrongWidth("9 columns".into()),
-        ] {
+        ]
+        .into_iter()
+        .chain(width_examples().into_iter().map(EditError::WrongWidth))
+        {
             let zh = edit_error(&e, Lang::Zh);
             assert!(
                 zh.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c)),
                 "{zh}"
             );
             assert_eq!(edit_error(&e, Lang::En), e.to_string());
+            if let EditError::WrongWidth(w) = &e {
+                assert_chinese_with_numbers(&e.to_string(), &zh);
+                assert!(zh.ends_with(&width_error_zh(w)), "{zh}");
+            }
         }
+        assert_eq!(
+            EditError::WrongWidth(WidthError::NoRows).to_string(),
+            "the network does not fit this ladder: it has no rows"
+        );
+        let e = EditError::WrongWidth(WidthError::Row {
+            row: 2,
+            cells: 9,
+            junctions: 9,
+            expected: 11,
+        });
+        assert_eq!(
+            e.to_string(),
+            "the network does not fit this ladder: row 2 has 9 cells and 9 junctions, not 11"
+        );
     }
 }

@@ -18,6 +18,7 @@ pub use reference::reference_markdown;
 pub use table::{CATALOG, FnOp, Op};
 
 use crate::address::{Area, AreaSet};
+use thiserror::Error;
 
 /// Largest magnitude of a constant (§1.2: D holds −2147483647…2147483647).
 pub const CONST_MAX: i64 = 2_147_483_647;
@@ -367,43 +368,57 @@ impl Op {
     }
 }
 
-/// Checks a digit-group operand (FMT, OE, H/L) of `op` beyond its digits' range, returning
-/// what is wrong in words.
-pub fn check_digit_group(op: Op, operand: &str, value: i64) -> Result<(), String> {
-    let ok = match (op, operand) {
-        (Op::Ctrc, _) => matches!(value, 0 | 1 | 10 | 11),
-        (Op::Pari, _) => matches!(value, 0 | 1),
-        (Op::Xmov, _) => value <= 999 && matches!(value % 10, 1 | 2 | 4),
-        _ => true,
-    };
-    if ok {
-        Ok(())
-    } else {
-        Err(digit_group_rule(op).0.into())
+/// Checks a digit-group operand (FMT, OE, H/L) of `op` beyond its digits' range: which
+/// rule the value breaks, if any. Each of these instructions has one digit group, so the
+/// instruction names the rule.
+pub fn check_digit_group(op: Op, value: i64) -> Result<(), DigitGroupError> {
+    match op {
+        Op::Ctrc if !matches!(value, 0 | 1 | 10 | 11) => Err(DigitGroupError::Ctrc { value }),
+        Op::Pari if !matches!(value, 0 | 1) => Err(DigitGroupError::Pari { value }),
+        Op::Xmov if value > 999 || !matches!(value % 10, 1 | 2 | 4) => {
+            Err(DigitGroupError::Xmov { value })
+        }
+        _ => Ok(()),
     }
 }
 
-/// The rule of an instruction's control digits (CTRC's FMT, PARI's OE, XMOV's FMT), in
-/// Chinese: what [`check_digit_group`] says in English.
-pub fn digit_group_rule_zh(op: Op) -> &'static str {
-    digit_group_rule(op).1
+/// Control digits an instruction does not define ([`check_digit_group`]): the rule of the
+/// instruction's digit group, in English (`Display`) and Chinese ([`DigitGroupError::zh`]);
+/// the compiler's diagnostics carry both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+pub enum DigitGroupError {
+    /// CTRC's FMT other than 0000, 0001, 0010, 0011.
+    #[error("CTRC's FMT is 0000, 0001, 0010 or 0011 (00ab: a = initial value, b = down)")]
+    Ctrc {
+        /// The value written.
+        value: i64,
+    },
+    /// PARI's OE other than 0000, 0001.
+    #[error("PARI's OE is 0000 (even) or 0001 (odd)")]
+    Pari {
+        /// The value written.
+        value: i64,
+    },
+    /// XMOV's FMT not of the form 0nnx with x = 1, 2 or 4.
+    #[error("XMOV's FMT is 0nnx: nn elements (00–99) of x = 1, 2 or 4 bytes")]
+    Xmov {
+        /// The value written.
+        value: i64,
+    },
 }
 
-/// (English, Chinese) of the digit-group rule, in one match so neither goes missing.
-fn digit_group_rule(op: Op) -> (&'static str, &'static str) {
-    match op {
-        Op::Ctrc => (
-            "CTRC's FMT is 0000, 0001, 0010 or 0011 (00ab: a = initial value, b = down)",
-            "CTRC 的 FMT 为 0000、0001、0010 或 0011（00ab：a = 初始值，b = 减计数）",
-        ),
-        Op::Pari => (
-            "PARI's OE is 0000 (even) or 0001 (odd)",
-            "PARI 的 OE 为 0000（偶校验）或 0001（奇校验）",
-        ),
-        _ => (
-            "XMOV's FMT is 0nnx: nn elements (00–99) of x = 1, 2 or 4 bytes",
-            "XMOV 的 FMT 为 0nnx：nn 个元素（00–99），每个元素 x = 1、2 或 4 字节",
-        ),
+impl DigitGroupError {
+    /// The rule in Chinese, saying what the English says.
+    pub fn zh(&self) -> &'static str {
+        match self {
+            DigitGroupError::Ctrc { .. } => {
+                "CTRC 的 FMT 为 0000、0001、0010 或 0011（00ab：a = 初始值，b = 减计数）"
+            }
+            DigitGroupError::Pari { .. } => "PARI 的 OE 为 0000（偶校验）或 0001（奇校验）",
+            DigitGroupError::Xmov { .. } => {
+                "XMOV 的 FMT 为 0nnx：nn 个元素（00–99），每个元素 x = 1、2 或 4 字节"
+            }
+        }
     }
 }
 

@@ -130,3 +130,36 @@ fn the_outputs_written_whatever_act_are_marked_driven() {
         ]
     );
 }
+
+#[test]
+fn every_digit_group_refusal_names_its_rule_in_both_languages() {
+    let refused = [
+        (Op::Ctrc, 2),
+        (Op::Pari, 10),
+        (Op::Xmov, 13),
+        (Op::Xmov, 1001),
+    ];
+    let mut seen = [false; 3];
+    for (op, value) in refused {
+        let e = check_digit_group(op, value).unwrap_err();
+        // No wildcard: a new rule fails to compile here until it has an example above.
+        let (i, carried) = match e {
+            DigitGroupError::Ctrc { value } => (0, value),
+            DigitGroupError::Pari { value } => (1, value),
+            DigitGroupError::Xmov { value } => (2, value),
+        };
+        assert_eq!(carried, value);
+        seen[i] = true;
+        assert!(e.to_string().starts_with(op.name()), "{e}");
+        crate::compiler::bilingual::assert_bilingual(&e.to_string(), e.zh());
+    }
+    assert_eq!(seen, [true; 3]);
+    for (op, value) in [
+        (Op::Ctrc, 11),
+        (Op::Pari, 1),
+        (Op::Xmov, 994),
+        (Op::Rotb, 1111),
+    ] {
+        assert_eq!(check_digit_group(op, value), Ok(()), "{op:?} {value}");
+    }
+}

@@ -491,12 +491,7 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
                 instr.origin,
                 code,
                 format!("{} {}: {text}", spec.name, ospec.name),
-                format!(
-                    "{} 的操作数 {}：{}",
-                    spec.name,
-                    ospec.name,
-                    refusal.zh(instr.op)
-                ),
+                format!("{} 的操作数 {}：{}", spec.name, ospec.name, refusal.zh()),
             );
             continue;
         }

@@ -6,7 +6,7 @@
 use super::diag::Code;
 use crate::address::{Address, AddressError, Area, AreaSet};
 use crate::catalog::{
-    Access, CONST_MAX, Op, OperandKind, OperandSpec, Width, check_digit_group, digit_group_rule_zh,
+    Access, CONST_MAX, DigitGroupError, Op, OperandKind, OperandSpec, Width, check_digit_group,
     xmov_format,
 };
 use crate::model::Operand;
@@ -38,8 +38,8 @@ pub enum OperandRefusal {
         /// Binary digits (0 and 1) rather than decimal ones.
         binary: bool,
     },
-    /// Digits the instruction does not define (CTRC's, ROTB's control groups).
-    DigitGroup(String),
+    /// Control digits the instruction does not define (CTRC's FMT, PARI's OE, XMOV's FMT).
+    DigitGroup(DigitGroupError),
     /// A constant outside the operand's range.
     ConstRange {
         /// The value written.
@@ -126,9 +126,8 @@ pub fn expected_text_zh(kind: OperandKind) -> &'static str {
 }
 
 impl OperandRefusal {
-    /// The refusal in Chinese, with the same specifics as its English text. `op` is the
-    /// instruction the operand belongs to (it names the rule of a refused digit group).
-    pub fn zh(&self, op: Op) -> String {
+    /// The refusal in Chinese, with the same specifics as its English text.
+    pub fn zh(&self) -> String {
         match self {
             OperandRefusal::TooMany => "该指令没有这么多操作数".into(),
             OperandRefusal::Kind { expected, found } => {
@@ -143,7 +142,7 @@ impl OperandRefusal {
                 "应写 4 位{}数字，不能是 `{value}`",
                 if *binary { "二进制" } else { "十进制" }
             ),
-            OperandRefusal::DigitGroup(_) => digit_group_rule_zh(op).into(),
+            OperandRefusal::DigitGroup(e) => e.zh().into(),
             OperandRefusal::ConstRange { value, min, max } => {
                 format!("{value} 超出范围（{min}–{max}）")
             }
@@ -179,7 +178,7 @@ impl fmt::Display for OperandRefusal {
                 "write 4 {} digits, not `{value}`",
                 if *binary { "binary" } else { "decimal" }
             ),
-            OperandRefusal::DigitGroup(why) => f.write_str(why),
+            OperandRefusal::DigitGroup(e) => write!(f, "{e}"),
             OperandRefusal::ConstRange { value, min, max } => {
                 write!(f, "{value} is out of range ({min}–{max})")
             }
@@ -252,7 +251,7 @@ pub fn operand_error(
                             binary: max_digit == 1,
                         });
                     }
-                    check_digit_group(op, spec.name, v).map_err(OperandRefusal::DigitGroup)
+                    check_digit_group(op, v).map_err(OperandRefusal::DigitGroup)
                 }
                 _ if v < spec.min || v > spec.max => Err(OperandRefusal::ConstRange {
                     value: v,

@@ -6,7 +6,7 @@ mod atomic;
 
 pub use atomic::write_atomic;
 
-use crate::model::Project;
+use crate::model::{Project, StructureError};
 use std::fs;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -126,7 +126,7 @@ pub enum FileError {
     Encoding(usize),
     /// The body parses but the ladder breaks the model's invariants.
     #[error("the ladder is malformed: {0}")]
-    Structure(String),
+    Structure(StructureError),
 }
 
 /// Refuses a project whose ladder breaks the invariants the editor and compiler rely on.
@@ -677,21 +677,37 @@ mod tests {
         let mut p = crate::il::import("LD X1.0\nOUT Y1.0\n").project.unwrap();
         p.ladder.blocks[0].networks[0].rows[0].cells.pop();
         let err = from_bytes(to_string(&p).as_bytes()).unwrap_err();
+        let FileError::Structure(StructureError::Network { at, error }) = &err else {
+            panic!("{err}");
+        };
+        assert_eq!((at.block.label().as_str(), at.network), ("LEVEL1", 1));
+        // A saved row keeps its links as junction numbers, so it reads back with a junction
+        // per cell: both are one short.
+        assert_eq!(
+            *error,
+            crate::model::WidthError::Row {
+                row: 1,
+                cells: 10,
+                junctions: 10,
+                expected: 11
+            }
+        );
         assert!(
-            matches!(&err, FileError::Structure(m) if m.contains("LEVEL1 network 1: row 1 has 10 cells")),
+            err.to_string()
+                .contains("LEVEL1 network 1: row 1 has 10 cells and 10 junctions, not 11"),
             "{err}"
         );
         let mut p = Project::default();
         p.ladder.blocks.swap(0, 1);
         assert!(matches!(
             from_bytes(to_string(&p).as_bytes()),
-            Err(FileError::Structure(_))
+            Err(FileError::Structure(StructureError::LevelsFirst))
         ));
         let mut p = Project::default();
         p.ladder.width = 0;
         assert!(matches!(
             from_bytes(to_string(&p).as_bytes()),
-            Err(FileError::Structure(_))
+            Err(FileError::Structure(StructureError::Width(0)))
         ));
     }
 }

@@ -8,7 +8,7 @@
 use super::block::{Block, BlockKind};
 use super::cell::Cell;
 use super::ladder::Ladder;
-use super::network::{Network, Row};
+use super::network::{Network, Row, WidthError};
 use thiserror::Error;
 
 /// A position in the grid: block, network, row and column (or junction, for links).
@@ -133,7 +133,7 @@ pub enum EditError {
     NothingAbove,
     /// A network from another project (the clipboard) whose rows have another width.
     #[error("the network does not fit this ladder: {0}")]
-    WrongWidth(String),
+    WrongWidth(WidthError),
 }
 
 impl Ladder {

@@ -1,14 +1,69 @@
 //! The ladder: every block of a project and the network width they share.
 
 use super::block::{Block, BlockKind};
-use super::network::{Network, NetworkId};
+use super::network::{Network, NetworkId, WidthError};
 use serde::{Deserialize, Serialize};
+use std::fmt;
+use thiserror::Error;
 
 /// Contact columns per network by default: ten contacts and the output column fit a 1366-pixel
 /// laptop screen at 100 % zoom next to the project tree.
 pub const DEFAULT_WIDTH: usize = 10;
 /// The widest network a project may use.
 pub const MAX_WIDTH: usize = 64;
+
+/// Where a network is: its block and its place in the block, counted from 1, as a
+/// structure error names it (`LEVEL1 network 2`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NetworkPlace {
+    /// The block.
+    pub block: BlockKind,
+    /// The network's number in the block, counted from 1.
+    pub network: usize,
+}
+
+impl fmt::Display for NetworkPlace {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} network {}", self.block, self.network)
+    }
+}
+
+/// Which invariant of [`Ladder::check_structure`] a ladder breaks. The words are rendered
+/// from the data (the English here, the Chinese in the text crate), so a Chinese message
+/// never quotes the English.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum StructureError {
+    /// A width of no contact columns, or more than [`MAX_WIDTH`].
+    #[error("width {0} is not 1–{MAX_WIDTH}")]
+    Width(usize),
+    /// The first two blocks are not level 1 and level 2, in that order.
+    #[error("the first two blocks must be LEVEL1 and LEVEL2")]
+    LevelsFirst,
+    /// A level block among the subprograms.
+    #[error("{0} appears after the subprograms begin")]
+    AfterSubprograms(BlockKind),
+    /// A subprogram number not greater than the one before it.
+    #[error("P{0:04} is out of order or repeated")]
+    SubprogramOrder(u16),
+    /// A network that does not fit the ladder's width.
+    #[error("{at}: {error}")]
+    Network {
+        /// The network.
+        at: NetworkPlace,
+        /// How it does not fit.
+        error: WidthError,
+    },
+    /// Two networks with one id.
+    #[error("{at} has the id {} of {first}: give it an id no other network has", .id.0)]
+    DuplicateId {
+        /// The later network.
+        at: NetworkPlace,
+        /// The id both have.
+        id: NetworkId,
+        /// The earlier network.
+        first: NetworkPlace,
+    },
+}
 
 /// The ladder program of a project.
 ///
@@ -65,37 +120,41 @@ impl Ladder {
     /// level 1 and level 2 first, then subprograms with distinct P numbers in ascending
     /// order, every network at least one row, every row `width + 1` cells and junctions.
     /// A file that breaks them is refused rather than opened and crashed on later.
-    pub fn check_structure(&self) -> Result<(), String> {
+    pub fn check_structure(&self) -> Result<(), StructureError> {
         if !(1..=MAX_WIDTH).contains(&self.width) {
-            return Err(format!("width {} is not 1–{MAX_WIDTH}", self.width));
+            return Err(StructureError::Width(self.width));
         }
         match self.blocks.get(..2).map(|b| (&b[0].kind, &b[1].kind)) {
             Some((BlockKind::Level1, BlockKind::Level2)) => {}
-            _ => return Err("the first two blocks must be LEVEL1 and LEVEL2".into()),
+            _ => return Err(StructureError::LevelsFirst),
         }
         let mut last = None;
         for b in &self.blocks[2..] {
             let Some(n) = b.kind.sub_number() else {
-                return Err(format!("{} appears after the subprograms begin", b.kind));
+                return Err(StructureError::AfterSubprograms(b.kind.clone()));
             };
             if last.is_some_and(|l| l >= n) {
-                return Err(format!("P{n:04} is out of order or repeated"));
+                return Err(StructureError::SubprogramOrder(n));
             }
             last = Some(n);
         }
         let mut ids = std::collections::HashMap::new();
         for b in &self.blocks {
             for (i, n) in b.networks.iter().enumerate() {
-                n.check_width(self.width)
-                    .map_err(|e| format!("{} network {}: {e}", b.kind, i + 1))?;
+                let at = NetworkPlace {
+                    block: b.kind.clone(),
+                    network: i + 1,
+                };
+                if let Err(error) = n.check_width(self.width) {
+                    return Err(StructureError::Network { at, error });
+                }
                 // The id is what undo, the monitor and the settings know a network by.
-                if let Some(first) = ids.insert(n.id, format!("{} network {}", b.kind, i + 1)) {
-                    return Err(format!(
-                        "{} network {} has the id {} of {first}: give it an id no other network has",
-                        b.kind,
-                        i + 1,
-                        n.id.0
-                    ));
+                if let Some(first) = ids.insert(n.id, at.clone()) {
+                    return Err(StructureError::DuplicateId {
+                        at,
+                        id: n.id,
+                        first,
+                    });
                 }
             }
         }

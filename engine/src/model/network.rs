@@ -3,6 +3,7 @@
 use super::cell::Cell;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeMap;
+use thiserror::Error;
 
 /// A stable identity of a network, unique within a project and never reused.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
@@ -67,6 +68,28 @@ impl Row {
     }
 }
 
+/// Why a network does not fit a ladder's width ([`Network::check_width`]). The words are
+/// rendered from the data (the English here, the Chinese in the text crate), so a Chinese
+/// message never quotes the English.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum WidthError {
+    /// The network has no row at all.
+    #[error("it has no rows")]
+    NoRows,
+    /// A row whose cells or junctions are not one per contact column plus the output column.
+    #[error("row {row} has {cells} cells and {junctions} junctions, not {expected}")]
+    Row {
+        /// The row, counted from 1.
+        row: usize,
+        /// How many cells it has.
+        cells: usize,
+        /// How many junctions (places for a vertical link) it has.
+        junctions: usize,
+        /// How many of each the ladder's width asks for (`width + 1`).
+        expected: usize,
+    },
+}
+
 /// A network (rung group) with its title and comments.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Network {
@@ -93,19 +116,18 @@ pub struct Network {
 impl Network {
     /// Whether the network fits a ladder `width` contact columns wide: at least one row, each
     /// with `width + 1` cells and junctions.
-    pub fn check_width(&self, width: usize) -> Result<(), String> {
+    pub fn check_width(&self, width: usize) -> Result<(), WidthError> {
         if self.rows.is_empty() {
-            return Err("it has no rows".into());
+            return Err(WidthError::NoRows);
         }
         for (r, row) in self.rows.iter().enumerate() {
             if row.cells.len() != width + 1 || row.links.len() != width + 1 {
-                return Err(format!(
-                    "row {} has {} cells and {} junctions, not {}",
-                    r + 1,
-                    row.cells.len(),
-                    row.links.len(),
-                    width + 1
-                ));
+                return Err(WidthError::Row {
+                    row: r + 1,
+                    cells: row.cells.len(),
+                    junctions: row.links.len(),
+                    expected: width + 1,
+                });
             }
         }
         Ok(())

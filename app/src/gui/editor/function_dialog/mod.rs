@@ -186,8 +186,8 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
             Msg::FnReadOnly.text(lang).into()
         }
         OperandRefusal::DigitGroup(why) => match lang {
-            Lang::Zh => OperandRefusal::DigitGroup(why).zh(op),
-            Lang::En => why,
+            Lang::Zh => why.zh().into(),
+            Lang::En => why.to_string(),
         },
         OperandRefusal::Range(e) => crate::gui::tables::address_error(&e, profile, lang),
         OperandRefusal::ReadOnly { .. }
