@@ -189,7 +189,9 @@ fn pasted_networks_are_new_networks_and_a_paste_outside_the_ladder_is_refused() 
     assert_ne!(n[0].id, n[1].id, "a pasted network gets its own identity");
     assert_eq!(
         l.plan_paste(at(9, 0, 0), clip),
-        Err(EditError::NoSuchPlace("network"))
+        Err(EditError::NoSuchPlace(
+            ladder_engine::model::Missing::Network
+        ))
     );
 }
 

@@ -7,15 +7,15 @@ pub use structure::{structure_error, width_error_zh};
 
 use crate::{Lang, Msg};
 use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
-use ladder_engine::model::{EditError, OperandError, SubError};
+use ladder_engine::model::{ColumnRule, EditError, Missing, OperandError, SubError};
 
 /// Why the engine refused a ladder edit.
 pub fn edit_error(e: &EditError, lang: Lang) -> String {
     match lang {
         Lang::En => e.to_string(),
         Lang::Zh => match e {
-            EditError::NoSuchPlace(what) => format!("这个位置不存在（{what}）"),
-            EditError::WrongColumn(why) => format!("元件不能放在这一列：{why}"),
+            EditError::NoSuchPlace(what) => format!("这里没有{}", missing_zh(*what)),
+            EditError::WrongColumn(rule) => format!("元件不能放在这一列：{}", column_zh(*rule)),
             EditError::FixedBlock => "一级程序和二级程序总是存在；只能增删子程序".to_string(),
             EditError::LastRow => "网络至少保留一行；要删除请删除整个网络".to_string(),
             EditError::NothingAbove => "并联触点需要上一行有元件".to_string(),
@@ -23,6 +23,26 @@ pub fn edit_error(e: &EditError, lang: Lang) -> String {
                 format!("网络与本梯形图的宽度不同：{}", width_error_zh(w))
             }
         },
+    }
+}
+
+/// What an edit named that is not there, in Chinese.
+fn missing_zh(m: Missing) -> &'static str {
+    match m {
+        Missing::Block => "这个程序块",
+        Missing::Network => "这个网络",
+        Missing::Row => "这一行",
+        Missing::Column => "这一列",
+        Missing::RowOfWidth => "与梯形图同宽的行",
+        Missing::LinkPlace => "可放竖线的位置（竖线连接本行与下一行，位于左母线右侧）",
+    }
+}
+
+/// The column rule an element broke, in Chinese.
+fn column_zh(r: ColumnRule) -> &'static str {
+    match r {
+        ColumnRule::ContactsLeft => "触点和导线应放在输出列左侧",
+        ColumnRule::OutputsRight => "线圈和功能指令应放在最右端的输出列",
     }
 }
 
@@ -305,15 +325,41 @@ mod tests {
 
     #[test]
     fn every_refusal_reads_in_chinese_in_a_chinese_ui() {
-        for e in [
-            EditError::NoSuchPlace("row"),
-            EditError::WrongColumn("a coil belongs in the output column"),
-            EditError::FixedBlock,
-            EditError::LastRow,
-            EditError::NothingAbove,
-        ]
-        .into_iter()
-        .chain(width_examples().into_iter().map(EditError::WrongWidth))
+        let missing = [
+            Missing::Block,
+            Missing::Network,
+            Missing::Row,
+            Missing::Column,
+            Missing::RowOfWidth,
+            Missing::LinkPlace,
+        ];
+        // Every place and rule has an example: the `match`es fail to compile otherwise.
+        for m in missing {
+            match m {
+                Missing::Block
+                | Missing::Network
+                | Missing::Row
+                | Missing::Column
+                | Missing::RowOfWidth
+                | Missing::LinkPlace => {}
+            }
+        }
+        let rules = [ColumnRule::ContactsLeft, ColumnRule::OutputsRight];
+        for r in rules {
+            match r {
+                ColumnRule::ContactsLeft | ColumnRule::OutputsRight => {}
+            }
+        }
+        for e in missing
+            .into_iter()
+            .map(EditError::NoSuchPlace)
+            .chain(rules.into_iter().map(EditError::WrongColumn))
+            .chain([
+                EditError::FixedBlock,
+                EditError::LastRow,
+                EditError::NothingAbove,
+            ])
+            .chain(width_examples().into_iter().map(EditError::WrongWidth))
         {
             let zh = edit_error(&e, Lang::Zh);
             assert!(
@@ -321,6 +367,9 @@ mod tests {
                 "{zh}"
             );
             assert_eq!(edit_error(&e, Lang::En), e.to_string());
+            if matches!(e, EditError::NoSuchPlace(_) | EditError::WrongColumn(_)) {
+                assert!(!zh.chars().any(|c| c.is_ascii_alphabetic()), "{zh}");
+            }
             if let EditError::WrongWidth(w) = &e {
                 assert_chinese_with_numbers(&e.to_string(), &zh);
                 assert!(zh.ends_with(&width_error_zh(w)), "{zh}");

@@ -113,15 +113,49 @@ pub enum Edit {
     Batch(Vec<Edit>),
 }
 
+/// What an edit names that the ladder does not have.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+pub enum Missing {
+    /// A block (level or subprogram).
+    #[error("block")]
+    Block,
+    /// A network of the block.
+    #[error("network")]
+    Network,
+    /// A row of the network.
+    #[error("row")]
+    Row,
+    /// A column of the row.
+    #[error("column")]
+    Column,
+    /// A row as wide as the ladder.
+    #[error("row of this width")]
+    RowOfWidth,
+    /// A place a vertical link can take.
+    #[error("place for a vertical link (it joins a row to the next, right of the rail)")]
+    LinkPlace,
+}
+
+/// The column rule an element broke.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+pub enum ColumnRule {
+    /// A contact or wire in the output column.
+    #[error("contacts and wires go left of the output column")]
+    ContactsLeft,
+    /// A coil or box in a contact column.
+    #[error("coils and function boxes go in the output column at the right end")]
+    OutputsRight,
+}
+
 /// Why an edit was refused. Nothing changes when an edit is refused.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
 pub enum EditError {
     /// The position does not exist.
     #[error("there is no {0} there")]
-    NoSuchPlace(&'static str),
+    NoSuchPlace(Missing),
     /// A contact or wire in the output column, or a coil or box in a contact column.
     #[error("{0}")]
-    WrongColumn(&'static str),
+    WrongColumn(ColumnRule),
     /// Level 1 and level 2 cannot be deleted or duplicated.
     #[error("level 1 and level 2 always exist; only subprograms can be added or deleted")]
     FixedBlock,
@@ -140,10 +174,10 @@ impl Ladder {
     fn network_mut(&mut self, block: usize, network: usize) -> Result<&mut Network, EditError> {
         self.blocks
             .get_mut(block)
-            .ok_or(EditError::NoSuchPlace("block"))?
+            .ok_or(EditError::NoSuchPlace(Missing::Block))?
             .networks
             .get_mut(network)
-            .ok_or(EditError::NoSuchPlace("network"))
+            .ok_or(EditError::NoSuchPlace(Missing::Network))
     }
 
     /// Checks that `at` names an existing cell.
@@ -151,13 +185,16 @@ impl Ladder {
         let n = self
             .blocks
             .get(at.block)
-            .ok_or(EditError::NoSuchPlace("block"))?
+            .ok_or(EditError::NoSuchPlace(Missing::Block))?
             .networks
             .get(at.network)
-            .ok_or(EditError::NoSuchPlace("network"))?;
-        let row = n.rows.get(at.row).ok_or(EditError::NoSuchPlace("row"))?;
+            .ok_or(EditError::NoSuchPlace(Missing::Network))?;
+        let row = n
+            .rows
+            .get(at.row)
+            .ok_or(EditError::NoSuchPlace(Missing::Row))?;
         if at.col >= row.cells.len() {
-            return Err(EditError::NoSuchPlace("column"));
+            return Err(EditError::NoSuchPlace(Missing::Column));
         }
         Ok(())
     }
@@ -237,14 +274,10 @@ impl Ladder {
         if !strict {
             // Bounds were checked; the column rule is not.
         } else if output_col && !cell.is_output_kind() {
-            return Err(EditError::WrongColumn(
-                "contacts and wires go left of the output column",
-            ));
+            return Err(EditError::WrongColumn(ColumnRule::ContactsLeft));
         }
         if strict && !output_col && !cell.is_contact_kind() {
-            return Err(EditError::WrongColumn(
-                "coils and function boxes go in the output column at the right end",
-            ));
+            return Err(EditError::WrongColumn(ColumnRule::OutputsRight));
         }
         let n = self.network_mut(at.block, at.network)?;
         let old = std::mem::replace(&mut n.rows[at.row].cells[at.col], cell);
@@ -257,9 +290,7 @@ impl Ladder {
         self.check_cell(at)?;
         let n = self.network_mut(at.block, at.network)?;
         if at.col == 0 || at.row + 1 >= n.rows.len() {
-            return Err(EditError::NoSuchPlace(
-                "place for a vertical link (it joins a row to the next, right of the rail)",
-            ));
+            return Err(EditError::NoSuchPlace(Missing::LinkPlace));
         }
         let old = std::mem::replace(&mut n.rows[at.row].links[at.col], on);
         Ok(Edit::SetLink { at, on: old })
@@ -277,10 +308,10 @@ impl Ladder {
         let width = self.width;
         let n = self.network_mut(block, network)?;
         if row > n.rows.len() {
-            return Err(EditError::NoSuchPlace("row"));
+            return Err(EditError::NoSuchPlace(Missing::Row));
         }
         if content.cells.len() != width + 1 || content.links.len() != width + 1 {
-            return Err(EditError::NoSuchPlace("row of this width"));
+            return Err(EditError::NoSuchPlace(Missing::RowOfWidth));
         }
         n.rows.insert(row, content);
         Ok(Edit::DeleteRow {
@@ -299,7 +330,7 @@ impl Ladder {
     ) -> Result<Edit, EditError> {
         let n = self.network_mut(block, network)?;
         if row >= n.rows.len() {
-            return Err(EditError::NoSuchPlace("row"));
+            return Err(EditError::NoSuchPlace(Missing::Row));
         }
         if n.rows.len() == 1 {
             return Err(EditError::LastRow);
@@ -325,9 +356,9 @@ impl Ladder {
         let b = self
             .blocks
             .get_mut(block)
-            .ok_or(EditError::NoSuchPlace("block"))?;
+            .ok_or(EditError::NoSuchPlace(Missing::Block))?;
         if index > b.networks.len() {
-            return Err(EditError::NoSuchPlace("network"));
+            return Err(EditError::NoSuchPlace(Missing::Network));
         }
         network.check_width(width).map_err(EditError::WrongWidth)?;
         // Ids stay unique whatever the caller built the network from.
@@ -344,9 +375,9 @@ impl Ladder {
         let b = self
             .blocks
             .get_mut(block)
-            .ok_or(EditError::NoSuchPlace("block"))?;
+            .ok_or(EditError::NoSuchPlace(Missing::Block))?;
         if index >= b.networks.len() {
-            return Err(EditError::NoSuchPlace("network"));
+            return Err(EditError::NoSuchPlace(Missing::Network));
         }
         let network = Box::new(b.networks.remove(index));
         Ok(Edit::InsertNetwork {
@@ -380,7 +411,7 @@ impl Ladder {
         let b = self
             .blocks
             .get_mut(index)
-            .ok_or(EditError::NoSuchPlace("block"))?;
+            .ok_or(EditError::NoSuchPlace(Missing::Block))?;
         if b.kind.sub_number().is_none() != kind.sub_number().is_none()
             || (b.kind.sub_number().is_none() && b.kind != kind)
         {

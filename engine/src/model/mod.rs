@@ -18,7 +18,7 @@ pub mod tables;
 pub use block::{Block, BlockKind};
 pub use cell::Cell;
 pub use change::{Change, History, TableEdit};
-pub use edit::{CellRef, Edit, EditError};
+pub use edit::{CellRef, ColumnRule, Edit, EditError, Missing};
 pub use ladder::{DEFAULT_WIDTH, Ladder, MAX_WIDTH, NetworkPlace, StructureError};
 pub use network::{Network, NetworkId, Row, WidthError};
 pub use operand::{Operand, OperandError, is_symbol_name};

@@ -66,7 +66,7 @@ impl Ladder {
             .blocks
             .get(block)
             .and_then(|b| b.networks.get(network))
-            .ok_or(EditError::NoSuchPlace("network"))?;
+            .ok_or(EditError::NoSuchPlace(super::edit::Missing::Network))?;
         let last = row + 1 == n.rows.len();
         if last && row > 0 {
             for (j, on) in n.rows[row - 1].links.iter().enumerate() {
@@ -108,7 +108,7 @@ impl Ladder {
             .get(at.block)
             .and_then(|b| b.networks.get(at.network))
             .and_then(|n| n.rows.get(at.row))
-            .ok_or(EditError::NoSuchPlace("row"))?;
+            .ok_or(EditError::NoSuchPlace(super::edit::Missing::Row))?;
         let at = CellRef {
             col: self.width,
             ..at
@@ -132,7 +132,7 @@ impl Ladder {
             .blocks
             .get(at.block)
             .and_then(|b| b.networks.get(at.network))
-            .ok_or(EditError::NoSuchPlace("network"))?;
+            .ok_or(EditError::NoSuchPlace(super::edit::Missing::Network))?;
         let on = !n.link(at.row, at.col);
         let mut edits = Vec::new();
         if at.row + 1 >= n.rows.len() {
@@ -150,7 +150,7 @@ impl Ladder {
             .get(from.block)
             .and_then(|b| b.networks.get(from.network))
             .filter(|n| from.row.max(to.row) < n.rows.len() && self.width > 0)
-            .ok_or(EditError::NoSuchPlace("row"))?;
+            .ok_or(EditError::NoSuchPlace(super::edit::Missing::Row))?;
         let (r0, r1, c0, c1) = (from.row, to.row, from.col, to.col);
         let at = |row, col| CellRef { row, col, ..from };
         let mut edits = Vec::new();

@@ -228,7 +228,7 @@ impl Ladder {
             .blocks
             .get(at.block)
             .and_then(|b| b.networks.get(at.network))
-            .ok_or(EditError::NoSuchPlace("network"))?;
+            .ok_or(EditError::NoSuchPlace(super::edit::Missing::Network))?;
         match clip {
             Clip::Cells { cells, links } => {
                 // Rows the paste needs beyond the network's end come first.

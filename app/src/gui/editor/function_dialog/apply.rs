@@ -98,7 +98,8 @@ impl EditState {
             .and_then(|b| b.networks.get(dialog.at.network))
             .is_some_and(|n| dialog.at.row < n.rows.len());
         if !row_exists {
-            return Err(EditError::NoSuchPlace("row").to_string());
+            let e = EditError::NoSuchPlace(ladder_engine::model::Missing::Row);
+            return Err(crate::gui::errors::edit_error(&e, lang));
         }
         let at = if dialog.editing {
             dialog.at
