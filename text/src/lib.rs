@@ -1,5 +1,5 @@
 //! Every text Ladder Studio shows a user, in Chinese and English, in one place for the editor
-//! and the command line alike (docs/languages.md).
+//! and the command line alike (docs/files.md, "Language"; ARCHITECTURE.md, "Languages").
 //!
 //! The engine says what happened in types (enums with data, no prose); this crate says it in
 //! words. A missing translation is a compile error: each text is a `match` with an arm per

@@ -3,6 +3,7 @@
 
 use crate::Lang;
 use ladder_engine::refusal::Refusal;
+use ladder_engine::vm::SwapError;
 
 /// A refusal in `lang`.
 pub fn refusal(r: &Refusal, lang: Lang) -> String {
@@ -33,7 +34,11 @@ fn en(r: &Refusal) -> String {
         }
         Refusal::NoDevice(i) => format!("there is no device {}", i + 1),
         Refusal::Model(e) => e.to_string(),
-        Refusal::Swap(e) => e.to_string(),
+        Refusal::Swap(SwapError::Profile { old, new }) => {
+            format!(
+                "the program is for the {new} but the running PLC is a {old}: stop and run again"
+            )
+        }
         Refusal::ScenarioApplied(name) => {
             format!("scenario `{name}` is already applied; release it first")
         }
@@ -65,7 +70,9 @@ fn zh(r: &Refusal) -> String {
         }
         Refusal::NoDevice(i) => format!("没有第 {} 号设备", i + 1),
         Refusal::Model(e) => e.zh(),
-        Refusal::Swap(e) => e.zh(),
+        Refusal::Swap(SwapError::Profile { old, new }) => {
+            format!("程序是为 {new} 编写的，而运行中的 PLC 是 {old}：请停止后重新运行")
+        }
         Refusal::ScenarioApplied(name) => format!("场景 `{name}` 已经应用；请先解除"),
         Refusal::ScenarioNeedsModel { name, device } => format!(
             "场景 `{name}` 要向设备注入故障，但没有运行机床模型（或没有第 {} 号设备）：请带机床模型运行",
@@ -83,7 +90,6 @@ mod tests {
     use super::*;
     use ladder_engine::cnc::{CncError, RunState};
     use ladder_engine::devices::ModelError;
-    use ladder_engine::vm::SwapError;
 
     /// One refusal of every kind, with a specific its words must carry; the `match` fails to
     /// compile when a kind is added without an example here.

@@ -11,28 +11,17 @@ use super::Vm;
 use super::code::FnCall;
 use std::collections::HashMap;
 
-/// Why a program cannot take over a PLC.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+/// Why a program cannot take over a PLC: data only, worded by `ladder_text::refusal` (the
+/// runner hands it to the editor as a refusal).
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SwapError {
     /// The controller profile differs, so memory is laid out differently.
-    #[error("the program is for the {new} but the running PLC is a {old}: stop and run again")]
     Profile {
         /// The running profile.
         old: &'static str,
         /// The new program's profile.
         new: &'static str,
     },
-}
-
-impl SwapError {
-    /// The same message in Chinese.
-    pub fn zh(&self) -> String {
-        match self {
-            SwapError::Profile { old, new } => {
-                format!("程序是为 {new} 编写的，而运行中的 PLC 是 {old}：请停止后重新运行")
-            }
-        }
-    }
 }
 
 /// What a swap kept.
