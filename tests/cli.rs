@@ -612,4 +612,105 @@ fn an_endless_input_is_refused_past_the_size_limit_before_it_fills_the_memory() 
     ]);
     assert_ne!(r.code, 0, "{r:?}");
     assert!(r.stderr.contains("larger than 64 MiB"), "{}", r.stderr);
+    // The limit is the program's own reason, so it is said in Chinese too.
+    let r = run(&["--lang", "zh", "check", "/dev/zero"]);
+    assert_eq!(
+        r.stderr,
+        "ladder-studio: 无法读取 /dev/zero：文件大于 64 MiB，超出 Ladder Studio 能读取的上限\n"
+    );
+}
+
+/// Whether `s` holds a Chinese character.
+fn has_cjk(s: &str) -> bool {
+    s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
+}
+
+#[test]
+fn lang_zh_says_the_print_and_comments_reasons_in_chinese() {
+    let dir = tempfile::tempdir().unwrap();
+    let ldp = dir.path().join("p.ldp");
+    std::fs::copy(here().join("../projects/start-stop.ldp"), &ldp).unwrap();
+    let (ldp, pdf) = (ldp.to_str().unwrap(), dir.path().join("p.pdf"));
+    let pdf = pdf.to_str().unwrap();
+    // Each reason `print --network` can give, in Chinese after the option's name, and in
+    // English as it was.
+    for (network, english) in [
+        (
+            "LEVEL2",
+            "`LEVEL2`: write the network as BLOCK:N, e.g. LEVEL2:3",
+        ),
+        ("LEVEL9:1", "`LEVEL9`: no such block"),
+        ("LEVEL2:99", "`99`: LEVEL2 has networks 1 to"),
+    ] {
+        let zh = run(&[
+            "--lang",
+            "zh",
+            "print",
+            ldp,
+            "-o",
+            pdf,
+            "--network",
+            network,
+        ]);
+        assert_eq!(zh.code, 2, "{zh:?}");
+        let line = zh.stderr.trim_end();
+        assert!(line.starts_with("ladder-studio: --network `"), "{line}");
+        assert!(has_cjk(line), "{line}");
+        for word in ["write", "no such", "has networks"] {
+            assert!(!line.contains(word), "English `{word}` in: {line}");
+        }
+        let en = run(&[
+            "--lang",
+            "en",
+            "print",
+            ldp,
+            "-o",
+            pdf,
+            "--network",
+            network,
+        ]);
+        assert_eq!(en.code, 2, "{en:?}");
+        assert!(
+            en.stderr
+                .starts_with(&format!("ladder-studio: --network {english}")),
+            "{}",
+            en.stderr
+        );
+    }
+    // A comments CSV that cannot be read: its header, and the CSV reader's own reason (the
+    // reader's words stay, inside the Chinese line).
+    let csv = dir.path().join("c.csv");
+    let csv_s = csv.to_str().unwrap();
+    std::fs::write(&csv, "name,comment\nSTART,x\n").unwrap();
+    let zh = run(&["--lang", "zh", "import-comments", ldp, csv_s]);
+    assert_eq!(zh.code, 2, "{zh:?}");
+    assert_eq!(
+        zh.stderr,
+        format!(
+            "ladder-studio: {csv_s}: 第 1 行：表头必须列出 kind、table、key、symbol 列，以及每种语言一列\n"
+        )
+    );
+    let en = run(&["--lang", "en", "import-comments", ldp, csv_s]);
+    assert_eq!(
+        en.stderr,
+        format!(
+            "ladder-studio: {csv_s}: line 1: the header must name the columns kind,table,key,symbol and one per language\n"
+        )
+    );
+    std::fs::write(&csv, "kind,table,key,symbol,zh\nsymbol,,X0002.1\n").unwrap();
+    let zh = run(&["--lang", "zh", "import-comments", ldp, csv_s]);
+    assert_eq!(zh.code, 2, "{zh:?}");
+    assert!(
+        zh.stderr
+            .starts_with(&format!("ladder-studio: {csv_s}: 第 2 行：")),
+        "{}",
+        zh.stderr
+    );
+    let en = run(&["--lang", "en", "import-comments", ldp, csv_s]);
+    assert!(
+        en.stderr
+            .starts_with(&format!("ladder-studio: {csv_s}: line 2: ")),
+        "{}",
+        en.stderr
+    );
 }

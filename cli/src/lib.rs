@@ -536,7 +536,11 @@ fn import_comments(
             );
             Ok(1)
         }
-        Err(e) => anyhow::bail!("{}: {e}", csv_path.display()),
+        Err(e) => anyhow::bail!(
+            "{}: {}",
+            csv_path.display(),
+            ladder_text::errors::comments_error(&e, say.lang())
+        ),
     }
 }
 

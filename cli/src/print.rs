@@ -6,6 +6,7 @@ use clap::ValueEnum;
 use ladder_engine::file::write_atomic;
 use ladder_print::{Blocks, Labels, Options, Paper, PrintLang};
 use ladder_text::cli::PrintText;
+use ladder_text::errors::{networks_error, pdf_error};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
@@ -133,10 +134,10 @@ pub(super) fn print(
         Err(code) => return Ok(code),
     };
     let only = match args.network.as_deref() {
-        // The reason is the print crate's, the same in both languages.
+        // The option's name stays as typed; the reason is in the language asked for.
         Some(text) => Some(
-            ladder_print::find_networks(&project, text)
-                .map_err(|e| anyhow::anyhow!("--network {e}"))?,
+            ladder_print::networks(&project, text)
+                .map_err(|e| anyhow::anyhow!("--network {}", networks_error(&e, say.lang())))?,
         ),
         None => None,
     };
@@ -203,7 +204,8 @@ pub(super) fn print(
             if let Some(p) = args.page {
                 doc.pages = vec![doc.pages.swap_remove(p - 1)];
             }
-            let bytes = ladder_print::pdf(&doc).map_err(|e| anyhow::anyhow!("{e}"))?;
+            let bytes =
+                ladder_print::pdf(&doc).map_err(|e| anyhow::anyhow!(pdf_error(&e, say.lang())))?;
             write_atomic(&args.output, &bytes).map_err(|e| cannot(&args.output, e))?;
             let n = doc.pages.len();
             let _ = writeln!(

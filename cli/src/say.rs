@@ -64,11 +64,12 @@ impl Say {
         self.text(CheckText::Summary(Counts::of(compiled)))
     }
 
-    /// A file that could not be read, with the system's reason.
-    pub fn cannot_read(self, path: &Path, e: impl Display) -> String {
+    /// A file that could not be read, with the system's reason (the engine's own, such as
+    /// the size limit, in this language).
+    pub fn cannot_read(self, path: &Path, e: std::io::Error) -> String {
         self.text(FileText::CannotRead {
             path: shown(path),
-            why: e.to_string(),
+            why: ladder_text::errors::io_error(&e, self.lang()),
         })
     }
 

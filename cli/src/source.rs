@@ -9,6 +9,7 @@ use ladder_engine::model::Project;
 use ladder_engine::vm::Engine;
 use ladder_engine::{file, il};
 use ladder_text::cli::{CheckText, Counts, FileText, RunText};
+use ladder_text::errors::build_error;
 use std::io::Write;
 use std::path::Path;
 
@@ -136,7 +137,7 @@ fn machine_of(
             }
             let base = Project::default();
             let m = Machine::from_program(&base, &imported.compiled.program, cnc)
-                .map_err(|e| anyhow::anyhow!("{e}"))?;
+                .map_err(|e| anyhow!(build_error(&e, say.lang())))?;
             return Ok(Ok(m));
         }
     };
@@ -146,7 +147,7 @@ fn machine_of(
         return Ok(Err(1));
     }
     Ok(Ok(
-        Machine::new(&project, cnc).map_err(|e| anyhow::anyhow!("{e}"))?
+        Machine::new(&project, cnc).map_err(|e| anyhow!(build_error(&e, say.lang())))?
     ))
 }
 

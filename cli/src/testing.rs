@@ -15,6 +15,7 @@ use ladder_engine::sim::{self, Control};
 use ladder_engine::vm::Engine;
 use ladder_text::Lang;
 use ladder_text::cli::{CaseFailure, FileText, TestText};
+use ladder_text::errors::coverage_error;
 use quick_junit::{NonSuccessKind, Report, TestCase, TestCaseStatus, TestSuite};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -367,7 +368,9 @@ pub(super) fn test(
         for c in results.iter().filter_map(|r| r.coverage.as_ref()) {
             match &mut merged {
                 None => merged = Some(c.clone()),
-                Some(m) => m.merge(c).map_err(|e| anyhow::anyhow!("{e}"))?,
+                Some(m) => m
+                    .merge(c)
+                    .map_err(|e| anyhow::anyhow!(coverage_error(&e, say.lang())))?,
             }
         }
         if let Some(m) = merged {

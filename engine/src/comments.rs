@@ -29,6 +29,9 @@ pub enum CommentsError {
         /// What the CSV reader said.
         message: String,
     },
+    /// The header does not name the columns the import needs.
+    #[error("line 1: the header must name the columns kind,table,key,symbol and one per language")]
+    Header,
     /// Some rows cannot be applied; nothing was changed.
     #[error("{} row(s) rejected, nothing changed:\n{}", .0.len(), .0.iter().map(|(l, m)| format!("line {l}: {m}")).collect::<Vec<_>>().join("\n"))]
     Rejected(Vec<(u64, String)>),
@@ -156,11 +159,7 @@ pub fn import(
     let (Some(kind_c), Some(table_c), Some(key_c), Some(symbol_c)) =
         (col("kind"), col("table"), col("key"), col("symbol"))
     else {
-        return Err(CommentsError::Csv {
-            line: 1,
-            message: "the header must name the columns kind,table,key,symbol and one per language"
-                .into(),
-        });
+        return Err(CommentsError::Header);
     };
     let lang_cols: Vec<(String, usize)> = headers
         .iter()

@@ -114,7 +114,28 @@ pub enum CoverageError {
     NotCoverage(String),
     /// The reports are of different programs.
     #[error("the coverage is of another program (network {0} differs)")]
-    OtherProgram(String),
+    OtherProgram(Differs),
+}
+
+/// Where two coverage reports first differ (typed, so that it can be said in either language).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum Differs {
+    /// They have different numbers of networks.
+    #[error("{ours} networks against {theirs}")]
+    Count {
+        /// Networks of the report merged into.
+        ours: usize,
+        /// Networks of the report merged.
+        theirs: usize,
+    },
+    /// This network is not the same in both.
+    #[error("{block} N{number:04}")]
+    Network {
+        /// Its block's label (`LEVEL2`, `P0001`).
+        block: String,
+        /// Its number, from 1.
+        number: usize,
+    },
 }
 
 /// One line of the summary: a group of blocks and how many of its networks are covered.
@@ -231,11 +252,10 @@ impl Coverage {
                     .all(|(x, y)| x.il == y.il)
         };
         if self.networks.len() != other.networks.len() {
-            return Err(CoverageError::OtherProgram(format!(
-                "{} networks against {}",
-                self.networks.len(),
-                other.networks.len()
-            )));
+            return Err(CoverageError::OtherProgram(Differs::Count {
+                ours: self.networks.len(),
+                theirs: other.networks.len(),
+            }));
         }
         if let Some((a, _)) = self
             .networks
@@ -243,11 +263,10 @@ impl Coverage {
             .zip(&other.networks)
             .find(|(a, b)| !same(a, b))
         {
-            return Err(CoverageError::OtherProgram(format!(
-                "{} N{:04}",
-                a.block,
-                a.network + 1
-            )));
+            return Err(CoverageError::OtherProgram(Differs::Network {
+                block: a.block.clone(),
+                number: a.network + 1,
+            }));
         }
         for (a, b) in self.networks.iter_mut().zip(&other.networks) {
             for (x, y) in a.elements.iter_mut().zip(&b.elements) {

@@ -188,7 +188,7 @@ impl Machine {
         let mut m = Machine::from_parts(plc, cnc);
         // The compiler's check refuses a model with errors; a list run as written has none.
         m.load_model(&project.machine)
-            .map_err(|e| crate::vm::code::LowerError::Unresolved(e.to_string()))?;
+            .map_err(crate::vm::code::LowerError::Model)?;
         Ok(m)
     }
 

@@ -16,7 +16,9 @@ mod title;
 
 pub use compose::document;
 pub use font::{FONT, Metrics};
-pub use options::{Blocks, Labels, Options, Paper, PrintLang, find_networks, today};
+pub use options::{
+    Blocks, Labels, NetworksError, Options, Paper, PrintLang, find_networks, networks, today,
+};
 pub use page::{Anchor, Document, Ink, Item, Page, Pt, Seg};
 pub use pdf::{PdfError, pdf};
 pub use svg::{page_svg, svg_page_path};

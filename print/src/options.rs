@@ -187,22 +187,58 @@ fn civil_from_days(z: i64) -> (i64, u32, u32) {
     (yoe + era * 400 + i64::from(m <= 2), m, d)
 }
 
+/// Why a `BLOCK:N` or `BLOCK:FIRST-LAST` text names no networks (typed, so that each
+/// language words it; the English is the [`find_networks`] message).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum NetworksError {
+    /// No `:` between the block and the numbers.
+    #[error("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3")]
+    Form {
+        /// The whole text.
+        text: String,
+    },
+    /// The block is not in the project.
+    #[error("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")]
+    NoSuchBlock {
+        /// The block as written.
+        block: String,
+    },
+    /// The numbers are not networks of the block (or not a range in order).
+    #[error("`{numbers}`: {block} has networks 1 to {count} (write N or FIRST-LAST, e.g. 10-40)")]
+    Range {
+        /// The numbers as written.
+        numbers: String,
+        /// The block as written.
+        block: String,
+        /// Its networks.
+        count: usize,
+    },
+}
+
 /// Finds `BLOCK:N` or `BLOCK:FIRST-LAST` (`LEVEL2:3`, `LEVEL2:10-40`, `P0001:1`) in the
-/// project: (block index, network index) of each network.
+/// project: (block index, network index) of each network; the reason in English otherwise.
 pub fn find_networks(
     project: &ladder_engine::model::Project,
     text: &str,
 ) -> Result<Vec<(usize, usize)>, String> {
-    let (block, n) = text
-        .split_once(':')
-        .ok_or_else(|| format!("`{text}`: write the network as BLOCK:N, e.g. LEVEL2:3"))?;
+    networks(project, text).map_err(|e| e.to_string())
+}
+
+/// [`find_networks`] with its reason typed.
+pub fn networks(
+    project: &ladder_engine::model::Project,
+    text: &str,
+) -> Result<Vec<(usize, usize)>, NetworksError> {
+    let (block, n) = text.split_once(':').ok_or_else(|| NetworksError::Form {
+        text: text.to_string(),
+    })?;
     let b = project
         .ladder
         .blocks
         .iter()
         .position(|b| b.kind.label().eq_ignore_ascii_case(block))
-        .ok_or_else(|| {
-            format!("`{block}`: no such block (LEVEL1, LEVEL2 or a subprogram P0001…)")
+        .ok_or_else(|| NetworksError::NoSuchBlock {
+            block: block.to_string(),
         })?;
     let count = project.ladder.blocks[b].networks.len();
     let (first, last) = n.split_once('-').unwrap_or((n, n));
@@ -214,9 +250,11 @@ pub fn find_networks(
     };
     match (number(first), number(last)) {
         (Some(a), Some(z)) if a <= z => Ok((a - 1..z).map(|i| (b, i)).collect()),
-        _ => Err(format!(
-            "`{n}`: {block} has networks 1 to {count} (write N or FIRST-LAST, e.g. 10-40)"
-        )),
+        _ => Err(NetworksError::Range {
+            numbers: n.to_string(),
+            block: block.to_string(),
+            count,
+        }),
     }
 }
 

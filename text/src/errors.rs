@@ -1,8 +1,18 @@
 //! The engine's typed errors in the user's language: an edit, an operand, an address, a project
 //! file or a subprogram command refused.
 
+mod build;
+mod comments;
+mod coverage;
+mod io;
+mod print;
 mod structure;
 
+pub use build::{build_error, code_error};
+pub use comments::comments_error;
+pub use coverage::coverage_error;
+pub use io::io_error;
+pub use print::{networks_error, pdf_error};
 pub use structure::{structure_error, width_error_zh};
 
 use crate::{Lang, Msg};
@@ -64,7 +74,7 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
         Lang::En => e.to_string(),
         Lang::Zh => match e {
             FileError::Io { path, source } => {
-                format!("{}：文件读写失败（{source}）", path.display())
+                format!("{}：文件读写失败（{}）", path.display(), io_error(source, lang))
             }
             FileError::Foreign => format!(
                 "不是 Ladder Studio 工程文件：第一行必须以 `{MAGIC} v<版本> crc32=<8 位十六进制数>` 开头"
@@ -107,6 +117,12 @@ pub fn file_error(e: &FileError, lang: Lang) -> String {
     }
 }
 
+/// Whether `s` holds a Chinese character (the renderers' tests).
+#[cfg(test)]
+pub(crate) fn has_cjk(s: &str) -> bool {
+    s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
+}
+
 /// Why a subprogram command was refused.
 pub fn sub_error(e: &SubError, lang: Lang) -> String {
     match (lang, e) {
@@ -126,10 +142,6 @@ pub fn sub_error(e: &SubError, lang: Lang) -> String {
 mod tests {
     use super::*;
     use ladder_engine::model::{BlockKind, NetworkId, NetworkPlace, StructureError, WidthError};
-
-    fn has_cjk(s: &str) -> bool {
-        s.chars().any(|c| ('\u{4e00}'..='\u{9fff}').contains(&c))
-    }
 
     /// The runs of ASCII digits in `text`.
     fn digit_runs(text: &str) -> Vec<&str> {

@@ -429,6 +429,15 @@ mod v1 {
 /// a disk image) is refused before it fills the memory.
 pub const INPUT_MAX: u64 = 64 << 20;
 
+/// The reason [`read_limited`] gives a file past its limit: the engine's own words inside an
+/// I/O error, typed so that each language can say them (the system's reasons stay as said).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("the file is larger than {mib} MiB, the most Ladder Studio reads")]
+pub struct TooLarge {
+    /// The limit, in MiB.
+    pub mib: u64,
+}
+
 /// Reads a whole input file of at most `limit` bytes. A larger one, and a device that never
 /// ends (`/dev/zero`), is refused with [`std::io::ErrorKind::FileTooLarge`] once `limit + 1`
 /// bytes were seen (a regular file's size is checked before anything is read).
@@ -437,10 +446,7 @@ pub fn read_limited(path: &Path, limit: u64) -> std::io::Result<Vec<u8>> {
     let too_large = || {
         std::io::Error::new(
             std::io::ErrorKind::FileTooLarge,
-            format!(
-                "the file is larger than {} MiB, the most Ladder Studio reads",
-                limit >> 20
-            ),
+            TooLarge { mib: limit >> 20 },
         )
     };
     let file = fs::File::open(path)?;

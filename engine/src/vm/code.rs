@@ -316,7 +316,7 @@ impl Executable {
 }
 
 /// Why a program cannot be run.
-#[derive(Clone, Debug, Error, PartialEq, Eq)]
+#[derive(Clone, Debug, Error, PartialEq)]
 pub enum LowerError {
     /// The program still has compile errors.
     #[error("the program has {0} compile error(s); run check and fix them first")]
@@ -327,6 +327,9 @@ pub enum LowerError {
     /// Lowering made a word the loop could not run.
     #[error("invalid code: {0}")]
     Code(#[from] CodeError),
+    /// The project's machine model cannot run (typed, so that it can be said in Chinese too).
+    #[error("{0}")]
+    Model(crate::devices::ModelError),
 }
 
 struct Lowerer<'a> {
