@@ -16,9 +16,7 @@ mod title;
 
 pub use compose::document;
 pub use font::{FONT, Metrics};
-pub use options::{
-    Blocks, Labels, NetworksError, Options, Paper, PrintLang, find_networks, networks, today,
-};
+pub use options::{Blocks, Labels, NetworksError, Options, Paper, PrintLang, networks, today};
 pub use page::{Anchor, Document, Ink, Item, Page, Pt, Seg};
 pub use pdf::{PdfError, pdf};
 pub use svg::{page_svg, svg_page_path};

@@ -188,7 +188,7 @@ fn civil_from_days(z: i64) -> (i64, u32, u32) {
 }
 
 /// Why a `BLOCK:N` or `BLOCK:FIRST-LAST` text names no networks (typed, so that each
-/// language words it; the English is the [`find_networks`] message).
+/// language words it: `ladder_text::errors::networks_error`).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum NetworksError {
     /// No `:` between the block and the numbers.
@@ -216,15 +216,7 @@ pub enum NetworksError {
 }
 
 /// Finds `BLOCK:N` or `BLOCK:FIRST-LAST` (`LEVEL2:3`, `LEVEL2:10-40`, `P0001:1`) in the
-/// project: (block index, network index) of each network; the reason in English otherwise.
-pub fn find_networks(
-    project: &ladder_engine::model::Project,
-    text: &str,
-) -> Result<Vec<(usize, usize)>, String> {
-    networks(project, text).map_err(|e| e.to_string())
-}
-
-/// [`find_networks`] with its reason typed.
+/// project: (block index, network index) of each network, or why the text names none.
 pub fn networks(
     project: &ladder_engine::model::Project,
     text: &str,

@@ -89,7 +89,7 @@ impl PrintState {
             // A range that does not read is shown in the page setup and prints everything.
             cx.doc()
                 .filter(|_| !s.networks.trim().is_empty())
-                .and_then(|d| ladder_print::find_networks(d.project(), s.networks.trim()).ok())
+                .and_then(|d| ladder_print::networks(d.project(), s.networks.trim()).ok())
         };
         Options {
             paper: s.paper,

@@ -65,8 +65,9 @@ impl PrintState {
         let range_error = cx.doc().and_then(|d| {
             let text = cx.settings.page_setup.networks.trim();
             (!text.is_empty())
-                .then(|| ladder_print::find_networks(d.project(), text).err())
+                .then(|| ladder_print::networks(d.project(), text).err())
                 .flatten()
+                .map(|e| ladder_text::errors::networks_error(&e, lang))
         });
         egui::Window::new(Msg::PageSetup.text(lang))
             .constrain_to(area)
