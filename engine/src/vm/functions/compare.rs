@@ -11,6 +11,19 @@ fn three_bits(mem: &mut [u8], out: Arg, which: u32) {
     }
 }
 
+/// Which of CMP's three result bits is on: 0 for IN1 > IN2, 1 for equal, 2 otherwise (so a
+/// NaN, which is neither greater nor equal, reads as "less").
+#[inline]
+fn greater_equal_less<T: PartialOrd>(x: T, y: T) -> u32 {
+    if x > y {
+        0
+    } else if x == y {
+        1
+    } else {
+        2
+    }
+}
+
 /// CMP SIZE IN1 IN2 OUT: IN1 > IN2, =, < as signed integers of SIZE.
 #[inline]
 pub(super) fn cmp(f: &FnCall, act: bool, mem: &mut [u8]) {
@@ -18,17 +31,7 @@ pub(super) fn cmp(f: &FnCall, act: bool, mem: &mut [u8]) {
     if act {
         let n = size(*data_size);
         let (x, y) = (int(mem, *first, n), int(mem, *second, n));
-        three_bits(
-            mem,
-            *result_bits,
-            if x > y {
-                0
-            } else if x == y {
-                1
-            } else {
-                2
-            },
-        );
+        three_bits(mem, *result_bits, greater_equal_less(x, y));
     }
 }
 
@@ -39,17 +42,7 @@ pub(super) fn cmpr(f: &FnCall, act: bool, mem: &mut [u8]) {
     if act {
         let (x, y) = (real(mem, *first), real(mem, *second));
         // A NaN compares as "less" (docs/plc.md, function instructions).
-        three_bits(
-            mem,
-            *result_bits,
-            if x > y {
-                0
-            } else if x == y {
-                1
-            } else {
-                2
-            },
-        );
+        three_bits(mem, *result_bits, greater_equal_less(x, y));
     }
 }
 
