@@ -26,7 +26,7 @@ fn valid_programs_compile_clean_and_round_trip() {
             .compiled
             .diagnostics
             .iter()
-            .map(|d| d.render(&name))
+            .map(|d| ladder_text::diagnostics::render(d, &name, ladder_text::Lang::En))
             .collect();
         assert!(messages.is_empty(), "{name}: {messages:#?}");
         let project = imported.project.unwrap_or_else(|| panic!("{name} draws"));

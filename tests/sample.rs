@@ -13,7 +13,11 @@ fn lathe() -> ladder_engine::model::Project {
 fn the_lathe_sample_compiles_clean_with_over_300_steps() {
     let p = lathe();
     let c = compile(&p);
-    let d: Vec<String> = c.diagnostics.iter().map(|d| d.render("lathe")).collect();
+    let d: Vec<String> = c
+        .diagnostics
+        .iter()
+        .map(|d| ladder_text::diagnostics::render(d, "lathe", ladder_text::Lang::En))
+        .collect();
     assert!(d.is_empty(), "{d:#?}");
     assert!(c.steps.total >= 300, "{} steps", c.steps.total);
     assert!(c.steps.level1 < 600);

@@ -526,8 +526,9 @@ fn import_comments(
             Ok(0)
         }
         Err(ladder_engine::comments::CommentsError::Rejected(rows)) => {
-            for (line, message) in &rows {
-                let _ = writeln!(err, "{}:{line}: {message}", csv_path.display());
+            for (line, why) in &rows {
+                let why = ladder_text::errors::rejection(why, say.lang());
+                let _ = writeln!(err, "{}:{line}: {why}", csv_path.display());
             }
             let _ = writeln!(
                 err,

@@ -56,7 +56,7 @@ impl Say {
 
     /// One diagnostic line.
     pub fn diagnostic(self, d: &Diagnostic, path: &str) -> String {
-        d.render_in(path, self.zh)
+        ladder_text::diagnostics::render(d, path, self.lang())
     }
 
     /// `N errors, M warnings`.

@@ -60,7 +60,10 @@ fn main() {
     let imported = il::import(&text);
     let Some(mut project) = imported.project else {
         for d in &imported.compiled.diagnostics {
-            eprintln!("{}", d.render(&il_path));
+            eprintln!(
+                "{}",
+                ladder_text::diagnostics::render(d, &il_path, ladder_text::Lang::En)
+            );
         }
         exit(1)
     };
@@ -154,7 +157,10 @@ fn main() {
     );
     let compiled = compile(&project);
     for d in &compiled.diagnostics {
-        eprintln!("{}", d.render(out));
+        eprintln!(
+            "{}",
+            ladder_text::diagnostics::render(d, out, ladder_text::Lang::En)
+        );
     }
     if compiled.errors() + compiled.warnings() > 0 {
         exit(1);

@@ -10,6 +10,7 @@
 mod guard;
 
 use crate::address::Address;
+use crate::compiler::Diagnostic;
 use crate::model::sheets::{check_symbol_area, check_symbol_form};
 use crate::model::tables::{Comments, MessageTable, Symbol, SymbolTable, message_rows};
 use crate::model::{Operand, Project, is_symbol_name};
@@ -32,9 +33,19 @@ pub enum CommentsError {
     /// The header does not name the columns the import needs.
     #[error("line 1: the header must name the columns kind,table,key,symbol and one per language")]
     Header,
-    /// Some rows cannot be applied; nothing was changed.
-    #[error("{} row(s) rejected, nothing changed:\n{}", .0.len(), .0.iter().map(|(l, m)| format!("line {l}: {m}")).collect::<Vec<_>>().join("\n"))]
-    Rejected(Vec<(u64, String)>),
+    /// Some rows cannot be applied, each at its CSV line; nothing was changed.
+    #[error("{} row(s) rejected, nothing changed", .0.len())]
+    Rejected(Vec<(u64, Rejection)>),
+}
+
+/// Why one row of a comments file is refused.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Rejection {
+    /// The row does not read, or names what the project cannot take. The reason quotes the
+    /// CSV and stays in English (docs/files.md, "Comments CSV").
+    Row(String),
+    /// Applied, the rows would leave `check` this error, which the project did not have.
+    WouldBreak(Diagnostic),
 }
 
 fn lang_columns(lang: Option<&str>) -> Vec<String> {
@@ -195,14 +206,14 @@ pub fn import(
                 target,
                 names,
             }),
-            Err(m) => rejected.push((line, m)),
+            Err(m) => rejected.push((line, Rejection::Row(m))),
         }
     }
     if rejected.is_empty() {
         rejected = guard::refusals(project, &work, &touches);
     }
     if !rejected.is_empty() {
-        rejected.sort();
+        rejected.sort_by_key(|(line, _)| *line);
         rejected.dedup();
         return Err(CommentsError::Rejected(rejected));
     }

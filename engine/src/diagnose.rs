@@ -60,12 +60,9 @@ fn check_scenarios(project: &Project, sink: &mut Sink) {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
     use crate::scenario::Scenario;
-
-    /// The codes this module's tests reach (the Chinese-message corpus counts them).
-    pub(crate) const SCENARIO_CODES: &[Code] = &[Code::W019ScenarioBroken];
 
     fn scenario(name: &str, lines: &[&str]) -> Scenario {
         Scenario {
@@ -108,18 +105,18 @@ pub(crate) mod tests {
             ]
         );
         assert_eq!(
-            found[0].message,
+            found[0].message(),
             "scenario name `good` is already used; give each scenario its own"
         );
         assert!(
             found[1]
-                .message
+                .message()
                 .starts_with("scenario `typo`, line 2: `frce` cannot be part of a scenario"),
             "{}",
-            found[1].message
+            found[1].message()
         );
         for d in &found {
-            crate::compiler::bilingual::assert_bilingual(&d.message, &d.message_zh);
+            crate::compiler::bilingual::assert_bilingual(d.message(), d.message_zh());
         }
     }
 }

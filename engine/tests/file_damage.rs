@@ -115,11 +115,8 @@ fn a_subprogram_defined_twice_makes_no_project() {
         .iter()
         .find(|d| d.code.as_str() == "L038")
         .expect("L038 names the second definition");
-    assert!(
-        d.message.contains("P0001 is defined twice"),
-        "{}",
-        d.message
-    );
+    let message = ladder_text::diagnostics::message(d, ladder_text::Lang::En);
+    assert!(message.contains("P0001 is defined twice"), "{message}");
 }
 
 #[test]

@@ -314,7 +314,11 @@ fn table_checks_report_bad_symbols_and_messages() {
     p.messages.rows[2].number = Some(1001);
     p.messages.rows[3].number = Some(999);
     let c = ladder_engine::compiler::compile(&p);
-    let codes: Vec<String> = c.diagnostics.iter().map(|d| d.render("p")).collect();
+    let codes: Vec<String> = c
+        .diagnostics
+        .iter()
+        .map(|d| ladder_text::diagnostics::render(d, "p", ladder_text::Lang::En))
+        .collect();
     let has = |s: &str| codes.iter().any(|c| c.contains(s));
     assert!(
         has("p:SYMBOLS:1:3:2: error: symbol `START` already exists"),

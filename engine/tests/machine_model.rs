@@ -42,7 +42,10 @@ fn codes(p: &Project) -> Vec<(Code, usize, String)> {
         .diagnostics
         .into_iter()
         .filter(|d| d.location.block_label == "MACHINE")
-        .map(|d| (d.code, d.location.network, d.message))
+        .map(|d| {
+            let message = ladder_text::diagnostics::message(&d, ladder_text::Lang::En);
+            (d.code, d.location.network, message)
+        })
         .collect()
 }
 

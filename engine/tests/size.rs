@@ -224,19 +224,22 @@ fn a_line_long_unknown_word_gets_a_short_message() {
         .iter()
         .find(|d| d.code == Code::L010UnknownInstruction)
         .expect("the word is refused");
-    assert!(d.message.len() < 200, "{} bytes", d.message.len());
-    assert!(d.message.contains("QQQQ…"), "{}", d.message);
-    assert!(d.message_zh.len() < 300, "{} bytes", d.message_zh.len());
+    let en = ladder_text::diagnostics::message(d, ladder_text::Lang::En);
+    let zh = ladder_text::diagnostics::message(d, ladder_text::Lang::Zh);
+    assert!(en.len() < 200, "{} bytes", en.len());
+    assert!(en.contains("QQQQ…"), "{en}");
+    assert!(zh.len() < 300, "{} bytes", zh.len());
 }
 
 #[test]
 fn a_typo_still_gets_its_suggestion() {
     let imported = il::import("LEVEL1\nNETWORK\nLD X0000.0\nOUTT R0000.0\nLEVEL2\n");
-    let d = &imported.compiled.diagnostics[0];
-    assert!(d.message.contains("did you mean OUT?"), "{}", d.message);
+    let en = |d| ladder_text::diagnostics::message(d, ladder_text::Lang::En);
+    let d = en(&imported.compiled.diagnostics[0]);
+    assert!(d.contains("did you mean OUT?"), "{d}");
     let imported = il::import("LEVEL1\nNETWORK\nLD X0000.0\nTMRBB T0000 DT0000 R0000.0\n");
-    let d = &imported.compiled.diagnostics[0];
-    assert!(d.message.contains("did you mean TMRB?"), "{}", d.message);
+    let d = en(&imported.compiled.diagnostics[0]);
+    assert!(d.contains("did you mean TMRB?"), "{d}");
 }
 
 /// An instruction list of one network `n` rows tall once drawn: `n / 2` two-row parallel

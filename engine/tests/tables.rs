@@ -532,9 +532,10 @@ fn check_finds_in_a_file_what_the_tables_refuse() {
         .iter()
         .find(|d| d.code == Code::T007SymbolArea)
         .unwrap();
+    let message = ladder_text::diagnostics::message(t007, ladder_text::Lang::En);
     assert!(
-        t007.message
-            .starts_with("P0002: only these areas belong here")
+        message.starts_with("P0002: only these areas belong here"),
+        "{message}"
     );
 }
 
@@ -576,7 +577,10 @@ fn a_comment_too_long_is_reported_at_its_own_languages_column() {
         .iter()
         .filter(|d| d.code == Code::W007CommentLength)
         .filter_map(|d| match d.location.origin {
-            Origin::Cell { col, .. } => Some((d.message.contains("`en`"), col)),
+            Origin::Cell { col, .. } => {
+                let message = ladder_text::diagnostics::message(d, ladder_text::Lang::En);
+                Some((message.contains("`en`"), col))
+            }
             _ => None,
         })
         .collect();

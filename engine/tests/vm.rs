@@ -14,7 +14,7 @@ fn project(text: &str) -> Project {
         .compiled
         .diagnostics
         .iter()
-        .map(|d| d.render("t"))
+        .map(|d| ladder_text::diagnostics::render(d, "t", ladder_text::Lang::En))
         .collect();
     assert!(d.is_empty(), "{d:?}");
     imported.project.expect("draws")

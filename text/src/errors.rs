@@ -9,7 +9,7 @@ mod print;
 mod structure;
 
 pub use build::{build_error, code_error};
-pub use comments::comments_error;
+pub use comments::{comments_error, rejection};
 pub use coverage::coverage_error;
 pub use io::io_error;
 pub use print::{networks_error, pdf_error};

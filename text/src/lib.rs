@@ -5,7 +5,10 @@
 //! words. A missing translation is a compile error: each text is a `match` with an arm per
 //! language.
 
+#[cfg(test)]
+pub(crate) mod bilingual;
 pub mod cli;
+pub mod diagnostics;
 pub mod errors;
 pub mod halt;
 pub mod refusal;

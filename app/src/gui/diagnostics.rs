@@ -38,10 +38,7 @@ pub fn compile(cx: &mut Context) {
         .map(|d| OutputLine {
             // The Chinese rendering keeps the English message for its specifics
             // (docs/diagnostics.md lists each code's meaning, which the title gives).
-            text: match lang {
-                Lang::Zh => d.render_zh(&name),
-                Lang::En => d.render(&name),
-            },
+            text: ladder_text::diagnostics::shown(d, &name, lang),
             error: d.severity() == Severity::Error,
             target: d.location.cell(),
         })
@@ -95,10 +92,8 @@ pub fn status_ui(ui: &mut egui::Ui, doc: &Document, cursor: CellRef, lang: Lang)
         return;
     }
     let name = doc.name().unwrap_or_default();
-    let render = |d: &ladder_engine::compiler::Diagnostic| match lang {
-        Lang::Zh => d.render_zh(&name),
-        Lang::En => d.render(&name),
-    };
+    let render =
+        |d: &ladder_engine::compiler::Diagnostic| ladder_text::diagnostics::shown(d, &name, lang);
     let errors = marks
         .iter()
         .filter(|(_, d)| d.severity() == Severity::Error)

@@ -9,7 +9,8 @@
 //! before and after, and put on the line that changed the place the diagnostic points at, or
 //! that names what it names.
 
-use crate::compiler::{Code, Diagnostic, Severity, compile};
+use super::Rejection;
+use crate::compiler::{Diagnostic, Severity, compile};
 use crate::model::Project;
 use crate::model::tables::MessageTable;
 use std::collections::HashMap;
@@ -66,7 +67,7 @@ fn setters(touches: &[Touch], target: Target) -> impl Iterator<Item = &Touch> {
 }
 
 /// Symbols given to two rows: the line of each row the import set, naming the other row.
-fn symbols_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u64, String)> {
+fn symbols_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u64, Rejection)> {
     let name_before = |t: usize, r: usize| {
         before
             .symbol_tables
@@ -100,7 +101,7 @@ fn symbols_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u
             if let Some(line) = line {
                 found.push((
                     line,
-                    format!(
+                    Rejection::Row(format!(
                         "symbol `{}` would be defined twice, for {} ({} row {}) and {} ({} row {}), which `check` refuses (T002): give one of them another name",
                         s.name,
                         other.rows[pr].address,
@@ -109,7 +110,7 @@ fn symbols_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u
                         s.address,
                         table.name,
                         r + 1
-                    ),
+                    )),
                 ));
             }
         }
@@ -118,7 +119,7 @@ fn symbols_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u
 }
 
 /// Alarm numbers given to two A bits: the line of each message row the import set.
-fn alarms_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u64, String)> {
+fn alarms_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u64, Rejection)> {
     let number_before = |k: usize| before.messages.rows.get(k).and_then(|m| m.number);
     let mut first: HashMap<u16, usize> = HashMap::new();
     let mut found = Vec::new();
@@ -138,11 +139,11 @@ fn alarms_twice(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u6
         if let Some(line) = line {
             found.push((
                 line,
-                format!(
+                Rejection::Row(format!(
                     "alarm number {n} would be used by both {} and {}, which `check` refuses (T005): give each alarm its own number (1000–9999)",
                     MessageTable::address(prev),
                     MessageTable::address(k)
-                ),
+                )),
             ));
         }
     }
@@ -167,6 +168,8 @@ fn target_of(d: &Diagnostic) -> Option<Target> {
 /// gave or took a name it quotes, else none (line 0).
 fn line_of(d: &Diagnostic, touches: &[Touch]) -> u64 {
     let at = target_of(d);
+    // The finding's data, as `Debug` writes it, holds every name and number it quotes.
+    let quoted = format!("{:?}", d.finding);
     touches
         .iter()
         .rev()
@@ -176,7 +179,7 @@ fn line_of(d: &Diagnostic, touches: &[Touch]) -> u64 {
                 t.names
                     .iter()
                     .filter(|n| !n.is_empty())
-                    .any(|n| d.message.contains(&format!("`{n}`")) || mentions(&d.message, n))
+                    .any(|n| quoted.contains(&format!("\"{n}\"")) || mentions(&quoted, n))
             })
         })
         .map_or(0, |t| t.line)
@@ -188,32 +191,13 @@ fn mentions(text: &str, word: &str) -> bool {
         .any(|w| w == word)
 }
 
-/// Where a diagnostic points, as `check` names blocks and tables: `LEVEL2 network 3 row 1
-/// col 2`, `DATA 2 row 1 col 5`.
-fn place(d: &Diagnostic) -> String {
-    let l = &d.location;
-    let label = l.block_label.as_str();
-    let ladder = label.starts_with("LEVEL")
-        || label
-            .strip_prefix('P')
-            .is_some_and(|n| n.bytes().all(|b| b.is_ascii_digit()));
-    let what = if ladder {
-        format!("{label} network {}", l.network + 1)
-    } else {
-        format!("{label} {}", l.network + 1)
-    };
-    match l.origin {
-        crate::compiler::Origin::Cell { row, col } => {
-            format!("{what} row {} col {}", row + 1, col + 1)
-        }
-        crate::compiler::Origin::Line(line) => format!("line {line}"),
-        crate::compiler::Origin::None => what,
-    }
-}
-
 /// What the import would break, by CSV line; empty when `after` has no error that `before`
 /// lacks.
-pub(super) fn refusals(before: &Project, after: &Project, touches: &[Touch]) -> Vec<(u64, String)> {
+pub(super) fn refusals(
+    before: &Project,
+    after: &Project,
+    touches: &[Touch],
+) -> Vec<(u64, Rejection)> {
     let mut found = symbols_twice(before, after, touches);
     found.extend(alarms_twice(before, after, touches));
     if !found.is_empty() {
@@ -231,22 +215,6 @@ pub(super) fn refusals(before: &Project, after: &Project, touches: &[Touch]) -> 
         }
     }
     new.into_iter()
-        .map(|d| {
-            let line = line_of(&d, touches);
-            let code = d.code.as_str();
-            let fix = if d.code == Code::L020UndefinedSymbol {
-                "rename its uses in the ladder first (replace), or keep the name"
-            } else {
-                "correct the row, or the project first"
-            };
-            (
-                line,
-                format!(
-                    "after the import `check` would report {code} at {}: {} ({fix})",
-                    place(&d),
-                    d.message
-                ),
-            )
-        })
+        .map(|d| (line_of(&d, touches), Rejection::WouldBreak(d)))
         .collect()
 }

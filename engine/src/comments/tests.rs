@@ -1,8 +1,9 @@
 //! An import that would leave `check` an error it did not have is refused at the CSV line
 //! to correct, and changes nothing.
 
-use super::{CommentsError, import};
+use super::{CommentsError, Rejection, import};
 use crate::address::Address;
+use crate::compiler::Code;
 use crate::compiler::compile;
 use crate::model::tables::{DataRow, MessageTable};
 use crate::model::{Project, Symbol};
@@ -12,7 +13,7 @@ const HEAD: &str = "kind,table,key,symbol,zh,en\n";
 
 /// Imports `rows` into `p` and returns the rejected rows; panics when the import applies, and
 /// checks that a refused import leaves the project as it was.
-fn refused(p: &mut Project, rows: &str) -> Vec<(u64, String)> {
+fn refused(p: &mut Project, rows: &str) -> Vec<(u64, Rejection)> {
     let before = p.clone();
     match import(p, &format!("{HEAD}{rows}"), None) {
         Err(CommentsError::Rejected(r)) => {
@@ -20,6 +21,22 @@ fn refused(p: &mut Project, rows: &str) -> Vec<(u64, String)> {
             r
         }
         other => panic!("not refused: {other:?}"),
+    }
+}
+
+/// The reason of a row refused for what it says.
+fn row(r: &(u64, Rejection)) -> &str {
+    match &r.1 {
+        Rejection::Row(why) => why,
+        other => panic!("not refused for the row itself: {other:?}"),
+    }
+}
+
+/// The error `check` would report after the import, for a row refused for it.
+fn breaks(r: &(u64, Rejection)) -> &crate::compiler::Diagnostic {
+    match &r.1 {
+        Rejection::WouldBreak(d) => d,
+        other => panic!("not refused for what `check` would say: {other:?}"),
     }
 }
 
@@ -50,8 +67,7 @@ fn an_alarm_number_another_a_bit_has_is_refused_at_its_line() {
     assert_eq!(r.len(), 1, "{r:?}");
     assert_eq!(r[0].0, 3);
     assert!(
-        r[0].1
-            .starts_with("alarm number 1001 would be used by both A0000.1 and A0000.3"),
+        row(&r[0]).starts_with("alarm number 1001 would be used by both A0000.1 and A0000.3"),
         "{r:?}"
     );
 }
@@ -63,7 +79,7 @@ fn two_rows_giving_one_symbol_are_refused_at_the_later() {
     assert_eq!(r.len(), 1, "{r:?}");
     assert_eq!(r[0].0, 3);
     assert!(
-        r[0].1.contains("symbol `START` would be defined twice"),
+        row(&r[0]).contains("symbol `START` would be defined twice"),
         "{r:?}"
     );
     // A symbol a table already has, given to another address.
@@ -81,10 +97,9 @@ fn renaming_a_symbol_the_ladder_uses_is_refused() {
     let r = refused(&mut p, "symbol,,X0002.1,BEGIN,,\n");
     assert_eq!(r.len(), 1, "{r:?}");
     assert_eq!(r[0].0, 2);
-    assert!(
-        r[0].1.contains("L020") && r[0].1.contains("`START`"),
-        "{r:?}"
-    );
+    let d = breaks(&r[0]);
+    assert_eq!(d.code, Code::L020UndefinedSymbol, "{r:?}");
+    assert!(format!("{:?}", d.finding).contains("START"), "{r:?}");
 }
 
 #[test]
@@ -95,12 +110,13 @@ fn a_data_rows_symbol_that_stands_for_another_address_is_refused() {
     let r = refused(&mut p, "data,D,D0004,START,,\n");
     assert_eq!(r.len(), 1, "{r:?}");
     assert_eq!(r[0].0, 2);
-    assert!(
-        r[0].1.contains("T002") && r[0].1.contains("DATA 1 row 1"),
-        "{r:?}"
-    );
+    let d = breaks(&r[0]);
+    assert_eq!(d.code, Code::T002SymbolTwice, "{r:?}");
+    assert_eq!(d.location.block_label, "DATA", "{r:?}");
+    assert_eq!(d.location.network, 0, "{r:?}");
+    assert_eq!(d.location.cell().map(|c| c.row), Some(0), "{r:?}");
     let r = refused(&mut p, "data,D,D0004,9LIVES,,\n");
-    assert!(r[0].1.contains("not a valid symbol name"), "{r:?}");
+    assert!(row(&r[0]).contains("not a valid symbol name"), "{r:?}");
 }
 
 #[test]
@@ -112,9 +128,12 @@ fn rows_check_would_refuse_on_their_own_are_refused() {
     let r = refused(&mut p, "message,,A0030.0,1001,甲,a\nsymbol,,L0001,LOOP,,\n");
     assert_eq!(r.len(), 2, "{r:?}");
     assert_eq!(r[0].0, 2);
-    assert!(r[0].1.contains("beyond this controller's A range"), "{r:?}");
+    assert!(
+        row(&r[0]).contains("beyond this controller's A range"),
+        "{r:?}"
+    );
     assert_eq!(r[1].0, 3);
-    assert!(r[1].1.contains("T007"), "{r:?}");
+    assert!(row(&r[1]).contains("T007"), "{r:?}");
 }
 
 #[test]

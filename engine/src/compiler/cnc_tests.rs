@@ -50,7 +50,7 @@ fn found_in(project: &Project, text: &str) -> Vec<(Code, String, Origin, String)
                 d.code,
                 d.location.block_label.clone(),
                 d.location.origin,
-                d.message.clone(),
+                d.message().to_string(),
             )
         })
         .collect()
@@ -336,7 +336,7 @@ END
     let compiled = compile_program(program, &project, sink);
     let mut reached = std::collections::BTreeSet::new();
     for d in &compiled.diagnostics {
-        super::bilingual::assert_bilingual(&d.message, &d.message_zh);
+        super::bilingual::assert_bilingual(d.message(), d.message_zh());
         reached.insert(d.code);
     }
     for code in CNC_CODES {

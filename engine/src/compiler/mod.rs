@@ -23,6 +23,7 @@ pub(crate) mod cnc;
 mod cnc_tests;
 pub(crate) mod decompile;
 pub(crate) mod diag;
+pub mod finding;
 pub(crate) mod flow;
 pub(crate) mod layout;
 pub(crate) mod lower;
@@ -41,10 +42,12 @@ pub(crate) mod writes;
 pub(crate) mod written;
 #[cfg(test)]
 mod written_tests;
-#[cfg(test)]
-mod zh_tests;
 
 pub use diag::{Code, Diagnostic, Location, Origin, Severity, Sink};
+pub use finding::{
+    CheckFinding, Finding, IlFinding, LowerFinding, MachineFinding, ScenarioFinding, SignalFinding,
+    TableFinding,
+};
 pub use operands::{OperandRefusal, operand_error, operand_ok};
 pub use rung::Instr;
 

@@ -104,7 +104,7 @@ fn assert_fixed_point(project: &Project) -> Result<(), TestCaseError> {
         .diagnostics
         .iter()
         .filter(|d| d.code.as_str() < "L010")
-        .map(|d| d.render("ladder"))
+        .map(|d| format!("{d:?}"))
         .collect();
     prop_assert!(structural.is_empty(), "{structural:?}");
     let il1 = il::print(&first.program);

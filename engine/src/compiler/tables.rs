@@ -518,7 +518,7 @@ mod tests {
             .diagnostics
             .iter()
             .filter(|d| d.code == Code::T005MessageNumber)
-            .map(|d| d.message.clone())
+            .map(|d| d.message().to_string())
             .collect()
     }
 
@@ -616,6 +616,6 @@ mod tests {
             ("DATA", 2)
         );
         assert_eq!(d.location.origin, Origin::Cell { row: 1, col: 1 });
-        assert!(d.message.starts_with("DC0002 = -5"), "{}", d.message);
+        assert!(d.message().starts_with("DC0002 = -5"), "{}", d.message());
     }
 }

@@ -16,7 +16,7 @@ fn found_in(project: &Project, text: &str, code: Code) -> Vec<(u32, String)> {
         .iter()
         .filter(|d| d.code == code)
         .map(|d: &Diagnostic| match d.location.origin {
-            Origin::Line(l) => (l, d.message.clone()),
+            Origin::Line(l) => (l, d.message().to_string()),
             other => panic!("an IL diagnostic without a line: {other:?}"),
         })
         .collect()

@@ -440,7 +440,7 @@ fn diagnostics_of_a_kept_list_point_at_the_drawn_cells() {
     let d = c
         .diagnostics
         .iter()
-        .find(|d| d.message.contains("NOWHERE"))
+        .find(|d| d.message().contains("NOWHERE"))
         .unwrap();
     assert!(
         matches!(d.location.origin, Origin::Cell { .. }),

@@ -382,7 +382,14 @@ impl FileState {
                     .say(format!("{n} {}", Msg::RowsApplied.text(lang)), false),
                 Err(e) => cx.output.say(e, true),
             },
-            Err(e) => cx.output.say(format!("{}: {e}", path.display()), true),
+            Err(e) => cx.output.say(
+                format!(
+                    "{}: {}",
+                    path.display(),
+                    ladder_text::errors::comments_error(&e, lang)
+                ),
+                true,
+            ),
         }
     }
 

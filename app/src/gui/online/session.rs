@@ -11,6 +11,7 @@ use ladder_engine::refusal::Refusal;
 use ladder_engine::runner::{Published, Reply, Request, Runner, Speed};
 use ladder_engine::vm::monitor::Source;
 use ladder_engine::vm::{Executable, Layout, Vm};
+use ladder_text::Lang;
 use std::collections::BTreeSet;
 use std::sync::Arc;
 
@@ -102,10 +103,12 @@ fn compiled(project: &Project) -> Result<Program, StartError> {
             .iter()
             .find(|d| d.severity() == ladder_engine::compiler::Severity::Error);
         let (en, zh) = first.map_or_else(Default::default, |d| {
-            let en = d.render("");
+            let en = ladder_text::diagnostics::render(d, "", Lang::En);
             (
                 en.trim_start_matches(':').to_string(),
-                d.render_zh("").trim().to_string(),
+                ladder_text::diagnostics::shown(d, "", Lang::Zh)
+                    .trim()
+                    .to_string(),
             )
         });
         return Err(StartError::Compile(compiled.errors(), en, zh));

@@ -1,24 +1,25 @@
 //! Every diagnostic says in Chinese what it says in English: a corpus of broken inputs, one
-//! or more per code, compiled, and each message pair compared for its specifics.
+//! or more per code, compiled, and each message pair compared for its specifics. The CNC
+//! interface's and the scenarios' codes are reached by their own examples (`signals.rs`,
+//! `scenario.rs`).
 
-use super::bilingual::assert_bilingual;
-use super::{Code, Diagnostic, compile};
-use crate::address::Address;
-use crate::catalog::Op;
-use crate::il;
-use crate::model::{
+use crate::Lang;
+use crate::bilingual::assert_bilingual;
+use ladder_engine::address::Address;
+use ladder_engine::catalog::Op;
+use ladder_engine::compiler::{Code, Diagnostic, compile};
+use ladder_engine::il;
+use ladder_engine::model::{
     AddressRow, Cell, Comments, DataRow, Ladder, MCodeRow, Network, NetworkId, Operand, Project,
     RealRow, Row, Symbol, SymbolTable,
 };
-use crate::profile::ProfileId;
+use ladder_engine::profile::ProfileId;
 use std::collections::BTreeSet;
 
 /// Checks every diagnostic and returns their codes.
 fn check_all(diagnostics: &[Diagnostic]) -> BTreeSet<Code> {
     for d in diagnostics {
-        assert_bilingual(&d.message, &d.message_zh);
-        assert_eq!(d.message_in(false), d.message);
-        assert_eq!(d.message_in(true), d.message_zh);
+        assert_bilingual(&super::message(d, Lang::En), &super::message(d, Lang::Zh));
     }
     diagnostics.iter().map(|d| d.code).collect()
 }
@@ -288,7 +289,7 @@ fn every_diagnostic_of_the_tables_is_in_chinese_with_its_specifics() {
         profile: ProfileId::Gsk980,
         ..Project::default()
     };
-    let row = crate::model::MessageTable::row_of(addr("A0030.0")).unwrap();
+    let row = ladder_engine::model::MessageTable::row_of(addr("A0030.0")).unwrap();
     small.messages.rows[row].number = Some(1002);
     let beyond = compile(&small).diagnostics;
     assert!(beyond.iter().any(|d| d.code == Code::T005MessageNumber));
@@ -298,6 +299,17 @@ fn every_diagnostic_of_the_tables_is_in_chinese_with_its_specifics() {
         assert!(codes.contains(code), "{code:?} not reached by the tables");
     }
 }
+
+/// The codes of the CNC interface checks, reached by the examples of `signals.rs`.
+const CNC_CODES: &[Code] = &[
+    Code::W012StrobeNoFinish,
+    Code::W013FinishWriters,
+    Code::W014MCodeTable,
+    Code::W015CncSignalUnwritten,
+    Code::W016RequestUnwritten,
+    Code::W017AlarmNoMessage,
+    Code::W018MessageNeverSet,
+];
 
 /// The codes the machine model reaches.
 const MACHINE_CODES: &[Code] = &[
@@ -312,8 +324,8 @@ const MACHINE_CODES: &[Code] = &[
 
 #[test]
 fn every_machine_model_diagnostic_is_in_chinese_with_its_specifics() {
-    use crate::devices::model::{Actuator, Logic};
-    use crate::devices::{Device, DeviceKind};
+    use ladder_engine::devices::model::{Actuator, Logic};
+    use ladder_engine::devices::{Device, DeviceKind};
     let follower = |name: &str, input: &str, when: &str| Device {
         name: name.into(),
         kind: DeviceKind::Follower(Logic {
@@ -343,10 +355,10 @@ fn every_machine_model_diagnostic_is_in_chinese_with_its_specifics() {
         },
         follower("twice", "X0001.6", "Y0000.2"),
     ];
-    p.panel.items.push(crate::model::PanelItem::new(
+    p.panel.items.push(ladder_engine::model::PanelItem::new(
         "开关",
         "switch",
-        crate::model::PanelKind::Switch {
+        ladder_engine::model::PanelKind::Switch {
             input: addr("X0001.2"),
         },
         0,
@@ -368,8 +380,8 @@ fn the_corpus_reaches_every_code() {
         DRAWN_CODES,
         TABLE_CODES,
         MACHINE_CODES,
-        super::cnc_tests::CNC_CODES,
-        crate::diagnose::tests::SCENARIO_CODES,
+        CNC_CODES,
+        &[Code::W019ScenarioBroken],
     ]
     .concat()
     .into_iter()

@@ -1,0 +1,10 @@
+//! The words of [`MachineFinding`]: each finding in English and in Chinese, side by side.
+
+use crate::Lang;
+use ladder_engine::compiler::MachineFinding;
+
+/// What `f` found and how to fix it, in `lang`.
+pub(super) fn text(f: &MachineFinding, lang: Lang) -> String {
+    let _ = lang;
+    match *f {}
+}
