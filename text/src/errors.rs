@@ -6,6 +6,7 @@ mod comments;
 mod coverage;
 mod io;
 mod print;
+mod quoted;
 mod structure;
 
 pub use build::{build_error, code_error};
@@ -13,6 +14,10 @@ pub use comments::{comments_error, rejection};
 pub use coverage::coverage_error;
 pub use io::io_error;
 pub use print::{networks_error, pdf_error};
+pub use quoted::{
+    address_error, cnc_error, digit_group_error, expr_error, model_error, operand_refusal,
+    table_error, taken,
+};
 pub use structure::{structure_error, width_error_zh};
 
 use crate::{Lang, Msg};
