@@ -23,7 +23,7 @@ pub struct Address {
 }
 
 /// Why an address text was refused.
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Error)]
 pub enum AddressError {
     /// Not of the form letters, digits, optional `.bit`.
     #[error("`{0}` is not an address (write e.g. X0002.1, R100, D4, DT0004)")]

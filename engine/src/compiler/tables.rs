@@ -4,7 +4,8 @@
 //! rules are the table editor's ([`crate::model::sheets`]), so a file holds no row that the
 //! editor would refuse without `check` saying so.
 
-use super::diag::{Code, Origin, Sink};
+use super::TableFinding;
+use super::diag::{Origin, Sink};
 use crate::address::{Address, Area};
 use crate::model::Project;
 use crate::model::sheets::{
@@ -50,11 +51,12 @@ fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
                 },
                 other => other,
             };
-            sink.report(
+            sink.find(
                 origin,
-                Code::W007CommentLength,
-                format!("the `{lang}` comment: {e}; shorten it"),
-                format!("`{lang}` 注释：{}；请缩短", e.zh()),
+                TableFinding::CommentTooLong {
+                    lang: lang.clone(),
+                    error: e,
+                },
             );
         }
     }
@@ -63,15 +65,10 @@ fn comments(sink: &mut Sink, origin: Origin, comments: &Comments) {
 /// A data row's symbol: a valid name (T001) that no symbol table gives another address (T002).
 fn data_symbol(sink: &mut Sink, project: &Project, origin: Origin, name: &str, address: Address) {
     match check_data_symbol(project, name, address) {
-        Err(e @ TableError::SymbolName { .. }) => {
-            sink.report(origin, Code::T001SymbolName, e.to_string(), e.zh())
+        Err(error @ TableError::SymbolName { .. }) => {
+            sink.find(origin, TableFinding::DataSymbolName { error })
         }
-        Err(e) => sink.report(
-            origin,
-            Code::T002SymbolTwice,
-            format!("{address}: {e}; use another symbol or none"),
-            format!("{address}：{}；请换一个符号，或不用符号", e.zh()),
-        ),
+        Err(error) => sink.find(origin, TableFinding::DataSymbolElsewhere { address, error }),
         Ok(()) => {}
     }
 }
@@ -80,26 +77,18 @@ fn data_symbol(sink: &mut Sink, project: &Project, origin: Origin, name: &str, a
 fn address_table(sink: &mut Sink, project: &Project, rows: &[AddressRow]) {
     let mut seen: HashMap<Address, usize> = HashMap::new();
     for (r, row) in rows.iter().enumerate() {
-        if let Err(e) = check_value_area(row.address) {
-            sink.report(
-                at(r, 0),
-                Code::T008TableKey,
-                format!("{e}; this table lists memory addresses"),
-                format!("{}；此表只列存储器地址", e.zh()),
-            );
-        } else if let Err(e) = row.address.check_range(project.profile()) {
-            sink.report(at(r, 0), Code::T008TableKey, e.to_string(), e.zh());
+        if let Err(error) = check_value_area(row.address) {
+            sink.find(at(r, 0), TableFinding::KeyArea { error });
+        } else if let Err(error) = row.address.check_range(project.profile()) {
+            sink.find(at(r, 0), TableFinding::KeyRange { error });
         }
         if let Some(prev) = seen.insert(row.address, r) {
-            sink.report(
+            sink.find(
                 at(r, 0),
-                Code::T008TableKey,
-                format!(
-                    "{} is also in row {}; keep one row per address",
-                    row.address,
-                    prev + 1
-                ),
-                format!("{} 也在第 {} 行；每个地址只保留一行", row.address, prev + 1),
+                TableFinding::KeyTwice {
+                    address: row.address,
+                    row: prev,
+                },
             );
         }
         comments(sink, at(r, 1), &row.comments);
@@ -118,7 +107,7 @@ fn at(row: usize, col: u32) -> Origin {
 pub fn check_tables(project: &Project, sink: &mut Sink) {
     symbol_tables(sink, project);
     // D and D_FLOAT share the D addresses: one map sees every data table.
-    let mut listed: HashMap<Address, (&str, usize)> = HashMap::new();
+    let mut listed: HashMap<Address, (Sheet, usize)> = HashMap::new();
     integer_data_tables(sink, project, &mut listed);
     real_data_table(sink, project, &mut listed);
     message_table(sink, project);
@@ -143,17 +132,11 @@ fn symbol_tables(sink: &mut Sink, project: &Project) {
             || table.name == crate::model::tables::BLOCK_SYMBOLS
             || table_names.insert(&table.name, t).is_some()
         {
-            sink.report(
+            sink.find(
                 at(0, 0),
-                Code::T006TableName,
-                format!(
-                    "symbol table name `{}` is empty, taken, or the block-symbol table's: give it a unique name",
-                    table.name
-                ),
-                format!(
-                    "符号表名称 `{}` 为空、已被占用或与程序块符号表同名：请另起一个不重复的名称",
-                    table.name
-                ),
+                TableFinding::SymbolTableName {
+                    name: table.name.clone(),
+                },
             );
         }
         for (r, s) in table.rows.iter().enumerate() {
@@ -177,33 +160,20 @@ fn symbol_address(
     addresses: &mut HashMap<Address, (usize, usize)>,
 ) {
     let (t, r) = place;
-    if let Err(e) = check_symbol_area(s.address) {
-        sink.report(
-            at(r, 0),
-            Code::T007SymbolArea,
-            format!("{e} (labels have no symbols; a subprogram is named in its block)"),
-            format!("{}（标号不能定义符号；子程序在其程序块中命名）", e.zh()),
-        );
-    } else if let Err(e) = s.address.check_range(project.profile()) {
-        sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
+    if let Err(error) = check_symbol_area(s.address) {
+        sink.find(at(r, 0), TableFinding::SymbolArea { error });
+    } else if let Err(error) = s.address.check_range(project.profile()) {
+        sink.find(at(r, 0), TableFinding::AddressRange { error });
     }
     comments(sink, at(r, 2), &s.comments);
-    if let Some((pt, pr)) = addresses.insert(s.address, (t, r)) {
-        sink.report(
+    if let Some((table, row)) = addresses.insert(s.address, (t, r)) {
+        sink.find(
             at(r, 0),
-            Code::W004AddressTwice,
-            format!(
-                "{} is also in table {} row {}; keep one row per address",
-                s.address,
-                pt + 1,
-                pr + 1
-            ),
-            format!(
-                "{} 也在符号表 {} 第 {} 行；每个地址只保留一行",
-                s.address,
-                pt + 1,
-                pr + 1
-            ),
+            TableFinding::SymbolAddressTwice {
+                address: s.address,
+                table,
+                row,
+            },
         );
     }
 }
@@ -219,56 +189,37 @@ fn symbol_name<'p>(
 ) {
     let (t, r) = place;
     if check_symbol_form(name).is_err() {
-        sink.report(
+        sink.find(at(r, 1), TableFinding::SymbolName { name: name.into() });
+    } else if let Some((table, row)) = names.insert(name, (t, r)) {
+        sink.find(
             at(r, 1),
-            Code::T001SymbolName,
-            format!(
-                "`{name}` is not a valid symbol: use letters, digits, `_` and Chinese, not starting with a digit, at most 32 characters, and not an address"
-            ),
-            format!(
-                "`{name}` 不是有效的符号：请使用字母、数字、`_` 和汉字，不以数字开头，最多 32 个字符，且不能是地址"
-            ),
-        );
-    } else if let Some((pt, pr)) = names.insert(name, (t, r)) {
-        sink.report(
-            at(r, 1),
-            Code::T002SymbolTwice,
-            format!(
-                "symbol `{name}` already exists (table {} row {}); symbols are unique",
-                pt + 1,
-                pr + 1
-            ),
-            format!(
-                "符号 `{name}` 已存在（符号表 {} 第 {} 行）；符号不能重复",
-                pt + 1,
-                pr + 1
-            ),
+            TableFinding::SymbolTwice {
+                name: name.into(),
+                table,
+                row,
+            },
         );
     }
 }
 
 /// Reports a data row whose address an earlier row of any data table already lists (T003),
-/// at the later row. `listed` maps each address seen to its table's name and row, and is
-/// shared by the tables because D and D_FLOAT set the same D addresses.
+/// at the later row. `listed` maps each address seen to its table and row, and is shared by
+/// the tables because D and D_FLOAT set the same D addresses.
 fn data_listed_twice(
     sink: &mut Sink,
-    listed: &mut HashMap<Address, (&str, usize)>,
-    name: &'static str,
+    listed: &mut HashMap<Address, (Sheet, usize)>,
+    sheet: Sheet,
     r: usize,
-    a: Address,
+    address: Address,
 ) {
-    if let Some((pname, pr)) = listed.insert(a, (name, r)) {
-        sink.report(
+    if let Some((sheet, row)) = listed.insert(address, (sheet, r)) {
+        sink.find(
             at(r, 0),
-            Code::T003DataAddress,
-            format!(
-                "{a} is also in the {pname} table row {}; keep one row per address",
-                pr + 1
-            ),
-            format!(
-                "{a} 也在数据表 {pname} 第 {} 行；每个地址只保留一行",
-                pr + 1
-            ),
+            TableFinding::DataAddressTwice {
+                address,
+                sheet,
+                row,
+            },
         );
     }
 }
@@ -278,7 +229,7 @@ fn data_listed_twice(
 fn integer_data_tables(
     sink: &mut Sink,
     project: &Project,
-    listed: &mut HashMap<Address, (&str, usize)>,
+    listed: &mut HashMap<Address, (Sheet, usize)>,
 ) {
     let data = &project.data;
     let tables = [
@@ -287,51 +238,43 @@ fn integer_data_tables(
         (Sheet::Dc, Area::Dc, &data.dc),
     ];
     for (t, (sheet, area, rows)) in tables.into_iter().enumerate() {
-        let name = sheet.data_name().unwrap_or("D");
         sink.at(DATA, "DATA", t);
         for (r, row) in rows.iter().enumerate() {
-            data_listed_twice(sink, listed, name, r, row.address);
+            data_listed_twice(sink, listed, sheet, r, row.address);
             data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
             comments(sink, at(r, 5), &row.comments);
             if row.address.area != area || row.address.bit.is_some() {
-                sink.report(
+                sink.find(
                     at(r, 0),
-                    Code::T003DataAddress,
-                    format!(
-                        "{} does not belong in the {name} table; use {name} addresses",
-                        row.address
-                    ),
-                    format!("{} 不属于数据表 {name}；请使用 {name} 地址", row.address),
+                    TableFinding::DataAddressArea {
+                        address: row.address,
+                        sheet,
+                    },
                 );
-            } else if let Err(e) = row.address.check_range(project.profile()) {
-                sink.report(at(r, 0), Code::T003DataAddress, e.to_string(), e.zh());
+            } else if let Err(error) = row.address.check_range(project.profile()) {
+                sink.find(at(r, 0), TableFinding::AddressRange { error });
             }
             let lo = row.min.unwrap_or(-VALUE_LIMIT);
             let hi = row.max.unwrap_or(VALUE_LIMIT);
             if row.value < lo || row.value > hi || lo > hi {
-                sink.report(
+                sink.find(
                     at(r, 1),
-                    Code::T004DataValue,
-                    format!(
-                        "{} = {} lies outside its limits {lo}…{hi}",
-                        row.address, row.value
-                    ),
-                    format!("{} = {} 超出其上下限 {lo}…{hi}", row.address, row.value),
+                    TableFinding::DataValue {
+                        address: row.address,
+                        value: row.value,
+                        min: lo,
+                        max: hi,
+                    },
                 );
             }
             // DC holds counter presets, and a counter counts 0…N (docs/plc.md, CTRC).
             if area == Area::Dc && row.value < 0 {
-                sink.report(
+                sink.find(
                     at(r, 1),
-                    Code::T004DataValue,
-                    format!(
-                        "{} = {}: a counter preset is 0…2147483647",
-                        row.address, row.value
-                    ),
-                    format!(
-                        "{} = {}：计数器预置值为 0…2147483647",
-                        row.address, row.value
-                    ),
+                    TableFinding::CounterPreset {
+                        address: row.address,
+                        value: row.value,
+                    },
                 );
             }
         }
@@ -343,33 +286,34 @@ fn integer_data_tables(
 fn real_data_table(
     sink: &mut Sink,
     project: &Project,
-    listed: &mut HashMap<Address, (&str, usize)>,
+    listed: &mut HashMap<Address, (Sheet, usize)>,
 ) {
     sink.at(DATA, "DATA", 3);
     for (r, row) in project.data.d_float.iter().enumerate() {
-        data_listed_twice(sink, listed, "D_FLOAT", r, row.address);
+        data_listed_twice(sink, listed, Sheet::DFloat, r, row.address);
         data_symbol(sink, project, at(r, 4), &row.symbol, row.address);
         comments(sink, at(r, 5), &row.comments);
         if row.address.area != Area::D
             || row.address.bit.is_some()
             || row.address.check_range(project.profile()).is_err()
         {
-            sink.report(
+            sink.find(
                 at(r, 0),
-                Code::T003DataAddress,
-                format!("{} is not a D address of this controller", row.address),
-                format!("{} 不是本控制器的 D 地址", row.address),
+                TableFinding::RealAddress {
+                    address: row.address,
+                },
             );
         }
         if !row.value.is_finite()
             || row.min.is_some_and(|m| row.value < m)
             || row.max.is_some_and(|m| row.value > m)
         {
-            sink.report(
+            sink.find(
                 at(r, 1),
-                Code::T004DataValue,
-                format!("{} = {} lies outside its limits", row.address, row.value),
-                format!("{} = {} 超出其上下限", row.address, row.value),
+                TableFinding::RealValue {
+                    address: row.address,
+                    value: row.value.to_bits(),
+                },
             );
         }
     }
@@ -382,51 +326,21 @@ fn message_table(sink: &mut Sink, project: &Project) {
     let mut numbers: HashMap<u16, usize> = HashMap::new();
     for (r, m) in project.messages.rows.iter().enumerate() {
         let has_text = m.texts.values().any(|t| !t.is_empty());
+        let bit = MessageTable::address(r);
         match m.number {
-            Some(n) if !(1000..=9999).contains(&n) => sink.report(
-                at(r, 1),
-                Code::T005MessageNumber,
-                format!(
-                    "{}: alarm number {n} is outside 1000–9999",
-                    MessageTable::address(r)
-                ),
-                format!("{}：报警号 {n} 超出 1000–9999", MessageTable::address(r)),
-            ),
-            Some(n) => {
-                if let Some(prev) = numbers.insert(n, r) {
-                    sink.report(
-                        at(r, 1),
-                        Code::T005MessageNumber,
-                        format!(
-                            "{}: alarm number {n} is already used by {}",
-                            MessageTable::address(r),
-                            MessageTable::address(prev)
-                        ),
-                        format!(
-                            "{}：报警号 {n} 已被 {} 使用",
-                            MessageTable::address(r),
-                            MessageTable::address(prev)
-                        ),
-                    );
+            Some(number) if !(1000..=9999).contains(&number) => {
+                sink.find(at(r, 1), TableFinding::AlarmRange { bit, number })
+            }
+            Some(number) => {
+                if let Some(prev) = numbers.insert(number, r) {
+                    let by = MessageTable::address(prev);
+                    sink.find(at(r, 1), TableFinding::AlarmTwice { bit, number, by });
                 }
                 if !has_text {
-                    sink.report(
-                        at(r, 2),
-                        Code::W005MessageHalf,
-                        format!("{}: alarm {n} has no text", MessageTable::address(r)),
-                        format!("{}：报警 {n} 没有信息文本", MessageTable::address(r)),
-                    );
+                    sink.find(at(r, 2), TableFinding::AlarmWithoutText { bit, number });
                 }
             }
-            None if has_text => sink.report(
-                at(r, 1),
-                Code::W005MessageHalf,
-                format!(
-                    "{}: a message text without an alarm number",
-                    MessageTable::address(r)
-                ),
-                format!("{}：信息文本没有报警号", MessageTable::address(r)),
-            ),
+            None if has_text => sink.find(at(r, 1), TableFinding::TextWithoutAlarm { bit }),
             None => {}
         }
     }
@@ -439,19 +353,12 @@ fn messages_beyond_range(sink: &mut Sink, project: &Project) {
     let rows = crate::model::tables::message_rows(project.profile());
     for (k, m) in project.messages.rows.iter().enumerate().skip(rows) {
         if *m != crate::model::Message::default() {
-            sink.report(
+            sink.find(
                 at(k, 0),
-                Code::T005MessageNumber,
-                format!(
-                    "{} is beyond this controller's A range (A0000.0–{}): clear the row",
-                    MessageTable::address(k),
-                    MessageTable::address(rows - 1)
-                ),
-                format!(
-                    "{} 超出本控制器的 A 地址范围（A0000.0–{}）：请清空该行",
-                    MessageTable::address(k),
-                    MessageTable::address(rows - 1)
-                ),
+                TableFinding::MessageBeyondRange {
+                    bit: MessageTable::address(k),
+                    last: MessageTable::address(rows - 1),
+                },
             );
         }
     }
@@ -462,23 +369,16 @@ fn m_code_table(sink: &mut Sink, project: &Project) {
     sink.at(MCODES, "MCODES", 0);
     let mut codes: HashMap<u32, usize> = HashMap::new();
     for (r, row) in project.m_codes.iter().enumerate() {
-        if let Err(e) = check_m_code(row.code) {
-            sink.report(at(r, 0), Code::T008TableKey, e.to_string(), e.zh());
+        if let Err(error) = check_m_code(row.code) {
+            sink.find(at(r, 0), TableFinding::MCodeRange { error });
         }
         if let Some(prev) = codes.insert(row.code, r) {
-            sink.report(
+            sink.find(
                 at(r, 0),
-                Code::T008TableKey,
-                format!(
-                    "M{:02} is also in row {}; keep one row per M code",
-                    row.code,
-                    prev + 1
-                ),
-                format!(
-                    "M{:02} 也在第 {} 行；每个 M 代码只保留一行",
-                    row.code,
-                    prev + 1
-                ),
+                TableFinding::MCodeTwice {
+                    code: row.code,
+                    row: prev,
+                },
             );
         }
         comments(sink, at(r, 1), &row.comments);
@@ -489,19 +389,31 @@ fn m_code_table(sink: &mut Sink, project: &Project) {
 fn version_info(sink: &mut Sink, project: &Project) {
     sink.at(VERSION, "VERSION", 0);
     let v = &project.version;
-    for (field, field_zh, text, max) in [
-        ("name", "工程名称", &v.name, NAME_MAX),
-        ("designer", "设计者", &v.designer, DESIGNER_MAX),
-        ("version", "版本", &v.version, VERSION_MAX),
-        ("remarks", "备注", &v.remarks, REMARKS_MAX),
+    // Each field with its limit and the finding that names it.
+    for (text, max, finding) in [
+        (
+            &v.name,
+            NAME_MAX,
+            TableFinding::VersionNameLength { max: NAME_MAX },
+        ),
+        (
+            &v.designer,
+            DESIGNER_MAX,
+            TableFinding::VersionDesignerLength { max: DESIGNER_MAX },
+        ),
+        (
+            &v.version,
+            VERSION_MAX,
+            TableFinding::VersionVersionLength { max: VERSION_MAX },
+        ),
+        (
+            &v.remarks,
+            REMARKS_MAX,
+            TableFinding::VersionRemarksLength { max: REMARKS_MAX },
+        ),
     ] {
         if text.chars().count() > max {
-            sink.report(
-                at(0, 0),
-                Code::W006VersionLength,
-                format!("the {field} is longer than {max} characters"),
-                format!("{field_zh}超过 {max} 个字符"),
-            );
+            sink.find(at(0, 0), finding);
         }
     }
 }
@@ -509,16 +421,16 @@ fn version_info(sink: &mut Sink, project: &Project) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::compiler::compile;
+    use crate::compiler::{Code, Finding, compile};
     use crate::model::DataRow;
     use crate::profile::ProfileId;
 
-    fn t005(p: &Project) -> Vec<String> {
+    fn t005(p: &Project) -> Vec<Finding> {
         compile(p)
             .diagnostics
-            .iter()
+            .into_iter()
             .filter(|d| d.code == Code::T005MessageNumber)
-            .map(|d| d.message().to_string())
+            .map(|d| d.finding)
             .collect()
     }
 
@@ -534,7 +446,13 @@ mod tests {
         p.messages.rows[k].number = Some(1001);
         let found = t005(&p);
         assert_eq!(found.len(), 1, "{found:?}");
-        assert!(found[0].contains("A0030.0 is beyond this controller's A range"));
+        assert_eq!(
+            found[0],
+            Finding::Table(TableFinding::MessageBeyondRange {
+                bit: a,
+                last: Address::parse("A0024.7").unwrap(),
+            })
+        );
         p.profile = ProfileId::Gsk988ta;
         assert!(t005(&p).is_empty(), "the 988TA has A0–A49");
     }
@@ -616,6 +534,12 @@ mod tests {
             ("DATA", 2)
         );
         assert_eq!(d.location.origin, Origin::Cell { row: 1, col: 1 });
-        assert!(d.message().starts_with("DC0002 = -5"), "{}", d.message());
+        assert_eq!(
+            d.finding,
+            Finding::Table(TableFinding::CounterPreset {
+                address: Address::parse("DC0002").unwrap(),
+                value: -5,
+            })
+        );
     }
 }

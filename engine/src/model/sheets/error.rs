@@ -7,7 +7,7 @@ use std::fmt;
 use thiserror::Error;
 
 /// Where a key or a name is already used, for the message that says so.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Taken {
     /// Row `row` (0-based) of the user symbol table named `table`.
     Symbols {
@@ -62,7 +62,7 @@ impl Taken {
 
 /// Why a table refuses what was typed into a cell, a row operation or a password change.
 /// The texts are English ([`TableError::zh`] gives them in Chinese).
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Error)]
 pub enum TableError {
     /// The key cell of an existing row was emptied.
     #[error("an address is required (use Delete row to remove the row)")]
