@@ -8,7 +8,8 @@
 //! *ESP: a ladder whose one G signal is the E-stop chain leaves reset and modes to the panel.
 
 use super::Program;
-use super::diag::{Code, Origin, Sink};
+use super::diag::{Origin, Sink};
+use super::finding::SignalFinding;
 use super::flow::{Flow, InstrPlace, WriteKind, bit};
 use super::tables::{MCODES, MESSAGES};
 use crate::address::{Address, Area};
@@ -55,33 +56,27 @@ const FINISHES: [Signal; 6] = [
     g("MFIN3", 4, 5),
 ];
 
-/// The signals without which the CNC cannot be stopped, reset or put in a mode.
-const ESSENTIAL: [(Signal, &str, &str); 5] = [
-    (
-        g("*ESP", 8, 4),
-        "the CNC stays in emergency stop",
-        "CNC 一直处于急停状态",
-    ),
-    (
-        g("ERS", 8, 7),
-        "nothing on the machine (an M30 end, a reset button, the E-stop) can reset the CNC",
-        "机床侧（M30 结束、复位按钮、急停）无法使 CNC 复位",
-    ),
-    (
-        g("MD1", 43, 0),
-        "no EDIT, MEM (automatic), JOG, DNC or REF mode can be selected",
-        "无法选择编辑、自动、手动、DNC 或回零方式",
-    ),
-    (
-        g("MD2", 43, 1),
-        "the EDIT mode cannot be selected",
-        "无法选择编辑方式",
-    ),
-    (
-        g("MD4", 43, 2),
-        "no HANDLE, JOG or REF mode can be selected",
-        "无法选择手脉、手动或回零方式",
-    ),
+/// The finding of a signal nothing writes, from its name and address.
+type Unwritten = fn(String, Address) -> SignalFinding;
+
+/// The signals without which the CNC cannot be stopped, reset or put in a mode, each with
+/// its finding: what is lost without it differs from one to the next.
+const ESSENTIAL: [(Signal, Unwritten); 5] = [
+    (g("*ESP", 8, 4), |name, address| {
+        SignalFinding::EmergencyStopUnwritten { name, address }
+    }),
+    (g("ERS", 8, 7), |name, address| {
+        SignalFinding::ResetUnwritten { name, address }
+    }),
+    (g("MD1", 43, 0), |name, address| {
+        SignalFinding::Mode1Unwritten { name, address }
+    }),
+    (g("MD2", 43, 1), |name, address| {
+        SignalFinding::Mode2Unwritten { name, address }
+    }),
+    (g("MD4", 43, 2), |name, address| {
+        SignalFinding::Mode4Unwritten { name, address }
+    }),
 ];
 
 /// F answers and the G request each confirms. (MABSM F4.2 is the inverse of ABSM, so it
@@ -160,18 +155,15 @@ fn strobes(program: &Program, flow: &Flow, sink: &mut Sink) {
         if flow.reaches(strobe.1, &answers.map(|s| s.1)) {
             continue;
         }
-        let (name, a) = (strobe.0, address(strobe));
-        let (own, own_a) = (answers[1].0, address(answers[1]));
         let origin = at(program, sink, place);
-        sink.report(
+        sink.find(
             origin,
-            Code::W012StrobeNoFinish,
-            format!(
-                "{name} {a} is read, but nothing it drives leads to FIN G0004.3 or {own} {own_a}: the CNC waits for the finish forever; end the function's logic in FIN"
-            ),
-            format!(
-                "读取了 {name} {a}，但由它驱动的逻辑都不通向 FIN G0004.3 或 {own} {own_a}：CNC 将一直等待完成信号；请让该功能的逻辑最终输出 FIN"
-            ),
+            SignalFinding::StrobeNoFinish {
+                strobe: strobe.0.to_string(),
+                address: address(strobe),
+                finish: answers[1].0.to_string(),
+                finish_address: address(answers[1]),
+            },
         );
     }
 }
@@ -192,39 +184,30 @@ fn finishes(program: &Program, flow: &Flow, sink: &mut Sink) {
         }
         if drivers.len() > 1 {
             let origin = at(program, sink, drivers[1]);
-            sink.report(
+            sink.find(
                 origin,
-                Code::W013FinishWriters,
-                format!(
-                    "{name} {a} is written by more than one rung: the last write of the scan wins and a finish can be lost or held; gather every completion into one rung"
-                ),
-                format!(
-                    "{name} {a} 被多个梯级写入：以扫描中最后一次写入为准，完成信号可能丢失或一直保持；请把所有完成条件归并到一个梯级"
-                ),
+                SignalFinding::FinishWriters {
+                    name: name.to_string(),
+                    address: a,
+                },
             );
         } else if let (Some(_), Some(latch)) = (drivers.first(), set.or(rst_at)) {
             let origin = at(program, sink, latch);
-            sink.report(
+            sink.find(
                 origin,
-                Code::W013FinishWriters,
-                format!(
-                    "{name} {a} is both driven by a coil or box and latched with SET/RST here: the coil rewrites it every scan, so the latch does nothing or fights it; use one or the other"
-                ),
-                format!(
-                    "{name} {a} 既由线圈或功能指令驱动，又在此处用 SET/RST 锁存：线圈每个扫描都会改写它，锁存无效或与之冲突；请只用其中一种"
-                ),
+                SignalFinding::FinishDrivenAndLatched {
+                    name: name.to_string(),
+                    address: a,
+                },
             );
         } else if let (Some(place), None) = (set, rst_at) {
             let origin = at(program, sink, place);
-            sink.report(
+            sink.find(
                 origin,
-                Code::W013FinishWriters,
-                format!(
-                    "{name} {a} is latched with SET and never RST: once set, the CNC sees every later M, S, T function finished at once and the sequence cannot end; reset it when the strobe drops"
-                ),
-                format!(
-                    "{name} {a} 用 SET 置位却从不 RST：一旦置位，之后的每个 M、S、T 功能都立即被当作完成，且完成序列无法结束；请在选通信号消失时复位"
-                ),
+                SignalFinding::FinishNeverReset {
+                    name: name.to_string(),
+                    address: a,
+                },
             );
         }
     }
@@ -232,11 +215,10 @@ fn finishes(program: &Program, flow: &Flow, sink: &mut Sink) {
 
 /// W015: *ESP, ERS or a mode-select signal written nowhere.
 fn essentials(program: &Program, flow: &Flow, beyond_estop: bool, sink: &mut Sink) {
-    for (k, (s, en, zh)) in ESSENTIAL.into_iter().enumerate() {
+    for (k, (s, finding)) in ESSENTIAL.into_iter().enumerate() {
         if flow.is_written(s.1) || (k > 0 && !beyond_estop) {
             continue;
         }
-        let (name, a) = (s.0, address(s));
         // At the program's first element: where an E-stop chain usually begins.
         let first = program
             .blocks
@@ -251,12 +233,7 @@ fn essentials(program: &Program, flow: &Flow, beyond_estop: bool, sink: &mut Sin
             .find_map(|(b, n, net)| net.instrs.first().map(|i| (b, n, i.origin)))
             .unwrap_or((0, 0, Origin::None));
         let first = at(program, sink, first);
-        sink.report(
-            first,
-            Code::W015CncSignalUnwritten,
-            format!("nothing writes {name} {a}, so the CNC always sees it at 0: {en}; drive it from the machine's inputs"),
-            format!("没有任何指令写 {name} {a}，CNC 看到的始终是 0：{zh}；请由机床的输入驱动它"),
-        );
+        sink.find(first, finding(s.0.to_string(), address(s)));
     }
 }
 
@@ -269,17 +246,15 @@ fn answers(program: &Program, flow: &Flow, sink: &mut Sink) {
         if flow.is_written(request.1) {
             continue;
         }
-        let (an, aa, rn, ra) = (answer.0, address(answer), request.0, address(request));
         let origin = at(program, sink, place);
-        sink.report(
+        sink.find(
             origin,
-            Code::W016RequestUnwritten,
-            format!(
-                "{an} {aa} is read, but nothing writes {rn} {ra}, the request it answers: the answer never comes; drive {rn} or read something else"
-            ),
-            format!(
-                "读取了 {an} {aa}，但它所应答的请求信号 {rn} {ra} 没有任何指令写：应答永远不会出现；请驱动 {rn} 或改读其它信号"
-            ),
+            SignalFinding::RequestUnwritten {
+                answer: answer.0.to_string(),
+                answer_address: address(answer),
+                request: request.0.to_string(),
+                request_address: address(request),
+            },
         );
     }
 }
@@ -338,19 +313,12 @@ fn m_codes(project: &Project, program: &Program, flow: &Flow, sink: &mut Sink) {
         if codes.contains_key(&row.code) || NEVER_OUTPUT.contains(&row.code) {
             continue;
         }
-        let m = row.code;
-        sink.report(
+        sink.find(
             Origin::Cell {
                 row: r as u32,
                 col: 0,
             },
-            Code::W014MCodeTable,
-            format!(
-                "M{m:02} is in the M-code table but no rung decodes it: the CNC waits for its finish forever; decode it (DECB or CMP of F0010) or remove the row"
-            ),
-            format!(
-                "M{m:02} 在 M 代码表中，但没有梯级对它译码：CNC 将一直等待它完成；请对它译码（DECB 或 CMP F0010）或删除该行"
-            ),
+            SignalFinding::MCodeNotDecoded { code: row.code },
         );
     }
     for (&m, &place) in &codes {
@@ -358,12 +326,7 @@ fn m_codes(project: &Project, program: &Program, flow: &Flow, sink: &mut Sink) {
             continue;
         }
         let origin = at(program, sink, place);
-        sink.report(
-            origin,
-            Code::W014MCodeTable,
-            format!("M{m:02} is decoded here but has no row in the M-code table: add a row saying what it does"),
-            format!("此处对 M{m:02} 译码，但 M 代码表中没有它：请添加一行说明其功能"),
-        );
+        sink.find(origin, SignalFinding::MCodeNotInTable { code: m });
     }
 }
 
@@ -391,14 +354,7 @@ fn alarms(project: &Project, program: &Program, flow: &Flow, sink: &mut Sink) {
             }
             let a = crate::model::MessageTable::address(k);
             let origin = at(program, sink, w.place);
-            sink.report(
-                origin,
-                Code::W017AlarmNoMessage,
-                format!(
-                    "{a} is set here but its row in the message table has no alarm number: the CNC shows no alarm for it; give the row an alarm number and a text"
-                ),
-                format!("此处置位 {a}，但信息表中它的行没有报警号：CNC 不会为它显示报警；请为该行填写报警号和文本"),
-            );
+            sink.find(origin, SignalFinding::AlarmNoMessage { address: a });
         }
     }
     sink.at(MESSAGES, "MESSAGES", 0);
@@ -412,16 +368,12 @@ fn alarms(project: &Project, program: &Program, flow: &Flow, sink: &mut Sink) {
         if set {
             continue;
         }
-        sink.report(
+        sink.find(
             Origin::Cell {
                 row: k as u32,
                 col: 1,
             },
-            Code::W018MessageNeverSet,
-            format!(
-                "{a}: alarm {number} has a message but nothing in the program sets {a}: it can never show; set the bit where the fault is detected, or clear the row"
-            ),
-            format!("{a}：报警 {number} 有信息，但程序中没有任何指令置位 {a}，它永远不会显示；请在检测到故障处置位该位，或清除该行"),
+            SignalFinding::MessageNeverSet { address: a, number },
         );
     }
 }

@@ -4,10 +4,11 @@
 //! reads an output nothing writes (W010) and an input the operator panel also drives (W011).
 
 use super::Program;
-use super::diag::{Code, Origin, Sink};
+use super::diag::{Origin, Sink};
+use super::finding::MachineFinding;
 use super::writes::writes;
 use crate::address::{Address, Area};
-use crate::devices::{DeviceKind, ModelError, check};
+use crate::devices::{DeviceKind, check};
 use crate::model::{PanelKind, Project};
 use std::collections::HashSet;
 
@@ -22,33 +23,20 @@ pub fn check_machine(project: &Project, program: &Program, sink: &mut Sink) {
     }
     for (i, e) in check::errors(model, project.profile()) {
         sink.at(MACHINE, "MACHINE", i);
-        let code = match e {
-            ModelError::Name(_) | ModelError::NameTwice { .. } => Code::M001DeviceName,
-            ModelError::Address { .. }
-            | ModelError::NotInput { .. }
-            | ModelError::NotBit { .. } => Code::M002DeviceAddress,
-            ModelError::Parameter { .. } | ModelError::Start { .. } => Code::M003DeviceParameter,
-            ModelError::Expression { .. } => Code::M004DeviceCondition,
-            ModelError::TwoWriters { .. } => Code::M005InputTwice,
-        };
-        sink.report(Origin::None, code, e.to_string(), e.zh());
+        sink.find(Origin::None, MachineFinding::Device(e));
     }
     let written = written(project, program);
     for (i, d) in model.devices.iter().enumerate() {
         sink.at(MACHINE, "MACHINE", i);
         for (field, a) in reads(&d.kind) {
             if !written.contains(&a) && !written.contains(&a.byte_address()) {
-                sink.report(
+                sink.find(
                     Origin::None,
-                    Code::W010DeviceReadsNothing,
-                    format!(
-                        "device `{}`, {field}: nothing writes {a} (no coil, box or device): the device never sees it change; bind an output the program drives",
-                        d.name
-                    ),
-                    format!(
-                        "设备 `{}` 的 {field}：没有线圈、功能指令或设备写 {a}，设备看不到它变化；请绑定程序驱动的输出",
-                        d.name
-                    ),
+                    MachineFinding::ReadsNothing {
+                        device: d.name.clone(),
+                        field: field.to_string(),
+                        address: a,
+                    },
                 );
             }
         }
@@ -116,23 +104,16 @@ fn panel_overlap(project: &Project, sink: &mut Sink) {
                 .iter()
                 .find(|p| !matches!(p.kind, PanelKind::Lamp { .. }) && p.kind.drives(a));
             if let Some(item) = item {
-                sink.report(
+                sink.find(
                     Origin::None,
-                    Code::W011PanelDrivesDeviceInput,
-                    format!(
-                        "device `{}` writes {a}, which the panel item in row {}, column {} ({}) also drives: the device wins at every tick; make the item a lamp or unbind the device",
-                        d.name,
-                        item.row + 1,
-                        item.col + 1,
-                        item.label_en
-                    ),
-                    format!(
-                        "设备 `{}` 写 {a}，第 {} 行第 {} 列的面板项（{}）也驱动它：每个周期都以设备为准；请把该项改为指示灯或解除设备的绑定",
-                        d.name,
-                        item.row + 1,
-                        item.col + 1,
-                        item.label_zh
-                    ),
+                    MachineFinding::PanelDrivesInput {
+                        device: d.name.clone(),
+                        address: a,
+                        row: item.row,
+                        col: item.col,
+                        label_en: item.label_en.clone(),
+                        label_zh: item.label_zh.clone(),
+                    },
                 );
             }
         }

@@ -5,7 +5,7 @@ use crate::address::{Address, AddressError};
 use std::fmt;
 
 /// Why a machine model cannot run (`check` codes M001–M005).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum ModelError {
     /// M001: not a name.
     Name(String),

@@ -24,7 +24,7 @@ pub enum Term {
 }
 
 /// Why a condition was refused.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum ExprError {
     /// Something where a term or operator was expected.
     Unexpected {
