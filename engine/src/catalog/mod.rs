@@ -24,7 +24,7 @@ use thiserror::Error;
 pub const CONST_MAX: i64 = 2_147_483_647;
 
 /// What an operand accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum OperandKind {
     /// A size constant: 1, 2 or 4 bytes.
     Size,
@@ -385,7 +385,7 @@ pub fn check_digit_group(op: Op, value: i64) -> Result<(), DigitGroupError> {
 /// Control digits an instruction does not define ([`check_digit_group`]): the rule of the
 /// instruction's digit group, in English (`Display`) and Chinese ([`DigitGroupError::zh`]);
 /// the compiler's diagnostics carry both.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Error)]
 pub enum DigitGroupError {
     /// CTRC's FMT other than 0000, 0001, 0010, 0011.
     #[error("CTRC's FMT is 0000, 0001, 0010 or 0011 (00ab: a = initial value, b = down)")]

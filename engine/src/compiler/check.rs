@@ -1,9 +1,10 @@
 //! Instruction-level checks: operands against the catalogue, labels, calls, stacks, step
 //! limits, and the warnings about doubly driven coils and shared timers.
 
-use super::diag::{Code, Sink};
+use super::diag::Sink;
+use super::finding::CheckFinding;
 use super::operands::operand_error;
-use super::place::{InstrPlace, place_text, place_text_zh};
+use super::place::{InstrPlace, location};
 use super::rung::Instr;
 use super::{Program, StepCounts};
 use crate::address::{Address, Area};
@@ -45,24 +46,15 @@ fn number_subprograms(
             sink.at(b, &block.kind.label(), 0);
             if !profile.contains(Area::P, u32::from(number)) {
                 let (lo, hi) = profile.range(Area::P);
-                sink.report(
+                sink.find(
                     block.origin,
-                    Code::L038SubNumber,
-                    format!("subprogram number P{number:04} is out of range (P{lo}–P{hi})"),
-                    format!("子程序号 P{number:04} 超出范围（P{lo}–P{hi}）"),
+                    CheckFinding::SubNumberRange { number, lo, hi },
                 );
             } else if let std::collections::btree_map::Entry::Vacant(e) = subs.entry(number) {
                 // The first definition is the one calls reach.
                 e.insert(b);
             } else {
-                sink.report(
-                    block.origin,
-                    Code::L038SubNumber,
-                    format!(
-                        "subprogram P{number:04} is defined twice: give one of them another number"
-                    ),
-                    format!("子程序 P{number:04} 重复定义：请给其中一个换一个子程序号"),
-                );
+                sink.find(block.origin, CheckFinding::SubTwice { number });
             }
         }
     }
@@ -112,18 +104,8 @@ impl Definitions {
             Op::Lbl => {
                 if let Some(a) = first_addr {
                     if let Some(prev) = self.labels.get(&a.number) {
-                        sink.report(
-                            instr.origin,
-                            Code::L030LabelTwice,
-                            format!(
-                                "label {a} is already defined at {}; each label is defined once in the project",
-                                place_text(program, *prev)
-                            ),
-                            format!(
-                                "标号 {a} 已在 {} 定义；工程中每个标号只能定义一次",
-                                place_text_zh(program, *prev)
-                            ),
-                        );
+                        let first = location(program, *prev);
+                        sink.find(instr.origin, CheckFinding::LabelTwice { label: a, first });
                     } else {
                         self.labels.insert(a.number, here);
                     }
@@ -132,18 +114,8 @@ impl Definitions {
             Op::Out | Op::Outn => {
                 if let Some(a) = first_addr {
                     if let Some(prev) = self.coils.get(&a) {
-                        sink.report(
-                            instr.origin,
-                            Code::W001CoilTwice,
-                            format!(
-                                "coil {a} is also driven at {}; the later one wins each scan",
-                                place_text(program, *prev)
-                            ),
-                            format!(
-                                "线圈 {a} 也在 {} 输出；每次扫描以后面的输出为准",
-                                place_text_zh(program, *prev)
-                            ),
-                        );
+                        let first = location(program, *prev);
+                        sink.find(instr.origin, CheckFinding::CoilTwice { coil: a, first });
                     } else {
                         self.coils.insert(a, here);
                     }
@@ -153,18 +125,8 @@ impl Definitions {
                 let number = instr.operands.get(i).and_then(Operand::address);
                 if let Some(a) = number.filter(|a| a.area == area) {
                     if let Some(prev) = self.timers.get(&a) {
-                        sink.report(
-                            instr.origin,
-                            Code::W002TimerTwice,
-                            format!(
-                                "{a} is also used by the instruction at {}; two instructions sharing a timer or counter disturb each other",
-                                place_text(program, *prev)
-                            ),
-                            format!(
-                                "{a} 也被 {} 的指令使用；两条指令共用一个定时器或计数器会互相干扰",
-                                place_text_zh(program, *prev)
-                            ),
-                        );
+                        let first = location(program, *prev);
+                        sink.find(instr.origin, CheckFinding::TimerTwice { number: a, first });
                     } else {
                         self.timers.insert(a, here);
                     }
@@ -194,34 +156,28 @@ fn check_jumps_and_calls(
                 };
                 match instr.op {
                     Op::Jmpb if a.area == Area::L => match labels.get(&a.number) {
-                        None => sink.report(
+                        None => sink.find(instr.origin, CheckFinding::UndefinedLabel { label: a }),
+                        Some(target) if target.0 != b => sink.find(
                             instr.origin,
-                            Code::L031UndefinedLabel,
-                            format!("JMPB to {a}, which no LBL defines: add `LBL {a}` in this block or correct the label"),
-                            format!("JMPB 跳转到 {a}，但没有 LBL 定义该标号：请在本程序块中加入 `LBL {a}`，或改正标号"),
-                        ),
-                        Some(target) if target.0 != b => sink.report(
-                            instr.origin,
-                            Code::L032JumpOutOfBlock,
-                            format!(
-                                "JMPB to {a} at {}: a jump stays inside its own block (use CALL to reach a subprogram)",
-                                place_text(program, *target)
-                            ),
-                            format!(
-                                "JMPB 跳转到位于 {} 的 {a}：跳转只能在本程序块内进行（要进入子程序请用 CALL）",
-                                place_text_zh(program, *target)
-                            ),
+                            CheckFinding::JumpOutOfBlock {
+                                label: a,
+                                target: location(program, *target),
+                            },
                         ),
                         Some(_) => {}
                     },
                     Op::Call | Op::Callu if a.area == Area::P => match subs.get(&a.number) {
-                        None => sink.report(
+                        None => sink.find(
                             instr.origin,
-                            Code::L033UndefinedSub,
-                            format!("{} {a}: there is no subprogram {a}; create it or correct the number", instr.op.name()),
-                            format!("{} {a}：不存在子程序 {a}；请新建该子程序或改正子程序号", instr.op.name()),
+                            CheckFinding::UndefinedSub {
+                                op: instr.op,
+                                sub: a,
+                            },
                         ),
-                        Some(&target) => calls.entry(b).or_default().push((target, (b, n, instr.origin))),
+                        Some(&target) => calls
+                            .entry(b)
+                            .or_default()
+                            .push((target, (b, n, instr.origin))),
                     },
                     _ => {}
                 }
@@ -273,31 +229,21 @@ fn count_steps(
     sink.at(0, "LEVEL1", 0);
     let head = program.blocks.first().map(|b| b.origin).unwrap_or_default();
     if level1 >= profile.level1_step_limit {
-        sink.report(
+        sink.find(
             head,
-            Code::L035Level1Steps,
-            format!(
-                "level 1 has {level1} steps with the subprograms it calls; it must stay under {} (move work to level 2)",
-                profile.level1_step_limit
-            ),
-            format!(
-                "一级程序连同其调用的子程序共 {level1} 步；必须少于 {} 步（请把部分程序移到二级程序）",
-                profile.level1_step_limit
-            ),
+            CheckFinding::Level1Steps {
+                steps: level1,
+                limit: profile.level1_step_limit,
+            },
         );
     }
     if total > profile.program_step_limit {
-        sink.report(
+        sink.find(
             head,
-            Code::L036ProgramSteps,
-            format!(
-                "the program has {total} steps; at most {} fit the PLC",
-                profile.program_step_limit
-            ),
-            format!(
-                "程序共 {total} 步；PLC 最多容纳 {} 步",
-                profile.program_step_limit
-            ),
+            CheckFinding::ProgramSteps {
+                steps: total,
+                limit: profile.program_step_limit,
+            },
         );
     }
     steps
@@ -334,18 +280,10 @@ fn check_recursion(
     }
     for ((b, n, origin), target) in found {
         sink.at(b, &program.blocks[b].kind.label(), n);
-        sink.report(
-            origin,
-            Code::L034Recursion,
-            format!(
-                "this call of {} makes the subprograms call themselves in a loop, which never ends within a scan",
-                program.blocks[target].kind.label()
-            ),
-            format!(
-                "此处调用 {} 使子程序循环调用自身，一次扫描内永远不会结束",
-                program.blocks[target].kind.label()
-            ),
-        );
+        // Calls reach subprograms only (`number_subprograms`), so the target has a number.
+        if let Some(callee) = program.blocks[target].kind.sub_number() {
+            sink.find(origin, CheckFinding::Recursion { callee });
+        }
     }
 }
 
@@ -360,12 +298,8 @@ fn check_stacks(instrs: &[Instr], sink: &mut Sink) {
                 if in_rung && !after_output {
                     blocks += 1;
                     if blocks == BLOCK_STACK_DEPTH + 1 {
-                        sink.report(
-                            i.origin,
-                            Code::L018StackDepth,
-                            format!("more than {BLOCK_STACK_DEPTH} nested logic blocks: split the rung or use intermediate relays"),
-                            format!("嵌套的逻辑块超过 {BLOCK_STACK_DEPTH} 个：请拆分该梯级，或使用中间继电器"),
-                        );
+                        let limit = BLOCK_STACK_DEPTH;
+                        sink.find(i.origin, CheckFinding::BlockStackDepth { limit });
                     }
                 }
                 in_rung = true;
@@ -374,12 +308,8 @@ fn check_stacks(instrs: &[Instr], sink: &mut Sink) {
             Op::Mps => {
                 branches += 1;
                 if branches == BRANCH_STACK_DEPTH + 1 {
-                    sink.report(
-                        i.origin,
-                        Code::L018StackDepth,
-                        format!("more than {BRANCH_STACK_DEPTH} nested branch points (MPS): split the rung or use intermediate relays"),
-                        format!("嵌套的分支点（MPS）超过 {BRANCH_STACK_DEPTH} 个：请拆分该梯级，或使用中间继电器"),
-                    );
+                    let limit = BRANCH_STACK_DEPTH;
+                    sink.find(i.origin, CheckFinding::BranchStackDepth { limit });
                 }
             }
             Op::Mpp => branches = branches.saturating_sub(1),
@@ -409,57 +339,22 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
             .map(|n| t.first + n),
         None => Some(fixed),
     };
-    let names = || {
-        spec.operands
-            .iter()
-            .map(|o| o.name)
-            .collect::<Vec<_>>()
-            .join(" ")
-    };
     match expected {
-        Some(n) if n != instr.operands.len() => {
-            let extra = spec.table.map_or(String::new(), |t| {
-                format!(" and {} table entries", spec.operands[t.count_from].name)
-            });
-            let extra_zh = spec.table.map_or(String::new(), |t| {
-                format!("，以及 {} 个表格数据", spec.operands[t.count_from].name)
-            });
-            sink.report(
+        Some(expected) if expected != instr.operands.len() => {
+            let (op, found) = (instr.op, instr.operands.len());
+            sink.find(
                 instr.origin,
-                Code::L011OperandCount,
-                format!(
-                    "{} takes {n} operand{} ({}{extra}), found {}",
-                    spec.name,
-                    if n == 1 { "" } else { "s" },
-                    names(),
-                    instr.operands.len()
-                ),
-                format!(
-                    "{} 需要 {n} 个操作数（{}{extra_zh}），实有 {} 个",
-                    spec.name,
-                    names(),
-                    instr.operands.len()
-                ),
+                CheckFinding::OperandCount {
+                    op,
+                    expected,
+                    found,
+                },
             );
             return;
         }
         None if instr.operands.len() < fixed => {
-            sink.report(
-                instr.origin,
-                Code::L011OperandCount,
-                format!(
-                    "{} takes {} and {} table entries",
-                    spec.name,
-                    names(),
-                    spec.table.map_or("", |t| spec.operands[t.count_from].name)
-                ),
-                format!(
-                    "{} 需要操作数 {}，以及 {} 个表格数据",
-                    spec.name,
-                    names(),
-                    spec.table.map_or("", |t| spec.operands[t.count_from].name)
-                ),
-            );
+            let op = instr.op;
+            sink.find(instr.origin, CheckFinding::TableOperandCount { op });
             return;
         }
         _ => {}
@@ -470,12 +365,8 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
             match symbols.get(name) {
                 Some(a) => *operand = Operand::Addr(a),
                 None => {
-                    sink.report(
-                        instr.origin,
-                        Code::L020UndefinedSymbol,
-                        format!("undefined symbol `{name}`: define it in the symbol table or write the address"),
-                        format!("符号 `{name}` 未定义：请在符号表中定义，或直接写地址"),
-                    );
+                    let name = name.clone();
+                    sink.find(instr.origin, CheckFinding::UndefinedSymbol { name });
                     return;
                 }
             }
@@ -486,31 +377,26 @@ fn check_operands(instr: &mut Instr, symbols: &SymbolIndex, profile: &Profile, s
             continue;
         };
         if let Err(refusal) = operand_error(instr.op, &instr.operands, i, profile) {
-            let (code, text) = (refusal.code(), refusal.to_string());
-            sink.report(
+            sink.find(
                 instr.origin,
-                code,
-                format!("{} {}: {text}", spec.name, ospec.name),
-                format!("{} 的操作数 {}：{}", spec.name, ospec.name, refusal.zh()),
+                CheckFinding::Operand {
+                    op: instr.op,
+                    operand: ospec.name.to_string(),
+                    refusal,
+                },
             );
             continue;
         }
         if let (Width::Bits3, Operand::Addr(a)) = (ospec.width, &instr.operands[i])
             && a.bit.is_some_and(|b| b > 5)
         {
-            sink.report(
+            sink.find(
                 instr.origin,
-                Code::W003BitsSpill,
-                format!(
-                    "{} OUT {a}: the three result bits continue into {}",
-                    spec.name,
-                    Address::byte(a.area, a.number + 1)
-                ),
-                format!(
-                    "{} 的 OUT {a}：三个结果位会延续到 {}",
-                    spec.name,
-                    Address::byte(a.area, a.number + 1)
-                ),
+                CheckFinding::BitsSpill {
+                    op: instr.op,
+                    out: *a,
+                    next: Address::byte(a.area, a.number + 1),
+                },
             );
         }
     }

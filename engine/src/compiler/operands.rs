@@ -1,7 +1,7 @@
 //! Whether an operand may stand where it is written, and if not, why: one function for the
 //! compiler's check, the editor's function dialog, replace and the operand colours. The
-//! refusal is structured ([`OperandRefusal`]), so the compiler turns it into a diagnostic (its code,
-//! English text and Chinese text) and the editor into a sentence in the user's language.
+//! refusal is structured ([`OperandRefusal`]), so the compiler keeps it in a diagnostic (with
+//! its code) and the editor and `ladder-text` word it in the user's language.
 
 use super::diag::Code;
 use crate::address::{Address, AddressError, Area, AreaSet};
@@ -14,7 +14,7 @@ use crate::profile::Profile;
 use std::fmt;
 
 /// Why an operand is refused where it stands.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum OperandRefusal {
     /// The instruction takes fewer operands.
     TooMany,

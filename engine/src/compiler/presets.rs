@@ -7,17 +7,18 @@
 //! and its `min…max`.
 
 use super::Program;
-use super::diag::{Code, Sink};
+use super::diag::Sink;
+use super::finding::CheckFinding;
 use crate::address::Area;
 use crate::catalog::Role;
 use crate::model::{DataRow, Operand, Project};
 
-/// The data table that holds the first values of `area`, with its name, if there is one.
-fn table(project: &Project, area: Area) -> Option<(&'static str, &[DataRow])> {
+/// The data table that holds the first values of `area`, if there is one.
+fn table(project: &Project, area: Area) -> Option<&[DataRow]> {
     match area {
-        Area::Dt => Some(("DT", &project.data.dt)),
-        Area::Dc => Some(("DC", &project.data.dc)),
-        Area::D => Some(("D", &project.data.d)),
+        Area::Dt => Some(&project.data.dt),
+        Area::Dc => Some(&project.data.dc),
+        Area::D => Some(&project.data.d),
         _ => None,
     }
 }
@@ -37,7 +38,7 @@ pub fn check_presets(program: &Program, project: &Project, sink: &mut Sink) {
                 let Some(a) = instr.operands.get(i).and_then(Operand::address) else {
                     continue;
                 };
-                let Some((name, rows)) = table(project, a.area) else {
+                let Some(rows) = table(project, a.area) else {
                     continue;
                 };
                 let Some((r, row)) = rows.iter().enumerate().find(|(_, r)| r.address == a) else {
@@ -48,26 +49,17 @@ pub fn check_presets(program: &Program, project: &Project, sink: &mut Sink) {
                 if (min..=max).contains(&row.value) {
                     continue;
                 }
-                let counted = row.value.clamp(min, max);
-                sink.report(
+                sink.find(
                     instr.origin,
-                    Code::W009PresetRange,
-                    format!(
-                        "{} {} {a}: the {name} table (row {}) sets {a} to {}, outside the preset range {min}…{max}, so {} counts it as {counted}: correct the table's value",
-                        spec.name,
-                        ospec.name,
-                        r + 1,
-                        row.value,
-                        spec.name
-                    ),
-                    format!(
-                        "{} 的 {} {a}：数据表 {name}（第 {} 行）将 {a} 设为 {}，超出预置值范围 {min}…{max}，{} 按 {counted} 处理：请改正数据表中的值",
-                        spec.name,
-                        ospec.name,
-                        r + 1,
-                        row.value,
-                        spec.name
-                    ),
+                    CheckFinding::PresetRange {
+                        op: instr.op,
+                        operand: ospec.name.to_string(),
+                        address: a,
+                        row: r + 1,
+                        value: row.value,
+                        min,
+                        max,
+                    },
                 );
             }
         }

@@ -2,12 +2,14 @@
 //! (W002), an output (W008), and presets out of their instruction's range (W009). Each case is
 //! an instruction list, so a warning's place is its line.
 
-use super::{Code, Diagnostic, Origin, Sink, compile_program};
+use super::{CheckFinding, Code, Diagnostic, Finding, Origin, Sink, compile_program};
+use crate::address::Address;
+use crate::catalog::Op;
 use crate::il;
 use crate::model::Project;
 
-/// The diagnostics of `code` when `text` is checked against `project`, as (line, message).
-fn found_in(project: &Project, text: &str, code: Code) -> Vec<(u32, String)> {
+/// The diagnostics of `code` when `text` is checked against `project`, as (line, finding).
+fn found_in(project: &Project, text: &str, code: Code) -> Vec<(u32, CheckFinding)> {
     let mut sink = Sink::default();
     let program = il::parse(text, &mut sink);
     let compiled = compile_program(program, project, sink);
@@ -15,20 +17,43 @@ fn found_in(project: &Project, text: &str, code: Code) -> Vec<(u32, String)> {
         .diagnostics
         .iter()
         .filter(|d| d.code == code)
-        .map(|d: &Diagnostic| match d.location.origin {
-            Origin::Line(l) => (l, d.message().to_string()),
-            other => panic!("an IL diagnostic without a line: {other:?}"),
+        .map(|d: &Diagnostic| match (d.location.origin, &d.finding) {
+            (Origin::Line(l), Finding::Check(f)) => (l, f.clone()),
+            (origin, f) => panic!("not a check's IL diagnostic: {origin:?} {f:?}"),
         })
         .collect()
 }
 
-fn found(text: &str, code: Code) -> Vec<(u32, String)> {
+fn found(text: &str, code: Code) -> Vec<(u32, CheckFinding)> {
     found_in(&Project::default(), text, code)
 }
 
 /// The lines of the diagnostics.
-fn lines(found: &[(u32, String)]) -> Vec<u32> {
+fn lines(found: &[(u32, CheckFinding)]) -> Vec<u32> {
     found.iter().map(|(l, _)| *l).collect()
+}
+
+/// A write as W008 names it: instruction, operand, address.
+type Write<'a> = (Op, &'a str, String);
+
+/// What W008 found: the later write and the earlier one, and where the earlier one is.
+fn output_twice(f: &CheckFinding) -> (Write<'_>, Write<'_>, Origin) {
+    match f {
+        CheckFinding::OutputTwice {
+            op,
+            operand,
+            address,
+            first_op,
+            first_operand,
+            first_address,
+            first,
+        } => (
+            (*op, operand.as_str(), address.to_string()),
+            (*first_op, first_operand.as_str(), first_address.to_string()),
+            first.origin,
+        ),
+        other => panic!("not W008: {other:?}"),
+    }
 }
 
 #[test]
@@ -53,8 +78,12 @@ END
 ";
     let w = found(text, Code::W002TimerTwice);
     assert_eq!(lines(&w), [8, 12], "{w:?}");
-    for (_, message) in &w {
-        assert!(message.starts_with("T0005 is also used by the instruction at line 4"));
+    for (_, f) in &w {
+        assert!(
+            matches!(f, CheckFinding::TimerTwice { number, first }
+                if number.to_string() == "T0005" && first.origin == Origin::Line(4)),
+            "{f:?}"
+        );
     }
 }
 
@@ -76,7 +105,11 @@ END
 ";
     let w = found(text, Code::W002TimerTwice);
     assert_eq!(lines(&w), [8], "{w:?}");
-    assert!(w[0].1.contains("C0003") && w[0].1.contains("line 4"));
+    assert!(
+        matches!(&w[0].1, CheckFinding::TimerTwice { number, first }
+            if number.to_string() == "C0003" && first.origin == Origin::Line(4)),
+        "{w:?}"
+    );
 }
 
 #[test]
@@ -93,10 +126,13 @@ END
 ";
     let w = found(text, Code::W008OutputTwice);
     assert_eq!(lines(&w), [7], "{w:?}");
-    assert!(
-        w[0].1
-            .starts_with("DIFD OUT R0001.0 overlaps DIFU OUT R0001.0 at line 4"),
-        "{w:?}"
+    assert_eq!(
+        output_twice(&w[0].1),
+        (
+            (Op::Difd, "OUT", "R0001.0".into()),
+            (Op::Difu, "OUT", "R0001.0".into()),
+            Origin::Line(4)
+        )
     );
 }
 
@@ -120,13 +156,21 @@ END
 ";
     let w = found(text, Code::W008OutputTwice);
     assert_eq!(lines(&w), [7, 13], "{w:?}");
-    assert!(
-        w[0].1
-            .starts_with("MOVN OUT R0010 overlaps coil R0010.2 at line 4")
+    assert_eq!(
+        output_twice(&w[0].1),
+        (
+            (Op::Movn, "OUT", "R0010".into()),
+            (Op::Out, "b", "R0010.2".into()),
+            Origin::Line(4)
+        )
     );
-    assert!(
-        w[1].1
-            .starts_with("SET OUT R0020.0 overlaps TMRB OUT R0020.0 at line 10")
+    assert_eq!(
+        output_twice(&w[1].1),
+        (
+            (Op::Set, "OUT", "R0020.0".into()),
+            (Op::Tmrb, "OUT", "R0020.0".into()),
+            Origin::Line(10)
+        )
     );
 }
 
@@ -195,7 +239,7 @@ END
     // Level 2 and the subprograms are one level: the subprogram's DIFU clashes with level 2's.
     let w = found(text, Code::W008OutputTwice);
     assert_eq!(lines(&w), [12], "{w:?}");
-    assert!(w[0].1.contains("at line 8"));
+    assert_eq!(output_twice(&w[0].1).2, Origin::Line(8));
 }
 
 #[test]
@@ -227,7 +271,6 @@ END
 
 #[test]
 fn a_table_preset_out_of_its_instructions_range_is_reported_at_the_instruction() {
-    use crate::address::Address;
     use crate::model::DataRow;
     let row = |a: &str, v: i64| DataRow::new(Address::parse(a).unwrap(), v);
     let mut p = Project::default();
@@ -254,15 +297,22 @@ END
 ";
     let w = found_in(&p, text, Code::W009PresetRange);
     assert_eq!(lines(&w), [4, 10], "{w:?}");
-    assert!(
-        w[0].1.starts_with(
-            "TMRB PT DT0004: the DT table (row 2) sets DT0004 to -5, outside the preset range 0…2147483647, so TMRB counts it as 0"
-        ),
-        "{w:?}"
+    assert_eq!(
+        w[0].1,
+        CheckFinding::PresetRange {
+            op: Op::Tmrb,
+            operand: "PT".into(),
+            address: Address::parse("DT0004").unwrap(),
+            row: 2,
+            value: -5,
+            min: 0,
+            max: 2147483647,
+        }
     );
     assert!(
-        w[1].1
-            .starts_with("CTRC N DC0001: the DC table (row 2) sets DC0001 to -3")
+        matches!(&w[1].1, CheckFinding::PresetRange { op: Op::Ctrc, operand, address, row: 2, value: -3, .. }
+            if operand == "N" && address.to_string() == "DC0001"),
+        "{w:?}"
     );
     // The same lines without the tables: nothing to look up.
     assert_eq!(found(text, Code::W009PresetRange), []);

@@ -11,9 +11,10 @@
 //! other can look at the result.
 
 use super::Program;
-use super::diag::{Code, Sink};
+use super::diag::Sink;
+use super::finding::CheckFinding;
 use super::operands::operand_error;
-use super::place::{InstrPlace, place_text, place_text_zh};
+use super::place::{InstrPlace, location};
 use crate::address::{Address, Area};
 use crate::catalog::{Access, InstrClass, Op, OperandSpec, Role, Width};
 use crate::model::{BlockKind, Operand};
@@ -39,22 +40,6 @@ struct Writer {
 }
 
 impl Writer {
-    fn text(&self) -> String {
-        if self.coil {
-            format!("coil {}", self.address)
-        } else {
-            format!("{} {} {}", self.op.name(), self.operand, self.address)
-        }
-    }
-
-    fn text_zh(&self) -> String {
-        if self.coil {
-            format!("线圈 {}", self.address)
-        } else {
-            format!("{} 的 {} {}", self.op.name(), self.operand, self.address)
-        }
-    }
-
     /// Whether this write and an earlier one fight over their shared address.
     fn clashes_with(&self, earlier: &Writer) -> bool {
         self.instr != earlier.instr
@@ -161,21 +146,17 @@ pub fn check_writes(program: &Program, profile: &Profile, sink: &mut Sink) {
                         .min();
                     if let (Some(k), false) = (first, w001) {
                         let earlier = &writers[k];
-                        sink.report(
+                        sink.find(
                             instr.origin,
-                            Code::W008OutputTwice,
-                            format!(
-                                "{} overlaps {} at {}, and one of the two writes it at every execution whatever its condition, so the other write never lasts: give each output its own address",
-                                writer.text(),
-                                earlier.text(),
-                                place_text(program, earlier.place)
-                            ),
-                            format!(
-                                "{} 与 {} 的 {} 重叠，且其中一条指令无论条件如何每次执行都写入，另一条写入的值无法保持：请给每个输出使用各自的地址",
-                                writer.text_zh(),
-                                place_text_zh(program, earlier.place),
-                                earlier.text_zh()
-                            ),
+                            CheckFinding::OutputTwice {
+                                op: writer.op,
+                                operand: writer.operand.to_string(),
+                                address: writer.address,
+                                first_op: earlier.op,
+                                first_operand: earlier.operand.to_string(),
+                                first_address: earlier.address,
+                                first: location(program, earlier.place),
+                            },
                         );
                     }
                     let k = writers.len();

@@ -13,7 +13,7 @@
 use crate::Op;
 use crate::address::{Address, Area};
 use crate::compiler::rung::{Expr, Item, Node, Output, and, or};
-use crate::compiler::{Origin, Sink, compile, compile_program};
+use crate::compiler::{CheckFinding, Finding, Origin, Sink, compile, compile_program};
 use crate::generate::SplitMix64;
 use crate::il;
 use crate::model::{Cell, Operand, Project};
@@ -440,7 +440,10 @@ fn diagnostics_of_a_kept_list_point_at_the_drawn_cells() {
     let d = c
         .diagnostics
         .iter()
-        .find(|d| d.message().contains("NOWHERE"))
+        .find(|d| {
+            matches!(&d.finding, Finding::Check(CheckFinding::UndefinedSymbol { name })
+                if name == "NOWHERE")
+        })
         .unwrap();
     assert!(
         matches!(d.location.origin, Origin::Cell { .. }),

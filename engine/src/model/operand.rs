@@ -3,6 +3,7 @@
 use crate::address::{Address, AddressError};
 use serde::{Deserialize, Serialize};
 use std::fmt;
+use std::hash::{Hash, Hasher};
 use thiserror::Error;
 
 /// One operand of a contact, coil or function box.
@@ -90,6 +91,22 @@ impl Operand {
         match self {
             Operand::Addr(a) => Some(*a),
             _ => None,
+        }
+    }
+}
+
+// A real operand is always finite (`parse` refuses the others), so equality is an
+// equivalence; +0.0 and -0.0 are equal and hash alike.
+impl Eq for Operand {}
+
+impl Hash for Operand {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        std::mem::discriminant(self).hash(state);
+        match self {
+            Operand::Addr(a) => a.hash(state),
+            Operand::Int(v) => v.hash(state),
+            Operand::Real(v) => (if *v == 0.0 { 0 } else { v.to_bits() }).hash(state),
+            Operand::Symbol(s) => s.hash(state),
         }
     }
 }
