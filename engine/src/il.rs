@@ -6,7 +6,8 @@ use crate::compiler::decompile::decompile;
 use crate::compiler::layout::{layout, width_needed};
 pub use crate::compiler::text::{instr_text, operand_text};
 use crate::compiler::{
-    Code, Compiled, Instr, Origin, Program, ProgramBlock, ProgramNetwork, Sink, compile_program,
+    Compiled, IlFinding, Instr, Origin, Program, ProgramBlock, ProgramNetwork, Sink,
+    compile_program,
 };
 use crate::model::{Block, BlockKind, DEFAULT_WIDTH, Ladder, MAX_WIDTH, Network, Operand, Project};
 use std::fmt::Write as _;
@@ -146,12 +147,7 @@ impl Parser {
     /// nothing is read.
     fn line(&mut self, line: &str, origin: Origin, sink: &mut Sink) -> bool {
         let Some(tokens) = tokenize(line) else {
-            sink.report(
-                origin,
-                Code::L012Syntax,
-                "a quoted text is not closed: add the closing \"",
-                "带引号的文字没有结束：请补上结尾的 \"",
-            );
+            sink.find(origin, IlFinding::UnclosedQuote);
             mark_broken(&mut self.blocks[self.current].2);
             return true;
         };
@@ -161,12 +157,7 @@ impl Parser {
         };
         self.in_header = false;
         if *quoted {
-            sink.report(
-                origin,
-                Code::L012Syntax,
-                "a line starts with an instruction or a directive, not a quoted text",
-                "每行应以指令或伪指令开头，而不是带引号的文字",
-            );
+            sink.find(origin, IlFinding::QuotedLineStart);
             return true;
         }
         let upper = word.to_ascii_uppercase();
@@ -176,12 +167,8 @@ impl Parser {
                 self.current = if upper == "LEVEL1" { 0 } else { 1 };
                 self.blocks[self.current].1 = origin;
                 if tokens.len() > 1 {
-                    sink.report(
-                        origin,
-                        Code::L012Syntax,
-                        format!("{upper} takes nothing after it"),
-                        format!("{upper} 后面不能再写其他内容"),
-                    );
+                    let level = self.current as u8 + 1;
+                    sink.find(origin, IlFinding::AfterLevel { level });
                 }
             }
             "SUB" | "SP" => self.sub(&tokens, origin, sink),
@@ -224,12 +211,7 @@ impl Parser {
                 ));
                 self.current = self.blocks.len() - 1;
             }
-            _ => sink.report(
-                origin,
-                Code::L012Syntax,
-                "SUB needs a subprogram number: `SUB P0001 \"NAME\"`",
-                "SUB 需要子程序号：`SUB P0001 \"NAME\"`",
-            ),
+            _ => sink.find(origin, IlFinding::SubWithoutNumber),
         }
     }
 
@@ -239,12 +221,7 @@ impl Parser {
         let title = match tokens.get(1) {
             Some((true, t)) => t.clone(),
             Some((false, t)) => {
-                sink.report(
-                    origin,
-                    Code::L012Syntax,
-                    format!("write the network title in quotes: NETWORK \"{t}\""),
-                    format!("网络标题要写在引号内：NETWORK \"{t}\""),
-                );
+                sink.find(origin, IlFinding::UnquotedTitle { title: t.clone() });
                 t.clone()
             }
             None => String::new(),
@@ -265,13 +242,12 @@ impl Parser {
         sink: &mut Sink,
     ) {
         let Some(op) = Op::from_name(upper) else {
-            let (hint, hint_zh) = suggestion(upper);
-            let word = shown(word);
-            sink.report(
+            sink.find(
                 origin,
-                Code::L010UnknownInstruction,
-                format!("unknown instruction `{word}`{hint}"),
-                format!("未知指令 `{word}`{hint_zh}"),
+                IlFinding::UnknownInstruction {
+                    word: shown(word),
+                    meant: meant(upper),
+                },
             );
             mark_broken(&mut self.blocks[self.current].2);
             return;
@@ -329,23 +305,13 @@ fn parse_operands(
     let mut operands = Vec::new();
     for (q, t) in tokens {
         if *q {
-            sink.report(
-                origin,
-                Code::L012Syntax,
-                format!("`\"{t}\"`: operands are not quoted"),
-                format!("`\"{t}\"`：操作数不加引号"),
-            );
+            sink.find(origin, IlFinding::QuotedOperand { text: t.clone() });
             return None;
         }
         match Operand::parse(t) {
             Ok(o) => operands.push(o),
-            Err(e) => {
-                sink.report(
-                    origin,
-                    Code::L012Syntax,
-                    format!("{} operand: {e}", op.name()),
-                    format!("{} 的操作数：{}", op.name(), e.zh()),
-                );
+            Err(error) => {
+                sink.find(origin, IlFinding::BadOperand { op, error });
                 return None;
             }
         }
@@ -371,9 +337,9 @@ fn starts_network(prev: &RawNetwork, op: Op) -> bool {
         && !mps_open
 }
 
-/// What to write instead of an unknown mnemonic, in English and in Chinese: the closest
-/// mnemonic by edit distance when it is close enough to be a typo, else where to look.
-fn suggestion(upper: &str) -> (String, String) {
+/// The instruction an unknown mnemonic is meant to be: the closest mnemonic by edit distance,
+/// when it is close enough to be a typo.
+fn meant(upper: &str) -> Option<Op> {
     fn distance(a: &str, b: &str) -> usize {
         let b: Vec<char> = b.chars().collect();
         let mut prev: Vec<usize> = (0..=b.len()).collect();
@@ -396,26 +362,21 @@ fn suggestion(upper: &str) -> (String, String) {
     crate::catalog::CATALOG
         .iter()
         .filter(|s| s.name.len().abs_diff(len) <= 2)
-        .map(|s| (distance(upper, s.name), s.name))
+        // Ties go to the first name in alphabetical order.
+        .map(|s| (distance(upper, s.name), s.name, s.op))
         .min()
-        .filter(|(d, _)| *d <= 2)
-        .map(|(_, n)| (format!(": did you mean {n}?"), format!("：是不是 {n}？")))
-        .unwrap_or_else(|| {
-            (
-                ": see the instruction list in the manual (LD, AND, OUT, TMRB, …)".into(),
-                "：请查阅手册中的指令表（LD、AND、OUT、TMRB 等）".into(),
-            )
-        })
+        .filter(|(d, _, _)| *d <= 2)
+        .map(|(_, _, op)| op)
 }
 
 /// Characters of an unknown word echoed in its message; the rest is elided.
 const SHOWN_CHARS: usize = 40;
 
 /// A word as a message quotes it: a line-long word is cut so the message stays readable.
-fn shown(word: &str) -> std::borrow::Cow<'_, str> {
+fn shown(word: &str) -> String {
     match word.char_indices().nth(SHOWN_CHARS) {
-        Some((at, _)) => format!("{}…", &word[..at]).into(),
-        None => word.into(),
+        Some((at, _)) => format!("{}…", &word[..at]),
+        None => word.to_string(),
     }
 }
 
@@ -514,11 +475,9 @@ pub fn import(text: &str) -> Imported {
                 // The drawing must give the list back, or the import would change it unseen.
                 if !crate::compiler::written::reads_back(&network, width, &pn.instrs) {
                     sink.at(b, &label, n);
-                    sink.report(
+                    sink.find(
                         pn.instrs.first().map(|i| i.origin).unwrap_or(Origin::None),
-                        Code::L017NotDrawable,
-                        "the ladder drawn from this network does not read back as its instruction list, so it cannot be imported unchanged: write its branches with MPS/MRD/MPP and its blocks with ORB/ANB",
-                        "由该网络画出的梯形图读回后与其指令表不一致，无法原样导入：请用 MPS/MRD/MPP 写分支、用 ORB/ANB 写逻辑块",
+                        IlFinding::NotReadBack,
                     );
                     drawable = false;
                 }
@@ -547,5 +506,52 @@ pub fn import(text: &str) -> Imported {
     Imported {
         project: Some(Project { ladder, ..base }),
         compiled,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::compiler::Finding;
+
+    fn findings(text: &str) -> Vec<Finding> {
+        let mut sink = Sink::default();
+        parse(text, &mut sink);
+        sink.diagnostics.into_iter().map(|d| d.finding).collect()
+    }
+
+    #[test]
+    fn an_unknown_word_is_held_cut_short_with_the_instruction_it_is_close_to() {
+        assert_eq!(meant("OUTT"), Some(Op::Out));
+        assert_eq!(meant("TMRBB"), Some(Op::Tmrb));
+        assert_eq!(meant("FROBNICATE"), None);
+        let long = "Q".repeat(100);
+        assert_eq!(
+            findings(&format!("LEVEL1\n{long}\n")),
+            [Finding::Il(IlFinding::UnknownInstruction {
+                word: format!("{}…", &long[..SHOWN_CHARS]),
+                meant: None,
+            })]
+        );
+    }
+
+    #[test]
+    fn syntax_findings_hold_what_was_written() {
+        assert_eq!(
+            findings("LEVEL2 X\nNETWORK T\nLD \"X0000.0\"\nOUT X0000.9\n"),
+            [
+                Finding::Il(IlFinding::AfterLevel { level: 2 }),
+                Finding::Il(IlFinding::UnquotedTitle { title: "T".into() }),
+                Finding::Il(IlFinding::QuotedOperand {
+                    text: "X0000.0".into()
+                }),
+                Finding::Il(IlFinding::BadOperand {
+                    op: Op::Out,
+                    error: crate::model::OperandError::Address(crate::address::AddressError::Bit(
+                        "X0000.9".into()
+                    )),
+                }),
+            ]
+        );
     }
 }

@@ -8,7 +8,7 @@
 #![allow(unsafe_code)]
 
 use ladder_engine::address::{Address, Area};
-use ladder_engine::compiler::Code;
+use ladder_engine::compiler::{Code, Diagnostic, Finding, IlFinding};
 use ladder_engine::file;
 use ladder_engine::model::{Cell, Operand, Project};
 use ladder_engine::{Op, il, xref};
@@ -224,6 +224,12 @@ fn a_line_long_unknown_word_gets_a_short_message() {
         .iter()
         .find(|d| d.code == Code::L010UnknownInstruction)
         .expect("the word is refused");
+    // The finding holds the word already cut, so neither language repeats a megabyte.
+    let Finding::Il(IlFinding::UnknownInstruction { word, meant }) = &d.finding else {
+        panic!("{d:?}");
+    };
+    assert_eq!((word.chars().count(), *meant), (41, None));
+    assert!(word.ends_with("QQQQ…"), "{word}");
     let en = ladder_text::diagnostics::message(d, ladder_text::Lang::En);
     let zh = ladder_text::diagnostics::message(d, ladder_text::Lang::Zh);
     assert!(en.len() < 200, "{} bytes", en.len());
@@ -235,10 +241,18 @@ fn a_line_long_unknown_word_gets_a_short_message() {
 fn a_typo_still_gets_its_suggestion() {
     let imported = il::import("LEVEL1\nNETWORK\nLD X0000.0\nOUTT R0000.0\nLEVEL2\n");
     let en = |d| ladder_text::diagnostics::message(d, ladder_text::Lang::En);
-    let d = en(&imported.compiled.diagnostics[0]);
+    let meant = |d: &Diagnostic| match &d.finding {
+        Finding::Il(IlFinding::UnknownInstruction { meant, .. }) => *meant,
+        other => panic!("{other:?}"),
+    };
+    let first = &imported.compiled.diagnostics[0];
+    assert_eq!(meant(first), Some(Op::Out));
+    let d = en(first);
     assert!(d.contains("did you mean OUT?"), "{d}");
     let imported = il::import("LEVEL1\nNETWORK\nLD X0000.0\nTMRBB T0000 DT0000 R0000.0\n");
-    let d = en(&imported.compiled.diagnostics[0]);
+    let first = &imported.compiled.diagnostics[0];
+    assert_eq!(meant(first), Some(Op::Tmrb));
+    let d = en(first);
     assert!(d.contains("did you mean TMRB?"), "{d}");
 }
 

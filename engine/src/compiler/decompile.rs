@@ -6,7 +6,8 @@
 //! saved node. Sequences with no ladder drawing (OR after a branch point, LD after an output
 //! while MPS is open) are reported at their line.
 
-use super::diag::{Code, Origin, Sink};
+use super::diag::{Origin, Sink};
+use super::finding::LowerFinding;
 use super::rung::{Expr, Instr, Item, Node, Output, Rung, and, or};
 use crate::catalog::{InstrClass, Op};
 
@@ -84,8 +85,8 @@ fn contact(i: &Instr, negated: bool) -> Expr {
 
 /// Reports a sequence with no ladder drawing at `i` and gives up the network: the `None`
 /// every step returns once the instructions cannot be drawn.
-fn refuse<T>(sink: &mut Sink, i: &Instr, code: Code, msg: &str, msg_zh: &str) -> Option<T> {
-    sink.report(i.origin, code, msg, msg_zh);
+fn refuse<T>(sink: &mut Sink, i: &Instr, finding: LowerFinding) -> Option<T> {
+    sink.find(i.origin, finding);
     None
 }
 
@@ -139,13 +140,7 @@ impl Decompiler {
                 self.b.finish_rung();
             }
             Some(_) if was_after_output => {
-                return refuse(
-                    sink,
-                    i,
-                    Code::L015LoadAfterOutput,
-                    "LD/LDI right after an output while MPS is open: use MRD or MPP to return to the branch point first",
-                    "MPS 未闭合时在输出之后直接 LD/LDI：请先用 MRD 或 MPP 回到分支点",
-                );
+                return refuse(sink, i, LowerFinding::LoadAfterOutput);
             }
             Some(prev) => {
                 if prev.node.is_some() && prev.pending.is_some() && !self.branches.is_empty() {
@@ -164,13 +159,7 @@ impl Decompiler {
     /// AND/ANI: the contact in series with the pending expression.
     fn and(&mut self, i: &Instr, sink: &mut Sink) -> Option<()> {
         let Some(a) = self.acc.as_mut() else {
-            return refuse(
-                sink,
-                i,
-                Code::L013BlockStack,
-                "AND/ANI needs a contact before it: start the rung with LD or LDI",
-                "AND/ANI 前面需要有触点：梯级应以 LD 或 LDI 开始",
-            );
+            return refuse(sink, i, LowerFinding::AndWithoutContact);
         };
         let e = contact(i, i.op == Op::Ani);
         a.pending = Some(match a.pending.take() {
@@ -184,22 +173,10 @@ impl Decompiler {
     /// accumulator can take (after a node there is nothing to draw the parallel from).
     fn or(&mut self, i: &Instr, sink: &mut Sink) -> Option<()> {
         let Some(a) = self.acc.as_mut() else {
-            return refuse(
-                sink,
-                i,
-                Code::L013BlockStack,
-                "OR/ORI needs a contact before it: start the rung with LD or LDI",
-                "OR/ORI 前面需要有触点：梯级应以 LD 或 LDI 开始",
-            );
+            return refuse(sink, i, LowerFinding::OrWithoutContact);
         };
         if a.node.is_some() {
-            return refuse(
-                sink,
-                i,
-                Code::L017NotDrawable,
-                "OR/ORI after a branch point or output has no ladder drawing: write the parallel part as LD … ORB, then ANB",
-                "分支点或输出之后的 OR/ORI 无法画成梯形图：请把并联部分写成 LD … ORB，再用 ANB",
-            );
+            return refuse(sink, i, LowerFinding::OrAfterNode);
         }
         let e = contact(i, i.op == Op::Ori);
         let p = a
@@ -215,38 +192,14 @@ impl Decompiler {
     /// drawing as one side of a parallel or series pair.
     fn join(&mut self, i: &Instr, sink: &mut Sink) -> Option<()> {
         let (Some(cur), Some(prev)) = (self.acc.take(), self.blocks.pop()) else {
-            return refuse(
-                sink,
-                i,
-                Code::L013BlockStack,
-                &format!(
-                    "{} has no open block to join: each ORB/ANB needs an LD or LDI block before it",
-                    i.op.name()
-                ),
-                &format!(
-                    "{} 没有可连接的逻辑块：每个 ORB/ANB 前面都需要一个以 LD 或 LDI 开始的逻辑块",
-                    i.op.name()
-                ),
-            );
+            return refuse(sink, i, LowerFinding::NoBlockToJoin { op: i.op });
         };
         let (None, Some(cur_e)) = (cur.node, cur.pending) else {
-            return refuse(
-                sink,
-                i,
-                Code::L017NotDrawable,
-                "a block that contains an output or a branch point cannot be joined by ORB/ANB",
-                "含有输出或分支点的逻辑块不能用 ORB/ANB 连接",
-            );
+            return refuse(sink, i, LowerFinding::JoinedBlockHasNode);
         };
         if i.op == Op::Orb {
             let (None, Some(prev_e)) = (prev.node, prev.pending) else {
-                return refuse(
-                    sink,
-                    i,
-                    Code::L017NotDrawable,
-                    "ORB joins a block to a branch point's path, which has no ladder drawing: move the parallel block before the MPS",
-                    "ORB 把逻辑块并联到分支点之后的支路上，无法画成梯形图：请把并联的逻辑块移到 MPS 之前",
-                );
+                return refuse(sink, i, LowerFinding::OrbAfterBranchPoint);
             };
             self.acc = Some(Acc {
                 node: None,
@@ -268,23 +221,11 @@ impl Decompiler {
     /// one, MPP returns to it and closes it. None may stand inside an open LD block.
     fn branch(&mut self, i: &Instr, sink: &mut Sink) -> Option<()> {
         if !self.blocks.is_empty() {
-            return refuse(
-                sink,
-                i,
-                Code::L013BlockStack,
-                "MPS/MRD/MPP inside an open LD block: close the block with ORB or ANB first",
-                "MPS/MRD/MPP 位于未闭合的 LD 逻辑块中：请先用 ORB 或 ANB 闭合该逻辑块",
-            );
+            return refuse(sink, i, LowerFinding::BranchInBlock);
         }
         let n = if i.op == Op::Mps {
             let Some(a) = self.acc.as_ref() else {
-                return refuse(
-                    sink,
-                    i,
-                    Code::L014BranchStack,
-                    "MPS needs a contact before it",
-                    "MPS 前面需要有触点",
-                );
+                return refuse(sink, i, LowerFinding::MpsWithoutContact);
             };
             let n = self.b.anchor(a);
             self.branches.push(n);
@@ -296,19 +237,7 @@ impl Decompiler {
                 self.branches.pop()
             };
             let Some(n) = top else {
-                return refuse(
-                    sink,
-                    i,
-                    Code::L014BranchStack,
-                    &format!(
-                        "{} without MPS: every MRD/MPP needs an open MPS",
-                        i.op.name()
-                    ),
-                    &format!(
-                        "{} 没有对应的 MPS：每个 MRD/MPP 都需要一个未闭合的 MPS",
-                        i.op.name()
-                    ),
-                );
+                return refuse(sink, i, LowerFinding::NoOpenMps { op: i.op });
             };
             n
         };
@@ -325,19 +254,7 @@ impl Decompiler {
         let boundary = self.acc.is_none()
             || (was_after_output && self.blocks.is_empty() && self.branches.is_empty());
         if !boundary {
-            return refuse(
-                sink,
-                i,
-                Code::L007NotStandalone,
-                &format!(
-                    "{} stands alone: end the rung before it with an output",
-                    i.op.name()
-                ),
-                &format!(
-                    "{} 必须单独成网络：请先用一个输出结束它前面的梯级",
-                    i.op.name()
-                ),
-            );
+            return refuse(sink, i, LowerFinding::StandaloneMidRung { op: i.op });
         }
         if self.acc.take().is_some() {
             self.b.finish_rung();
@@ -358,22 +275,10 @@ impl Decompiler {
             InstrClass::Coil | InstrClass::Function
         ));
         let Some(a) = self.acc.as_ref() else {
-            return refuse(
-                sink,
-                i,
-                Code::L006NoContact,
-                &format!("{} needs a condition: put LD/LDI before it", i.op.name()),
-                &format!("{} 需要执行条件：请在它前面加 LD/LDI", i.op.name()),
-            );
+            return refuse(sink, i, LowerFinding::OutputWithoutCondition { op: i.op });
         };
         if !self.blocks.is_empty() {
-            return refuse(
-                sink,
-                i,
-                Code::L013BlockStack,
-                "an LD block is still open before this output: join it with ORB or ANB",
-                "该输出之前还有未闭合的 LD 逻辑块：请用 ORB 或 ANB 连接",
-            );
+            return refuse(sink, i, LowerFinding::BlockOpenAtOutput);
         }
         let n = self.b.anchor(a);
         self.b.nodes[n].push(AItem::Output(Output {
@@ -394,30 +299,15 @@ impl Decompiler {
     fn finish(mut self, last_origin: Origin, sink: &mut Sink) -> Option<Vec<Rung>> {
         if self.acc.is_some() {
             if !self.blocks.is_empty() {
-                sink.report(
-                    last_origin,
-                    Code::L013BlockStack,
-                    "the network ends with an LD block still open: join it with ORB or ANB",
-                    "网络结束时仍有未闭合的 LD 逻辑块：请用 ORB 或 ANB 连接",
-                );
+                sink.find(last_origin, LowerFinding::BlockOpenAtEnd);
                 return None;
             }
             if !self.branches.is_empty() {
-                sink.report(
-                    last_origin,
-                    Code::L014BranchStack,
-                    "the network ends with an MPS still open: close it with MPP",
-                    "网络结束时仍有未闭合的 MPS：请用 MPP 闭合",
-                );
+                sink.find(last_origin, LowerFinding::BranchOpenAtEnd);
                 return None;
             }
             if !self.after_output {
-                sink.report(
-                    last_origin,
-                    Code::L016NoOutput,
-                    "the network ends without an output: finish the rung with a coil or function instruction",
-                    "网络结束时没有输出：请用线圈或功能指令结束该梯级",
-                );
+                sink.find(last_origin, LowerFinding::NoOutputAtEnd);
                 return None;
             }
             self.b.finish_rung();

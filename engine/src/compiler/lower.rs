@@ -7,7 +7,8 @@
 //! that merge again after a branch point) cannot be written as an instruction list and is
 //! reported with the cell where it happens.
 
-use super::diag::{Code, Origin, Sink};
+use super::diag::{Origin, Sink};
+use super::finding::LowerFinding;
 use super::rung::{Expr, Item, Node, Output, Rung, and, or};
 use crate::model::{Cell, Network};
 
@@ -78,23 +79,9 @@ fn report_open_branches(branches: &mut Uf, elements: &[OpenElement], sink: &mut 
     for ((row, col), contacts) in firsts {
         let origin = cell_origin(row as usize, col as usize);
         if contacts <= 1 {
-            sink.report(
-                origin,
-                Code::L002OpenBranch,
-                "open branch: nothing after this element leads to a coil or function box; connect it or delete it",
-                "开路分支：该元件之后没有连到任何线圈或功能指令；请连接或删除它",
-            );
+            sink.find(origin, LowerFinding::OpenElement);
         } else {
-            sink.report(
-                origin,
-                Code::L002OpenBranch,
-                format!(
-                    "open branch of {contacts} contacts from here: nothing after them leads to a coil or function box; connect the branch or delete it"
-                ),
-                format!(
-                    "从此处起的开路分支（{contacts} 个触点）：之后没有连到任何线圈或功能指令；请连接或删除该分支"
-                ),
-            );
+            sink.find(origin, LowerFinding::OpenBranch { contacts });
         }
     }
 }
@@ -177,12 +164,7 @@ fn grid_edges(
                         origin,
                     }),
                     Cell::Coil { .. } | Cell::Box { .. } => {
-                        sink.report(
-                            origin,
-                            Code::L005WrongColumn,
-                            "a coil or function box must stand in the output column at the right end of the rung",
-                            "线圈或功能指令必须放在梯级最右端的输出列",
-                        );
+                        sink.find(origin, LowerFinding::OutputLeftOfColumn);
                         continue;
                     }
                 };
@@ -203,12 +185,7 @@ fn grid_edges(
                     },
                 ));
             } else if *cell != Cell::Empty {
-                sink.report(
-                    origin,
-                    Code::L005WrongColumn,
-                    "only coils and function boxes go in the output column; move the contact or wire left",
-                    "输出列只能放线圈和功能指令；请把触点或导线移到左边",
-                );
+                sink.find(origin, LowerFinding::ElementInOutputColumn);
             }
         }
     }
@@ -276,12 +253,7 @@ fn live_edges(edges: Vec<Edge>, reach: &Reach, nodes: usize, sink: &mut Sink) ->
         let is_wire = matches!(e.term, Term::Wire(_));
         if !from_rail[e.from] {
             if !is_wire || to_output[e.to] {
-                sink.report(
-                    origin,
-                    Code::L001NotConnected,
-                    "this element is not connected to the left rail; draw a wire or vertical link to it",
-                    "该元件未连接到左母线；请画一条导线或竖线连到它",
-                );
+                sink.find(origin, LowerFinding::ElementNotConnected);
             }
         } else if !to_output[e.to] {
             // Branches that start at one live node are separate mistakes: only the dead
@@ -325,34 +297,11 @@ fn place_outputs(
             let has_contacts =
                 reach.behind_contact[n] || live.iter().any(|e| e.from == n) || outputs_at[n] > 1;
             if has_contacts {
-                sink.report(
-                    o.origin,
-                    Code::L007NotStandalone,
-                    format!(
-                        "{} stands alone: remove the contacts and other outputs on its rung",
-                        o.op.name()
-                    ),
-                    format!(
-                        "{} 必须单独成网络：请删除同一梯级上的触点和其他输出",
-                        o.op.name()
-                    ),
-                );
+                sink.find(o.origin, LowerFinding::StandaloneShared { op: o.op });
             }
             rungs_out.push((row, Rung::Standalone(o)));
         } else if !reach.from_rail[n] {
-            let coil = o.op.spec().class == crate::catalog::InstrClass::Coil;
-            sink.report(
-                o.origin,
-                Code::L001NotConnected,
-                format!(
-                    "this {} is not connected to the left rail; draw the contacts that drive it",
-                    if coil { "coil" } else { "function box" }
-                ),
-                format!(
-                    "该{}未连接到左母线；请画出驱动它的触点",
-                    if coil { "线圈" } else { "功能指令" }
-                ),
-            );
+            sink.find(o.origin, LowerFinding::OutputNotConnected { op: o.op });
         } else {
             powered_outputs[n].push((row, o));
         }
@@ -382,11 +331,9 @@ fn is_tree(live: &[Edge], nodes: usize, sink: &mut Sink) -> bool {
     }
     for e in live {
         if in_count[e.to] > 1 {
-            sink.report(
+            sink.find(
                 cell_origin(e.key.0 as usize, e.key.1 as usize),
-                Code::L004Bridge,
-                "these branches join again after a branch point (or form a bridge), which no instruction list can express; draw each output's contacts as separate parallel branches",
-                "这些分支在分支点之后重新汇合（或形成桥接），指令表无法表达；请把每个输出的触点画成各自独立的并联分支",
+                LowerFinding::Bridge,
             );
             return false;
         }
@@ -417,23 +364,13 @@ fn rail_rungs(
         match &e.term {
             Term::Expr(expr) => rungs_out.push((e.key.0, Rung::Powered(expr.clone(), node))),
             Term::Wire(origin) => {
-                sink.report(
-                    *origin,
-                    Code::L006NoContact,
-                    "this rung has no contact: an output needs at least one contact between it and the rail",
-                    "该梯级没有触点：输出与母线之间至少要有一个触点",
-                );
+                sink.find(*origin, LowerFinding::RungWithoutContact);
             }
         }
     }
     if !powered_outputs[rail].is_empty() {
         for (_, o) in &powered_outputs[rail] {
-            sink.report(
-                o.origin,
-                Code::L006NoContact,
-                "this output is connected straight to the rail; put a contact before it",
-                "该输出直接连在母线上；请在它前面加一个触点",
-            );
+            sink.find(o.origin, LowerFinding::OutputAtRail);
         }
     }
 }
@@ -455,12 +392,7 @@ fn reduce(edges: &mut Vec<Edge>, output_nodes: &[bool], nodes: usize, sink: &mut
                         (Term::Expr(a), Term::Expr(b)) => Term::Expr(or(a, b)),
                         (Term::Wire(o), other) | (other, Term::Wire(o)) => {
                             if let Term::Expr(x) = &other {
-                                sink.report(
-                                    first_origin(x),
-                                    Code::L003ShortCircuit,
-                                    "this branch is short-circuited by a plain wire in parallel with it; delete the wire or put a contact in it",
-                                    "该分支被与之并联的导线短路；请删除该导线，或在导线中加一个触点",
-                                );
+                                sink.find(first_origin(x), LowerFinding::ShortCircuit);
                             }
                             Term::Wire(o)
                         }

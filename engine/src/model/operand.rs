@@ -25,7 +25,7 @@ pub enum Operand {
 }
 
 /// Why operand text was refused.
-#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash, Error)]
 pub enum OperandError {
     /// Nothing was written.
     #[error("an operand is missing")]
