@@ -369,7 +369,8 @@ fn open_editor(cli: Cli, say: Say, editor: Editor<'_>, err: &mut dyn Write) -> a
         Some(Ok(text)) => Some(text),
         Some(Err(e)) => {
             let nc = cli.nc.as_deref().unwrap_or(Path::new(""));
-            let _ = writeln!(err, "ladder-studio: {}", e.message(nc, say.zh));
+            let message = ladder_text::script::program_file_error(&e, nc, say.lang());
+            let _ = writeln!(err, "ladder-studio: {message}");
             return Ok(2);
         }
         None => None,

@@ -85,7 +85,8 @@ pub(super) fn read_script(
         .unwrap_or_default();
     let read_file = |p: &str| -> Result<String, String> {
         let full = folder.join(p);
-        ladder_engine::cnc::program::read_program_file(&full).map_err(|e| e.message(&full, say.zh))
+        ladder_engine::cnc::program::read_program_file(&full)
+            .map_err(|e| ladder_text::script::program_file_error(&e, &full, say.lang()))
     };
     // The project again, for its saved scenarios and operator panel (`scenario` lines).
     let project = match super::source::Source::read(project_path, say)? {
@@ -101,7 +102,7 @@ pub(super) fn read_script(
     match Script::parse_with(&text, machine.plc().profile(), &options) {
         Ok(s) => Ok(Ok(s)),
         Err(e) => {
-            let message = e.message_in(say.zh);
+            let message = ladder_text::script::script_error(&e, say.lang());
             let _ = writeln!(err, "{}:{}: {message}", script_path.display(), e.line);
             Ok(Err(2))
         }

@@ -40,8 +40,9 @@ fn sample() -> Machine {
         .collect::<Vec<_>>()
         .join("\n");
     let read = |p: &str| {
-        ladder_engine::cnc::program::read_program_file(&root.join(p))
-            .map_err(|e| e.message(Path::new(p), false))
+        ladder_engine::cnc::program::read_program_file(&root.join(p)).map_err(|e| {
+            ladder_text::script::program_file_error(&e, Path::new(p), ladder_text::Lang::En)
+        })
     };
     let script = Script::parse_with(
         &setup,

@@ -248,7 +248,7 @@ impl FromStr for Address {
 }
 
 /// An address with a byte count, as scripts write it (`D0010:2`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Target {
     /// The address.
     pub address: Address,

@@ -6,11 +6,11 @@
 //! above both rather than inside the compiler. Reported like the tables: the "block" is
 //! `SCENARIOS`, the "network" the scenario (from 1), the row its line.
 
-use crate::compiler::diag::{Code, Origin, Sink};
-use crate::compiler::{Compiled, compile};
+use crate::compiler::diag::{Origin, Sink};
+use crate::compiler::{Compiled, ScenarioFinding, compile};
 use crate::model::Project;
 use crate::scenario::name_error;
-use crate::sim::{Options, scenario::resolve};
+use crate::sim::{Options, ScriptError, scenario::resolve};
 
 /// Compiles `project` and checks what the compiler does not read: every diagnostic of the
 /// project, in the compiler's order.
@@ -35,8 +35,8 @@ fn check_scenarios(project: &Project, sink: &mut Sink) {
     for (i, s) in project.scenarios.iter().enumerate() {
         sink.at(SCENARIOS, "SCENARIOS", i);
         // A name taken is reported at the later of the two.
-        if let Some((en, zh)) = name_error(&s.name, &project.scenarios[..i], None) {
-            sink.report(Origin::None, Code::W019ScenarioBroken, en, zh);
+        if let Some(e) = name_error(&s.name, &project.scenarios[..i], None) {
+            sink.find(Origin::None, ScenarioFinding::Name(e));
         }
         // Line by line, so every bad line is reported, not only the first.
         for (k, line) in s.lines.iter().enumerate() {
@@ -45,14 +45,19 @@ fn check_scenarios(project: &Project, sink: &mut Sink) {
                 ..s.clone()
             };
             if let Err(e) = resolve(&one, project, &options) {
-                sink.report(
+                let finding = ScenarioFinding::Line {
+                    scenario: s.name.clone(),
+                    error: ScriptError {
+                        line: k + 1,
+                        reason: e.reason,
+                    },
+                };
+                sink.find(
                     Origin::Cell {
                         row: k as u32,
                         col: 0,
                     },
-                    Code::W019ScenarioBroken,
-                    format!("scenario `{}`, line {}: {}", s.name, k + 1, e.message),
-                    format!("场景 `{}` 第 {} 行：{}", s.name, k + 1, e.message_zh),
+                    finding,
                 );
             }
         }
@@ -62,7 +67,10 @@ fn check_scenarios(project: &Project, sink: &mut Sink) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scenario::Scenario;
+    use crate::compiler::Finding;
+    use crate::compiler::diag::Code;
+    use crate::scenario::{NameError, Scenario};
+    use crate::sim::{ScenarioReason, ScriptReason};
 
     fn scenario(name: &str, lines: &[&str]) -> Scenario {
         Scenario {
@@ -73,7 +81,7 @@ mod tests {
     }
 
     #[test]
-    fn a_bad_name_or_line_is_reported_at_its_scenario_and_row_in_both_languages() {
+    fn a_bad_name_or_line_is_reported_at_its_scenario_and_row() {
         let p = Project {
             scenarios: vec![
                 scenario("good", &["set R0001 1", "force X0002.1 1"]),
@@ -105,18 +113,20 @@ mod tests {
             ]
         );
         assert_eq!(
-            found[0].message(),
-            "scenario name `good` is already used; give each scenario its own"
+            found[0].finding,
+            Finding::Scenario(ScenarioFinding::Name(NameError::Taken {
+                name: "good".into()
+            }))
         );
-        assert!(
-            found[1]
-                .message()
-                .starts_with("scenario `typo`, line 2: `frce` cannot be part of a scenario"),
-            "{}",
-            found[1].message()
+        let Finding::Scenario(ScenarioFinding::Line { scenario, error }) = &found[1].finding else {
+            panic!("{:?}", found[1].finding)
+        };
+        assert_eq!((scenario.as_str(), error.line), ("typo", 2));
+        assert_eq!(
+            error.reason,
+            ScriptReason::Scenario(ScenarioReason::NotScenarioLine {
+                verb: "frce".into()
+            })
         );
-        for d in &found {
-            crate::compiler::bilingual::assert_bilingual(d.message(), d.message_zh());
-        }
     }
 }

@@ -119,33 +119,38 @@ enum Place<'a> {
     Device(&'a str),
 }
 
+/// Why a scenario's name cannot be used.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum NameError {
+    /// No name.
+    Empty,
+    /// Longer than [`NAME_MAX`], or with a character other than a letter, a digit, `_`, `-`.
+    Malformed {
+        /// The name.
+        name: String,
+    },
+    /// The name of another scenario (letter case aside).
+    Taken {
+        /// The name.
+        name: String,
+    },
+}
+
 /// Why a scenario's name cannot be used, or `None`.
-pub fn name_error(name: &str, others: &[Scenario], own: Option<usize>) -> Option<(String, String)> {
+pub fn name_error(name: &str, others: &[Scenario], own: Option<usize>) -> Option<NameError> {
     if name.is_empty() {
-        return Some(("a scenario needs a name".into(), "场景需要一个名称".into()));
+        return Some(NameError::Empty);
     }
     if name.chars().count() > NAME_MAX
         || !name
             .chars()
             .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
     {
-        return Some((
-            format!(
-                "scenario name `{name}`: use at most {NAME_MAX} letters, digits, `_` or `-` (a script line names it)"
-            ),
-            format!(
-                "场景名称 `{name}`：最多 {NAME_MAX} 个字母、数字、`_` 或 `-`（脚本行会用到它）"
-            ),
-        ));
+        return Some(NameError::Malformed { name: name.into() });
     }
     let taken = others
         .iter()
         .enumerate()
         .any(|(k, s)| Some(k) != own && s.name.eq_ignore_ascii_case(name));
-    taken.then(|| {
-        (
-            format!("scenario name `{name}` is already used; give each scenario its own"),
-            format!("场景名称 `{name}` 已被使用；请为每个场景取不同的名称"),
-        )
-    })
+    taken.then(|| NameError::Taken { name: name.into() })
 }

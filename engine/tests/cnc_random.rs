@@ -306,7 +306,9 @@ fn random_cnc_scripts_are_refused_with_a_line_or_run_without_panic() {
             }
             Err(e) => {
                 refused += 1;
-                assert!(e.line >= 1 && !e.message.is_empty());
+                assert!(e.line >= 1);
+                let message = ladder_text::script::script_error(&e, ladder_text::Lang::En);
+                assert!(!message.is_empty());
             }
         }
     }

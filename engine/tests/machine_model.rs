@@ -156,7 +156,13 @@ fn parse(text: &str, machine: Option<&MachineModel>) -> Result<Script, String> {
             project: None,
         },
     )
-    .map_err(|e| format!("{}: {}", e.line, e.message))
+    .map_err(|e| {
+        format!(
+            "{}: {}",
+            e.line,
+            ladder_text::script::script_error(&e, ladder_text::Lang::En)
+        )
+    })
 }
 
 #[test]

@@ -160,9 +160,9 @@ fn bad_scenario_lines_and_names_are_refused_with_their_place() {
         scenario("driven", &["panel \"Lube level low\" 1"]),
     ];
     let err = |text: &str| {
-        Script::parse_with(text, Profile::get(p.profile), &options(&p, NO_FILES))
-            .unwrap_err()
-            .message
+        let e =
+            Script::parse_with(text, Profile::get(p.profile), &options(&p, NO_FILES)).unwrap_err();
+        ladder_text::script::script_error(&e, ladder_text::Lang::En)
     };
     assert_eq!(
         err("scenario bad"),
@@ -187,7 +187,11 @@ fn bad_scenario_lines_and_names_are_refused_with_their_place() {
         ..options(&p, NO_FILES)
     };
     let e = Script::parse_with("scenario ok", Profile::get(p.profile), &no_project).unwrap_err();
-    assert!(e.message.contains("run the script against a .ldp"), "{e:?}");
+    assert_eq!(
+        e.reason,
+        ladder_engine::sim::ScenarioReason::NoProject.into(),
+        "{e:?}"
+    );
     // Names: unique (without case), a word a script line can carry.
     use ladder_engine::scenario::name_error;
     assert!(name_error("OK", &p.scenarios, None).is_some());

@@ -12,6 +12,7 @@ pub mod diagnostics;
 pub mod errors;
 pub mod halt;
 pub mod refusal;
+pub mod script;
 pub mod sim;
 pub mod ui;
 

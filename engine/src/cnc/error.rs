@@ -44,7 +44,7 @@ const KEY_FORMS: [&str; 13] = [
 
 /// What an integer written in a command stands for, named in the refusal of a word that is
 /// not an integer.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Quantity {
     /// The value of `cnc param`.
     ParamValue,
@@ -78,7 +78,7 @@ impl Quantity {
 ///
 /// Where a field `key` is present, `Some` is the `cnc.KEY` text the word `text` was part of
 /// (the refusal then names both), `None` a word of a `cnc` command.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum CncError {
     /// `cnc` alone.
     NoSubcommand,

@@ -189,7 +189,7 @@ idx! {
 }
 
 /// Why a parameter write was refused.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ParamError {
     /// No such parameter.
     Number,

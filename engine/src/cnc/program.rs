@@ -22,23 +22,6 @@ pub enum ProgramFileError {
     Io(String),
 }
 
-impl ProgramFileError {
-    /// The message in English (`zh` false) or Chinese, naming the path and what to do.
-    pub fn message(&self, path: &std::path::Path, zh: bool) -> String {
-        let p = path.display();
-        match (self, zh) {
-            (ProgramFileError::TooLarge(n), false) => format!(
-                "the NC program {p} is {n} bytes; programs over 16 MiB ({FILE_MAX} bytes) are refused: split it into programs called with M98"
-            ),
-            (ProgramFileError::TooLarge(n), true) => format!(
-                "NC 程序 {p} 有 {n} 字节，超过 16 MiB（{FILE_MAX} 字节）的程序不读入：请拆成用 M98 调用的子程序"
-            ),
-            (ProgramFileError::Io(e), false) => format!("cannot read the NC program {p}: {e}"),
-            (ProgramFileError::Io(e), true) => format!("无法读取 NC 程序 {p}：{e}"),
-        }
-    }
-}
-
 /// Reads a program file as a CNC reads a tape: bytes, so comments may hold any encoding
 /// (Latin-1, GBK…; bytes that are not UTF-8 become U+FFFD, which only comments may hold).
 /// A file over [`FILE_MAX`] is refused before it is read.
@@ -352,8 +335,6 @@ mod tests {
         f.set_len(FILE_MAX + 1).unwrap();
         let e = read_program_file(&big).unwrap_err();
         assert_eq!(e, ProgramFileError::TooLarge(FILE_MAX + 1));
-        assert!(e.message(&big, false).contains("16 MiB"));
-        assert!(e.message(&big, true).contains("超过 16 MiB"));
         let missing = read_program_file(&dir.path().join("none.nc")).unwrap_err();
         assert!(matches!(missing, ProgramFileError::Io(_)));
     }

@@ -1,10 +1,10 @@
 //! Splitting a script line into words: a double-quoted string is one word and may hold
 //! spaces, `;` and `#`; outside quotes `;` or `#` starts a comment.
 
-use super::{Msg, msg};
+use super::QuoteError;
 
 /// The words of one line, or why it cannot be split.
-pub fn words(line: &str) -> Result<Vec<&str>, Msg> {
+pub fn words(line: &str) -> Result<Vec<&str>, QuoteError> {
     let mut out = Vec::new();
     let mut rest = line;
     loop {
@@ -14,19 +14,11 @@ pub fn words(line: &str) -> Result<Vec<&str>, Msg> {
             ';' | '#' => break,
             '"' => {
                 let body = &rest[1..];
-                let end = body.find('"').ok_or_else(|| {
-                    msg(
-                        "a quoted string has no closing `\"`",
-                        "带引号的字符串缺少结尾的 `\"`",
-                    )
-                })?;
+                let end = body.find('"').ok_or(QuoteError::Unclosed)?;
                 out.push(&body[..end]);
                 rest = &body[end + 1..];
                 if rest.starts_with(|c: char| !c.is_whitespace() && c != ';' && c != '#') {
-                    return Err(msg(
-                        "a quoted string must be followed by a space",
-                        "带引号的字符串后面必须跟一个空格",
-                    ));
+                    return Err(QuoteError::NoSpaceAfter);
                 }
             }
             _ => {
@@ -34,7 +26,7 @@ pub fn words(line: &str) -> Result<Vec<&str>, Msg> {
                     .find(|c: char| c.is_whitespace() || c == ';' || c == '#' || c == '"')
                     .unwrap_or(rest.len());
                 if rest[end..].starts_with('"') {
-                    return Err(msg("a quote must start a word", "引号只能位于单词开头"));
+                    return Err(QuoteError::InsideWord);
                 }
                 out.push(&rest[..end]);
                 rest = &rest[end..];
@@ -46,7 +38,7 @@ pub fn words(line: &str) -> Result<Vec<&str>, Msg> {
 
 #[cfg(test)]
 mod tests {
-    use super::words;
+    use super::{QuoteError, words};
 
     #[test]
     fn quotes_keep_spaces_and_comment_marks() {
@@ -56,8 +48,11 @@ mod tests {
         );
         assert_eq!(words("set X0.0 1 # c").unwrap(), vec!["set", "X0.0", "1"]);
         assert_eq!(words(r#"cnc mdi """#).unwrap(), vec!["cnc", "mdi", ""]);
-        assert!(words(r#"cnc program "M03"#).is_err());
-        assert!(words(r#"cnc program "M03"x"#).is_err());
-        assert!(words(r#"cnc program x"M03""#).is_err());
+        assert_eq!(words(r#"cnc program "M03"#), Err(QuoteError::Unclosed));
+        assert_eq!(
+            words(r#"cnc program "M03"x"#),
+            Err(QuoteError::NoSpaceAfter)
+        );
+        assert_eq!(words(r#"cnc program x"M03""#), Err(QuoteError::InsideWord));
     }
 }

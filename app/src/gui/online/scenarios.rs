@@ -3,7 +3,7 @@
 
 use super::OnlineState;
 use crate::gui::context::Context;
-use crate::gui::i18n::{Lang, Msg};
+use crate::gui::i18n::Msg;
 use ladder_engine::machine::MachineCommand;
 use ladder_engine::sim::{Options, scenario::resolve};
 
@@ -43,16 +43,8 @@ impl OnlineState {
                 self.say_scenario(cx, Msg::ScenarioNowApplied, &name);
             }
             Err(e) => {
-                let text = match cx.settings.lang {
-                    Lang::Zh => format!(
-                        "场景 `{}` 第 {} 行：{}",
-                        scenario.name, e.line, e.message_zh
-                    ),
-                    Lang::En => format!(
-                        "scenario `{}`, line {}: {}",
-                        scenario.name, e.line, e.message
-                    ),
-                };
+                let text =
+                    ladder_text::script::broken_scenario(&scenario.name, &e, cx.settings.lang);
                 cx.output.say(text, true);
             }
         }

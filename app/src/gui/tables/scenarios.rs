@@ -59,11 +59,7 @@ fn line_errors(project: &Project, s: &Scenario, text: &str, lang: Lang) -> Vec<(
             ..s.clone()
         };
         if let Err(e) = resolve(&one, project, &options) {
-            let m = match lang {
-                Lang::Zh => e.message_zh,
-                Lang::En => e.message,
-            };
-            errors.push((k + 1, m));
+            errors.push((k + 1, ladder_text::script::script_error(&e, lang)));
         }
     }
     errors
@@ -181,15 +177,12 @@ fn editor_ui(
     // An applied scenario is released by its name: it keeps it until it is released.
     let renaming_applied = state.scenario_online.1 && draft.name.trim() != s.name;
     let name_problem = if renaming_applied {
-        Some((
-            Msg::ScenarioRenameApplied.text(Lang::En).to_string(),
-            Msg::ScenarioRenameApplied.text(Lang::Zh).to_string(),
-        ))
+        Some(Msg::ScenarioRenameApplied.text(lang).to_string())
     } else {
         name_error(draft.name.trim(), list, Some(index))
+            .map(|e| ladder_text::script::name_error(&e, lang))
     };
-    if let Some((en, zh)) = &name_problem {
-        let text = if lang == Lang::Zh { zh } else { en };
+    if let Some(text) = &name_problem {
         ui.colored_label(ui.visuals().error_fg_color, text);
     }
     let l = ui.label(Msg::ScenarioLines.text(lang));
