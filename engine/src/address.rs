@@ -51,27 +51,6 @@ pub enum AddressError {
     },
 }
 
-impl AddressError {
-    /// The same message in Chinese, with the same specifics.
-    pub fn zh(&self) -> String {
-        match self {
-            AddressError::Syntax(s) => {
-                format!("`{s}` 不是地址（应写成 X0002.1、R100、D4、DT0004 等形式）")
-            }
-            AddressError::UnknownArea(s, letters) => {
-                format!("`{s}` 中没有地址区 `{letters}`（地址区：X Y F G R A K T C DT DC D L P）")
-            }
-            AddressError::Bit(s) => format!("`{s}`：位号应为 0–7"),
-            AddressError::NoBits(s, area) => {
-                format!("`{s}`：{area} 地址没有位（只有 X Y F G R A K 有位）")
-            }
-            AddressError::Range { text, area, lo, hi } => {
-                format!("{text} 超出范围（{area}{lo}–{area}{hi}）")
-            }
-        }
-    }
-}
-
 impl Address {
     /// A byte (or word) address.
     pub const fn byte(area: Area, number: u16) -> Address {
@@ -314,7 +293,6 @@ mod tests {
     fn errors_name_the_range_and_the_fix() {
         let e = Address::parse_in("R1000", p()).unwrap_err();
         assert_eq!(e.to_string(), "R1000 is out of range (R0–R999)");
-        assert_eq!(e.zh(), "R1000 超出范围（R0–R999）");
         let e = Address::parse_in("L0", p()).unwrap_err();
         assert_eq!(e.to_string(), "L0000 is out of range (L1–L9999)");
         let e = Address::parse_in("X99999999", p()).unwrap_err();

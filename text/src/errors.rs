@@ -2,6 +2,7 @@
 //! file or a subprogram command refused.
 
 mod build;
+mod cnc;
 mod comments;
 mod coverage;
 mod io;
@@ -15,14 +16,14 @@ pub use coverage::coverage_error;
 pub use io::io_error;
 pub use print::{networks_error, pdf_error};
 pub use quoted::{
-    address_error, cnc_error, digit_group_error, expr_error, model_error, operand_refusal,
-    table_error, taken,
+    address_error, cnc_error, digit_group_error, expr_error, field_error, model_error,
+    operand_error, operand_refusal, table_error, taken,
 };
 pub use structure::{structure_error, width_error_zh};
 
 use crate::{Lang, Msg};
 use ladder_engine::file::{FileError, MAGIC, SCHEMA_VERSION};
-use ladder_engine::model::{ColumnRule, EditError, Missing, OperandError, SubError};
+use ladder_engine::model::{ColumnRule, EditError, Missing, SubError};
 
 /// Why the engine refused a ladder edit.
 pub fn edit_error(e: &EditError, lang: Lang) -> String {
@@ -58,16 +59,6 @@ fn column_zh(r: ColumnRule) -> &'static str {
     match r {
         ColumnRule::ContactsLeft => "触点和导线应放在输出列左侧",
         ColumnRule::OutputsRight => "线圈和功能指令应放在最右端的输出列",
-    }
-}
-
-/// Why the operand prompt refused its text. The engine words an operand's and an address's
-/// refusal itself, in both languages, because its diagnostics and script errors quote them;
-/// the prompt shows the same words.
-pub fn operand_error(e: &OperandError, lang: Lang) -> String {
-    match lang {
-        Lang::En => e.to_string(),
-        Lang::Zh => e.zh(),
     }
 }
 
@@ -146,7 +137,9 @@ pub fn sub_error(e: &SubError, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use ladder_engine::model::{BlockKind, NetworkId, NetworkPlace, StructureError, WidthError};
+    use ladder_engine::model::{
+        BlockKind, NetworkId, NetworkPlace, OperandError, StructureError, WidthError,
+    };
 
     /// The runs of ASCII digits in `text`.
     fn digit_runs(text: &str) -> Vec<&str> {

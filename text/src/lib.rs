@@ -11,6 +11,7 @@ pub mod cli;
 pub mod diagnostics;
 pub mod errors;
 pub mod halt;
+pub mod machine;
 pub mod refusal;
 pub mod script;
 pub mod sim;

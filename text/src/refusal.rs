@@ -55,7 +55,7 @@ fn en(r: &Refusal) -> String {
 
 fn zh(r: &Refusal) -> String {
     match r {
-        Refusal::Cnc(e) => e.zh(),
+        Refusal::Cnc(e) => crate::errors::cnc_error(e, crate::Lang::Zh),
         Refusal::ProgramBusy(state) => {
             format!("自动运行状态为 {} 时不能替换程序（请先复位）", state.name())
         }
@@ -69,7 +69,7 @@ fn zh(r: &Refusal) -> String {
             "没有运行机床模型（工程中没有设备，或以 --no-machine 运行）".into()
         }
         Refusal::NoDevice(i) => format!("没有第 {} 号设备", i + 1),
-        Refusal::Model(e) => e.zh(),
+        Refusal::Model(e) => crate::errors::model_error(e, crate::Lang::Zh),
         Refusal::Swap(SwapError::Profile { old, new }) => {
             format!("程序是为 {new} 编写的，而运行中的 PLC 是 {old}：请停止后重新运行")
         }

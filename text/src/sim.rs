@@ -29,7 +29,11 @@ pub fn report(script: &str, r: &Report, lang: Lang) -> String {
             format!("{at}: expect {probe} = {want}, got {got}（实际值与期望值不符）")
         }
         (Event::Unreadable(part, e), false) => format!("{at}: {}: {}", part.word(), e.en()),
-        (Event::Unreadable(part, e), true) => format!("{at}: {}: {}", part.word(), e.zh()),
+        (Event::Unreadable(part, e), true) => format!(
+            "{at}: {}: {}",
+            part.word(),
+            crate::errors::cnc_error(e, crate::Lang::Zh)
+        ),
     }
 }
 

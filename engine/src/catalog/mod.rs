@@ -383,8 +383,8 @@ pub fn check_digit_group(op: Op, value: i64) -> Result<(), DigitGroupError> {
 }
 
 /// Control digits an instruction does not define ([`check_digit_group`]): the rule of the
-/// instruction's digit group, in English (`Display`) and Chinese ([`DigitGroupError::zh`]);
-/// the compiler's diagnostics carry both.
+/// instruction's digit group. `Display` gives it in English; `ladder_text::errors` words it
+/// in either language for the diagnostics and the editor.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Error)]
 pub enum DigitGroupError {
     /// CTRC's FMT other than 0000, 0001, 0010, 0011.
@@ -405,21 +405,6 @@ pub enum DigitGroupError {
         /// The value written.
         value: i64,
     },
-}
-
-impl DigitGroupError {
-    /// The rule in Chinese, saying what the English says.
-    pub fn zh(&self) -> &'static str {
-        match self {
-            DigitGroupError::Ctrc { .. } => {
-                "CTRC 的 FMT 为 0000、0001、0010 或 0011（00ab：a = 初始值，b = 减计数）"
-            }
-            DigitGroupError::Pari { .. } => "PARI 的 OE 为 0000（偶校验）或 0001（奇校验）",
-            DigitGroupError::Xmov { .. } => {
-                "XMOV 的 FMT 为 0nnx：nn 个元素（00–99），每个元素 x = 1、2 或 4 字节"
-            }
-        }
-    }
 }
 
 /// The XMOV element width x and count nn from its FMT `0nnx` (nn of 0 or 1 is one element).

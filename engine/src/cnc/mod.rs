@@ -66,13 +66,25 @@ use program::{NcProgram, parse_mdi, parse_programs};
 use signals::{FImage, GroupInputs, Inputs};
 use spindle::Spindle;
 
-pub use error::CncError;
+pub use error::{CncError, KEY_FORMS, Quantity, SUBCOMMANDS};
 pub use modal::RunState;
+pub use params::{ParamError, Selector};
 pub use status::{CncStatus, MstStatus};
 
 /// Whether alarm `n` is a PLC alarm (1000–1999): the A area sets and clears it, not reset.
 fn is_plc_alarm(n: u16) -> bool {
     (1000..2000).contains(&n)
+}
+
+/// The parameter numbers of the simulator's table, in order (docs/cnc.md, "Parameters").
+pub fn param_numbers() -> impl Iterator<Item = u16> {
+    params::TABLE.iter().map(|s| s.number)
+}
+
+/// The selector and the range (least, greatest) of parameter `number`; `None` for a number
+/// the table does not have.
+pub fn param_rule(number: u16) -> Option<(Selector, i64, i64)> {
+    params::spec(number).map(|s| (s.selector, s.min, s.max))
 }
 
 /// Axes the simulator can have (#8130 is 2–5).

@@ -367,49 +367,12 @@ impl Sink {
         });
     }
 
-    /// Reports at `origin` in the current network, in English and in Chinese.
-    pub fn report(
-        &mut self,
-        origin: Origin,
-        code: Code,
-        message: impl Into<String>,
-        message_zh: impl Into<String>,
-    ) {
-        self.find(
-            origin,
-            Finding::Worded {
-                code,
-                en: message.into(),
-                zh: message_zh.into(),
-            },
-        );
-    }
-
     /// Number of errors so far.
     pub fn error_count(&self) -> usize {
         self.diagnostics
             .iter()
             .filter(|d| d.severity() == Severity::Error)
             .count()
-    }
-}
-
-/// The words of a finding that still carries them, for the engine's own tests; the words of
-/// a typed finding are `ladder-text`'s.
-#[cfg(test)]
-impl Diagnostic {
-    pub(crate) fn message(&self) -> &str {
-        match &self.finding {
-            Finding::Worded { en, .. } => en,
-            typed => panic!("worded by ladder-text: {typed:?}"),
-        }
-    }
-
-    pub(crate) fn message_zh(&self) -> &str {
-        match &self.finding {
-            Finding::Worded { zh, .. } => zh,
-            typed => panic!("worded by ladder-text: {typed:?}"),
-        }
     }
 }
 

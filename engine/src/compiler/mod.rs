@@ -15,8 +15,6 @@
 //! and the pseudo-blocks a diagnostic of a table or the machine model points at
 //! ([`pseudo_blocks`]).
 
-#[cfg(test)]
-pub(crate) mod bilingual;
 pub(crate) mod check;
 pub(crate) mod cnc;
 #[cfg(test)]

@@ -107,57 +107,6 @@ pub fn expected_text(kind: OperandKind) -> &'static str {
     }
 }
 
-/// What an operand of this kind looks like, in Chinese words.
-pub fn expected_text_zh(kind: OperandKind) -> &'static str {
-    match kind {
-        OperandKind::Size => "大小 1、2 或 4",
-        OperandKind::Const => "常数",
-        OperandKind::Digits { .. } => "4 位数字组，如 0000",
-        OperandKind::Bit => "位地址，如 R0010.0",
-        OperandKind::Byte => "地址，如 R0010 或 D0004",
-        OperandKind::ConstOrByte => "整数常数或地址",
-        OperandKind::RealOrD => "实数常数或 D 地址",
-        OperandKind::BitOrByte => "位地址或字节地址",
-        OperandKind::Label => "标号，如 L0001",
-        OperandKind::Subprogram => "子程序，如 P0001",
-        OperandKind::Timer => "定时器，如 T0001",
-        OperandKind::Counter => "计数器，如 C0001",
-    }
-}
-
-impl OperandRefusal {
-    /// The refusal in Chinese, with the same specifics as its English text.
-    pub fn zh(&self) -> String {
-        match self {
-            OperandRefusal::TooMany => "该指令没有这么多操作数".into(),
-            OperandRefusal::Kind { expected, found } => {
-                format!("应为{}，实为 `{found}`", expected_text_zh(*expected))
-            }
-            OperandRefusal::WantsBit(a) => format!("应为位地址，如 R0010.0，实为 `{a}`"),
-            OperandRefusal::WantsByte(a) => {
-                format!("应为不带位的字节地址，如 R0010，实为 `{a}`")
-            }
-            OperandRefusal::Size(v) => format!("大小应为 1、2 或 4，不能是 {v}"),
-            OperandRefusal::Digits { value, binary } => format!(
-                "应写 4 位{}数字，不能是 `{value}`",
-                if *binary { "二进制" } else { "十进制" }
-            ),
-            OperandRefusal::DigitGroup(e) => e.zh().into(),
-            OperandRefusal::ConstRange { value, min, max } => {
-                format!("{value} 超出范围（{min}–{max}）")
-            }
-            OperandRefusal::ConstTooBig(v) => format!("{v} 超出范围（−2147483647–2147483647）"),
-            OperandRefusal::ReadOnly { address, .. } => {
-                format!("{address} 不能写入：X 和 F 是输入，对程序只读")
-            }
-            OperandRefusal::Area { address, allowed } => {
-                format!("此处不允许使用 {address}；请用 {}", allowed.describe())
-            }
-            OperandRefusal::Range(e) => e.zh(),
-        }
-    }
-}
-
 impl fmt::Display for OperandRefusal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

@@ -91,61 +91,6 @@ impl ModelError {
             ModelError::TwoWriters { .. } => "M005",
         }
     }
-
-    /// The message in Chinese.
-    pub fn zh(&self) -> String {
-        match self {
-            ModelError::Name(n) => format!(
-                "设备名 `{n}` 无效：请用字母开头、由字母数字和 _ 组成、不像地址的名称（最多 24 个字符）"
-            ),
-            ModelError::NameTwice { name, first } => {
-                format!(
-                    "设备名 `{name}` 已被设备 {} 使用：请另起一个名称",
-                    first + 1
-                )
-            }
-            ModelError::Address {
-                device,
-                field,
-                error,
-            } => format!("设备 `{device}` 的 {field}：{}", error.zh()),
-            ModelError::NotInput {
-                device,
-                field,
-                address,
-            } => format!(
-                "设备 `{device}` 的 {field}：{address} 不是输入；设备只写 X 位（PLC 的输入）"
-            ),
-            ModelError::NotBit {
-                device,
-                field,
-                address,
-            } => format!(
-                "设备 `{device}` 的 {field}：{address} 是字节，应写位地址（例如 {address}.0）"
-            ),
-            ModelError::Parameter {
-                device,
-                field,
-                limit,
-            } => format!("设备 `{device}` 的 {field} 不可能：允许 {limit}"),
-            ModelError::Expression {
-                device,
-                field,
-                error,
-            } => format!("设备 `{device}` 的 {field}：{}", error.zh()),
-            ModelError::Start { axis } => format!(
-                "第 {} 轴的上电位置（start_mm）不可能：应为 −100000…100000 mm，且最多 5 个轴",
-                axis + 1
-            ),
-            ModelError::TwoWriters {
-                device,
-                address,
-                other,
-            } => format!(
-                "设备 `{device}` 和设备 `{other}` 都写 {address}：一个输入只能由一个设备驱动，请删去其中一个绑定"
-            ),
-        }
-    }
 }
 
 impl fmt::Display for ModelError {

@@ -97,40 +97,6 @@ impl fmt::Display for ExprError {
     }
 }
 
-impl ExprError {
-    /// The same message in Chinese.
-    pub fn zh(&self) -> String {
-        match self {
-            ExprError::Unexpected { at, found } if found.is_empty() => {
-                format!("条件在第 {at} 个字符处结束，此处应有地址、`设备名.状态`、0、1、`!` 或 `(`")
-            }
-            ExprError::Unexpected { at, found } => format!(
-                "第 {at} 个字符处的 `{found}` 不应出现在此（例如写 Y0000.6 & !X0001.6、chuck.advanced | door.moving）"
-            ),
-            ExprError::Unclosed => "有 `(` 未闭合：请补上 `)`".to_string(),
-            ExprError::Address(e) => e.zh(),
-            ExprError::NotBit(a) => format!("{a} 是字节：条件只读位（例如 {a}.0）"),
-            ExprError::UnknownDevice(d) => {
-                format!("没有名为 `{d}` 的设备：请使用本机床模型中的设备名")
-            }
-            ExprError::UnknownState {
-                device,
-                state,
-                states,
-            } => format!(
-                "设备 `{device}` 没有状态 `{state}`；它的状态有：{}",
-                states.join("、")
-            ),
-            ExprError::StateInFollower(s) => {
-                format!("`{s}`：跟随器只能读地址；要读设备状态请改用表达式设备")
-            }
-            ExprError::TooDeep => {
-                "条件嵌套过深（最多 60 层括号、64 个待算值）：请拆到表达式设备中".to_string()
-            }
-        }
-    }
-}
-
 /// What a condition may name besides addresses.
 pub struct Names<'a> {
     /// Each device's name and states, by index.

@@ -1,5 +1,5 @@
 //! A device's parameters as a list of named fields, for the Machine page's form: each field's
-//! text, what it holds, its label in both languages, and the one parser that takes a typed
+//! text, what it holds, and the one parser that takes a typed
 //! text into the device or says why not. One list per kind (`slots`) drives reading and
 //! writing, so the form and the model cannot disagree.
 
@@ -39,17 +39,34 @@ pub struct Field {
     pub text: String,
 }
 
-/// Why a typed text was refused, in both languages.
+/// Why a typed text was refused (`ladder_text::errors::field_error` words it).
 #[derive(Clone, Debug, PartialEq)]
-pub struct FieldError {
-    /// English.
-    pub en: String,
-    /// Chinese.
-    pub zh: String,
-}
-
-fn err(en: String, zh: String) -> FieldError {
-    FieldError { en, zh }
+pub enum FieldError {
+    /// The device has no field of this name.
+    NoField(String),
+    /// The condition does not read.
+    Condition(super::expr::ExprError),
+    /// Not `true` or `false`.
+    NotFlag(String),
+    /// Not a length in mm within ±100000.
+    NotLength(String),
+    /// Not one of the station-code encodings.
+    NotEncoding(String),
+    /// Not a whole number within `lo..=hi`.
+    NotNumber {
+        /// The text typed.
+        text: String,
+        /// The least number.
+        lo: u64,
+        /// The greatest number.
+        hi: u64,
+    },
+    /// The address does not read or is beyond the controller's range.
+    Address(crate::address::AddressError),
+    /// A byte address where a bit is needed.
+    Byte(Address),
+    /// Not an input (X) where the device writes one.
+    NotInput(Address),
 }
 
 enum Slot<'a> {
@@ -227,10 +244,7 @@ pub fn set(
             match locks.iter().position(|(n, _)| *n == name) {
                 Some(k) => locks.swap_remove(k).1,
                 None => {
-                    return Err(err(
-                        format!("no field `{name}`"),
-                        format!("没有字段 `{name}`"),
-                    ));
+                    return Err(FieldError::NoField(name.to_string()));
                 }
             }
         }
@@ -251,7 +265,7 @@ pub fn set(
             };
             match super::expr::parse(text, profile, &names) {
                 Ok(_) | Err(super::expr::ExprError::UnknownDevice(_)) => *t = text.to_string(),
-                Err(e) => return Err(err(e.to_string(), e.zh())),
+                Err(e) => return Err(FieldError::Condition(e)),
             }
         }
         Slot::U32(v, lo, hi) => *v = number(text, u64::from(lo), u64::from(hi))? as u32,
@@ -261,10 +275,7 @@ pub fn set(
                 "true" | "1" | "yes" | "是" => true,
                 "false" | "0" | "no" | "否" => false,
                 _ => {
-                    return Err(err(
-                        format!("`{text}`: write true or false"),
-                        format!("`{text}`：请写 true 或 false"),
-                    ));
+                    return Err(FieldError::NotFlag(text.to_string()));
                 }
             }
         }
@@ -273,23 +284,13 @@ pub fn set(
                 .parse::<f64>()
                 .ok()
                 .filter(|v| v.is_finite() && v.abs() <= 100_000.0)
-                .ok_or_else(|| {
-                    err(
-                        format!("`{text}` is not a length in mm (−100000…100000)"),
-                        format!("`{text}` 不是以 mm 计的长度（−100000…100000）"),
-                    )
-                })?
+                .ok_or_else(|| FieldError::NotLength(text.to_string()))?
         }
         Slot::Enc(e) => {
             *e = Encoding::ALL
                 .into_iter()
                 .find(|e| format!("{e:?}").eq_ignore_ascii_case(text))
-                .ok_or_else(|| {
-                    err(
-                        format!("`{text}`: the encoding is Binary, Bcd, OneHot or Gray"),
-                        format!("`{text}`：编码应为 Binary、Bcd、OneHot 或 Gray"),
-                    )
-                })?
+                .ok_or_else(|| FieldError::NotEncoding(text.to_string()))?
         }
         Slot::Lock(l) => {
             *l = if text.is_empty() {
@@ -315,83 +316,20 @@ fn number(text: &str, lo: u64, hi: u64) -> Result<u64, FieldError> {
     text.parse::<u64>()
         .ok()
         .filter(|v| (lo..=hi).contains(v))
-        .ok_or_else(|| {
-            err(
-                format!("`{text}`: write a whole number {lo}…{hi}"),
-                format!("`{text}`：请写 {lo}…{hi} 的整数"),
-            )
+        .ok_or_else(|| FieldError::NotNumber {
+            text: text.to_string(),
+            lo,
+            hi,
         })
 }
 
 fn address(text: &str, input: bool, profile: &Profile) -> Result<Address, FieldError> {
-    let a = Address::parse_in(text, profile).map_err(|e| err(e.to_string(), e.zh()))?;
+    let a = Address::parse_in(text, profile).map_err(FieldError::Address)?;
     if a.bit.is_none() {
-        return Err(err(
-            format!("{a} is a byte; write a bit address such as {a}.0"),
-            format!("{a} 是字节，请写位地址（例如 {a}.0）"),
-        ));
+        return Err(FieldError::Byte(a));
     }
     if input && a.area != Area::X {
-        return Err(err(
-            format!("{a} is not an input; a device writes X bits"),
-            format!("{a} 不是输入；设备只写 X 位"),
-        ));
+        return Err(FieldError::NotInput(a));
     }
     Ok(a)
-}
-
-/// A field's label: (Chinese, English).
-pub fn label(name: &str) -> (&'static str, &'static str) {
-    match name {
-        "input" => ("输入", "input"),
-        "when" => ("条件", "when"),
-        "on_ms" => ("接通延时 ms", "on delay, ms"),
-        "off_ms" => ("断开延时 ms", "off delay, ms"),
-        "advance" => ("伸出（夹紧）输出", "advance output"),
-        "retract" => ("缩回（松开）输出", "retract output"),
-        "travel_ms" => ("行程时间 ms", "travel time, ms"),
-        "at_advanced" => ("伸出到位开关", "advanced switch"),
-        "at_retracted" => ("缩回到位开关", "retracted switch"),
-        "moving" => ("行程中信号", "moving signal"),
-        "start_advanced" => ("上电时伸出", "starts advanced"),
-        "stations" => ("刀位数", "stations"),
-        "cw" => ("正转输出", "CW output"),
-        "ccw" => ("反转输出", "CCW output"),
-        "direction" => ("方向输出（接通为反转）", "direction output (on: CCW)"),
-        "ccw_locks" => ("反转锁紧（单向刀架）", "CCW locks (one-way post)"),
-        "station_ms" => ("每刀位时间 ms", "time per station, ms"),
-        "window_pct" => ("刀位信号宽度 %", "sensor window, %"),
-        "code.first" => ("刀位信号首位", "station code, first bit"),
-        "code.bits" => ("刀位信号位数", "station code, bits"),
-        "code.encoding" => ("刀位编码", "station code, encoding"),
-        "code.active_low" => ("低电平有效", "active low"),
-        "in_position" => ("到位信号", "in-position signal"),
-        "start_station" => ("上电刀位", "station at power-on"),
-        "lock.unlock" => ("松开输出（锁紧级）", "unlock output (lock stage)"),
-        "lock.ms" => ("松开/锁紧时间 ms", "unlock/lock time, ms"),
-        "lock.unlocked" => ("松开到位开关", "unlocked switch"),
-        "lock.locked" => ("锁紧到位开关", "locked switch"),
-        "axis" => ("轴（0 = X）", "axis (0 = X)"),
-        "from_mm" => ("范围起点 mm", "range from, mm"),
-        "to_mm" => ("范围终点 mm", "range to, mm"),
-        "active_low" => ("范围内为 0（常闭）", "0 inside (normally closed)"),
-        "run" => ("运转条件", "runs while"),
-        "arrival" => ("速度到达信号", "speed-arrival input"),
-        "zero" => ("零速信号", "zero-speed input"),
-        "ramp_ms" => ("加速时间 ms", "ramp time, ms"),
-        "full_rpm" => ("加速时间对应转速", "rpm of the ramp time"),
-        "tolerance_pct" => ("到达允差 %", "arrival tolerance, %"),
-        "zero_rpm" => ("零速转速", "zero speed, rpm"),
-        "pump" => ("泵输出", "pump output"),
-        "pressure" => ("压力开关", "pressure switch"),
-        "build_ms" => ("建压时间 ms", "pressure build time, ms"),
-        "decay_ms" => ("泄压时间 ms", "pressure decay time, ms"),
-        "level_low" => ("油位低开关", "level-low switch"),
-        "operations" => ("油位低前的泵启动次数", "pump starts until level low"),
-        "period_ms" => ("周期 ms", "period, ms"),
-        "enable" => ("使能条件", "enabled while"),
-        "source" => ("计数条件", "counts edges of"),
-        "count" => ("计数值", "count"),
-        _ => ("", ""),
-    }
 }

@@ -41,20 +41,6 @@ pub enum OperandError {
     Unrecognised(String),
 }
 
-impl OperandError {
-    /// The same message in Chinese, with the same specifics.
-    pub fn zh(&self) -> String {
-        match self {
-            OperandError::Empty => "缺少操作数".into(),
-            OperandError::Number(s) => {
-                format!("`{s}` 不是数字（应写成 12、-5、0x1F 或 1.5 等形式）")
-            }
-            OperandError::Address(e) => e.zh(),
-            OperandError::Unrecognised(s) => format!("`{s}` 既不是地址、常数，也不是符号名"),
-        }
-    }
-}
-
 /// Whether `name` is a well-formed symbol name: letters, digits, `_` and Chinese characters,
 /// not starting with a digit, at most 32 characters.
 pub fn is_symbol_name(name: &str) -> bool {

@@ -24,10 +24,6 @@ pub fn message(d: &Diagnostic, lang: Lang) -> String {
 /// What a finding says, in `lang`.
 pub fn finding(f: &Finding, lang: Lang) -> String {
     match f {
-        Finding::Worded { en, zh, .. } => match lang {
-            Lang::En => en.clone(),
-            Lang::Zh => zh.clone(),
-        },
         Finding::Check(f) => check::text(f, lang),
         Finding::Table(f) => tables::text(f, lang),
         Finding::Lower(f) => lower::text(f, lang),

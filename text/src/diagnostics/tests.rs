@@ -1,7 +1,19 @@
 use super::*;
-use ladder_engine::compiler::Code;
+use ladder_engine::address::Address;
+use ladder_engine::compiler::{CheckFinding, SignalFinding};
 
-fn diagnostic(block_label: &str, network: usize, origin: Origin, code: Code) -> Diagnostic {
+/// A diagnostic at a place, of an undefined symbol (an error) or, with `warning`, of an alarm
+/// bit without a message (W017).
+fn diagnostic(block_label: &str, network: usize, origin: Origin, warning: bool) -> Diagnostic {
+    let finding = if warning {
+        Finding::Signal(SignalFinding::AlarmNoMessage {
+            address: Address::parse("A0000.2").unwrap(),
+        })
+    } else {
+        Finding::Check(CheckFinding::UndefinedSymbol {
+            name: "NOWHERE".into(),
+        })
+    };
     Diagnostic {
         location: Location {
             block: 1,
@@ -9,38 +21,39 @@ fn diagnostic(block_label: &str, network: usize, origin: Origin, code: Code) -> 
             network,
             origin,
         },
-        code,
-        finding: Finding::Worded {
-            code,
-            en: "undefined symbol `NOWHERE`".into(),
-            zh: "符号 `NOWHERE` 未定义".into(),
-        },
+        code: finding.code(),
+        finding,
     }
 }
+
+const EN: &str = "undefined symbol `NOWHERE`: define it in the symbol table or write the address";
+const ZH: &str = "符号 `NOWHERE` 未定义：请在符号表中定义，或直接写地址";
 
 #[test]
 fn the_chinese_rendering_names_the_place_and_keeps_the_specifics() {
     let cell = Origin::Cell { row: 0, col: 1 };
-    let d = diagnostic("LEVEL2", 2, cell, Code::L020UndefinedSymbol);
+    let d = diagnostic("LEVEL2", 2, cell, false);
     assert_eq!(
         shown(&d, "err.ldp", Lang::Zh),
-        "err.ldp 二级程序 网络 3 行 1 列 2：错误：[L020] 符号 `NOWHERE` 未定义"
+        format!("err.ldp 二级程序 网络 3 行 1 列 2：错误：[L020] {ZH}")
     );
-    let w = diagnostic("P0001", 0, Origin::None, Code::W001CoilTwice);
-    assert_eq!(
-        shown(&w, "a", Lang::Zh),
-        "a 子程序 P0001 网络 1：警告：[W001] 符号 `NOWHERE` 未定义"
+    let w = diagnostic("P0001", 0, Origin::None, true);
+    assert!(
+        shown(&w, "a", Lang::Zh)
+            .starts_with("a 子程序 P0001 网络 1：警告：[W017] 此处置位 A0000.2"),
+        "{}",
+        shown(&w, "a", Lang::Zh)
     );
-    let t = diagnostic("DATA", 1, cell, Code::T004DataValue);
+    let t = diagnostic("DATA", 1, cell, false);
     assert!(shown(&t, "a", Lang::Zh).starts_with("a 数据表 DT 行 1 列 2："));
-    let il = diagnostic("LEVEL1", 0, Origin::Line(5), Code::L012Syntax);
+    let il = diagnostic("LEVEL1", 0, Origin::Line(5), false);
     assert_eq!(
         shown(&il, "a.il", Lang::Zh),
-        "a.il 第 5 行：错误：[L012] 符号 `NOWHERE` 未定义"
+        format!("a.il 第 5 行：错误：[L020] {ZH}")
     );
     assert_eq!(
         render(&d, "err.ldp", Lang::En),
-        "err.ldp:LEVEL2:3:1:2: error: undefined symbol `NOWHERE` [L020]"
+        format!("err.ldp:LEVEL2:3:1:2: error: {EN} [L020]")
     );
     assert_eq!(
         shown(&d, "err.ldp", Lang::En),
@@ -48,18 +61,20 @@ fn the_chinese_rendering_names_the_place_and_keeps_the_specifics() {
     );
     assert_eq!(
         render(&d, "err.ldp", Lang::Zh),
-        "err.ldp:LEVEL2:3:1:2: error: 符号 `NOWHERE` 未定义 [L020]"
+        format!("err.ldp:LEVEL2:3:1:2: error: {ZH} [L020]")
     );
-    assert_eq!(
-        render(&w, "a", Lang::Zh),
-        "a:P0001:1:0:0: warning: 符号 `NOWHERE` 未定义 [W001]"
+    assert!(
+        render(&w, "a", Lang::Zh).starts_with("a:P0001:1:0:0: warning: 此处置位 A0000.2"),
+        "{}",
+        render(&w, "a", Lang::Zh)
     );
+    assert!(render(&w, "a", Lang::Zh).ends_with(" [W017]"));
     assert_eq!(
         render(&il, "a.il", Lang::Zh),
-        "a.il:5: error: 符号 `NOWHERE` 未定义 [L012]"
+        format!("a.il:5: error: {ZH} [L020]")
     );
-    assert_eq!(message(&d, Lang::Zh), "符号 `NOWHERE` 未定义");
-    assert_eq!(message(&d, Lang::En), "undefined symbol `NOWHERE`");
+    assert_eq!(message(&d, Lang::Zh), ZH);
+    assert_eq!(message(&d, Lang::En), EN);
 }
 
 #[test]

@@ -16,7 +16,7 @@ pub fn build_error(e: &LowerError, lang: Lang) -> String {
             }
             LowerError::Unresolved(detail) => format!("程序无法运行：{detail}"),
             LowerError::Code(c) => format!("代码无效：{}", code_error(c, lang)),
-            LowerError::Model(m) => m.zh(),
+            LowerError::Model(m) => super::model_error(m, Lang::Zh),
         },
     }
 }
@@ -113,6 +113,9 @@ mod tests {
         );
         let m = ModelError::Name("1x".into());
         assert_eq!(LowerError::Model(m.clone()).to_string(), m.to_string());
-        assert_eq!(build_error(&LowerError::Model(m.clone()), Lang::Zh), m.zh());
+        assert_eq!(
+            build_error(&LowerError::Model(m.clone()), Lang::Zh),
+            super::super::model_error(&m, Lang::Zh)
+        );
     }
 }

@@ -69,11 +69,19 @@ fn address(text: &str) -> Address {
 
 /// One example or more of every reason.
 fn examples() -> Vec<ScriptReason> {
-    use DeviceReason as D;
-    use ScenarioReason as S;
+    let mut examples = script_examples();
+    examples.extend(device_and_scenario_examples());
+    let mut seen = [false; VARIANTS];
+    examples.iter().for_each(|r| seen[slot(r)] = true);
+    assert_eq!(seen, [true; VARIANTS], "a reason without an example");
+    examples
+}
+
+/// The reasons of the script's own lines.
+fn script_examples() -> Vec<ScriptReason> {
     use ScriptReason as R;
     let text = |t: &str| t.to_string();
-    let mut examples = vec![
+    vec![
         R::Quote(QuoteError::Unclosed),
         R::Quote(QuoteError::NoSpaceAfter),
         R::Quote(QuoteError::InsideWord),
@@ -133,6 +141,16 @@ fn examples() -> Vec<ScriptReason> {
             most: 100_000_000,
         },
         R::Division { text: text("0") },
+    ]
+}
+
+/// The reasons of `device` and `scenario` lines.
+fn device_and_scenario_examples() -> Vec<ScriptReason> {
+    use DeviceReason as D;
+    use ScenarioReason as S;
+    use ScriptReason as R;
+    let text = |t: &str| t.to_string();
+    let mut examples = vec![
         D::NoModel {
             what: text("device"),
         }
@@ -216,9 +234,6 @@ fn examples() -> Vec<ScriptReason> {
             .into(),
         );
     }
-    let mut seen = [false; VARIANTS];
-    examples.iter().for_each(|r| seen[slot(r)] = true);
-    assert_eq!(seen, [true; VARIANTS], "a reason without an example");
     examples
 }
 

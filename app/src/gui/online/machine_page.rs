@@ -44,10 +44,7 @@ fn new_error(
         .into_iter()
         .map(|(_, e)| e)
         .find(|e| !old.contains(&e.to_string()))
-        .map(|e| match lang {
-            Lang::Zh => e.zh(),
-            Lang::En => e.to_string(),
-        })
+        .map(|e| ladder_text::errors::model_error(&e, lang))
 }
 
 /// A device being edited.
@@ -514,8 +511,9 @@ fn form_ui(
                 .labelled_by(l.id);
             ui.end_row();
             for (k, (field, text, error)) in draft.texts.iter_mut().enumerate() {
-                let (lz, le) = fields::label(field.name);
-                let label = ui.label(if zh { lz } else { le }).on_hover_text(field.name);
+                let lang = if zh { Lang::Zh } else { Lang::En };
+                let title = ladder_text::machine::field_label(field.name, lang);
+                let label = ui.label(title).on_hover_text(field.name);
                 ui.vertical(|ui| {
                     let edited = match field.kind {
                         FieldKind::Flag => {
@@ -560,7 +558,8 @@ fn form_ui(
                         changed = Some(k);
                     }
                     if let Some(e) = error {
-                        ui.colored_label(theme::ERROR, if zh { &e.zh } else { &e.en });
+                        let lang = if zh { Lang::Zh } else { Lang::En };
+                        ui.colored_label(theme::ERROR, ladder_text::errors::field_error(e, lang));
                     }
                 });
                 ui.end_row();

@@ -50,10 +50,15 @@ impl WatchError {
                 format!("`{n}`: {e}, and no symbol has this name")
             }
             (WatchError::Unknown(n, e), true) => {
-                format!("`{n}`：{}，也没有此名称的符号", e.zh())
+                format!(
+                    "`{n}`：{}，也没有此名称的符号",
+                    ladder_text::errors::address_error(e, Lang::Zh)
+                )
             }
             (WatchError::Range(n, e), false) => format!("`{n}`: {e}"),
-            (WatchError::Range(n, e), true) => format!("`{n}`：{}", e.zh()),
+            (WatchError::Range(n, e), true) => {
+                format!("`{n}`：{}", ladder_text::errors::address_error(e, Lang::Zh))
+            }
             (WatchError::BitWidth(t), false) => format!("`{t}`: a bit address takes no width"),
             (WatchError::BitWidth(t), true) => format!("`{t}`：位地址不带宽度"),
         }

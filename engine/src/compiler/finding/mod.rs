@@ -24,15 +24,6 @@ use super::Code;
 /// What a diagnostic found, by the part of the compiler that found it.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Finding {
-    /// A finding still carrying its own words, in English and Chinese.
-    Worded {
-        /// Which check.
-        code: Code,
-        /// The English.
-        en: String,
-        /// The Chinese.
-        zh: String,
-    },
     /// Found by the program-wide checks.
     Check(CheckFinding),
     /// Found by the tables.
@@ -53,7 +44,6 @@ impl Finding {
     /// The diagnostic code of the finding.
     pub fn code(&self) -> Code {
         match self {
-            Finding::Worded { code, .. } => *code,
             Finding::Check(f) => f.code(),
             Finding::Table(f) => f.code(),
             Finding::Lower(f) => f.code(),

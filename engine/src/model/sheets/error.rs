@@ -42,26 +42,8 @@ impl fmt::Display for Taken {
     }
 }
 
-impl Taken {
-    /// Where, in Chinese: `IO 第 3 行`, `数据表 DT 第 2 行`, `程序块符号 P0001`.
-    pub fn zh(&self) -> String {
-        match self {
-            Taken::Symbols { table, row } => format!("{table} 第 {} 行", row + 1),
-            Taken::Data { sheet, row } => {
-                format!(
-                    "数据表 {} 第 {} 行",
-                    sheet.data_name().unwrap_or("D"),
-                    row + 1
-                )
-            }
-            Taken::Row(row) => format!("第 {} 行", row + 1),
-            Taken::Block(p) => format!("{BLOCK_SYMBOLS} {p}"),
-        }
-    }
-}
-
 /// Why a table refuses what was typed into a cell, a row operation or a password change.
-/// The texts are English ([`TableError::zh`] gives them in Chinese).
+/// `Display` gives it in English; `ladder_text::errors::table_error` in either language.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, Error)]
 pub enum TableError {
     /// The key cell of an existing row was emptied.
@@ -173,56 +155,4 @@ pub enum TableError {
     /// The new password and its confirmation differ.
     #[error("the two passwords differ")]
     PasswordMismatch,
-}
-
-impl TableError {
-    /// The same message in Chinese, with the same specifics.
-    pub fn zh(&self) -> String {
-        match self {
-            TableError::AddressEmpty => "必须填写地址（要删除该行，请用“删除行”）".into(),
-            TableError::Address(e) => e.zh(),
-            TableError::AreaNotHere { address, allowed } => {
-                format!("{address}：此处只允许这些地址区：{}", allowed.describe())
-            }
-            TableError::AddressTwice { address, at } => {
-                format!("{address}：地址已在 {} 中列出", at.zh())
-            }
-            TableError::SymbolName { name } => format!(
-                "`{name}`：符号由字母、数字、`_` 和汉字组成，不以数字开头，最多 32 个字符，且不能是地址"
-            ),
-            TableError::SymbolTwice { name, at } => {
-                format!("`{name}`：符号已存在：{}", at.zh())
-            }
-            TableError::SymbolElsewhere { name, address } => {
-                format!("`{name}`：该符号已代表 {address}")
-            }
-            TableError::CommentTooLong { bytes, max } => {
-                format!("注释最多 {max} 字节，现为 {bytes} 字节")
-            }
-            TableError::NotInteger { text } => {
-                format!("`{text}`：请输入 -2147483647 到 2147483647 之间的整数")
-            }
-            TableError::NotReal { text } => format!("`{text}`：请输入数字"),
-            TableError::AlarmRange { text } => format!(
-                "`{text}`：报警号为 {}–{}",
-                super::ALARM_NUMBERS.start(),
-                super::ALARM_NUMBERS.end()
-            ),
-            TableError::AlarmTwice { number, by } => {
-                format!("{number}：报警号已被 {by} 使用")
-            }
-            TableError::MCodeRange { text } => format!(
-                "`{text}`：M 代码为 {}–{}",
-                super::M_CODES.start(),
-                super::M_CODES.end()
-            ),
-            TableError::MCodeTwice { code, row } => {
-                format!("M{code:02}：该 M 代码已列出（第 {} 行）", row + 1)
-            }
-            TableError::NoFreeKey { .. } => "已没有可插入的空闲地址".into(),
-            TableError::PasswordWrong => "当前密码错误".into(),
-            TableError::PasswordEmpty => "密码为空".into(),
-            TableError::PasswordMismatch => "两次输入的密码不一致".into(),
-        }
-    }
 }

@@ -185,10 +185,7 @@ fn refusal(op: Op, operands: &[Operand], i: usize, profile: &Profile, lang: Lang
         OperandRefusal::ReadOnly { address, allowed } if allowed.contains(address.area) => {
             Msg::FnReadOnly.text(lang).into()
         }
-        OperandRefusal::DigitGroup(why) => match lang {
-            Lang::Zh => why.zh().into(),
-            Lang::En => why.to_string(),
-        },
+        OperandRefusal::DigitGroup(why) => ladder_text::errors::digit_group_error(&why, lang),
         OperandRefusal::Range(e) => crate::gui::tables::address_error(&e, profile, lang),
         OperandRefusal::ReadOnly { .. }
         | OperandRefusal::Area { .. }
