@@ -366,3 +366,7 @@ fn expected_text_zh(kind: OperandKind) -> &'static str {
         OperandKind::Counter => "计数器，如 C0001",
     }
 }
+
+#[cfg(test)]
+#[path = "quoted_tests.rs"]
+mod tests;
