@@ -176,7 +176,7 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
         g.error_marks
     );
     assert!(
-        h.query_by_label_contains("1 errors, 0 warnings (F12)")
+        h.query_by_label_contains("1 error, 0 warnings (F12)")
             .is_some(),
         "the status bar counts it"
     );
@@ -198,7 +198,7 @@ fn a_compile_error_is_marked_on_its_element_and_f12_goes_to_it() {
             .is_empty()
     );
     assert!(
-        h.query_by_label_contains("1 errors, 0 warnings (F12)")
+        h.query_by_label_contains("1 error, 0 warnings (F12)")
             .is_none()
     );
 }

@@ -163,8 +163,6 @@ messages! {
     PropertiesNoAddress => "光标处不是带地址的触点或线圈", "The cursor is not on a contact or coil with an address";
     PreviousError => "上一个错误", "Previous error";
     NoMarks => "上次编译没有指向梯形图单元的错误或警告", "The last compile found no error or warning in a ladder cell";
-    ErrorsInDiagram => "错误", "errors";
-    WarningsInDiagram => "警告", "warnings";
     Language => "语言", "Language";
     Chinese => "中文", "中文 (Chinese)";
     English => "English (英文)", "English";
@@ -232,8 +230,6 @@ messages! {
     NoProject => "没有打开的工程", "No project open";
     Modified => "已修改", "modified";
     Untitled => "未命名", "untitled";
-    Errors => "错误", "errors";
-    Warnings => "警告", "warnings";
     OpenFailed => "无法打开", "Cannot open";
     CompileClean => "编译完成，没有错误", "Compiled without errors";
     Operand => "参数", "Operand";

@@ -51,13 +51,7 @@ pub fn compile(cx: &mut Context) {
             Msg::StepsUnit.text(lang)
         )
     } else {
-        format!(
-            "{} {}, {} {}",
-            compiled.errors(),
-            Msg::Errors.text(lang),
-            compiled.warnings(),
-            Msg::Warnings.text(lang)
-        )
+        ladder_text::cli::Counts::of(compiled).text(lang)
     };
     lines.push(OutputLine {
         text: summary,
@@ -105,11 +99,8 @@ pub fn status_ui(ui: &mut egui::Ui, doc: &Document, cursor: CellRef, lang: Lang)
     } else {
         theme::CAUTION
     };
-    let text = format!(
-        "⚠ {errors} {}, {warnings} {} (F12)",
-        Msg::ErrorsInDiagram.text(lang),
-        Msg::WarningsInDiagram.text(lang)
-    );
+    let counts = ladder_text::cli::Counts { errors, warnings };
+    let text = format!("⚠ {} (F12)", counts.text(lang));
     ui.colored_label(color, text).on_hover_ui(|ui| {
         for (_, d) in marks.iter().take(20) {
             ui.label(render(d));

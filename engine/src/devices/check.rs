@@ -2,7 +2,7 @@
 //! parameter, a condition that does not read, two devices writing one input. `check`
 //! reports each as a diagnostic (M001–M005); a plant is built only from a model without them.
 
-use super::error::ModelError;
+use super::error::{Limit, ModelError};
 use super::model::{DeviceKind, MachineModel};
 use crate::address::{Address, Area};
 use crate::cnc::AXES;
@@ -144,57 +144,61 @@ fn address(a: Address, profile: &Profile, input: bool) -> Result<(), Wrong> {
     Ok(())
 }
 
-/// The first impossible parameter: its field and the rule it breaks (English, as the
-/// field's limits are written in docs/machine.md).
-fn parameter(kind: &DeviceKind) -> Option<(&'static str, &'static str)> {
+/// The first impossible parameter: its field and the rule it breaks.
+fn parameter(kind: &DeviceKind) -> Option<(&'static str, Limit)> {
     match kind {
-        DeviceKind::Actuator(a) if a.travel_ms == 0 => Some(("travel_ms", "1…600000")),
-        DeviceKind::Actuator(a) if a.travel_ms > 600_000 => Some(("travel_ms", "1…600000")),
-        DeviceKind::Turret(t) if !(2..=32).contains(&t.stations) => Some(("stations", "2…32")),
+        DeviceKind::Actuator(a) if a.travel_ms == 0 => {
+            Some(("travel_ms", Limit::Range(1, 600_000)))
+        }
+        DeviceKind::Actuator(a) if a.travel_ms > 600_000 => {
+            Some(("travel_ms", Limit::Range(1, 600_000)))
+        }
+        DeviceKind::Turret(t) if !(2..=32).contains(&t.stations) => {
+            Some(("stations", Limit::Range(2, 32)))
+        }
         DeviceKind::Turret(t) if t.start_station == 0 || t.start_station > t.stations => {
-            Some(("start_station", "1…stations"))
+            Some(("start_station", Limit::Station))
         }
         DeviceKind::Turret(t)
             if u32::from(t.code.bits) < t.code.encoding.bits_for(u32::from(t.stations))
                 || t.code.bits > 32 =>
         {
-            Some((
-                "code.bits",
-                "enough bits for every station's code, at most 32",
-            ))
+            Some(("code.bits", Limit::CodeBits))
         }
         DeviceKind::Turret(t) if t.station_ms == 0 || t.station_ms > 600_000 => {
-            Some(("station_ms", "1…600000"))
+            Some(("station_ms", Limit::Range(1, 600_000)))
         }
         DeviceKind::Turret(t) if t.window_pct == 0 || t.window_pct > 100 => {
-            Some(("window_pct", "1…100"))
+            Some(("window_pct", Limit::Range(1, 100)))
         }
         // A window shorter than a tick could be stepped over between two samples.
-        DeviceKind::Turret(t) if u64::from(t.station_ms) * u64::from(t.window_pct) < 800 => Some((
-            "window_pct",
-            "a window of at least one tick: station_ms × window_pct ≥ 800",
-        )),
-        DeviceKind::Turret(t) if t.lock.as_ref().is_some_and(|l| l.ms == 0) => {
-            Some(("lock.ms", "1…600000"))
+        DeviceKind::Turret(t) if u64::from(t.station_ms) * u64::from(t.window_pct) < 800 => {
+            Some(("window_pct", Limit::WindowTick))
         }
-        DeviceKind::Turret(t) if t.ccw.is_some() && t.direction.is_some() => Some((
-            "direction",
-            "either a CCW output or a direction output, not both",
-        )),
-        DeviceKind::PositionSwitch(p) if usize::from(p.axis) >= AXES => Some(("axis", "0…4")),
+        DeviceKind::Turret(t) if t.lock.as_ref().is_some_and(|l| l.ms == 0) => {
+            Some(("lock.ms", Limit::Range(1, 600_000)))
+        }
+        DeviceKind::Turret(t) if t.ccw.is_some() && t.direction.is_some() => {
+            Some(("direction", Limit::OneDirection))
+        }
+        DeviceKind::PositionSwitch(p) if usize::from(p.axis) >= AXES => {
+            Some(("axis", Limit::Range(0, 4)))
+        }
         DeviceKind::PositionSwitch(p)
             if p.from_mm.partial_cmp(&p.to_mm).is_none_or(|o| o.is_gt())
                 || !p.from_mm.is_finite()
                 || !p.to_mm.is_finite() =>
         {
-            Some(("to_mm", "from_mm ≤ to_mm, both finite"))
+            Some(("to_mm", Limit::Ordered))
         }
-        DeviceKind::Spindle(s) if s.full_rpm == 0 => Some(("full_rpm", "1…")),
-        DeviceKind::Spindle(s) if s.tolerance_pct > 100 => Some(("tolerance_pct", "0…100")),
+        DeviceKind::Spindle(s) if s.full_rpm == 0 => Some(("full_rpm", Limit::AtLeast(1))),
+        DeviceKind::Spindle(s) if s.tolerance_pct > 100 => {
+            Some(("tolerance_pct", Limit::Range(0, 100)))
+        }
         DeviceKind::Pulse(p) if p.period_ms == 0 || p.on_ms > p.period_ms => {
-            Some(("on_ms", "period_ms ≥ 1 and on_ms ≤ period_ms"))
+            Some(("on_ms", Limit::PulseOn))
         }
-        DeviceKind::Counter(c) if c.count == 0 => Some(("count", "1…")),
+        DeviceKind::Counter(c) if c.count == 0 => Some(("count", Limit::AtLeast(1))),
         _ => None,
     }
 }

@@ -50,7 +50,7 @@ pub enum ModelError {
         /// The field.
         field: &'static str,
         /// Its allowed values.
-        limit: &'static str,
+        limit: Limit,
     },
     /// M004: a condition that does not read.
     Expression {
@@ -76,6 +76,47 @@ pub enum ModelError {
         /// The device that writes it first.
         other: String,
     },
+}
+
+/// What an impossible device parameter must be (docs/machine.md gives each field's).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Limit {
+    /// A whole number from the first to the second.
+    Range(u32, u32),
+    /// A whole number from this one up.
+    AtLeast(u32),
+    /// A station from 1 to the turret's number of stations.
+    Station,
+    /// Enough code bits for every station's code, at most 32.
+    CodeBits,
+    /// A position window of at least one tick (station_ms × window_pct ≥ 800).
+    WindowTick,
+    /// A CCW output or a direction output, not both.
+    OneDirection,
+    /// from_mm ≤ to_mm, both finite.
+    Ordered,
+    /// period_ms ≥ 1 and on_ms ≤ period_ms.
+    PulseOn,
+}
+
+/// The English, as docs/machine.md writes the limits.
+impl fmt::Display for Limit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Limit::Range(lo, hi) => write!(f, "{lo}…{hi}"),
+            Limit::AtLeast(lo) => write!(f, "{lo}…"),
+            Limit::Station => f.write_str("1…stations"),
+            Limit::CodeBits => f.write_str("enough bits for every station's code, at most 32"),
+            Limit::WindowTick => {
+                f.write_str("a window of at least one tick: station_ms × window_pct ≥ 800")
+            }
+            Limit::OneDirection => {
+                f.write_str("either a CCW output or a direction output, not both")
+            }
+            Limit::Ordered => f.write_str("from_mm ≤ to_mm, both finite"),
+            Limit::PulseOn => f.write_str("period_ms ≥ 1 and on_ms ≤ period_ms"),
+        }
+    }
 }
 
 impl ModelError {

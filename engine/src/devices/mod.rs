@@ -17,7 +17,7 @@ mod error;
 mod resolved;
 mod status;
 
-pub use error::ModelError;
+pub use error::{Limit, ModelError};
 pub use expr::ExprError;
 pub use model::{Device, DeviceKind, MachineModel};
 pub use resolved::CncView;

@@ -188,8 +188,9 @@ impl Counts {
         }
     }
 
-    /// `N errors, M warnings` (`N 个错误，M 个警告`).
-    fn text(self, lang: Lang) -> String {
+    /// `N errors, M warnings` (`N 个错误，M 个警告`): the editor's summary and status bar say
+    /// it as `check` does.
+    pub fn text(self, lang: Lang) -> String {
         let Counts { errors, warnings } = self;
         match lang {
             Lang::Zh => format!("{errors} 个错误，{warnings} 个警告"),

@@ -10,7 +10,7 @@ use ladder_engine::catalog::OperandKind;
 use ladder_engine::cnc::CncError;
 use ladder_engine::compiler::OperandRefusal;
 use ladder_engine::devices::fields::FieldError;
-use ladder_engine::devices::{ExprError, ModelError};
+use ladder_engine::devices::{ExprError, Limit, ModelError};
 use ladder_engine::model::OperandError;
 use ladder_engine::model::sheets::{ALARM_NUMBERS, M_CODES, TableError, Taken};
 use ladder_engine::model::tables::BLOCK_SYMBOLS;
@@ -253,7 +253,10 @@ fn model_error_zh(e: &ModelError) -> String {
             device,
             field,
             limit,
-        } => format!("设备 `{device}` 的 {field} 不可能：允许 {limit}"),
+        } => format!(
+            "设备 `{device}` 的 {field} 不可能：允许 {}",
+            limit_zh(*limit)
+        ),
         ModelError::Expression {
             device,
             field,
@@ -270,6 +273,20 @@ fn model_error_zh(e: &ModelError) -> String {
         } => format!(
             "设备 `{device}` 和设备 `{other}` 都写 {address}：一个输入只能由一个设备驱动，请删去其中一个绑定"
         ),
+    }
+}
+
+/// What an impossible device parameter must be, in Chinese.
+fn limit_zh(limit: Limit) -> String {
+    match limit {
+        Limit::Range(lo, hi) => format!("{lo}…{hi}"),
+        Limit::AtLeast(lo) => format!("{lo}…"),
+        Limit::Station => "1…stations".into(),
+        Limit::CodeBits => "足以为每个刀位编码的位数，最多 32 位".into(),
+        Limit::WindowTick => "至少一个周期的到位窗口：station_ms × window_pct ≥ 800".into(),
+        Limit::OneDirection => "CCW 输出与方向输出只能二选一".into(),
+        Limit::Ordered => "from_mm ≤ to_mm，且两者均为有限值".into(),
+        Limit::PulseOn => "period_ms ≥ 1，且 on_ms ≤ period_ms".into(),
     }
 }
 

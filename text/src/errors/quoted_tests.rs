@@ -9,8 +9,8 @@ use super::*;
 use crate::bilingual::assert_bilingual;
 use ladder_engine::address::{Address, Area, AreaSet};
 use ladder_engine::catalog::{Op, check_digit_group};
-use ladder_engine::devices::DeviceKind;
 use ladder_engine::devices::expr::{self, Names};
+use ladder_engine::devices::{DeviceKind, Limit};
 use ladder_engine::model::Operand;
 use ladder_engine::model::sheets::{self, Sheet};
 use ladder_engine::profile::{Profile, ProfileId};
@@ -413,8 +413,7 @@ fn model_slot(e: &ModelError) -> usize {
     }
 }
 
-/// The parameter limits are ranges the model's check gives; its other limits are English
-/// sentences that the Chinese quotes unchanged, so they are not examples here.
+/// The model errors, with a parameter error for every kind of limit.
 fn model_examples() -> Vec<ModelError> {
     use ModelError as M;
     let device = || "chuck".to_string();
@@ -442,12 +441,12 @@ fn model_examples() -> Vec<ModelError> {
         M::Parameter {
             device: device(),
             field: "travel_ms",
-            limit: "1…600000",
+            limit: Limit::Range(1, 600_000),
         },
         M::Parameter {
             device: "turret".into(),
             field: "stations",
-            limit: "2…32",
+            limit: Limit::Range(2, 32),
         },
         M::Expression {
             device: "door".into(),
@@ -469,6 +468,36 @@ fn every_model_error_reads_in_both_languages() {
     walk(&examples, 9, model_slot, model_error);
     for e in &examples {
         assert_eq!(model_error(e, Lang::En), e.to_string());
+    }
+    // Every kind of limit, with no wildcard: a new one does not compile until it is here.
+    let limits = [
+        Limit::Range(1, 600_000),
+        Limit::AtLeast(1),
+        Limit::Station,
+        Limit::CodeBits,
+        Limit::WindowTick,
+        Limit::OneDirection,
+        Limit::Ordered,
+        Limit::PulseOn,
+    ];
+    for limit in limits {
+        match limit {
+            Limit::Range(..)
+            | Limit::AtLeast(_)
+            | Limit::Station
+            | Limit::CodeBits
+            | Limit::WindowTick
+            | Limit::OneDirection
+            | Limit::Ordered
+            | Limit::PulseOn => {}
+        }
+        let e = ModelError::Parameter {
+            device: "turret".into(),
+            field: "window_pct",
+            limit,
+        };
+        assert_eq!(model_error(&e, Lang::En), e.to_string());
+        assert_bilingual(&model_error(&e, Lang::En), &model_error(&e, Lang::Zh));
     }
     let e = &examples[4];
     assert_eq!(
