@@ -2,23 +2,21 @@
 //! file or a subprogram command refused.
 
 mod build;
-mod cnc;
 mod comments;
 mod coverage;
 mod io;
 mod print;
-mod quoted;
 mod structure;
 
+pub use crate::quoted::{
+    address_error, cnc_error, digit_group_error, expr_error, field_error, model_error,
+    operand_error, operand_refusal, table_error, taken,
+};
 pub use build::{build_error, code_error};
 pub use comments::{comments_error, rejection};
 pub use coverage::coverage_error;
 pub use io::io_error;
 pub use print::{networks_error, pdf_error};
-pub use quoted::{
-    address_error, cnc_error, digit_group_error, expr_error, field_error, model_error,
-    operand_error, operand_refusal, table_error, taken,
-};
 pub use structure::{structure_error, width_error_zh};
 
 use crate::{Lang, Msg};

@@ -12,6 +12,7 @@ pub mod diagnostics;
 pub mod errors;
 pub mod halt;
 pub mod machine;
+pub mod quoted;
 pub mod refusal;
 pub mod script;
 pub mod sim;

@@ -11,7 +11,7 @@ mod tests;
 pub use scenario::{broken_scenario, name_error};
 
 use crate::Lang;
-use crate::errors::{address_error, cnc_error};
+use crate::quoted::{address_error, cnc_error};
 use ladder_engine::cnc::program::{FILE_MAX, ProgramFileError};
 use ladder_engine::sim::{COMMANDS, QuoteError, ScriptError, ScriptReason};
 

@@ -2,7 +2,7 @@
 
 use super::place;
 use crate::Lang;
-use crate::errors::operand_refusal;
+use crate::quoted::operand_refusal;
 use ladder_engine::address::Address;
 use ladder_engine::catalog::{InstrClass, Op};
 use ladder_engine::compiler::{CheckFinding, Location, OperandRefusal};

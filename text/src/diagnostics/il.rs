@@ -1,7 +1,7 @@
 //! The words of [`IlFinding`]: each finding in English and in Chinese, side by side.
 
 use crate::Lang;
-use crate::errors::operand_error;
+use crate::quoted::operand_error;
 use ladder_engine::compiler::IlFinding;
 
 /// What `f` found and how to fix it, in `lang`.

@@ -1,7 +1,7 @@
 //! The words of [`MachineFinding`]: each finding in English and in Chinese, side by side.
 
 use crate::Lang;
-use crate::errors::model_error;
+use crate::quoted::model_error;
 use ladder_engine::compiler::MachineFinding;
 
 /// What `f` found and how to fix it, in `lang`.
@@ -45,7 +45,7 @@ pub(super) fn text(f: &MachineFinding, lang: Lang) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::errors::expr_error;
+    use crate::quoted::expr_error;
     use ladder_engine::address::Address;
     use ladder_engine::devices::{ExprError, ModelError};
 

@@ -1,7 +1,7 @@
 //! The words of [`TableFinding`]: each finding in English and in Chinese, side by side.
 
 use crate::Lang;
-use crate::errors::{address_error, table_error};
+use crate::quoted::{address_error, table_error};
 use ladder_engine::address::Address;
 use ladder_engine::compiler::TableFinding;
 use ladder_engine::model::sheets::Sheet;

@@ -3,6 +3,10 @@
 //! that does not fit, a device of the machine model that cannot be built. In English each is
 //! its `Display`; the Chinese says the same specifics.
 
+mod cnc;
+#[cfg(test)]
+mod tests;
+
 use crate::Lang;
 use ladder_engine::address::AddressError;
 use ladder_engine::catalog::DigitGroupError;
@@ -121,7 +125,7 @@ pub fn field_error(e: &FieldError, lang: Lang) -> String {
 pub fn cnc_error(e: &CncError, lang: Lang) -> String {
     match lang {
         Lang::En => e.en(),
-        Lang::Zh => super::cnc::cnc_zh(e),
+        Lang::Zh => cnc::cnc_zh(e),
     }
 }
 
@@ -383,7 +387,3 @@ fn expected_text_zh(kind: OperandKind) -> &'static str {
         OperandKind::Counter => "计数器，如 C0001",
     }
 }
-
-#[cfg(test)]
-#[path = "quoted_tests.rs"]
-mod tests;
