@@ -22,6 +22,7 @@ pub mod recorder;
 pub mod refusal;
 pub mod runner;
 pub mod scenario;
+pub mod script;
 pub mod sim;
 pub mod vm;
 pub mod xref;

@@ -4,7 +4,6 @@
 //! becomes a [`MachineCommand`], the same commands the editor sends to a running machine.
 
 mod device;
-mod error;
 mod lex;
 mod run;
 pub mod scenario;
@@ -16,7 +15,7 @@ use crate::profile::Profile;
 use crate::vm::TICK_MS;
 
 pub use crate::address::Target;
-pub use error::{
+pub use crate::script::{
     DeviceQuantity, DeviceReason, QuoteError, ScenarioReason, ScriptError, ScriptReason,
 };
 pub use run::{Control, Event, Outcome, Part, Progress, Report, Stopped, run, run_with};

@@ -2,7 +2,7 @@
 
 use crate::compiler::Code;
 use crate::scenario::NameError;
-use crate::sim::ScriptError;
+use crate::script::ScriptError;
 
 /// A finding of the saved scenarios (`diagnose.rs`): a scenario that would not apply.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]

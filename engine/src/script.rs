@@ -1,5 +1,6 @@
 //! Why a script line (or a scenario line) cannot be used, as data: what was written and what
-//! it broke. `ladder_text::script` words it.
+//! it broke. `ladder_text::script` words it. It lies below the compiler, which holds one in a
+//! diagnostic of a saved scenario (W019), and `sim` re-exports it.
 
 use crate::address::{Address, AddressError, Target};
 use crate::cnc::command::CncError;
@@ -23,7 +24,7 @@ pub enum ScriptReason {
         /// The command's usage, as the script syntax writes it.
         usage: &'static str,
     },
-    /// A command none of [`COMMANDS`](super::COMMANDS).
+    /// A command none of [`COMMANDS`](crate::sim::COMMANDS).
     UnknownCommand {
         /// The command as written.
         verb: String,
